@@ -1,0 +1,46 @@
+// `granshock collide`: a head-on impact of two particles, or of a particle on the fixed
+// cylinder, run through the same solver variants and kernels as a full simulation.
+// It measures what the contact law does at a given time step: the effective
+// restitution, the contact duration and the peak overlap.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "system_setup.hpp"
+#include "time_step_guard.hpp"
+
+namespace granshock {
+
+struct CollisionOptions {
+  std::string pair = "steel-steel";  // a-b for two particles, a-wall for the cylinder
+  double speed_m_per_s = 1.0;        // relative normal approach speed
+  double dt = 0;                     // 0: t_c / 100
+  double restitution = 0.5;
+  bool limit_force = false;
+  Precision precision = Precision::dual;
+  bool force = false;  // run even past the stable time step
+};
+
+struct CollisionResult {
+  std::string pair;
+  double speed = 0;
+  double dt = 0;
+  double t_c = 0;
+  double e_in = 0;
+  double e_eff = 0;      // post/pre normal relative speed
+  double t_contact = 0;  // s, from overlap zero crossings interpolated between steps
+  double max_overlap = 0;
+  long steps = 0;
+  bool limit_force = false;
+  std::string variant;
+  TimeStepAssessment time_step;
+};
+
+std::vector<std::string> collision_pair_names();
+// Throws UserError for an unknown pair, a non-positive speed or dt, e outside (0, 1],
+// or a time step past the stable limit without `force`.
+CollisionResult run_head_on_collision(const CollisionOptions& options);
+std::string to_json(const CollisionResult& r);
+
+}  // namespace granshock

@@ -1,0 +1,96 @@
+#!/usr/bin/env bash
+# Installs everything granshock needs on a Debian 12 machine, idempotently:
+#   1. Debian packages (needs root; skipped when all are already installed),
+#   2. Kokkos with the OpenMP + Serial backends, built from Debian's own trilinos
+#      source package into a local prefix (Debian's binary Kokkos is Serial-only).
+# A second call finds everything in place and returns in seconds.
+#
+# Usage: cmake/install_deps.sh [--cuda]
+#   --cuda   also build a Kokkos with CUDA + OpenMP (see cmake/kokkos_cuda13.patch).
+# Environment: GRANSHOCK_DEPS (default: <repo>/.deps) holds sources and prefixes.
+set -euo pipefail
+
+repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+deps=${GRANSHOCK_DEPS:-$repo/.deps}
+want_cuda=0
+for arg in "$@"; do
+  case "$arg" in
+    --cuda) want_cuda=1 ;;
+    *) echo "install_deps.sh: unknown option '$arg' (accepted: --cuda)" >&2; exit 2 ;;
+  esac
+done
+
+packages=(
+  build-essential cmake ninja-build pkg-config git ca-certificates xz-utils dpkg-dev
+  clang-format
+  libeigen3-dev
+  libopenmpi-dev openmpi-bin libhdf5-openmpi-dev hdf5-tools
+  libgtest-dev libgmock-dev libbenchmark-dev
+  libtomlplusplus-dev libcli11-dev libfmt-dev nlohmann-json3-dev
+  python3-matplotlib python3-h5py
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+
+as_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }
+
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "== installing Debian packages: ${missing[*]}"
+  as_root env DEBIAN_FRONTEND=noninteractive apt-get update -qq
+  as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}"
+else
+  echo "== Debian packages: all present"
+fi
+
+# --- Kokkos from Debian's trilinos source package ----------------------------------
+kokkos_src=$deps/src/kokkos
+fetch_kokkos_source() {
+  [ -f "$kokkos_src/CMakeLists.txt" ] && return 0
+  local src_list=/etc/apt/sources.list.d/granshock-deb-src.sources
+  if [ ! -f "$src_list" ]; then
+    echo "== enabling Debian source packages ($src_list)"
+    sed 's/^Types: deb$/Types: deb-src/' /etc/apt/sources.list.d/debian.sources | as_root tee "$src_list" >/dev/null
+    as_root env DEBIAN_FRONTEND=noninteractive apt-get update -qq
+  fi
+  mkdir -p "$deps/src/download"
+  (cd "$deps/src/download" && ls trilinos_*.orig.tar.* >/dev/null 2>&1 ||
+     apt-get source --download-only trilinos >/dev/null)
+  local tarball
+  tarball=$(ls "$deps"/src/download/trilinos_*.orig.tar.* | head -n 1)
+  echo "== unpacking Kokkos from $(basename "$tarball")"
+  rm -rf "$deps/src/unpack" && mkdir -p "$deps/src/unpack"
+  tar -xf "$tarball" -C "$deps/src/unpack" --wildcards '*/packages/kokkos/*'
+  rm -rf "$kokkos_src"
+  mv "$deps"/src/unpack/*/packages/kokkos "$kokkos_src"
+  rm -rf "$deps/src/unpack"
+}
+
+build_kokkos() { # name, extra cmake args...
+  local name=$1; shift
+  local prefix=$deps/$name
+  if [ -f "$prefix/.granshock-stamp" ]; then
+    echo "== Kokkos ($name): present in $prefix"
+    return 0
+  fi
+  fetch_kokkos_source
+  echo "== building Kokkos ($name) into $prefix"
+  rm -rf "$deps/build-$name"
+  cmake -S "$kokkos_src" -B "$deps/build-$name" -G Ninja \
+    -DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX="$prefix" \
+    -DCMAKE_CXX_STANDARD=17 -DKokkos_ENABLE_SERIAL=ON -DKokkos_ENABLE_OPENMP=ON \
+    -DKokkos_ENABLE_TESTS=OFF -DKokkos_ENABLE_EXAMPLES=OFF "$@" >/dev/null
+  cmake --build "$deps/build-$name" --parallel "$(nproc)" >/dev/null
+  cmake --install "$deps/build-$name" >/dev/null
+  rm -rf "$deps/build-$name"
+  touch "$prefix/.granshock-stamp"
+}
+
+build_kokkos kokkos-openmp
+
+if [ "$want_cuda" -eq 1 ]; then
+  source "$repo/cmake/kokkos_cuda.sh"
+fi
+echo "== dependencies ready (Kokkos prefix: $deps/kokkos-openmp)"

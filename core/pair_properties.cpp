@@ -1,0 +1,65 @@
+#include "pair_properties.hpp"
+
+#include <cmath>
+
+namespace granshock {
+
+double damping_beta(double e) {
+  const double l = std::log(e);
+  return l / std::sqrt(l * l + M_PI * M_PI);
+}
+
+namespace {
+double inv_youngs(const Material& m) {
+  return (1.0 - m.poisson_ratio * m.poisson_ratio) / m.youngs_modulus_pa;
+}
+double inv_shear(const Material& m) {
+  return 2.0 * (2.0 - m.poisson_ratio) * (1.0 + m.poisson_ratio) / m.youngs_modulus_pa;
+}
+}  // namespace
+
+PairProperties particle_pair(const Species& a, const Species& b, double e, double mu) {
+  PairProperties p;
+  p.name = a.name + "-" + b.name;
+  p.youngs_star = 1.0 / (inv_youngs(a.material) + inv_youngs(b.material));
+  p.shear_star = 1.0 / (inv_shear(a.material) + inv_shear(b.material));
+  p.radius_star = 1.0 / (1.0 / a.radius_m() + 1.0 / b.radius_m());
+  p.mass_star = 1.0 / (1.0 / a.mass_kg() + 1.0 / b.mass_kg());
+  p.beta = damping_beta(e);
+  p.restitution = e;
+  p.friction = mu;
+  return p;
+}
+
+PairProperties particle_wall(const Species& s, const Material& wall, double e, double mu) {
+  PairProperties p;
+  p.name = s.name + "-wall";
+  p.youngs_star = 1.0 / (inv_youngs(s.material) + inv_youngs(wall));
+  p.shear_star = 1.0 / (inv_shear(s.material) + inv_shear(wall));
+  p.radius_star = s.radius_m();
+  p.mass_star = s.mass_kg();
+  p.beta = damping_beta(e);
+  p.restitution = e;
+  p.friction = mu;
+  return p;
+}
+
+template <class Real>
+HertzCoefficients<Real> hertz_coefficients(const PairProperties& p, bool limit_force) {
+  const double sqrt_r = std::sqrt(p.radius_star);
+  const double damping = -2.0 * std::sqrt(5.0 / 6.0) * p.beta;
+  HertzCoefficients<Real> c;
+  c.kn_coef = Real(4.0 / 3.0 * p.youngs_star * sqrt_r);
+  c.gn_coef = Real(damping * std::sqrt(2.0 * p.youngs_star * sqrt_r * p.mass_star));
+  c.kt_coef = Real(8.0 * p.shear_star * sqrt_r);
+  c.gt_coef = Real(damping * std::sqrt(8.0 * p.shear_star * sqrt_r * p.mass_star));
+  c.friction = Real(p.friction);
+  c.normal_force_floor = limit_force ? Real(0) : -std::numeric_limits<Real>::max();
+  c.energy_coef = Real(8.0 / 15.0 * p.youngs_star * sqrt_r);
+  return c;
+}
+
+template HertzCoefficients<float> hertz_coefficients<float>(const PairProperties&, bool);
+template HertzCoefficients<double> hertz_coefficients<double>(const PairProperties&, bool);
+
+}  // namespace granshock

@@ -1,0 +1,213 @@
+// DemSolver: one compiled variant of the DEM time loop. It owns the particles, the
+// cell sort, the Verlet list and (with friction) the contact history, and runs
+//   first half-step -> [rebuild lists if some particle moved > skin/2] -> forces ->
+//   second half-step
+// entirely in Kokkos kernels on ExecSpace. Host copies happen only on request
+// (snapshots, diagnostics) and for the one scalar that decides a rebuild.
+#pragma once
+
+#include <Kokkos_Core.hpp>
+#include <algorithm>
+#include <stdexcept>
+
+#include "cell_grid.hpp"
+#include "cell_sort.hpp"
+#include "contact_forces.hpp"
+#include "contact_history.hpp"
+#include "reorder.hpp"
+#include "scene_traits.hpp"
+#include "solver.hpp"
+#include "species_table.hpp"
+#include "user_error.hpp"
+#include "velocity_verlet.hpp"
+#include "verlet_list.hpp"
+
+namespace granshock {
+
+template <class Traits, class ExecSpace>
+class DemSolver final : public Solver {
+ public:
+  static constexpr int Dim = Traits::dim;
+  using Real = typename Traits::real;
+  using Mem = typename ExecSpace::memory_space;
+  using Policy = Kokkos::RangePolicy<ExecSpace>;
+  using Store = ParticleStore<Dim, Real, Mem>;
+
+  DemSolver(const SystemSetup& setup, std::size_t capacity)
+      : setup_(validated(setup)),
+        table_(SpeciesTable<Real, Mem>::build(setup)),
+        box_(BoxGeometry<Dim, Real>::from(setup.box)),
+        skin_(Real(setup.skin())),
+        grid_(CellGrid<Dim, Real>::make(setup.box, setup.max_diameter() + setup.skin())) {
+    integrator_.dt = Real(setup.dt);
+    for (int d = 0; d < Dim; ++d) integrator_.gravity[d] = Real(setup.gravity[d]);
+    if constexpr (Traits::obstacle) {
+      for (int d = 0; d < Dim; ++d) cylinder_.centre[d] = Real(setup.obstacle->centre[d]);
+      cylinder_.radius = Real(0.5 * setup.obstacle->diameter_m);
+    } else {
+      cylinder_.centre = Vec<Dim, Real>::zero();
+      cylinder_.radius = 0;
+    }
+    allocate(int(std::max<std::size_t>(capacity, 1)));
+  }
+
+  void set_particles(const HostParticles& hp) override {
+    const int n = int(hp.size());
+    if (n > p_.capacity()) allocate(n + n / 4);
+    auto x = Kokkos::create_mirror_view(p_.x);
+    auto v = Kokkos::create_mirror_view(p_.v);
+    auto species = Kokkos::create_mirror_view(p_.species);
+    auto id = Kokkos::create_mirror_view(p_.id);
+    auto omega = Kokkos::create_mirror_view(p_.omega);
+    for (int i = 0; i < n; ++i) {
+      for (int d = 0; d < Dim; ++d) {
+        x(i, d) = Real(hp.position[i][d]);
+        v(i, d) = Real(hp.velocity[i][d]);
+      }
+      if (hp.species[i] < 0 || hp.species[i] >= int(setup_.species.size()))
+        throw UserError("particle " + std::to_string(hp.id[i]) + " has unknown species " +
+                        std::to_string(hp.species[i]));
+      species(i) = hp.species[i];
+      id(i) = hp.id[i];
+      if constexpr (Traits::friction) omega(i) = hp.angular_velocity.empty() ? Real(0) : Real(hp.angular_velocity[i]);
+    }
+    Kokkos::deep_copy(p_.x, x);
+    Kokkos::deep_copy(p_.v, v);
+    Kokkos::deep_copy(p_.species, species);
+    Kokkos::deep_copy(p_.id, id);
+    Kokkos::deep_copy(p_.omega, omega);
+    p_.n = n;
+    if constexpr (Traits::friction) {
+      Kokkos::deep_copy(history_.partner, -1);
+      Kokkos::deep_copy(history_.spring, Real(0));
+      Kokkos::deep_copy(history_.wall_spring, Real(0));
+    }
+    rebuild_lists();
+    compute_forces();
+  }
+
+  HostParticles particles() const override {
+    auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p_.x);
+    auto v = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p_.v);
+    auto species = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p_.species);
+    auto id = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p_.id);
+    auto omega = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p_.omega);
+    HostParticles hp;
+    for (int i = 0; i < p_.n; ++i) {
+      std::array<double, 3> xi{0, 0, 0}, vi{0, 0, 0};
+      for (int d = 0; d < Dim; ++d) {
+        xi[d] = x(i, d);
+        vi[d] = v(i, d);
+      }
+      hp.add(xi, vi, species(i), id(i));
+      if constexpr (Traits::friction) hp.angular_velocity.push_back(omega(i));
+    }
+    return hp;
+  }
+
+  void advance(long steps) override {
+    const Real rebuild_d2 = Real(0.25) * skin_ * skin_;  // (skin/2)^2
+    for (long s = 0; s < steps; ++s) {
+      if (integrator_.first_half(p_, table_, x_ref_) > rebuild_d2) rebuild_lists();
+      compute_forces();
+      integrator_.second_half(p_, table_);
+      ++steps_;
+    }
+    if constexpr (Traits::friction) {
+      int overflow = 0;
+      Kokkos::deep_copy(overflow, history_.overflow);
+      if (overflow)
+        throw std::runtime_error("a particle had more than " +
+                                 std::to_string(ContactHistory<Dim, Real, Mem>::slots) +
+                                 " simultaneous contacts: the packing is unphysically dense "
+                                 "(huge overlaps?); reduce dt or check the scene");
+    }
+  }
+
+  Diagnostics diagnostics() const override;
+  std::vector<std::pair<int, int>> contact_pairs() const override;
+
+  std::size_t size() const override { return std::size_t(p_.n); }
+  long steps_done() const override { return steps_; }
+  long list_builds() const override { return builds_; }
+  double time() const override { return double(steps_) * setup_.dt; }
+  std::string variant() const override { return Traits::name() + "/" + ExecSpace::name(); }
+
+  // Kernel entry points (public for benchmarks and tests of the pieces).
+  void rebuild_lists() {
+    wrap_periodic();
+    sort_.sort(grid_, p_.x, p_.id, p_.n);
+    const auto order = sort_.order;
+    gather_in_place<ExecSpace>(p_.x, scratch_vec_, order, p_.n);
+    gather_in_place<ExecSpace>(p_.v, scratch_vec_, order, p_.n);
+    gather_in_place<ExecSpace>(p_.species, scratch_int_, order, p_.n);
+    gather_in_place<ExecSpace>(p_.id, scratch_int_, order, p_.n);
+    if constexpr (Traits::friction) {
+      gather_in_place<ExecSpace>(p_.omega, scratch_real_, order, p_.n);
+      gather_in_place<ExecSpace>(history_.partner, scratch_partner_, order, p_.n);
+      gather_in_place<ExecSpace>(history_.spring, scratch_spring_, order, p_.n);
+      gather_in_place<ExecSpace>(history_.wall_spring, scratch_vec_, order, p_.n);
+    }
+    list_.build(grid_, box_, sort_.cell_start, p_.x, p_.species, table_.radius, skin_, p_.n);
+    Kokkos::deep_copy(x_ref_, p_.x);
+    ++builds_;
+  }
+
+  void compute_forces() {
+    ContactForceKernel<Traits, ExecSpace> kernel{p_,     list_.offsets, list_.neighbours,
+                                                 table_, box_,          cylinder_,
+                                                 history_, Real(setup_.dt)};
+    Kokkos::parallel_for("contact_forces", Policy(0, p_.n), kernel);
+  }
+
+ private:
+  static const SystemSetup& validated(const SystemSetup& s) {
+    if (s.species.empty()) throw UserError("a scene needs at least one species");
+    if (!(s.max_diameter() > 0)) throw UserError("particle diameters must be > 0");
+    if (Traits::obstacle != s.obstacle.has_value())
+      throw std::logic_error("DemSolver variant does not match the scene's obstacle");
+    return s;
+  }
+
+  void allocate(int capacity) {
+    p_.allocate(capacity, Traits::friction);
+    x_ref_ = decltype(x_ref_)("x_ref", capacity);
+    if constexpr (Traits::friction) history_.allocate(capacity);
+  }
+
+  void wrap_periodic() {
+    const auto box = box_;
+    const auto x = p_.x;
+    Kokkos::parallel_for(
+        "wrap_periodic", Policy(0, p_.n), KOKKOS_LAMBDA(const int i) {
+          for (int d = 0; d < Dim; ++d) x(i, d) = box.wrap(d, x(i, d));
+        });
+  }
+
+  SystemSetup setup_;
+  SpeciesTable<Real, Mem> table_;
+  BoxGeometry<Dim, Real> box_;
+  Real skin_;
+  CellGrid<Dim, Real> grid_;
+  CylinderGeometry<Dim, Real> cylinder_;
+  VelocityVerlet<Traits, ExecSpace> integrator_;
+
+  Store p_;
+  Kokkos::View<Real* [Dim], Mem> x_ref_;
+  ContactHistory<Dim, Real, Mem> history_;
+  CellSort<Dim, Real, ExecSpace> sort_;
+  VerletList<Dim, Real, ExecSpace> list_;
+
+  typename Store::VectorView scratch_vec_;
+  typename Store::ScalarView scratch_real_;
+  typename Store::IntView scratch_int_;
+  decltype(history_.partner) scratch_partner_;
+  decltype(history_.spring) scratch_spring_;
+
+  long steps_ = 0;
+  long builds_ = 0;
+};
+
+}  // namespace granshock
+
+#include "dem_solver_diagnostics.hpp"

@@ -1,0 +1,32 @@
+// Applies a permutation to particle arrays: dst(k) = src(order(k)) for k < n.
+// Used after a cell sort so that particles close in space are close in memory.
+#pragma once
+
+#include <Kokkos_Core.hpp>
+#include <utility>
+
+namespace granshock {
+
+// Gathers `view` through `order` into `scratch`, then swaps the two handles, so that
+// `view` holds the reordered data and `scratch` the old buffer (reused next time).
+template <class ExecSpace, class View, class OrderView>
+void gather_in_place(View& view, View& scratch, const OrderView& order, int n) {
+  if (view.extent(0) == 0) return;
+  if (scratch.extent(0) != view.extent(0) ||
+      (View::rank > 1 && scratch.extent(1) != view.extent(1)))
+    scratch = View(view.label() + "_scratch", view.layout());
+  auto src = view;
+  auto dst = scratch;
+  Kokkos::parallel_for(
+      "reorder::gather", Kokkos::RangePolicy<ExecSpace>(0, n), KOKKOS_LAMBDA(const int k) {
+        const int from = order(k);
+        if constexpr (View::rank == 1) {
+          dst(k) = src(from);
+        } else {
+          for (int c = 0; c < int(src.extent(1)); ++c) dst(k, c) = src(from, c);
+        }
+      });
+  std::swap(view, scratch);
+}
+
+}  // namespace granshock
