@@ -5,20 +5,16 @@
 #      source package into a local prefix (Debian's binary Kokkos is Serial-only).
 # A second call finds everything in place and returns in seconds.
 #
-# Usage: cmake/install_deps.sh [--cuda]
-#   --cuda   also build a Kokkos with CUDA + OpenMP (see cmake/kokkos_cuda13.patch).
+# Usage: cmake/install_deps.sh
 # Environment: GRANSHOCK_DEPS (default: <repo>/.deps) holds sources and prefixes.
 set -euo pipefail
 
 repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 deps=${GRANSHOCK_DEPS:-$repo/.deps}
-want_cuda=0
-for arg in "$@"; do
-  case "$arg" in
-    --cuda) want_cuda=1 ;;
-    *) echo "install_deps.sh: unknown option '$arg' (accepted: --cuda)" >&2; exit 2 ;;
-  esac
-done
+if [ $# -gt 0 ]; then
+  echo "install_deps.sh: unexpected argument '$1' (it takes none)" >&2
+  exit 2
+fi
 
 packages=(
   build-essential cmake ninja-build pkg-config git ca-certificates xz-utils dpkg-dev
@@ -39,8 +35,14 @@ as_root() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }
 
 if [ ${#missing[@]} -gt 0 ]; then
   echo "== installing Debian packages: ${missing[*]}"
-  as_root env DEBIAN_FRONTEND=noninteractive apt-get update -qq
-  as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}"
+  mkdir -p "$deps"
+  if ! { as_root env DEBIAN_FRONTEND=noninteractive apt-get update -qq &&
+         as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq \
+           --no-install-recommends "${missing[@]}"; } >"$deps/apt.log" 2>&1; then
+    tail -n 30 "$deps/apt.log" >&2
+    echo "install_deps.sh: apt-get failed (full log: $deps/apt.log)" >&2
+    exit 1
+  fi
 else
   echo "== Debian packages: all present"
 fi
@@ -52,8 +54,13 @@ fetch_kokkos_source() {
   local src_list=/etc/apt/sources.list.d/granshock-deb-src.sources
   if [ ! -f "$src_list" ]; then
     echo "== enabling Debian source packages ($src_list)"
-    sed 's/^Types: deb$/Types: deb-src/' /etc/apt/sources.list.d/debian.sources | as_root tee "$src_list" >/dev/null
-    as_root env DEBIAN_FRONTEND=noninteractive apt-get update -qq
+    if [ -f /etc/apt/sources.list.d/debian.sources ]; then
+      sed 's/^Types: deb$/Types: deb-src/' /etc/apt/sources.list.d/debian.sources
+    else  # one-line style sources.list
+      grep -h '^deb ' /etc/apt/sources.list | sed 's/^deb /deb-src /' |
+        awk '{print "Types: deb-src\nURIs: "$2"\nSuites: "$3"\nComponents: "$4"\n"}'
+    fi | as_root tee "$src_list" >/dev/null
+    as_root env DEBIAN_FRONTEND=noninteractive apt-get update -qq >/dev/null
   fi
   mkdir -p "$deps/src/download"
   (cd "$deps/src/download" && ls trilinos_*.orig.tar.* >/dev/null 2>&1 ||
@@ -65,7 +72,7 @@ fetch_kokkos_source() {
   tar -xf "$tarball" -C "$deps/src/unpack" --wildcards '*/packages/kokkos/*'
   rm -rf "$kokkos_src"
   mv "$deps"/src/unpack/*/packages/kokkos "$kokkos_src"
-  rm -rf "$deps/src/unpack"
+  rm -rf "$deps/src/unpack" "$deps/src/download"  # the 160 MB trilinos tarball
 }
 
 build_kokkos() { # name, extra cmake args...
@@ -82,7 +89,8 @@ build_kokkos() { # name, extra cmake args...
     -DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX="$prefix" \
     -DCMAKE_CXX_STANDARD=17 -DKokkos_ENABLE_SERIAL=ON -DKokkos_ENABLE_OPENMP=ON \
     -DKokkos_ENABLE_TESTS=OFF -DKokkos_ENABLE_EXAMPLES=OFF "$@" >/dev/null
-  cmake --build "$deps/build-$name" --parallel "$(nproc)" >/dev/null
+  cmake --build "$deps/build-$name" --parallel "$(nproc)" >"$deps/build-$name.log" 2>&1 ||
+    { tail -n 30 "$deps/build-$name.log" >&2; exit 1; }
   cmake --install "$deps/build-$name" >/dev/null
   rm -rf "$deps/build-$name"
   touch "$prefix/.granshock-stamp"
@@ -90,7 +98,4 @@ build_kokkos() { # name, extra cmake args...
 
 build_kokkos kokkos-openmp
 
-if [ "$want_cuda" -eq 1 ]; then
-  source "$repo/cmake/kokkos_cuda.sh"
-fi
 echo "== dependencies ready (Kokkos prefix: $deps/kokkos-openmp)"

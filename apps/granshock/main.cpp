@@ -7,6 +7,7 @@
 
 #include "build_info.hpp"
 #include "head_on_collision.hpp"
+#include "kokkos_runtime.hpp"
 #include "user_error.hpp"
 
 namespace {
@@ -40,7 +41,7 @@ int main(int argc, char** argv) {
   auto* info = app.add_subcommand("info", "version, Kokkos backends and threads, build options");
 
   // Kokkos takes its own --kokkos-* arguments; CLI11 sees the rest.
-  Kokkos::ScopeGuard kokkos(argc, argv);
+  granshock::KokkosRuntime kokkos(argc, argv);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,128 @@
+// Test 4 of the foundation issue: the contacts the solver finds through its cell list
+// and Verlet list equal those of a brute-force O(N^2) search with minimum-image
+// periodic distances, for dilute and dense random configurations, with particles on
+// and across the periodic boundaries, two particle sizes, and while particles move
+// (lists reused between rebuilds).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "counter_rng.hpp"
+#include "homogeneous_gas.hpp"
+#include "solver.hpp"
+
+using namespace granshock;
+
+namespace {
+
+std::vector<std::pair<int, int>> brute_force_contacts(const SystemSetup& s, const HostParticles& p) {
+  std::vector<std::pair<int, int>> pairs;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    for (std::size_t j = i + 1; j < p.size(); ++j) {
+      double r2 = 0;
+      for (int d = 0; d < 2; ++d) {
+        double dx = p.position[i][d] - p.position[j][d];
+        if (s.box.periodic[d]) dx -= s.box.length(d) * std::round(dx / s.box.length(d));
+        r2 += dx * dx;
+      }
+      const double reach = s.species[p.species[i]].radius_m() + s.species[p.species[j]].radius_m();
+      if (r2 < reach * reach)
+        pairs.emplace_back(std::min(p.id[i], p.id[j]), std::max(p.id[i], p.id[j]));
+    }
+  }
+  std::sort(pairs.begin(), pairs.end());
+  return pairs;
+}
+
+// Two sizes (1 mm and 2 mm) so that the cut-off differs per pair.
+SystemSetup two_size_setup(double lx, double ly, std::array<bool, 3> periodic) {
+  SystemSetup s;
+  s.species = {{"small", steel(), 1e-3}, {"large", aluminium(), 2e-3}};
+  s.contacts = ContactModel::uniform(2, 0.5, 0.0);
+  s.box.lo = {0, 0, 0};
+  s.box.hi = {lx, ly, 2e-3};
+  s.box.periodic = periodic;
+  s.dt = 1e-8;
+  return s;
+}
+
+// Uniform random positions (overlaps allowed), a quarter of them within one diameter of
+// a box edge so that pairs straddle the periodic boundaries.
+HostParticles random_particles(const SystemSetup& s, int n, std::uint64_t seed) {
+  const CounterRng rng{seed};
+  HostParticles p;
+  for (int i = 0; i < n; ++i) {
+    std::array<double, 3> x{rng.uniform(i, 0) * s.box.length(0), rng.uniform(i, 1) * s.box.length(1), 0};
+    if (i % 4 == 0) x[0] = rng.uniform(i, 2) < 0.5 ? rng.uniform(i, 3) * 1e-3
+                                                   : s.box.length(0) - rng.uniform(i, 3) * 1e-3;
+    if (i % 8 == 1) x[1] = rng.uniform(i, 4) < 0.5 ? 0.0 : s.box.length(1) - 1e-12;
+    p.add(x, {0, 0, 0}, i % 3 == 0 ? 1 : 0, 1000 + 7 * i);  // ids need not be dense
+  }
+  return p;
+}
+
+double area_fraction(const SystemSetup& s, const HostParticles& p) {
+  double a = 0;
+  for (int sp : p.species) a += M_PI * std::pow(s.species[sp].radius_m(), 2);
+  return a / (s.box.length(0) * s.box.length(1));
+}
+
+struct Config {
+  const char* name;
+  double lx, ly;
+  std::array<bool, 3> periodic;
+  int n;
+};
+
+class NeighbourSearch : public ::testing::TestWithParam<Config> {};
+
+TEST_P(NeighbourSearch, StaticConfigurationsMatchBruteForce) {
+  const Config& c = GetParam();
+  const SystemSetup s = two_size_setup(c.lx, c.ly, c.periodic);
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    const HostParticles p = random_particles(s, c.n, seed);
+    auto solver = make_solver(s, p.size());
+    solver->set_particles(p);
+    const auto expected = brute_force_contacts(s, p);
+    ASSERT_FALSE(expected.empty());
+    EXPECT_EQ(solver->contact_pairs(), expected)
+        << c.name << " seed " << seed << " phi " << area_fraction(s, p);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Configurations, NeighbourSearch,
+    ::testing::Values(Config{"dilute_periodic", 0.06, 0.05, {true, true, false}, 400},
+                      Config{"dense_periodic", 0.03, 0.03, {true, true, false}, 500},
+                      Config{"three_cells_wide", 0.0095, 0.05, {true, true, false}, 150},
+                      Config{"open_channel", 0.04, 0.06, {true, false, false}, 600},
+                      Config{"all_open", 0.03, 0.03, {false, false, false}, 500}),
+    [](const auto& param_info) { return std::string(param_info.param.name); });
+
+// Moving particles: lists are reused until some particle has moved skin/2 and then
+// rebuilt; at every check the contacts must still equal the brute-force ones.
+TEST(NeighbourSearchMoving, ListsStayCompleteBetweenRebuilds) {
+  for (const double phi : {0.1, 0.5}) {
+    SystemSetup s = paper_mixture(0.5);
+    GasSpec spec;
+    spec.particles = 900;
+    spec.area_fraction = phi;
+    spec.sigma_m_per_s = 2.0;
+    size_periodic_box(s, spec);
+    s.dt = 2e-7;
+    auto solver = make_solver(s, spec.particles);
+    solver->set_particles(make_homogeneous_gas(s, spec));
+    long checked_contacts = 0;
+    for (int check = 0; check < 40; ++check) {
+      solver->advance(250);
+      const auto expected = brute_force_contacts(s, solver->particles());
+      checked_contacts += long(expected.size());
+      ASSERT_EQ(solver->contact_pairs(), expected) << "phi " << phi << " check " << check;
+    }
+    EXPECT_GT(solver->list_builds(), 3) << "the test must cross several rebuilds";
+    EXPECT_LT(solver->list_builds(), solver->steps_done() / 5) << "lists are rebuilt too often";
+    EXPECT_GT(checked_contacts, 0);
+  }
+}
+
+}  // namespace
