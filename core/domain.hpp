@@ -41,8 +41,11 @@ struct BoxGeometry {
   }
 
   // Maps a coordinate on a periodic axis back into [lo, lo + length).
+  // Coordinates already inside are returned unchanged (bitwise), so wrapping a sorted,
+  // wrapped state again is the identity; resumed runs rely on that.
   KOKKOS_INLINE_FUNCTION Real wrap(int d, Real x) const {
     if (inv_length[d] == Real(0)) return x;
+    if (x >= lo[d] && x - lo[d] < length[d]) return x;
     Real shifted = x - lo[d];
     shifted -= length[d] * dmath::floor(shifted * inv_length[d]);
     if (shifted >= length[d]) shifted -= length[d];  // round-off at the upper edge

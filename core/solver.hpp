@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "host_particles.hpp"
+#include "solver_state.hpp"
 #include "system_setup.hpp"
 
 namespace granshock {
@@ -25,6 +26,34 @@ struct Diagnostics {
   double total_energy() const { return kinetic_energy + rotational_energy + elastic_energy; }
 };
 
+// Per-species sums over the owned particles (for temperatures and mean velocities).
+struct SpeciesMoments {
+  long count = 0;
+  std::array<double, 3> velocity_sum{0, 0, 0};
+  double speed_squared_sum = 0;  // sum of |v|^2 over the in-plane components
+};
+
+// New particles for a rectangular region (2-D: x and y ranges), placed at random
+// without overlapping each other or particles already there.
+struct InsertionRequest {
+  std::array<double, 2> x_range{0, 0};
+  std::array<double, 2> y_range{0, 0};
+  int count = 0;                          // particles wanted
+  std::vector<double> number_fraction;    // per species, sums to 1
+  std::array<double, 2> mean_velocity{0, 0};
+  double sigma_m_per_s = 0;               // Gaussian fluctuation per component
+  std::uint64_t seed = 0;
+  std::uint64_t event = 0;                // insertion event number: the RNG stream
+  long inserted_before = 0;               // particles inserted by earlier events
+};
+
+// Particles deleted because they left through an open boundary, counted per face.
+struct RemovalCounts {
+  std::array<long, 3> low{0, 0, 0};   // through the lower face of each axis
+  std::array<long, 3> high{0, 0, 0};  // through the upper face
+  long total() const { return low[0] + low[1] + low[2] + high[0] + high[1] + high[2]; }
+};
+
 class Solver {
  public:
   virtual ~Solver() = default;
@@ -35,6 +64,19 @@ class Solver {
   virtual Diagnostics diagnostics() const = 0;
   // Touching particle pairs as (smaller global id, larger global id), sorted.
   virtual std::vector<std::pair<int, int>> contact_pairs() const = 0;
+  virtual std::vector<SpeciesMoments> species_moments() const = 0;
+
+  // Inserts up to request.count particles (fewer when there is no room); new ids are
+  // consecutive from next_id(). Returns how many were inserted.
+  virtual int insert(const InsertionRequest& request) = 0;
+  // Deletes particles outside the box on open axes when setup.delete_outside is set
+  // (also done at every neighbour-list rebuild); returns all deletions so far.
+  virtual RemovalCounts remove_escaped() = 0;
+  virtual RemovalCounts removed() const = 0;
+  virtual int next_id() const = 0;
+
+  virtual SolverState export_state() const = 0;
+  virtual void import_state(const SolverState& state) = 0;
 
   virtual std::size_t size() const = 0;
   virtual long steps_done() const = 0;

@@ -1,9 +1,12 @@
 // The complete state of a solver on the host, as a checkpoint stores it: everything
-// needed to continue a run bitwise, in the particle order the solver holds (cell order).
+// needed to continue a run bitwise, in the particle order the solver holds (cell order),
+// including the neighbour list and the positions it was built at. Restoring it needs no
+// list rebuild, so a checkpoint can be taken at any step without changing the run.
 // Floating-point values are stored as double; a single-precision solver's values
 // round-trip exactly (float -> double -> float).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -26,6 +29,15 @@ struct SolverState {
   std::vector<int> history_partner;        // n * slots
   std::vector<double> history_spring;      // n * slots * dim
   std::vector<double> history_wall_spring; // n * dim
+
+  // The Verlet list and the reference positions of the skin criterion.
+  std::vector<double> reference_position;  // n * dim
+  std::vector<int> neighbour_offsets;      // n + 1
+  std::vector<int> neighbours;             // neighbour_offsets[n]
+  long list_builds = 0;
+  // Particles deleted so far through the lower/upper face of each axis.
+  std::array<long, 3> removed_low{0, 0, 0};
+  std::array<long, 3> removed_high{0, 0, 0};
 
   std::size_t size() const { return id.size(); }
 };

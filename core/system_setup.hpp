@@ -39,6 +39,8 @@ struct SystemSetup {
   double skin_m = 0;  // Verlet skin; 0 picks 0.3 of the largest diameter
   std::array<double, 3> gravity{0, 0, 0};
   Precision precision = Precision::dual;
+  // Particles beyond the box on an open axis are deleted (inflow/outflow scenes).
+  bool delete_outside = false;
 
   double max_diameter() const;
   double skin() const { return skin_m > 0 ? skin_m : 0.3 * max_diameter(); }

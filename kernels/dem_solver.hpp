@@ -14,6 +14,7 @@
 #include "cell_sort.hpp"
 #include "contact_forces.hpp"
 #include "contact_history.hpp"
+#include "particle_population.hpp"
 #include "reorder.hpp"
 #include "scene_traits.hpp"
 #include "solver.hpp"
@@ -48,6 +49,12 @@ class DemSolver final : public Solver {
       cylinder_.centre = Vec<Dim, Real>::zero();
       cylinder_.radius = 0;
     }
+    for (int d = 0; d < Dim; ++d) {
+      escape_.test.lo[d] = Real(setup.box.lo[d]);
+      escape_.test.hi[d] = Real(setup.box.hi[d]);
+      escape_.test.check[d] = setup.delete_outside && !setup.box.periodic[d];
+      escape_.check_any = escape_.check_any || escape_.test.check[d];
+    }
     allocate(int(std::max<std::size_t>(capacity, 1)));
   }
 
@@ -77,6 +84,9 @@ class DemSolver final : public Solver {
     Kokkos::deep_copy(p_.id, id);
     Kokkos::deep_copy(p_.omega, omega);
     p_.n = n;
+    next_id_ = 0;
+    for (int i = 0; i < n; ++i) next_id_ = std::max(next_id_, hp.id[i] + 1);
+    Kokkos::deep_copy(p_.f, Real(0));
     if constexpr (Traits::friction) {
       Kokkos::deep_copy(history_.partner, -1);
       Kokkos::deep_copy(history_.spring, Real(0));
@@ -133,21 +143,25 @@ class DemSolver final : public Solver {
   double time() const override { return double(steps_) * setup_.dt; }
   std::string variant() const override { return Traits::name() + "/" + ExecSpace::name(); }
 
-  // Kernel entry points (public for benchmarks and tests of the pieces).
+  RemovalCounts remove_escaped() override {
+    rebuild_lists();
+    return removed_;
+  }
+  RemovalCounts removed() const override { return removed_; }
+  int next_id() const override { return next_id_; }
+
+  int insert(const InsertionRequest& request) override;
+  std::vector<SpeciesMoments> species_moments() const override;
+  SolverState export_state() const override;
+  void import_state(const SolverState& state) override;
+
+  // Wraps periodic coordinates, deletes escaped particles, sorts by cell and rebuilds
+  // the Verlet list; x_ref remembers where particles were, for the skin criterion.
   void rebuild_lists() {
     wrap_periodic();
+    if (escape_.check_any) remove_escaped_now();
     sort_.sort(grid_, p_.x, p_.id, p_.n);
-    const auto order = sort_.order;
-    gather_in_place<ExecSpace>(p_.x, scratch_vec_, order, p_.n);
-    gather_in_place<ExecSpace>(p_.v, scratch_vec_, order, p_.n);
-    gather_in_place<ExecSpace>(p_.species, scratch_int_, order, p_.n);
-    gather_in_place<ExecSpace>(p_.id, scratch_int_, order, p_.n);
-    if constexpr (Traits::friction) {
-      gather_in_place<ExecSpace>(p_.omega, scratch_real_, order, p_.n);
-      gather_in_place<ExecSpace>(history_.partner, scratch_partner_, order, p_.n);
-      gather_in_place<ExecSpace>(history_.spring, scratch_spring_, order, p_.n);
-      gather_in_place<ExecSpace>(history_.wall_spring, scratch_vec_, order, p_.n);
-    }
+    permute(sort_.order, p_.n);
     list_.build(grid_, box_, sort_.cell_start, p_.x, p_.species, table_.radius, skin_, p_.n);
     Kokkos::deep_copy(x_ref_, p_.x);
     ++builds_;
@@ -175,6 +189,60 @@ class DemSolver final : public Solver {
     if constexpr (Traits::friction) history_.allocate(capacity);
   }
 
+  // Grows the arrays to `capacity`, keeping the n owned particles (rare: only when an
+  // insertion needs more room than the scene's estimate).
+  void grow(int capacity) {
+    const Store old = p_;
+    const auto old_ref = x_ref_;
+    const auto old_history = history_;
+    allocate(capacity);
+    p_.n = old.n;
+    copy_prefix(p_.x, old.x, old.n);
+    copy_prefix(p_.v, old.v, old.n);
+    copy_prefix(p_.f, old.f, old.n);
+    copy_prefix(p_.omega, old.omega, old.n);
+    copy_prefix(p_.torque, old.torque, old.n);
+    copy_prefix(p_.species, old.species, old.n);
+    copy_prefix(p_.id, old.id, old.n);
+    copy_prefix(x_ref_, old_ref, old.n);
+    if constexpr (Traits::friction) {
+      copy_prefix(history_.partner, old_history.partner, old.n);
+      copy_prefix(history_.spring, old_history.spring, old.n);
+      copy_prefix(history_.wall_spring, old_history.wall_spring, old.n);
+    }
+  }
+
+  template <class View>
+  static void copy_prefix(const View& dst, const View& src, int n) {
+    if (src.extent(0) == 0 || n == 0) return;
+    Kokkos::parallel_for(
+        "copy_prefix", Policy(0, n), KOKKOS_LAMBDA(const int i) {
+          if constexpr (View::rank == 1) {
+            dst(i) = src(i);
+          } else {
+            for (int c = 0; c < int(src.extent(1)); ++c) dst(i, c) = src(i, c);
+          }
+        });
+  }
+
+  // Reorders every per-particle array: new index k holds old particle order(k).
+  template <class OrderView>
+  void permute(const OrderView& order, int n) {
+    gather_in_place<ExecSpace>(p_.x, scratch_vec_, order, n);
+    gather_in_place<ExecSpace>(p_.v, scratch_vec_, order, n);
+    gather_in_place<ExecSpace>(p_.f, scratch_vec_, order, n);
+    gather_in_place<ExecSpace>(x_ref_, scratch_vec_, order, n);
+    gather_in_place<ExecSpace>(p_.species, scratch_int_, order, n);
+    gather_in_place<ExecSpace>(p_.id, scratch_int_, order, n);
+    if constexpr (Traits::friction) {
+      gather_in_place<ExecSpace>(p_.omega, scratch_real_, order, n);
+      gather_in_place<ExecSpace>(p_.torque, scratch_real_, order, n);
+      gather_in_place<ExecSpace>(history_.partner, scratch_partner_, order, n);
+      gather_in_place<ExecSpace>(history_.spring, scratch_spring_, order, n);
+      gather_in_place<ExecSpace>(history_.wall_spring, scratch_vec_, order, n);
+    }
+  }
+
   void wrap_periodic() {
     const auto box = box_;
     const auto x = p_.x;
@@ -182,6 +250,21 @@ class DemSolver final : public Solver {
         "wrap_periodic", Policy(0, p_.n), KOKKOS_LAMBDA(const int i) {
           for (int d = 0; d < Dim; ++d) x(i, d) = box.wrap(d, x(i, d));
         });
+  }
+
+  void remove_escaped_now() {
+    if (int(keep_order_.extent(0)) < p_.capacity())
+      keep_order_ = Kokkos::View<int*, Mem>("keep_order", p_.capacity());
+    long per_face[2 * Dim];
+    const int kept = compact_escaped<Dim, Real, ExecSpace>(escape_.test, p_.x, p_.n,
+                                                           keep_order_, per_face);
+    if (kept == p_.n) return;
+    for (int d = 0; d < Dim; ++d) {
+      removed_.low[d] += per_face[2 * d];
+      removed_.high[d] += per_face[2 * d + 1];
+    }
+    permute(keep_order_, kept);
+    p_.n = kept;
   }
 
   SystemSetup setup_;
@@ -204,6 +287,13 @@ class DemSolver final : public Solver {
   decltype(history_.partner) scratch_partner_;
   decltype(history_.spring) scratch_spring_;
 
+  struct {
+    EscapeTest<Dim, Real> test;
+    bool check_any = false;
+  } escape_;
+  Kokkos::View<int*, Mem> keep_order_;
+  RemovalCounts removed_;
+  int next_id_ = 0;
   long steps_ = 0;
   long builds_ = 0;
 };
@@ -211,3 +301,5 @@ class DemSolver final : public Solver {
 }  // namespace granshock
 
 #include "dem_solver_diagnostics.hpp"
+#include "dem_solver_population.hpp"
+#include "dem_solver_state.hpp"

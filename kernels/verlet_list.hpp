@@ -6,6 +6,7 @@
 #pragma once
 
 #include <Kokkos_Core.hpp>
+#include <vector>
 
 #include "cell_grid.hpp"
 #include "domain.hpp"
@@ -22,6 +23,19 @@ class VerletList {
   Kokkos::View<int*, Mem> offsets;     // n + 1; neighbours of i: [offsets(i), offsets(i+1))
   Kokkos::View<int*, Mem> neighbours;  // particle indices
   int total = 0;
+
+  // Restores a list saved by a checkpoint.
+  void assign(const std::vector<int>& host_offsets, const std::vector<int>& host_neighbours) {
+    offsets = Kokkos::View<int*, Mem>("verlet_offsets", host_offsets.size() + 16);
+    neighbours = Kokkos::View<int*, Mem>("verlet_neighbours", host_neighbours.size() + 64);
+    auto o = Kokkos::create_mirror_view(offsets);
+    auto nb = Kokkos::create_mirror_view(neighbours);
+    for (std::size_t i = 0; i < host_offsets.size(); ++i) o(i) = host_offsets[i];
+    for (std::size_t k = 0; k < host_neighbours.size(); ++k) nb(k) = host_neighbours[k];
+    Kokkos::deep_copy(offsets, o);
+    Kokkos::deep_copy(neighbours, nb);
+    total = int(host_neighbours.size());
+  }
 
   // Particles must be sorted by cell: cell c holds indices [cell_start(c), cell_start(c+1)).
   template <class PositionView, class SpeciesView, class RadiusView, class StartView>

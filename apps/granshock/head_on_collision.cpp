@@ -9,6 +9,10 @@
 #include "solver.hpp"
 #include "user_error.hpp"
 
+namespace {
+constexpr double kDiameter = 1e-3;  // the paper's d
+}
+
 namespace granshock {
 
 namespace {
@@ -17,38 +21,39 @@ const std::vector<std::string> kPairs = {"steel-steel", "steel-aluminium",
                                          "aluminium-aluminium", "steel-wall",
                                          "aluminium-wall"};
 
-constexpr double kDiameter = 1e-3;              // the paper's d
-constexpr double kCylinderDiameter = 10 * kDiameter;
-
-int species_index(const std::string& name) { return name == "steel" ? 0 : 1; }
-
+// The collision's own small world: the scene's species, contacts and precision, an open
+// box, and (for wall impacts) a cylinder of the scene's obstacle material at the origin.
 struct Geometry {
   SystemSetup setup;
-  HostParticles particles;
+  double radius_a = 0, radius_b = 0, cylinder_radius = 0;
   bool wall = false;
 };
 
-Geometry build(const CollisionOptions& o) {
-  const auto dash = o.pair.find('-');
-  const std::string a = o.pair.substr(0, dash), b = o.pair.substr(dash + 1);
+Geometry build(const SystemSetup& scene, int a, int b, double dt) {
   Geometry g;
-  g.wall = b == "wall";
-  SystemSetup& s = g.setup;
-  s.species = {{"steel", steel(), kDiameter}, {"aluminium", aluminium(), kDiameter}};
-  s.contacts = ContactModel::uniform(2, o.restitution, 0.0);
-  s.contacts.limit_force = o.limit_force;
-  s.precision = o.precision;
-  s.box.lo = {-0.02, -0.02, 0};
-  s.box.hi = {0.02, 0.02, kDiameter};
-  if (g.wall) s.obstacle = CylinderObstacle{{0, 0, 0}, kCylinderDiameter, aluminium()};
+  g.wall = b < 0;
+  g.setup.species = scene.species;
+  g.setup.contacts = scene.contacts;
+  g.setup.precision = scene.precision;
+  g.setup.dt = dt;
+  const double dmax = scene.max_diameter();
+  g.radius_a = scene.species[a].radius_m();
+  g.radius_b = g.wall ? 0 : scene.species[b].radius_m();
+  g.cylinder_radius = 5 * dmax;
+  const double half = 20 * dmax;
+  g.setup.box.lo = {-half, -half, 0};
+  g.setup.box.hi = {half, half, dmax};
+  if (g.wall) {
+    const Material wall = scene.obstacle ? scene.obstacle->material : aluminium();
+    g.setup.obstacle = CylinderObstacle{{0, 0, 0}, 2 * g.cylinder_radius, wall};
+  }
   return g;
 }
 
 // Surface-to-surface distance along x between the colliding bodies (negative = overlap).
 double gap(const Geometry& g, const HostParticles& p) {
-  const double r = 0.5 * kDiameter;
-  if (g.wall) return std::abs(p.position[0][0]) - r - 0.5 * kCylinderDiameter;
-  return std::abs(p.position[1][0] - p.position[0][0]) - 2 * r;
+  if (g.wall) return std::abs(p.position[0][0]) - g.radius_a - g.cylinder_radius;
+  return std::abs(p.position[1][0] - p.position[0][0]) - g.radius_a - g.radius_b;
 }
 
 // Relative normal velocity, positive when separating.
@@ -57,63 +62,51 @@ double separation_speed(const Geometry& g, const HostParticles& p) {
   return p.velocity[1][0] - p.velocity[0][0];
 }
 
+int paper_species(const std::string& name) { return name == "steel" ? 0 : 1; }
+
 }  // namespace
 
 std::vector<std::string> collision_pair_names() { return kPairs; }
 
-CollisionResult run_head_on_collision(const CollisionOptions& o) {
-  if (std::find(kPairs.begin(), kPairs.end(), o.pair) == kPairs.end())
-    throw UserError(fmt::format("--pair '{}' is not one of {}", o.pair, fmt::join(kPairs, ", ")));
-  if (!(o.speed_m_per_s > 0) || !std::isfinite(o.speed_m_per_s))
-    throw UserError(fmt::format("--speed {} must be a positive speed in m/s", o.speed_m_per_s));
-  if (!(o.restitution > 0 && o.restitution <= 1))
-    throw UserError(fmt::format("--e {} must be in (0, 1]", o.restitution));
-  if (o.dt < 0 || !std::isfinite(o.dt))
-    throw UserError(fmt::format("--dt {} must be a positive time step in s", o.dt));
-
-  Geometry g = build(o);
-  const auto dash = o.pair.find('-');
-  const int sa = species_index(o.pair.substr(0, dash));
-  const PairProperties props =
-      g.wall ? particle_wall(g.setup.species[sa], aluminium(), o.restitution, 0)
-             : particle_pair(g.setup.species[sa],
-                             g.setup.species[species_index(o.pair.substr(dash + 1))],
-                             o.restitution, 0);
+CollisionResult collide_species(const SystemSetup& scene, int a, int b, double speed, double dt,
+                                bool force) {
+  const PairProperties props = b < 0 ? particle_wall(scene.species[a],
+                                                     scene.obstacle ? scene.obstacle->material : aluminium(),
+                                                     scene.contacts.wall_restitution[a],
+                                                     scene.contacts.wall_friction[a])
+                                     : scene.pair(a, b);
   CollisionResult r;
-  r.pair = o.pair;
-  r.speed = o.speed_m_per_s;
-  r.e_in = o.restitution;
-  r.limit_force = o.limit_force;
-  r.t_c = hertz_collision_time(props, o.speed_m_per_s);
-  r.dt = o.dt > 0 ? o.dt : r.t_c / 100.0;
-  r.time_step = assess_time_step({props}, o.speed_m_per_s, r.dt, false);
-  if (r.time_step.verdict == TimeStepAssessment::Verdict::refuse && !o.force)
+  r.pair = props.name;
+  r.speed = speed;
+  r.e_in = props.restitution;
+  r.limit_force = scene.contacts.limit_force;
+  r.t_c = hertz_collision_time(props, speed);
+  r.dt = dt > 0 ? dt : r.t_c / 100.0;
+  r.time_step = assess_time_step({props}, speed, r.dt, scene.contacts.has_friction());
+  if (r.time_step.verdict == TimeStepAssessment::Verdict::refuse && !force)
     throw UserError(r.time_step.message);
-  g.setup.dt = r.dt;
+  Geometry g = build(scene, a, b, r.dt);
 
   // Start a few steps before contact, in the zero-momentum frame for two particles.
-  const double radius = 0.5 * kDiameter;
-  const double gap0 = 5.0 * o.speed_m_per_s * r.dt;
+  HostParticles start;
+  const double gap0 = 5.0 * speed * r.dt;
   if (g.wall) {
-    g.particles.add({-(0.5 * kCylinderDiameter + radius + gap0), 0, 0}, {o.speed_m_per_s, 0, 0},
-                    sa, 0);
+    start.add({-(g.cylinder_radius + g.radius_a + gap0), 0, 0}, {speed, 0, 0}, a, 0);
   } else {
-    const int sb = species_index(o.pair.substr(dash + 1));
-    const double ma = g.setup.species[sa].mass_kg(), mb = g.setup.species[sb].mass_kg();
-    const double half = radius + 0.5 * gap0;
-    g.particles.add({-half, 0, 0}, {o.speed_m_per_s * mb / (ma + mb), 0, 0}, sa, 0);
-    g.particles.add({half, 0, 0}, {-o.speed_m_per_s * ma / (ma + mb), 0, 0}, sb, 1);
+    const double ma = scene.species[a].mass_kg(), mb = scene.species[b].mass_kg();
+    start.add({-(g.radius_a + 0.5 * gap0), 0, 0}, {speed * mb / (ma + mb), 0, 0}, a, 0);
+    start.add({g.radius_b + 0.5 * gap0, 0, 0}, {-speed * ma / (ma + mb), 0, 0}, b, 1);
   }
-  auto solver = make_solver(g.setup, g.particles.size());
-  solver->set_particles(g.particles);
+  auto solver = make_solver(g.setup, start.size());
+  solver->set_particles(start);
   r.variant = solver->variant();
 
   // Step until the bodies have touched and parted. Contact start and end times come
   // from linear interpolation of the gap between the steps around each zero crossing.
-  const double v_before = separation_speed(g, g.particles);
-  double prev_gap = gap(g, g.particles), t_start = -1, t_end = -1;
+  const double v_before = separation_speed(g, start);
+  double prev_gap = gap(g, start), t_start = -1, t_end = -1;
   const long max_steps = long(20.0 * r.t_c / r.dt) + 1000;
-  HostParticles p = g.particles;
+  HostParticles p = start;
   for (long step = 1; step <= max_steps && t_end < 0; ++step) {
     solver->advance(1);
     p = solver->particles();
@@ -127,9 +120,35 @@ CollisionResult run_head_on_collision(const CollisionOptions& o) {
   }
   if (t_start < 0 || t_end < 0)
     throw UserError(fmt::format("the {} collision did not complete within {} steps (dt = {:g} s)",
-                                o.pair, max_steps, r.dt));
+                                r.pair, max_steps, r.dt));
   r.t_contact = t_end - t_start;
   r.e_eff = separation_speed(g, p) / -v_before;
+  return r;
+}
+
+CollisionResult run_head_on_collision(const CollisionOptions& o) {
+  if (std::find(kPairs.begin(), kPairs.end(), o.pair) == kPairs.end())
+    throw UserError(fmt::format("--pair '{}' is not one of {}", o.pair, fmt::join(kPairs, ", ")));
+  if (!(o.speed_m_per_s > 0) || !std::isfinite(o.speed_m_per_s))
+    throw UserError(fmt::format("--speed {} must be a positive speed in m/s", o.speed_m_per_s));
+  if (!(o.restitution > 0 && o.restitution <= 1))
+    throw UserError(fmt::format("--e {} must be in (0, 1]", o.restitution));
+  if (o.dt < 0 || !std::isfinite(o.dt))
+    throw UserError(fmt::format("--dt {} must be a positive time step in s", o.dt));
+
+  // The paper's materials, d = 1 mm, and an aluminium cylinder.
+  SystemSetup paper;
+  paper.species = {{"steel", steel(), kDiameter}, {"aluminium", aluminium(), kDiameter}};
+  paper.contacts = ContactModel::uniform(2, o.restitution, 0.0);
+  paper.contacts.limit_force = o.limit_force;
+  paper.precision = o.precision;
+  paper.obstacle = CylinderObstacle{{0, 0, 0}, 10 * kDiameter, aluminium()};
+  const auto dash = o.pair.find('-');
+  const std::string second = o.pair.substr(dash + 1);
+  CollisionResult r = collide_species(paper, paper_species(o.pair.substr(0, dash)),
+                                      second == "wall" ? -1 : paper_species(second),
+                                      o.speed_m_per_s, o.dt, o.force);
+  r.pair = o.pair;
   return r;
 }
 

@@ -41,6 +41,10 @@ std::vector<std::string> collision_pair_names();
 // Throws UserError for an unknown pair, a non-positive speed or dt, e outside (0, 1],
 // or a time step past the stable limit without `force`.
 CollisionResult run_head_on_collision(const CollisionOptions& options);
+// The same experiment for species a against species b of any setup, or against its
+// obstacle (b = -1), with that setup's contact parameters; dt = 0 picks t_c/100.
+CollisionResult collide_species(const SystemSetup& setup, int a, int b, double speed, double dt,
+                                bool force);
 std::string to_json(const CollisionResult& r);
 
 }  // namespace granshock

@@ -8,6 +8,7 @@
 #include "build_info.hpp"
 #include "head_on_collision.hpp"
 #include "kokkos_runtime.hpp"
+#include "run_command.hpp"
 #include "user_error.hpp"
 
 namespace {
@@ -29,6 +30,20 @@ void add_collide_command(CLI::App& app, granshock::CollisionOptions& o, std::str
   cmd->add_flag("--force", o.force, "run even when dt is past the stable limit");
 }
 
+void add_run_command(CLI::App& app, granshock::RunOptions& o) {
+  auto* cmd = app.add_subcommand("run", "simulate a bow-shock scene and write its run directory");
+  cmd->add_option("scene", o.scene_file, "scene file (TOML)")->required()->check(CLI::ExistingFile);
+  cmd->add_option("--out", o.out_dir, "run directory (default: runs/<scene name>)");
+  cmd->add_option("--set", o.overrides, "override a scene key, e.g. --set inflow.mach=13.7 (repeatable)");
+  cmd->add_flag("--overwrite", o.overwrite, "replace an existing run directory");
+  cmd->add_flag("--resume", o.resume, "continue the run in --out from its last checkpoint");
+  cmd->add_flag("--force", o.force, "run even when dt is past the stable limit");
+  cmd->add_option("--stop-after-steps", o.stop_after_steps,
+                  "write a checkpoint and stop after this many steps (for batch-job time limits)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_flag("--quiet", o.quiet, "no progress lines");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -38,6 +53,8 @@ int main(int argc, char** argv) {
   granshock::CollisionOptions collide;
   std::string precision = "double";
   add_collide_command(app, collide, precision);
+  granshock::RunOptions run;
+  add_run_command(app, run);
   auto* info = app.add_subcommand("info", "version, Kokkos backends and threads, build options");
 
   // Kokkos takes its own --kokkos-* arguments; CLI11 sees the rest.
@@ -48,6 +65,10 @@ int main(int argc, char** argv) {
     return app.exit(e);
   }
   try {
+    if (app.got_subcommand("run")) {
+      if (run.overwrite && run.resume) throw granshock::UserError("--overwrite and --resume exclude each other");
+      return granshock::run_scene(run);
+    }
     if (info->parsed()) {
       std::cout << granshock::build_info_json() << "\n";
     } else if (app.got_subcommand("collide")) {

@@ -1,0 +1,60 @@
+#include "inflow.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace granshock {
+
+InflowController::InflowController(const Scene& scene) : scene_(scene) {
+  const InflowSpec& in = scene.inflow;
+  period_steps_ = std::max(1L, long(std::llround(in.strip_m / in.speed_m_per_s / scene.setup.dt)));
+  // The strip length actually swept between batches (the period is a whole number of
+  // steps), so the rate n_inf U W is met exactly.
+  const double swept = period_steps_ * scene.setup.dt * in.speed_m_per_s;
+  double mean_disk_area = 0;
+  for (std::size_t a = 0; a < scene.setup.species.size(); ++a)
+    mean_disk_area += in.number_fraction[a] * M_PI * std::pow(scene.setup.species[a].diameter_m, 2) / 4;
+  per_batch_ = in.area_fraction * scene.setup.box.length(0) * swept / mean_disk_area;
+}
+
+int InflowController::insert_batch(Solver& solver, double y_lo, double y_hi, double expected) {
+  const double wanted = expected + carry_;
+  InsertionRequest rq;
+  rq.x_range = {scene_.setup.box.lo[0], scene_.setup.box.hi[0]};
+  rq.y_range = {y_lo, y_hi};
+  rq.count = int(std::floor(wanted));
+  rq.number_fraction = scene_.inflow.number_fraction;
+  rq.mean_velocity = {0, scene_.inflow.speed_m_per_s};
+  rq.sigma_m_per_s = scene_.inflow.sigma;
+  rq.seed = scene_.run.seed;
+  rq.event = events_++;
+  rq.inserted_before = inserted_;
+  const int placed = solver.insert(rq);
+  inserted_ += placed;
+  carry_ = wanted - placed;
+  return placed;
+}
+
+void InflowController::prefill(Solver& solver) {
+  const double strip = scene_.inflow.strip_m;
+  const double length = scene_.setup.box.length(1);
+  const double per_length = per_batch_ / (period_steps_ * scene_.setup.dt * scene_.inflow.speed_m_per_s);
+  for (double y = strip; y < length; y += strip) {
+    const double top = std::min(y + strip, length);
+    insert_batch(solver, y, top, per_length * (top - y));
+  }
+  carry_ = 0;  // what the obstacle's area displaced is not owed to the inflow
+}
+
+void InflowController::insert_if_due(Solver& solver, long step) {
+  if (step % period_steps_ != 0) return;
+  insert_batch(solver, 0.0, scene_.inflow.strip_m, per_batch_);
+}
+
+void InflowController::restore(std::uint64_t events, long inserted, double carry) {
+  events_ = events;
+  inserted_ = inserted;
+  carry_ = carry;
+}
+
+}  // namespace granshock

@@ -1,0 +1,48 @@
+// The inflow of a bow-shock scene (DESIGN.md 2.2): particles enter through the strip
+// y in [0, strip] at the upstream state (phi_inf, U, sigma, number fractions).
+//
+// Every strip/U seconds a batch of n_inf W strip particles is placed uniformly in the
+// strip: the batch before has moved one strip length downstream by then, so the batches
+// tile the flow and the density downstream of the strip is n_inf (the strip itself holds
+// the batch that is just entering). The fractional remainder, and any particle that
+// found no room, is carried to the next batch, so the mean rate is exact.
+#pragma once
+
+#include <cstdint>
+
+#include "scene.hpp"
+#include "solver.hpp"
+
+namespace granshock {
+
+class InflowController {
+ public:
+  explicit InflowController(const Scene& scene);
+
+  long period_steps() const { return period_steps_; }
+  double particles_per_batch() const { return per_batch_; }
+
+  // Fills the domain downstream of the strip with the upstream state, batch by batch,
+  // so the flow starts developed instead of waiting one transit time.
+  void prefill(Solver& solver);
+  // Inserts a batch when `step` is an insertion step.
+  void insert_if_due(Solver& solver, long step);
+
+  // State carried by checkpoints.
+  std::uint64_t events() const { return events_; }
+  long inserted() const { return inserted_; }
+  double carry() const { return carry_; }
+  void restore(std::uint64_t events, long inserted, double carry);
+
+ private:
+  int insert_batch(Solver& solver, double y_lo, double y_hi, double expected);
+
+  const Scene& scene_;
+  long period_steps_ = 1;
+  double per_batch_ = 0;      // expected particles per batch
+  std::uint64_t events_ = 0;  // batches drawn so far: the RNG stream of the next one
+  long inserted_ = 0;
+  double carry_ = 0;
+};
+
+}  // namespace granshock

@@ -1,0 +1,48 @@
+#include "progress_meter.hpp"
+
+#include <cmath>
+
+namespace granshock {
+
+ProgressMeter::ProgressMeter(long first_step, long total_steps, double interval_s, std::FILE* out)
+    : first_step_(first_step),
+      total_steps_(total_steps),
+      interval_s_(interval_s),
+      out_(out),
+      start_(Clock::now()),
+      last_(start_),
+      last_step_(first_step) {}
+
+double ProgressMeter::elapsed_s() const {
+  return std::chrono::duration<double>(Clock::now() - start_).count();
+}
+
+bool ProgressMeter::due() const {
+  return std::chrono::duration<double>(Clock::now() - last_).count() >= interval_s_;
+}
+
+long ProgressMeter::steps_per(double seconds, long fallback) const {
+  return step_rate_ > 0 ? std::max(1L, long(step_rate_ * seconds)) : fallback;
+}
+
+void ProgressMeter::report(long step, double time_s, long particles, long contacts,
+                           double particle_steps) {
+  const auto now = Clock::now();
+  const double elapsed = std::chrono::duration<double>(now - start_).count();
+  const double since = std::chrono::duration<double>(now - last_).count();
+  if (since > 0) step_rate_ = double(step - last_step_) / since;
+  last_ = now;
+  last_step_ = step;
+  const double overall = elapsed > 0 ? double(step - first_step_) / elapsed : 0;
+  const double eta = overall > 0 ? double(total_steps_ - step) / overall : 0;
+  const int eta_s = int(std::lround(eta));
+  std::fprintf(out_,
+               "step %ld/%ld (%.1f%%)  t = %.4f s  particles %ld  contacts %ld  "
+               "%.3g particle-steps/s  ETA %d:%02d:%02d\n",
+               step, total_steps_, 100.0 * step / std::max(1L, total_steps_), time_s, particles,
+               contacts, elapsed > 0 ? particle_steps / elapsed : 0.0, eta_s / 3600,
+               eta_s / 60 % 60, eta_s % 60);
+  std::fflush(out_);
+}
+
+}  // namespace granshock

@@ -1,0 +1,303 @@
+#include "run_command.hpp"
+
+#include <Kokkos_Core.hpp>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <csignal>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "atomic_file.hpp"
+#include "checkpoint_file.hpp"
+#include "head_on_collision.hpp"
+#include "inflow.hpp"
+#include "progress_meter.hpp"
+#include "run_directory.hpp"
+#include "run_file.hpp"
+#include "scene_file.hpp"
+#include "solver.hpp"
+#include "user_error.hpp"
+#include "xdmf_writer.hpp"
+
+namespace granshock {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+volatile std::sig_atomic_t g_signal = 0;
+extern "C" void on_signal(int sig) { g_signal = sig; }
+
+// Mixture granular temperature of the whole domain (DESIGN.md 2.3 applied to all
+// particles at once): T_a = m_a <|c - u|^2> / Dim about the mass-averaged velocity u,
+// T = sum_a xi_a T_a.
+double mixture_temperature(const Scene& s, const std::vector<SpeciesMoments>& mom) {
+  const int dim = s.setup.dim;
+  double mass = 0, count = 0;
+  std::array<double, 3> momentum{0, 0, 0};
+  for (std::size_t a = 0; a < mom.size(); ++a) {
+    const double m = s.setup.species[a].mass_kg();
+    mass += m * mom[a].count;
+    count += mom[a].count;
+    for (int c = 0; c < dim; ++c) momentum[c] += m * mom[a].velocity_sum[c];
+  }
+  if (count == 0) return 0;
+  double t = 0;
+  for (std::size_t a = 0; a < mom.size(); ++a) {
+    if (mom[a].count == 0) continue;
+    const double m = s.setup.species[a].mass_kg();
+    double fluct = mom[a].speed_squared_sum;  // sum |c - u|^2 = sum c^2 - 2 u.sum c + N u^2
+    for (int c = 0; c < dim; ++c) {
+      const double u = momentum[c] / mass;
+      fluct += -2 * u * mom[a].velocity_sum[c] + mom[a].count * u * u;
+    }
+    t += (mom[a].count / count) * m * fluct / (dim * mom[a].count);
+  }
+  return t;
+}
+
+struct Schedule {
+  long every;
+  bool due(long step) const { return every > 0 && step % every == 0; }
+  long next_after(long step) const { return (step / every + 1) * every; }
+};
+
+Schedule every_seconds(double interval, double dt) {
+  return {std::max(1L, long(std::llround(interval / dt)))};
+}
+
+class BowShockRun {
+ public:
+  BowShockRun(const RunOptions& o, LoadedScene loaded)
+      : options_(o), loaded_(std::move(loaded)), scene_(loaded_.scene), inflow_(scene_) {}
+
+  int execute();
+
+ private:
+  void start_fresh();
+  void resume();
+  void actions_at(long step);
+  void write_series_row(long step);
+  void write_snapshot(long step);
+  void write_checkpoint_now();
+  void finish(bool completed);
+  nlohmann::json restitution_at_dt() const;
+
+  const RunOptions& options_;
+  LoadedScene loaded_;
+  const Scene& scene_;
+  fs::path dir_;
+  InflowController inflow_;
+  std::unique_ptr<Solver> solver_;
+  std::optional<RunFile> run_file_;
+  Schedule series_{1}, snapshots_{1}, checkpoints_{1};
+  long total_steps_ = 0, first_step_ = 0;
+  double wall_before_ = 0;  // wall seconds of earlier legs (resumed runs)
+  double particle_steps_ = 0;  // particle-steps of this leg
+  long last_checkpoint_step_ = -1;
+  std::optional<ProgressMeter> meter_;
+};
+
+int BowShockRun::execute() {
+  dir_ = options_.out_dir.empty() ? fs::path("runs") / scene_.name : options_.out_dir;
+  const TimeStepAssessment guard = scene_.assess_time_step();
+  if (guard.verdict == TimeStepAssessment::Verdict::refuse && !options_.force)
+    throw UserError(guard.message);
+  const DirectoryMode mode = options_.resume ? DirectoryMode::resume
+                             : options_.overwrite ? DirectoryMode::overwrite
+                                                  : DirectoryMode::create;
+  check_run_directory(dir_, mode);
+  if (guard.verdict != TimeStepAssessment::Verdict::ok)
+    std::cerr << "granshock: warning: " << guard.message << "\n";
+
+  total_steps_ = scene_.total_steps();
+  series_ = every_seconds(scene_.run.series_interval_s, scene_.setup.dt);
+  snapshots_ = every_seconds(scene_.run.snapshot_interval_s, scene_.setup.dt);
+  checkpoints_ = every_seconds(scene_.run.checkpoint_interval_s, scene_.setup.dt);
+  solver_ = make_solver(scene_.setup, scene_.capacity_estimate());
+
+  if (options_.resume) {
+    resume();
+  } else {
+    prepare_run_directory(dir_, mode);
+    start_fresh();
+  }
+  first_step_ = solver_->steps_done();
+  meter_.emplace(first_step_, total_steps_, scene_.run.progress_interval_s);
+
+  std::signal(SIGINT, on_signal);
+  std::signal(SIGTERM, on_signal);
+  long step = first_step_;
+  while (step < total_steps_) {
+    // Advance to the next event (insertion, output) or a slice of about 0.25 s of wall
+    // time, so that progress and signals are answered promptly.
+    long next = std::min(total_steps_, step + meter_->steps_per(0.25, 50));
+    next = std::min(next, (step / inflow_.period_steps() + 1) * inflow_.period_steps());
+    for (const Schedule* s : {&series_, &snapshots_, &checkpoints_}) next = std::min(next, s->next_after(step));
+    if (options_.stop_after_steps > 0) next = std::min(next, first_step_ + options_.stop_after_steps);
+    particle_steps_ += double(solver_->size()) * double(next - step);
+    solver_->advance(next - step);
+    step = next;
+    actions_at(step);
+    if (meter_->due() && !options_.quiet)
+      meter_->report(step, step * scene_.setup.dt, long(solver_->size()), solver_->diagnostics().contacts, particle_steps_);
+    if (g_signal != 0) {
+      write_checkpoint_now();
+      finish(false);
+      std::cerr << fmt::format("granshock: interrupted at step {}; checkpoint written, continue with --resume\n", step);
+      return 128 + int(g_signal);
+    }
+    if (options_.stop_after_steps > 0 && step >= first_step_ + options_.stop_after_steps && step < total_steps_) {
+      write_checkpoint_now();
+      finish(false);
+      std::cerr << fmt::format("granshock: stopped after {} steps at step {}; continue with --resume\n",
+                               options_.stop_after_steps, step);
+      return 0;
+    }
+  }
+  finish(true);
+  return 0;
+}
+
+void BowShockRun::start_fresh() {
+  run_file_.emplace(RunFile::create(dir_ / "run.h5", loaded_.as_given, loaded_.resolved, scene_.setup.dim));
+  solver_->set_particles(HostParticles{});
+  inflow_.prefill(*solver_);
+  actions_at(0);
+}
+
+void BowShockRun::resume() {
+  CheckpointExtras extras;
+  const SolverState state = read_checkpoint(dir_ / "checkpoint.h5", extras);
+  if (extras.scene_resolved != loaded_.resolved)
+    throw UserError(fmt::format("--resume: the scene differs from the one '{}' was run with; "
+                                "resume with the same scene file and --set options", dir_.string()));
+  solver_->import_state(state);
+  inflow_.restore(extras.rng_counter, extras.inserted, extras.insertion_carry);
+  wall_before_ = extras.wall_seconds_so_far;
+  last_checkpoint_step_ = state.step;
+  run_file_.emplace(RunFile::open_for_resume(dir_ / "run.h5", state.step));
+}
+
+// Everything that happens at a step boundary, in a fixed order (a checkpoint at step s
+// is taken after the insertion and outputs of step s, and a resumed run starts after them).
+void BowShockRun::actions_at(long step) {
+  inflow_.insert_if_due(*solver_, step);
+  if (series_.due(step) || step == total_steps_) write_series_row(step);
+  if (snapshots_.due(step) || step == total_steps_) write_snapshot(step);
+  if (checkpoints_.due(step) || step == total_steps_) write_checkpoint_now();
+}
+
+void BowShockRun::write_series_row(long step) {
+  const Diagnostics d = solver_->diagnostics();
+  const RemovalCounts removed = solver_->removed();
+  TimeSeriesRow row;
+  row.step = step;
+  row.time = step * scene_.setup.dt;
+  row.particles = long(solver_->size());
+  row.kinetic_energy = d.kinetic_energy + d.rotational_energy;
+  row.temperature = mixture_temperature(scene_, solver_->species_moments());
+  row.contacts = d.contacts;
+  row.inserted = inflow_.inserted();
+  row.deleted_outlet = removed.high[1];
+  row.deleted_inlet = removed.low[1];
+  run_file_->append_time_series(row);
+}
+
+void BowShockRun::write_snapshot(long step) {
+  run_file_->append_snapshot(step, step * scene_.setup.dt, solver_->particles());
+  write_particles_xdmf(dir_ / "run.xmf", "run.h5", run_file_->frames(), run_file_->dim(),
+                       run_file_->particle_capacity());
+}
+
+void BowShockRun::write_checkpoint_now() {
+  const long step = solver_->steps_done();
+  if (step == last_checkpoint_step_) return;
+  CheckpointExtras extras;
+  extras.rng_counter = inflow_.events();
+  extras.inserted = inflow_.inserted();
+  const RemovalCounts removed = solver_->removed();
+  extras.deleted_outlet = removed.high[1];
+  extras.deleted_inlet = removed.low[1];
+  extras.insertion_carry = inflow_.carry();
+  extras.wall_seconds_so_far = wall_before_ + (meter_ ? meter_->elapsed_s() : 0.0);
+  extras.scene_resolved = loaded_.resolved;
+  run_file_->flush();
+  write_checkpoint(dir_ / "checkpoint.h5", solver_->export_state(), extras);
+  last_checkpoint_step_ = step;
+}
+
+// The price of the run's time step on the contact law: e_eff of every pair, measured
+// with the same kernels at the run's dt, at the mean inflow speed and at the fastest
+// impact speed the time-step guard assumes.
+nlohmann::json BowShockRun::restitution_at_dt() const {
+  nlohmann::json out = nlohmann::json::object();
+  const int n = int(scene_.setup.species.size());
+  for (int a = 0; a < n; ++a) {
+    for (int b = scene_.setup.obstacle ? -1 : a; b < n; ++b) {
+      if (b >= 0 && b < a) continue;
+      nlohmann::json entry;
+      for (const auto& [label, speed] : {std::pair<const char*, double>{"at_inflow_speed", scene_.inflow.speed_m_per_s},
+                                        {"at_fastest_impact", scene_.fastest_impact_speed()}}) {
+        const CollisionResult r = collide_species(scene_.setup, a, b, speed, scene_.setup.dt, true);
+        entry[label] = {{"speed", speed}, {"e_eff", r.e_eff}, {"dt_over_tc", r.dt / r.t_c}};
+        entry["e_in"] = r.e_in;
+        out[r.pair] = entry;
+      }
+    }
+  }
+  return out;
+}
+
+void BowShockRun::finish(bool completed) {
+  run_file_->flush();
+  const double wall = wall_before_ + meter_->elapsed_s();
+  const long steps = solver_->steps_done();
+  const RemovalCounts removed = solver_->removed();
+  const TimeStepAssessment guard = scene_.assess_time_step();
+  nlohmann::json j;
+  j["scene"] = scene_.name;
+  j["completed"] = completed;
+  j["steps"] = steps;
+  j["simulated_time"] = steps * scene_.setup.dt;
+  j["wall_seconds"] = wall;
+  // Rate of this leg only (earlier legs of a resumed run are in wall_seconds).
+  const double leg_wall = meter_->elapsed_s();
+  j["particles_final"] = solver_->size();
+  j["inserted"] = inflow_.inserted();
+  j["deleted"] = removed.total();
+  j["deleted_outlet"] = removed.high[1];
+  j["deleted_inlet"] = removed.low[1];
+  j["dt"] = scene_.setup.dt;
+  j["t_c"] = guard.t_c;
+  j["dt_over_tc"] = guard.dt_over_tc();
+  j["impact_speed_for_t_c"] = guard.impact_speed;
+  j["stiffest_pair"] = guard.stiffest_pair;
+  j["inflow_sigma"] = scene_.inflow.sigma;
+  j["ma_inf_target"] = scene_.inflow.target_mach ? nlohmann::json(*scene_.inflow.target_mach) : nlohmann::json();
+  j["variant"] = solver_->variant();
+  j["backend"] = Kokkos::DefaultExecutionSpace::name();
+  j["threads"] = Kokkos::DefaultExecutionSpace().concurrency();
+  j["list_builds"] = solver_->list_builds();
+  j["particle_steps_per_second"] = leg_wall > 0 ? particle_steps_ / leg_wall : 0.0;
+  j["effective_restitution_at_dt"] = restitution_at_dt();
+  write_file_atomically(dir_ / "summary.json", j.dump(2) + "\n");
+  if (completed && !options_.quiet)
+    std::cout << fmt::format("granshock: {} done: {} steps, {:.4g} s simulated in {:.1f} s wall, {:.3g} particle-steps/s, "
+                             "{} particles at the end; results in {}\n",
+                             scene_.name, steps, steps * scene_.setup.dt, wall, j["particle_steps_per_second"].get<double>(),
+                             solver_->size(), dir_.string());
+}
+
+}  // namespace
+
+int run_scene(const RunOptions& o) {
+  LoadedScene loaded = load_scene_file(o.scene_file, o.overrides);
+  BowShockRun run(o, std::move(loaded));
+  return run.execute();
+}
+
+}  // namespace granshock

@@ -1,0 +1,26 @@
+// `granshock run SCENE.toml`: simulates a bow-shock scene and writes its run directory
+// (DESIGN.md section 3): run.h5 (+ run.xmf), checkpoint.h5 and summary.json.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace granshock {
+
+struct RunOptions {
+  std::filesystem::path scene_file;
+  std::filesystem::path out_dir;  // empty: runs/<scene name>
+  std::vector<std::string> overrides;
+  bool overwrite = false;
+  bool resume = false;
+  bool force = false;         // run past the stable time step
+  long stop_after_steps = 0;  // > 0: checkpoint and stop after this many steps (batch jobs)
+  bool quiet = false;         // no progress lines
+};
+
+// Returns the process exit code: 0 done (or stopped by --stop-after-steps), 130/143
+// interrupted by SIGINT/SIGTERM after writing a checkpoint. Throws UserError for bad input.
+int run_scene(const RunOptions& options);
+
+}  // namespace granshock

@@ -1,0 +1,57 @@
+#include "kinetic_theory.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "user_error.hpp"
+
+namespace granshock {
+
+double radial_distribution(double phi) { return (16.0 - 7.0 * phi) / (16.0 * (1 - phi) * (1 - phi)); }
+
+double radial_distribution_slope(double phi) {
+  return (25.0 - 7.0 * phi) / (16.0 * (1 - phi) * (1 - phi) * (1 - phi));
+}
+
+double pressure_factor(double phi, double e, int dim) {
+  return 1.0 + (dim - 1) * (1.0 + e) * phi * radial_distribution(phi);
+}
+
+double pressure_factor_slope(double phi, double e, int dim) {
+  return (dim - 1) * (1.0 + e) * (radial_distribution(phi) + phi * radial_distribution_slope(phi));
+}
+
+double sound_speed_factor(double phi, double e, int dim) {
+  const double f = pressure_factor(phi, e, dim);
+  return (1.0 + 2.0 / dim * f + phi / f * pressure_factor_slope(phi, e, dim)) * f;
+}
+
+double sound_speed(double temperature, double mass, double phi, double e, int dim) {
+  return std::sqrt(temperature / mass * sound_speed_factor(phi, e, dim));
+}
+
+MassDefinition parse_mass_definition(const std::string& name) {
+  if (name == "mixture_mean") return MassDefinition::mixture_mean;
+  if (name == "paper_sum") return MassDefinition::paper_sum;
+  throw UserError("mass definition '" + name + "' is not one of mixture_mean, paper_sum");
+}
+
+std::string to_string(MassDefinition m) {
+  return m == MassDefinition::mixture_mean ? "mixture_mean" : "paper_sum";
+}
+
+double sound_speed_mass(MassDefinition def, const std::vector<double>& masses,
+                        const std::vector<double>& xi) {
+  double m = 0;
+  for (std::size_t a = 0; a < masses.size(); ++a)
+    m += def == MassDefinition::paper_sum ? masses[a] : xi.at(a) * masses[a];
+  return m;
+}
+
+double sigma_for_mach(double mach, double speed, double phi, double e, int dim, double m_sound,
+                      double m_mean) {
+  const double a = speed / mach;
+  return a * std::sqrt(m_sound / (m_mean * sound_speed_factor(phi, e, dim)));
+}
+
+}  // namespace granshock

@@ -1,0 +1,54 @@
+#include "scene.hpp"
+
+#include <cmath>
+
+namespace granshock {
+
+long Scene::total_steps() const { return long(std::llround(run.duration_s / setup.dt)); }
+
+double Scene::fastest_impact_speed() const {
+  return 2.0 * (inflow.speed_m_per_s + 4.0 * inflow.sigma);
+}
+
+TimeStepAssessment Scene::assess_time_step() const {
+  return granshock::assess_time_step(setup.all_pairs(), fastest_impact_speed(), setup.dt,
+                                     setup.contacts.has_friction());
+}
+
+double Scene::mean_mass() const {
+  double m = 0;
+  for (std::size_t a = 0; a < setup.species.size(); ++a)
+    m += inflow.number_fraction[a] * setup.species[a].mass_kg();
+  return m;
+}
+
+double Scene::mean_restitution() const {
+  double e = 0;
+  const auto& xi = inflow.number_fraction;
+  for (std::size_t a = 0; a < xi.size(); ++a)
+    for (std::size_t b = 0; b < xi.size(); ++b) e += xi[a] * xi[b] * setup.contacts.restitution[a][b];
+  return e;
+}
+
+std::size_t Scene::capacity_estimate() const {
+  double disk = 0;
+  for (std::size_t a = 0; a < setup.species.size(); ++a)
+    disk += inflow.number_fraction[a] * M_PI * std::pow(setup.species[a].diameter_m, 2) / 4;
+  const double area = setup.box.length(0) * setup.box.length(1);
+  return std::size_t(1.5 * inflow.area_fraction * area / disk) + 1024;
+}
+
+void resolve_inflow(Scene& s) {
+  if (s.inflow.sigma_m_per_s) {
+    s.inflow.sigma = *s.inflow.sigma_m_per_s;
+    return;
+  }
+  std::vector<double> masses;
+  for (const auto& sp : s.setup.species) masses.push_back(sp.mass_kg());
+  const double m_sound = sound_speed_mass(s.mass_definition, masses, s.inflow.number_fraction);
+  s.inflow.sigma = sigma_for_mach(*s.inflow.target_mach, s.inflow.speed_m_per_s,
+                                  s.inflow.area_fraction, s.mean_restitution(), s.setup.dim,
+                                  m_sound, s.mean_mass());
+}
+
+}  // namespace granshock

@@ -1,0 +1,63 @@
+// A bow-shock scene (DESIGN.md 2.2): the physics (SystemSetup), the inflow, and how
+// long to run and what to write. Parsed from TOML by io/scene_file.hpp.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "kinetic_theory.hpp"
+#include "system_setup.hpp"
+#include "time_step_guard.hpp"
+
+namespace granshock {
+
+struct InflowSpec {
+  double area_fraction = 0.1;           // phi_inf, upstream
+  double speed_m_per_s = 1.0;           // U, along +y
+  std::optional<double> sigma_m_per_s;  // velocity fluctuation per component, or
+  std::optional<double> target_mach;    // the upstream Mach number it should give
+  double strip_m = 2e-3;                // insertion strip y in [0, strip]
+  std::vector<double> number_fraction;  // per species, sums to 1
+
+  double sigma = 0;  // the fluctuation used (given, or from target_mach)
+};
+
+struct RunControl {
+  double duration_s = 1.0;
+  double production_start_s = 0.5;      // fields average over [production_start, duration]
+  double snapshot_interval_s = 0.1;
+  double series_interval_s = 0.01;
+  double checkpoint_interval_s = 0.5;
+  double progress_interval_s = 2.0;     // wall clock
+  long sample_every = 100;              // steps between field samples
+  std::uint64_t seed = 1;
+};
+
+struct Scene {
+  std::string name;
+  double d_m = 1e-3;  // the length unit "d" of the scene file
+  SystemSetup setup;
+  InflowSpec inflow;
+  RunControl run;
+  MassDefinition mass_definition = MassDefinition::mixture_mean;
+  double bin_size_m = 3e-3;
+
+  long total_steps() const;
+  // The fastest relative normal impact the scene can produce: a particle at U + 4 sigma
+  // meeting one that rebounded from the obstacle at up to U + 4 sigma.
+  double fastest_impact_speed() const;
+  TimeStepAssessment assess_time_step() const;
+  // Particles expected in the domain: phi_inf over the area, plus a margin for the
+  // dense region in front of the obstacle; the solver's initial capacity.
+  std::size_t capacity_estimate() const;
+  // Mean particle mass and the restitution used in the sound speed.
+  double mean_mass() const;
+  double mean_restitution() const;
+};
+
+// Computes inflow.sigma from the given sigma or from target_mach (DESIGN.md 2.3).
+void resolve_inflow(Scene& scene);
+
+}  // namespace granshock

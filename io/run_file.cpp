@@ -1,0 +1,514 @@
+#include "run_file.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <stdexcept>
+#include <system_error>
+#include <utility>
+
+#include "hdf5_helpers.hpp"
+#include "user_error.hpp"
+
+#ifndef GRANSHOCK_IO_VERSION
+#define GRANSHOCK_IO_VERSION "unknown"
+#endif
+
+namespace granshock {
+
+namespace {
+
+namespace fs = std::filesystem;
+using h5::Handle;
+
+constexpr const char* kParticles = "/particles/all";
+constexpr const char* kObservables = "/observables";
+constexpr const char* kFileKind = "run";
+constexpr int kFormatVersion = 1;
+
+// Time-indexed 1-D datasets grow by this many entries per chunk (2 KiB of int64).
+constexpr hsize_t kSeriesChunk = 256;
+// Snapshot chunks hold one frame of this many particles: a frame is written (and read
+// by a viewer) as a whole, so chunks never span frames. 16384 particles x 2 doubles is
+// 256 KiB, large enough for fast sequential I/O.
+constexpr hsize_t kParticleChunk = 16384;
+// Snapshots are stored byte-shuffled and gzip level 1 (0 = uncompressed). Measured for
+// 100k particles in 2-D (random positions, thermal velocities; docs/output_format.md):
+// none 7 ms and 4.6 MB per snapshot, shuffle+gzip-1 130 ms and 3.0 MB. Compression also
+// keeps small runs small: a frame's last chunk is padded with fill values up to the
+// chunk size, 0.66 MB for a 1000-particle frame uncompressed, 0.04 MB compressed.
+constexpr unsigned kSnapshotDeflate = 1;
+
+constexpr double kFloatFill = std::numeric_limits<double>::quiet_NaN();
+constexpr int kIntFill = -1;
+
+std::string element_path(const std::string& group, const char* name) {
+  return group + "/" + name;
+}
+
+// Creates GROUP/{step,time,value} for a time-indexed quantity, H5MD style. `tail` is
+// the shape of one entry of value: {} for a scalar series, {0} for one scalar per
+// particle, {0, dim} for one vector per particle (0 = extendible particle dimension).
+void create_time_element(hid_t file, const std::string& group_path, hid_t stored_type,
+                         const std::vector<hsize_t>& tail, const void* fill, hid_t fill_type,
+                         const char* unit) {
+  Handle group = h5::require_group(file, group_path);
+  const bool per_particle = !tail.empty();
+
+  auto create_series = [&](const char* name, hid_t type) {
+    const hsize_t dims[1] = {0};
+    const hsize_t max_dims[1] = {H5S_UNLIMITED};
+    const hsize_t chunk[1] = {kSeriesChunk};
+    Handle space = h5::dataspace(H5Screate_simple(1, dims, max_dims), "creating a dataspace");
+    Handle props = h5::plist(H5Pcreate(H5P_DATASET_CREATE), "creating dataset properties");
+    h5::check(H5Pset_chunk(props.get(), 1, chunk), "setting the chunk shape");
+    return h5::dataset(H5Dcreate2(group.get(), name, type, space.get(), H5P_DEFAULT,
+                                  props.get(), H5P_DEFAULT),
+                       "creating '" + group_path + "/" + name + "'");
+  };
+  create_series("step", H5T_STD_I64LE);
+  Handle time = create_series("time", H5T_IEEE_F64LE);
+  h5::write_attribute(time.get(), "unit", "s");
+
+  std::vector<hsize_t> dims{0};
+  std::vector<hsize_t> max_dims{H5S_UNLIMITED};
+  std::vector<hsize_t> chunk{per_particle ? 1 : kSeriesChunk};
+  for (std::size_t i = 0; i < tail.size(); ++i) {
+    dims.push_back(tail[i]);
+    max_dims.push_back(i == 0 ? H5S_UNLIMITED : tail[i]);
+    chunk.push_back(i == 0 ? kParticleChunk : tail[i]);
+  }
+  Handle space = h5::dataspace(
+      H5Screate_simple(static_cast<int>(dims.size()), dims.data(), max_dims.data()),
+      "creating a dataspace");
+  Handle props = h5::plist(H5Pcreate(H5P_DATASET_CREATE), "creating dataset properties");
+  h5::check(H5Pset_chunk(props.get(), static_cast<int>(chunk.size()), chunk.data()),
+            "setting the chunk shape");
+  if (fill != nullptr) h5::check(H5Pset_fill_value(props.get(), fill_type, fill), "setting a fill value");
+  if (per_particle && kSnapshotDeflate > 0 && H5Zfilter_avail(H5Z_FILTER_DEFLATE) > 0) {
+    // Shuffling groups the bytes of equal significance (sign and exponent bytes of
+    // nearby values agree), which gzip then compresses: 3.0 instead of 3.4 MB.
+    h5::check(H5Pset_shuffle(props.get()), "enabling shuffle");
+    h5::check(H5Pset_deflate(props.get(), kSnapshotDeflate), "enabling gzip");
+  }
+  Handle value = h5::dataset(H5Dcreate2(group.get(), "value", stored_type, space.get(),
+                                        H5P_DEFAULT, props.get(), H5P_DEFAULT),
+                             "creating '" + group_path + "/value'");
+  if (unit != nullptr) h5::write_attribute(value.get(), "unit", unit);
+}
+
+// Grows `dataset` to `new_dims` and writes `data` (contiguous, `count` shaped) at `start`.
+void extend_and_write(hid_t dataset, const std::vector<hsize_t>& new_dims,
+                      const std::vector<hsize_t>& start, const std::vector<hsize_t>& count,
+                      hid_t memory_type, const void* data) {
+  h5::check(H5Dset_extent(dataset, new_dims.data()), "extending a dataset");
+  hsize_t elements = 1;
+  for (hsize_t c : count) elements *= c;
+  if (elements == 0) return;
+  Handle file_space = h5::dataspace(H5Dget_space(dataset), "reading a dataspace");
+  h5::check(H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start.data(), nullptr,
+                                count.data(), nullptr),
+            "selecting a hyperslab");
+  Handle memory_space = h5::dataspace(
+      H5Screate_simple(static_cast<int>(count.size()), count.data(), nullptr), "creating a dataspace");
+  h5::check(H5Dwrite(dataset, memory_type, memory_space.get(), file_space.get(), H5P_DEFAULT, data),
+            "writing a dataset");
+}
+
+// The number of entries in GROUP/step and the last step (or none).
+struct SeriesEnd {
+  hsize_t entries = 0;
+  bool any = false;
+  long last_step = 0;
+};
+
+SeriesEnd series_end(hid_t file, const std::string& group_path) {
+  Handle step = h5::open_dataset(file, group_path + "/step");
+  SeriesEnd end;
+  end.entries = h5::shape_of(step.get()).at(0);
+  if (end.entries == 0) return end;
+  Handle file_space = h5::dataspace(H5Dget_space(step.get()), "reading a dataspace");
+  const hsize_t start[1] = {end.entries - 1};
+  const hsize_t count[1] = {1};
+  h5::check(H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start, nullptr, count, nullptr),
+            "selecting the last step");
+  Handle memory_space = h5::dataspace(H5Screate_simple(1, count, nullptr), "creating a dataspace");
+  h5::check(H5Dread(step.get(), H5T_NATIVE_LONG, memory_space.get(), file_space.get(),
+                    H5P_DEFAULT, &end.last_step),
+            "reading the last step");
+  end.any = true;
+  return end;
+}
+
+void require_increasing(const SeriesEnd& end, long step, const std::string& what) {
+  if (end.any && step <= end.last_step) {
+    throw std::invalid_argument(what + " at step " + std::to_string(step) +
+                                " does not follow the last one, at step " +
+                                std::to_string(end.last_step));
+  }
+}
+
+// Appends (step, time) to GROUP/step and GROUP/time, entry `index`. Written after the
+// value: an entry counts as present once its step is there.
+void append_step_time(hid_t file, const std::string& group_path, hsize_t index, long step,
+                      double time) {
+  Handle time_set = h5::open_dataset(file, group_path + "/time");
+  extend_and_write(time_set.get(), {index + 1}, {index}, {1}, H5T_NATIVE_DOUBLE, &time);
+  Handle step_set = h5::open_dataset(file, group_path + "/step");
+  extend_and_write(step_set.get(), {index + 1}, {index}, {1}, H5T_NATIVE_LONG, &step);
+}
+
+// Appends one scalar entry to a time series group.
+template <class T>
+void append_scalar(hid_t file, const std::string& group_path, hsize_t index, long step,
+                   double time, T value) {
+  Handle value_set = h5::open_dataset(file, group_path + "/value");
+  extend_and_write(value_set.get(), {index + 1}, {index}, {1}, h5::TypeOf<T>::memory(), &value);
+  append_step_time(file, group_path, index, step, time);
+}
+
+// Collects the groups below the root that hold a "step" dataset: every time-indexed
+// quantity, including any added to the layout later.
+herr_t collect_step_groups(hid_t, const char* name, const H5L_info_t*, void* data) {
+  const std::string path(name);
+  const std::string suffix = "/step";
+  if (path.size() > suffix.size() &&
+      path.compare(path.size() - suffix.size(), suffix.size(), suffix) == 0) {
+    static_cast<std::vector<std::string>*>(data)->push_back(
+        "/" + path.substr(0, path.size() - suffix.size()));
+  }
+  return 0;
+}
+
+// Drops the entries of GROUP/{step,time,value} after checkpoint_step. Steps increase
+// along the series, so the kept entries are a prefix.
+void truncate_after(hid_t file, const std::string& group_path, long checkpoint_step) {
+  const std::vector<long> steps = h5::read_dataset<long>(file, group_path + "/step");
+  hsize_t keep = 0;
+  while (keep < steps.size() && steps[keep] <= checkpoint_step) ++keep;
+  for (const char* name : {"step", "time", "value"}) {
+    const std::string path = element_path(group_path, name);
+    if (!h5::exists(file, path)) continue;
+    Handle set = h5::open_dataset(file, path);
+    std::vector<hsize_t> dims = h5::shape_of(set.get());
+    if (dims.empty() || dims[0] <= keep) continue;
+    dims[0] = keep;
+    h5::check(H5Dset_extent(set.get(), dims.data()), "truncating '" + path + "'");
+  }
+}
+
+Handle open_existing(const fs::path& path, unsigned flags, const char* doing) {
+  h5::silence_error_printing();
+  std::error_code ec;
+  if (!fs::exists(path, ec)) {
+    throw UserError(std::string("cannot ") + doing + " '" + path.string() + "': no such file");
+  }
+  const hid_t id = H5Fopen(path.c_str(), flags, H5P_DEFAULT);
+  if (id < 0) {
+    throw UserError(std::string("cannot ") + doing + " '" + path.string() +
+                    "': " + h5::take_error_message());
+  }
+  Handle file(id, H5Fclose);
+  bool ours = false;
+  try {
+    ours = h5::has_attribute(file.get(), "granshock_file") &&
+           h5::read_string_attribute(file.get(), "granshock_file") == kFileKind &&
+           h5::exists(file.get(), kParticles);
+  } catch (const h5::Hdf5Error&) {
+    ours = false;
+  }
+  if (!ours) {
+    throw UserError(std::string("cannot ") + doing + " '" + path.string() +
+                    "': not a granshock run file");
+  }
+  return file;
+}
+
+int read_dim(hid_t file) {
+  Handle box = h5::open_group(file, std::string(kParticles) + "/box");
+  return h5::read_attribute<int>(box.get(), "dimension");
+}
+
+struct ObservableSpec {
+  const char* name;
+  bool integer;
+  const char* unit;
+};
+
+// The /observables series, one per TimeSeriesRow field (time_series.hpp).
+constexpr ObservableSpec kObservableSpecs[] = {
+    {"particles", true, nullptr},      {"kinetic_energy", false, "J"},
+    {"temperature", false, "J"},       {"contacts", true, nullptr},
+    {"inserted", true, nullptr},       {"deleted_outlet", true, nullptr},
+    {"deleted_inlet", true, nullptr},
+};
+
+// Opens the object at `path` (group or dataset) for attributes, creating a group when
+// nothing is there yet.
+Handle attribute_target(hid_t file, const std::string& path) {
+  if (path.empty() || path == "/" || !h5::exists(file, path)) return h5::require_group(file, path);
+  return h5::object(H5Oopen(file, path.c_str(), H5P_DEFAULT), "opening '" + path + "'");
+}
+
+Handle attribute_source(hid_t file, const std::string& path) {
+  const std::string where = path.empty() ? "/" : path;
+  return h5::object(H5Oopen(file, where.c_str(), H5P_DEFAULT), "opening '" + where + "'");
+}
+
+// The groups, header and empty time-indexed datasets of a new run file.
+void write_layout(hid_t f, const std::string& scene_toml_as_given,
+                  const std::string& scene_toml_resolved, int dim) {
+  h5::write_attribute(f, "granshock_file", kFileKind);
+  h5::write_attribute(f, "granshock_format_version", kFormatVersion);
+
+  Handle h5md = h5::require_group(f, "/h5md");
+  h5::write_attribute(h5md.get(), "version", std::vector<int>{1, 1});
+  Handle creator = h5::require_group(f, "/h5md/creator");
+  h5::write_attribute(creator.get(), "name", "granshock");
+  h5::write_attribute(creator.get(), "version", GRANSHOCK_IO_VERSION);
+  Handle author = h5::require_group(f, "/h5md/author");
+  h5::write_attribute(author.get(), "name", "granshock");
+
+  h5::write_string_dataset(f, "/scene/as_given", scene_toml_as_given);
+  h5::write_string_dataset(f, "/scene/resolved", scene_toml_resolved);
+
+  // H5MD requires a box; the domain itself (walls, inflow, obstacle) is in the scene.
+  Handle box = h5::require_group(f, std::string(kParticles) + "/box");
+  h5::write_attribute(box.get(), "dimension", dim);
+
+  const std::string all = kParticles;
+  const hsize_t d = static_cast<hsize_t>(dim);
+  create_time_element(f, all + "/position", H5T_IEEE_F64LE, {0, d}, &kFloatFill,
+                      H5T_NATIVE_DOUBLE, "m");
+  create_time_element(f, all + "/velocity", H5T_IEEE_F64LE, {0, d}, &kFloatFill,
+                      H5T_NATIVE_DOUBLE, "m s-1");
+  create_time_element(f, all + "/species", H5T_STD_I32LE, {0}, &kIntFill, H5T_NATIVE_INT, nullptr);
+  create_time_element(f, all + "/id", H5T_STD_I32LE, {0}, &kIntFill, H5T_NATIVE_INT, nullptr);
+  create_time_element(f, all + "/count", H5T_STD_I64LE, {}, nullptr, H5T_NATIVE_LONG, nullptr);
+
+  for (const ObservableSpec& spec : kObservableSpecs) {
+    create_time_element(f, std::string(kObservables) + "/" + spec.name,
+                        spec.integer ? H5T_STD_I64LE : H5T_IEEE_F64LE, {}, nullptr,
+                        H5T_NATIVE_DOUBLE, spec.unit);
+  }
+  h5::check(H5Fflush(f, H5F_SCOPE_GLOBAL), "flushing");
+}
+
+}  // namespace
+
+RunFile::RunFile(fs::path path, h5::Handle file, int dim)
+    : path_(std::move(path)), file_(std::move(file)), dim_(dim) {}
+
+RunFile RunFile::create(const fs::path& path, const std::string& scene_toml_as_given,
+                        const std::string& scene_toml_resolved, int dim) {
+  if (dim != 2 && dim != 3) throw std::invalid_argument("RunFile: dim must be 2 or 3");
+  h5::silence_error_printing();
+  const hid_t id = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  if (id < 0) {
+    throw UserError("cannot create '" + path.string() + "': " + h5::take_error_message());
+  }
+  Handle file(id, H5Fclose);
+  try {
+    h5::naming_file_in_errors(path, "creating", [&] {
+      write_layout(file.get(), scene_toml_as_given, scene_toml_resolved, dim);
+    });
+  } catch (...) {
+    // No half-made run file left behind.
+    file.close();
+    std::error_code ignored;
+    fs::remove(path, ignored);
+    throw;
+  }
+  return RunFile(path, std::move(file), dim);
+}
+
+RunFile RunFile::open_for_resume(const fs::path& path, long checkpoint_step) {
+  Handle file = open_existing(path, H5F_ACC_RDWR, "resume");
+  const int dim = h5::naming_file_in_errors(path, "resuming", [&] {
+    std::vector<std::string> groups;
+    h5::check(H5Lvisit(file.get(), H5_INDEX_NAME, H5_ITER_INC, collect_step_groups, &groups),
+              "listing the time series");
+    for (const std::string& group : groups) truncate_after(file.get(), group, checkpoint_step);
+    h5::check(H5Fflush(file.get(), H5F_SCOPE_GLOBAL), "flushing");
+    return read_dim(file.get());
+  });
+  return RunFile(path, std::move(file), dim);
+}
+
+RunFile RunFile::open_read_only(const fs::path& path) {
+  Handle file = open_existing(path, H5F_ACC_RDONLY, "read");
+  const int dim = h5::naming_file_in_errors(path, "reading", [&] { return read_dim(file.get()); });
+  return RunFile(path, std::move(file), dim);
+}
+
+void RunFile::append_snapshot(long step, double time, const HostParticles& p) {
+  const std::size_t n = p.size();
+  if (p.velocity.size() != n || p.species.size() != n || p.id.size() != n) {
+    throw std::invalid_argument("RunFile::append_snapshot: particle arrays differ in length");
+  }
+  h5::naming_file_in_errors(path_, "writing", [&] {
+    const hid_t f = file_.get();
+    const std::string all = kParticles;
+    const SeriesEnd end = series_end(f, all + "/count");
+    require_increasing(end, step, "snapshot");
+    const hsize_t frame = end.entries;
+    const hsize_t rows = static_cast<hsize_t>(n);
+    const hsize_t capacity = std::max(static_cast<hsize_t>(particle_capacity()), rows);
+    const hsize_t d = static_cast<hsize_t>(dim_);
+
+    // Quasi-2-D stores x, y only: copy the first dim components into one block.
+    std::vector<double> block(n * static_cast<std::size_t>(dim_));
+    auto write_vectors = [&](const char* name, const std::vector<std::array<double, 3>>& v) {
+      const std::size_t width = static_cast<std::size_t>(dim_);
+      for (std::size_t i = 0; i < n; ++i) {
+        for (std::size_t c = 0; c < width; ++c) block[i * width + c] = v[i][c];
+      }
+      const std::string group = all + "/" + name;
+      Handle set = h5::open_dataset(f, group + "/value");
+      extend_and_write(set.get(), {frame + 1, capacity, d}, {frame, 0, 0}, {1, rows, d},
+                       H5T_NATIVE_DOUBLE, block.data());
+      append_step_time(f, group, frame, step, time);
+    };
+    auto write_scalars = [&](const char* name, const std::vector<int>& v) {
+      const std::string group = all + "/" + name;
+      Handle set = h5::open_dataset(f, group + "/value");
+      extend_and_write(set.get(), {frame + 1, capacity}, {frame, 0}, {1, rows}, H5T_NATIVE_INT,
+                       v.data());
+      append_step_time(f, group, frame, step, time);
+    };
+    write_vectors("position", p.position);
+    write_vectors("velocity", p.velocity);
+    write_scalars("species", p.species);
+    write_scalars("id", p.id);
+    // count last: frames() lists a frame once all of its data is there.
+    append_scalar<long>(f, all + "/count", frame, step, time, static_cast<long>(n));
+  });
+}
+
+void RunFile::append_time_series(const TimeSeriesRow& row) {
+  h5::naming_file_in_errors(path_, "writing", [&] {
+    const hid_t f = file_.get();
+    const std::string root = kObservables;
+    const SeriesEnd end = series_end(f, root + "/particles");
+    require_increasing(end, row.step, "time-series row");
+    const hsize_t index = end.entries;
+    auto put_long = [&](const char* name, long value) {
+      append_scalar<long>(f, root + "/" + name, index, row.step, row.time, value);
+    };
+    auto put_double = [&](const char* name, double value) {
+      append_scalar<double>(f, root + "/" + name, index, row.step, row.time, value);
+    };
+    // "particles" last: its step marks the row as complete (series_end reads it).
+    put_double("kinetic_energy", row.kinetic_energy);
+    put_double("temperature", row.temperature);
+    put_long("contacts", row.contacts);
+    put_long("inserted", row.inserted);
+    put_long("deleted_outlet", row.deleted_outlet);
+    put_long("deleted_inlet", row.deleted_inlet);
+    put_long("particles", row.particles);
+  });
+}
+
+std::vector<SnapshotFrame> RunFile::frames() const {
+  return h5::naming_file_in_errors(path_, "reading", [&] {
+    const std::string count = std::string(kParticles) + "/count";
+    const std::vector<long> steps = h5::read_dataset<long>(file_.get(), count + "/step");
+    const std::vector<double> times = h5::read_dataset<double>(file_.get(), count + "/time");
+    const std::vector<long> counts = h5::read_dataset<long>(file_.get(), count + "/value");
+    std::vector<SnapshotFrame> result(std::min({steps.size(), times.size(), counts.size()}));
+    for (std::size_t i = 0; i < result.size(); ++i) result[i] = {steps[i], times[i], counts[i]};
+    return result;
+  });
+}
+
+long RunFile::particle_capacity() const {
+  return h5::naming_file_in_errors(path_, "reading", [&] {
+    Handle set = h5::open_dataset(file_.get(), std::string(kParticles) + "/position/value");
+    return static_cast<long>(h5::shape_of(set.get()).at(1));
+  });
+}
+
+std::string RunFile::scene_as_given() const {
+  return h5::naming_file_in_errors(path_, "reading", [&] {
+    return h5::read_string_dataset(file_.get(), "/scene/as_given");
+  });
+}
+
+std::string RunFile::scene_resolved() const {
+  return h5::naming_file_in_errors(path_, "reading", [&] {
+    return h5::read_string_dataset(file_.get(), "/scene/resolved");
+  });
+}
+
+void RunFile::write_attribute(const std::string& object, const std::string& name, double value) {
+  h5::naming_file_in_errors(path_, "writing", [&] {
+    h5::write_attribute(attribute_target(file_.get(), object).get(), name, value);
+  });
+}
+
+void RunFile::write_attribute(const std::string& object, const std::string& name, long value) {
+  h5::naming_file_in_errors(path_, "writing", [&] {
+    h5::write_attribute(attribute_target(file_.get(), object).get(), name, value);
+  });
+}
+
+void RunFile::write_attribute(const std::string& object, const std::string& name,
+                              const std::string& value) {
+  h5::naming_file_in_errors(path_, "writing", [&] {
+    h5::write_attribute(attribute_target(file_.get(), object).get(), name, value);
+  });
+}
+
+double RunFile::read_attribute_double(const std::string& object, const std::string& name) const {
+  return h5::naming_file_in_errors(path_, "reading", [&] {
+    return h5::read_attribute<double>(attribute_source(file_.get(), object).get(), name);
+  });
+}
+
+long RunFile::read_attribute_long(const std::string& object, const std::string& name) const {
+  return h5::naming_file_in_errors(path_, "reading", [&] {
+    return h5::read_attribute<long>(attribute_source(file_.get(), object).get(), name);
+  });
+}
+
+std::string RunFile::read_attribute_string(const std::string& object,
+                                           const std::string& name) const {
+  return h5::naming_file_in_errors(path_, "reading", [&] {
+    return h5::read_string_attribute(attribute_source(file_.get(), object).get(), name);
+  });
+}
+
+void RunFile::write_array(const std::string& dataset, const std::vector<double>& values,
+                          const std::vector<long>& shape) {
+  std::vector<hsize_t> dims;
+  std::size_t elements = 1;
+  for (long extent : shape) {
+    if (extent < 0) throw std::invalid_argument("RunFile::write_array: negative extent");
+    dims.push_back(static_cast<hsize_t>(extent));
+    elements *= static_cast<std::size_t>(extent);
+  }
+  if (elements != values.size()) {
+    throw std::invalid_argument("RunFile::write_array: shape does not match the value count");
+  }
+  h5::naming_file_in_errors(path_, "writing", [&] {
+    h5::write_dataset(file_.get(), dataset, values, dims);
+  });
+}
+
+std::vector<double> RunFile::read_array(const std::string& dataset, std::vector<long>* shape) const {
+  return h5::naming_file_in_errors(path_, "reading", [&] {
+    std::vector<hsize_t> dims;
+    std::vector<double> values = h5::read_dataset<double>(file_.get(), dataset, &dims);
+    if (shape != nullptr) shape->assign(dims.begin(), dims.end());
+    return values;
+  });
+}
+
+void RunFile::flush() {
+  h5::naming_file_in_errors(path_, "flushing", [&] {
+    h5::check(H5Fflush(file_.get(), H5F_SCOPE_GLOBAL), "H5Fflush");
+  });
+}
+
+}  // namespace granshock

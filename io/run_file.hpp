@@ -1,0 +1,84 @@
+// run.h5, the main output of `granshock run` (layout: docs/output_format.md): the scene,
+// H5MD-style particle snapshots and the time series. Everything time-indexed is
+// appended frame by frame and can be cut back to a checkpoint's step on resume, so a
+// resumed run continues the same file as if it had never stopped.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "hdf5_handle.hpp"
+#include "host_particles.hpp"
+#include "snapshot_frame.hpp"
+#include "time_series.hpp"
+
+namespace granshock {
+
+class RunFile {
+ public:
+  // Creates (or replaces) the file. dim is 2 (positions and velocities store x, y) or 3.
+  // Throws UserError naming the path when it cannot be created.
+  static RunFile create(const std::filesystem::path& path, const std::string& scene_toml_as_given,
+                        const std::string& scene_toml_resolved, int dim);
+
+  // Reopens an existing run file read-write and drops every time-indexed entry (snapshot
+  // frames, time-series rows) whose step is after checkpoint_step. Throws UserError when
+  // the file is missing or is not a granshock run file.
+  static RunFile open_for_resume(const std::filesystem::path& path, long checkpoint_step);
+
+  // Opens for reading only (granshock fields, tests).
+  static RunFile open_read_only(const std::filesystem::path& path);
+
+  RunFile(RunFile&&) noexcept = default;
+  RunFile& operator=(RunFile&&) noexcept = default;
+  RunFile(const RunFile&) = delete;
+  RunFile& operator=(const RunFile&) = delete;
+  ~RunFile() = default;  // the handle closes the file
+
+  // Appends one frame. Steps must increase from frame to frame (resume relies on it);
+  // throws std::invalid_argument otherwise or when p's arrays differ in length.
+  void append_snapshot(long step, double time, const HostParticles& p);
+
+  // Appends one row to every /observables series; the same rule on steps.
+  void append_time_series(const TimeSeriesRow& row);
+
+  // The frames written so far, in order.
+  std::vector<SnapshotFrame> frames() const;
+  // The particle extent of the snapshot datasets (>= every frame's count).
+  long particle_capacity() const;
+  int dim() const { return dim_; }
+  const std::filesystem::path& path() const { return path_; }
+
+  std::string scene_as_given() const;
+  std::string scene_resolved() const;
+
+  // Summary values and arrays (e.g. under "/summary", or the field accumulators under
+  // "/fields"). The object (a group) is created with its parents when missing; an
+  // existing attribute or array of that name is replaced.
+  void write_attribute(const std::string& object, const std::string& name, double value);
+  void write_attribute(const std::string& object, const std::string& name, long value);
+  void write_attribute(const std::string& object, const std::string& name,
+                       const std::string& value);
+  double read_attribute_double(const std::string& object, const std::string& name) const;
+  long read_attribute_long(const std::string& object, const std::string& name) const;
+  std::string read_attribute_string(const std::string& object, const std::string& name) const;
+
+  // A row-major array of the given shape (product of shape == values.size()).
+  void write_array(const std::string& dataset, const std::vector<double>& values,
+                   const std::vector<long>& shape);
+  std::vector<double> read_array(const std::string& dataset, std::vector<long>* shape = nullptr) const;
+
+  // Pushes buffered data to the file (H5Fflush), so that a crash loses at most what was
+  // appended since.
+  void flush();
+
+ private:
+  RunFile(std::filesystem::path path, h5::Handle file, int dim);
+
+  std::filesystem::path path_;
+  h5::Handle file_;
+  int dim_ = 2;
+};
+
+}  // namespace granshock

@@ -1,0 +1,29 @@
+// Scene files (TOML) for `granshock run`: parsing, `--set key=value` overrides, and
+// validation. Every key is checked: an unknown, missing, mistyped or out-of-range key
+// ends in a UserError naming the key, the value and what is accepted. The format is
+// documented in docs/scene_format.md.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "scene.hpp"
+
+namespace granshock {
+
+struct LoadedScene {
+  Scene scene;
+  std::string as_given;  // the file's text
+  std::string resolved;  // every key with its value in SI units, after overrides and defaults
+};
+
+LoadedScene load_scene_file(const std::filesystem::path& path,
+                            const std::vector<std::string>& overrides);
+LoadedScene parse_scene(const std::string& text, const std::vector<std::string>& overrides = {},
+                        const std::string& origin = "scene");
+
+// The canonical TOML of a scene (SI units); parse_scene of it gives the same scene.
+std::string scene_to_toml(const Scene& scene);
+
+}  // namespace granshock

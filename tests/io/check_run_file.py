@@ -1,0 +1,119 @@
+#!/usr/bin/python3
+"""Checks the run.h5 / checkpoint.h5 layout of docs/output_format.md as h5py sees it.
+
+Usage: check_run_file.py DIR   (DIR as written by write_sample_run: run.h5 in 2-D with
+frames of 5, 12, 0, 3 particles, run3d.h5 in 3-D with 4, 2, and checkpoint.h5)
+"""
+import os
+import sys
+
+import h5py
+import numpy as np
+
+failures = []
+
+
+def expect(condition, message):
+    if not condition:
+        failures.append(message)
+
+
+def text(value):
+    return value.decode() if isinstance(value, bytes) else str(value)
+
+
+def check_run(path, dim, counts):
+    frames, n_max = len(counts), max(counts)
+    with h5py.File(path, "r") as f:
+        expect(list(f["h5md"].attrs["version"]) == [1, 1], f"{path}: /h5md version")
+        expect(text(f["h5md/creator"].attrs["name"]) == "granshock", f"{path}: creator name")
+        expect("version" in f["h5md/creator"].attrs, f"{path}: creator version")
+        expect(text(f["h5md/author"].attrs["name"]) == "granshock", f"{path}: author name")
+        expect(text(f["scene/as_given"][()]).startswith("# as given"), f"{path}: scene as given")
+        expect(text(f["scene/resolved"][()]).startswith("# resolved"), f"{path}: scene resolved")
+        expect(int(f["particles/all/box"].attrs["dimension"]) == dim, f"{path}: box dimension")
+
+        all_ = f["particles/all"]
+        for name in ("position", "velocity"):
+            value = all_[name + "/value"]
+            expect(value.shape == (frames, n_max, dim), f"{path}: {name} shape {value.shape}")
+            expect(value.dtype == np.float64, f"{path}: {name} dtype {value.dtype}")
+            expect(value.maxshape == (None, None, dim), f"{path}: {name} maxshape {value.maxshape}")
+            expect(np.isnan(value.fillvalue), f"{path}: {name} fill value")
+            data = value[()]
+            for frame, n in enumerate(counts):
+                expect(not np.isnan(data[frame, :n]).any(), f"{path}: {name} frame {frame} has NaN")
+                expect(np.isnan(data[frame, n:]).all(), f"{path}: {name} frame {frame} not NaN past n")
+        for name in ("species", "id"):
+            value = all_[name + "/value"]
+            expect(value.shape == (frames, n_max), f"{path}: {name} shape {value.shape}")
+            expect(value.dtype == np.int32, f"{path}: {name} dtype {value.dtype}")
+            expect(value.fillvalue == -1, f"{path}: {name} fill value")
+            data = value[()]
+            for frame, n in enumerate(counts):
+                expect((data[frame, :n] >= 0).all(), f"{path}: {name} frame {frame} values")
+                expect((data[frame, n:] == -1).all(), f"{path}: {name} frame {frame} past n")
+        steps = [1000 * (i + 1) for i in range(frames)]
+        for name in ("position", "velocity", "species", "id", "count"):
+            expect(list(all_[name + "/step"][()]) == steps, f"{path}: {name}/step")
+            expect(np.allclose(all_[name + "/time"][()], [1e-3 * (i + 1) for i in range(frames)]),
+                   f"{path}: {name}/time")
+        expect(list(all_["count/value"][()]) == counts, f"{path}: count/value")
+        expect(text(all_["position/value"].attrs["unit"]) == "m", f"{path}: position unit")
+        expect(text(all_["velocity/value"].attrs["unit"]) == "m s-1", f"{path}: velocity unit")
+
+        names = ["particles", "kinetic_energy", "temperature", "contacts", "inserted",
+                 "deleted_outlet", "deleted_inlet"]
+        expect(sorted(f["observables"].keys()) == sorted(names), f"{path}: observables {list(f['observables'])}")
+        for name in names:
+            group = f["observables/" + name]
+            expect(group["value"].shape == (frames,), f"{path}: {name} shape")
+            expect(list(group["step"][()]) == steps, f"{path}: {name}/step")
+            expect(group["time"].shape == (frames,), f"{path}: {name}/time")
+        expect(list(f["observables/particles/value"][()]) == counts, f"{path}: particles values")
+        expect(f["observables/kinetic_energy/value"].dtype == np.float64, f"{path}: energy dtype")
+        expect(f["observables/contacts/value"].dtype == np.int64, f"{path}: contacts dtype")
+        expect(f["fields/bin_sums"].shape == (2, 3), f"{path}: fields/bin_sums")
+        expect(float(f["summary"].attrs["mach_measured"]) == 4.9, f"{path}: summary attribute")
+
+
+def check_checkpoint(path):
+    with h5py.File(path, "r") as f:
+        expect(text(f.attrs["granshock_file"]) == "checkpoint", f"{path}: granshock_file")
+        state = f["state"]
+        for name in ("dim", "step", "next_id", "history_slots", "list_builds"):
+            expect(name in state.attrs, f"{path}: /state@{name}")
+        shapes = {"position": (3, 2), "velocity": (3, 2), "force": (3, 2),
+                  "angular_velocity": (3,), "torque": (3,), "species": (3,), "id": (3,),
+                  "history_partner": (3, 2), "history_spring": (3, 2, 2),
+                  "history_wall_spring": (3, 2), "reference_position": (3, 2),
+                  "neighbour_offsets": (4,), "neighbours": (3,)}
+        for name, shape in shapes.items():
+            expect(state[name].shape == shape, f"{path}: /state/{name} shape {state[name].shape}")
+        expect(list(state.attrs["removed_high"]) == [0, 5, 0], f"{path}: /state@removed_high")
+        expect(list(state.attrs["removed_low"]) == [0, 2, 0], f"{path}: /state@removed_low")
+        run = f["run"]
+        for name in ("rng_counter", "inserted", "deleted_outlet", "deleted_inlet",
+                     "insertion_carry", "wall_seconds_so_far"):
+            expect(name in run.attrs, f"{path}: /run@{name}")
+        expect(run.attrs["rng_counter"].dtype == np.uint64, f"{path}: rng_counter dtype")
+        expect(list(run["bin_shape"][()]) == [2, 3], f"{path}: bin_shape")
+        expect(run["bin_sums"].shape == (6,), f"{path}: bin_sums")
+        expect(text(f["scene/resolved"][()]).startswith("# resolved"), f"{path}: scene")
+
+
+def main():
+    directory = sys.argv[1]
+    check_run(os.path.join(directory, "run.h5"), 2, [5, 12, 0, 3])
+    check_run(os.path.join(directory, "run3d.h5"), 3, [4, 2])
+    check_checkpoint(os.path.join(directory, "checkpoint.h5"))
+    for failure in failures:
+        print("FAIL:", failure)
+    if failures:
+        return 1
+    print("run.h5, run3d.h5 and checkpoint.h5 match docs/output_format.md")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,112 @@
+// Writes a small run directory (run.h5 + run.xmf in 2-D, run3d.h5 + run3d.xmf in 3-D,
+// checkpoint.h5) for the tests that inspect the layout with standard tools (h5dump,
+// h5py, an XML parser). With --bench N, times N-particle snapshots instead.
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <filesystem>
+#include <string>
+
+#include "checkpoint_file.hpp"
+#include "io_test_support.hpp"
+#include "run_file.hpp"
+#include "xdmf_writer.hpp"
+
+namespace {
+
+using namespace granshock;
+
+void write_run(const std::filesystem::path& dir, const std::string& name, int dim,
+               const std::vector<int>& counts) {
+  RunFile run = RunFile::create(dir / (name + ".h5"), "# as given\nmach = 5\n",
+                                "# resolved\nmach = 5.0\n", dim);
+  for (std::size_t f = 0; f < counts.size(); ++f) {
+    const long step = 1000 * static_cast<long>(f + 1);
+    run.append_snapshot(step, 1e-3 * static_cast<double>(f + 1), test::make_particles(counts[f], static_cast<int>(f)));
+    TimeSeriesRow row;
+    row.step = step;
+    row.time = 1e-3 * static_cast<double>(f + 1);
+    row.particles = counts[f];
+    row.kinetic_energy = 0.5 * counts[f];
+    row.temperature = 0.1 * counts[f];
+    row.contacts = 2L * counts[f];
+    row.inserted = counts[f];
+    run.append_time_series(row);
+  }
+  run.write_attribute("/summary", "mach_measured", 4.9);
+  run.write_array("/fields/bin_sums", {1, 2, 3, 4, 5, 6}, {2, 3});
+  write_particles_xdmf(dir / (name + ".xmf"), name + ".h5", run.frames(), run.dim(),
+                       run.particle_capacity());
+}
+
+void write_sample_checkpoint(const std::filesystem::path& dir) {
+  SolverState s;
+  s.dim = 2;
+  s.step = 4000;
+  s.next_id = 3;
+  s.history_slots = 2;
+  s.position = {0, 1, 2, 3, 4, 5};
+  s.velocity = {0, -1, -2, -3, -4, -5};
+  s.force = {0.5, 0.5, 0.5, 0.5, 0.5, 0.5};
+  s.angular_velocity = {1, 2, 3};
+  s.torque = {0, 0, 0};
+  s.species = {0, 1, 0};
+  s.id = {0, 1, 2};
+  s.history_partner = {1, -1, 0, -1, -1, -1};
+  s.history_spring = std::vector<double>(12, 1e-6);
+  s.history_wall_spring = std::vector<double>(6, 0.0);
+  s.reference_position = s.position;
+  s.neighbour_offsets = {0, 2, 3, 3};
+  s.neighbours = {1, 2, 2};
+  s.list_builds = 7;
+  s.removed_low = {0, 2, 0};
+  s.removed_high = {0, 5, 0};
+  CheckpointExtras e;
+  e.rng_counter = 42;
+  e.inserted = 3;
+  e.insertion_carry = 0.25;
+  e.wall_seconds_so_far = 1.5;
+  e.bin_sums = {1, 2, 3, 4, 5, 6};
+  e.bin_shape = {2, 3};
+  e.scene_resolved = "# resolved\nmach = 5.0\n";
+  write_checkpoint(dir / "checkpoint.h5", s, e);
+}
+
+int bench(const std::filesystem::path& dir, int n, int dim) {
+  RunFile run = RunFile::create(dir / "bench.h5", "", "", dim);
+  const HostParticles p = test::random_particles(n);
+  const int frames = 10;
+  const auto start = std::chrono::steady_clock::now();
+  for (int f = 0; f < frames; ++f) run.append_snapshot(f + 1, 0.1 * f, p);
+  run.flush();
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::printf("%d particles, dim %d: %.1f ms per snapshot, %.2f MB per snapshot on disk\n", n,
+              dim, 1e3 * seconds / frames,
+              static_cast<double>(std::filesystem::file_size(dir / "bench.h5")) / 1e6 / frames);
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    if (argc == 5 && std::string(argv[1]) == "--bench") {
+      return bench(argv[2], std::atoi(argv[3]), std::atoi(argv[4]));
+    }
+    if (argc != 2) {
+      std::fprintf(stderr, "usage: %s DIR | --bench DIR N DIM\n", argv[0]);
+      return 2;
+    }
+    const std::filesystem::path dir = argv[1];
+    std::filesystem::create_directories(dir);
+    write_run(dir, "run", 2, {5, 12, 0, 3});
+    write_run(dir, "run3d", 3, {4, 2});
+    write_sample_checkpoint(dir);
+    return 0;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 1;
+  }
+}

@@ -1,0 +1,76 @@
+// Small scenes for the tests of `granshock run`, as TOML text, and helpers to write
+// them to a temporary directory.
+#pragma once
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <unistd.h>
+
+namespace granshock::testing {
+
+// A channel 40 d wide and 60 d long with the paper's mixture; `obstacle` adds a
+// cylinder of 10 d at (20 d, 35 d). Short: 0.01 s at dt = 2e-7 s (50 000 steps).
+inline std::string small_scene(bool obstacle = true, double restitution = 0.5) {
+  std::string s = R"(
+[scene]
+name = "small"
+seed = 7
+[units]
+d = 0.001
+[[species]]
+name = "steel"
+material = "steel"
+diameter = "1 d"
+number_fraction = 0.5
+[[species]]
+name = "aluminium"
+material = "aluminium"
+diameter = "1 d"
+number_fraction = 0.5
+[contact]
+restitution = )" + std::to_string(restitution) + R"(
+[domain]
+width = "40 d"
+length = "60 d"
+[inflow]
+area_fraction = 0.1
+velocity = 1.0
+sigma = 0.1
+[time]
+dt = 2e-7
+duration = 0.01
+production_start = 0.005
+[output]
+snapshot_interval = 0.0025
+series_interval = 0.0005
+checkpoint_interval = 0.004
+progress_interval = 1000.0
+)";
+  if (obstacle) s += "[obstacle]\ndiameter = \"10 d\"\ncentre = [\"20 d\", \"35 d\"]\n";
+  return s;
+}
+
+// A fresh, empty temporary directory, removed with its contents on destruction.
+class TempDir {
+ public:
+  TempDir() {
+    std::string pattern = (std::filesystem::temp_directory_path() / "granshock-test-XXXXXX").string();
+    path_ = mkdtemp(pattern.data());
+  }
+  ~TempDir() {
+    std::error_code ec;
+    std::filesystem::remove_all(path_, ec);
+  }
+  const std::filesystem::path& path() const { return path_; }
+  std::filesystem::path write(const std::string& name, const std::string& text) const {
+    const auto p = path_ / name;
+    std::ofstream(p) << text;
+    return p;
+  }
+
+ private:
+  std::filesystem::path path_;
+};
+
+}  // namespace granshock::testing

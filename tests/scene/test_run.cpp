@@ -1,0 +1,155 @@
+// `granshock run` end to end (tests 2-4 and 6 of the bow-shock issue): mass balance,
+// bitwise resume, bad input leaving no output, and the default scene's bow shock.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "checkpoint_file.hpp"
+#include "run_command.hpp"
+#include "run_file.hpp"
+#include "scene_fixtures.hpp"
+#include "user_error.hpp"
+
+using namespace granshock;
+using granshock::testing::small_scene;
+using granshock::testing::TempDir;
+namespace fs = std::filesystem;
+
+namespace {
+
+RunOptions options_for(const fs::path& scene, const fs::path& out, std::vector<std::string> sets = {}) {
+  RunOptions o;
+  o.scene_file = scene;
+  o.out_dir = out;
+  o.overrides = std::move(sets);
+  o.quiet = true;
+  return o;
+}
+
+std::vector<double> series(const RunFile& f, const std::string& name) {
+  return f.read_array("/observables/" + name + "/value");
+}
+
+}  // namespace
+
+TEST(RunMassBalance, InsertedMinusDeletedIsPresentAtEveryOutput) {
+  TempDir tmp;
+  const auto scene = tmp.write("small.toml", small_scene(true));
+  ASSERT_EQ(run_scene(options_for(scene, tmp.path() / "run")), 0);
+  const RunFile f = RunFile::open_read_only(tmp.path() / "run" / "run.h5");
+  const auto present = series(f, "particles"), inserted = series(f, "inserted");
+  const auto outlet = series(f, "deleted_outlet"), inlet = series(f, "deleted_inlet");
+  ASSERT_EQ(present.size(), 21u);  // every 0.5 ms over 10 ms, and step 0
+  for (std::size_t k = 0; k < present.size(); ++k)
+    EXPECT_EQ(inserted[k] - outlet[k] - inlet[k], present[k]) << "row " << k;
+  EXPECT_GT(outlet.back(), 0) << "particles must leave through the outlet";
+  // Bounded: the channel holds ~phi_inf W L / (pi d^2/4) = 306 particles upstream.
+  EXPECT_LT(*std::max_element(present.begin(), present.end()), 600);
+}
+
+TEST(RunResume, InterruptedAndResumedEqualsUninterruptedBitwise) {
+  TempDir tmp;
+  const auto scene = tmp.write("small.toml", small_scene(true));
+  const std::vector<std::string> sets = {"time.duration=0.004", "time.production_start=0.002"};
+  ASSERT_EQ(run_scene(options_for(scene, tmp.path() / "straight", sets)), 0);
+  RunOptions first = options_for(scene, tmp.path() / "split", sets);
+  first.stop_after_steps = 7001;  // not a checkpoint step (those are multiples of 20 000)
+  ASSERT_EQ(run_scene(first), 0);
+  RunOptions second = options_for(scene, tmp.path() / "split", sets);
+  second.resume = true;
+  ASSERT_EQ(run_scene(second), 0);
+
+  CheckpointExtras ea, eb;
+  const SolverState a = read_checkpoint(tmp.path() / "straight" / "checkpoint.h5", ea);
+  const SolverState b = read_checkpoint(tmp.path() / "split" / "checkpoint.h5", eb);
+  EXPECT_EQ(a.step, 20000);
+  EXPECT_EQ(b.step, a.step);
+  EXPECT_EQ(a.id, b.id);
+  EXPECT_EQ(a.position, b.position) << "positions differ: the resumed run is not bitwise equal";
+  EXPECT_EQ(a.velocity, b.velocity);
+  EXPECT_EQ(a.force, b.force);
+  EXPECT_EQ(ea.inserted, eb.inserted);
+  EXPECT_EQ(ea.deleted_outlet, eb.deleted_outlet);
+  const RunFile fa = RunFile::open_read_only(tmp.path() / "straight" / "run.h5");
+  const RunFile fb = RunFile::open_read_only(tmp.path() / "split" / "run.h5");
+  for (const char* name : {"particles", "kinetic_energy", "temperature", "contacts", "inserted"})
+    EXPECT_EQ(series(fa, name), series(fb, name)) << name;
+  EXPECT_EQ(fa.frames().size(), fb.frames().size());
+}
+
+struct BadRun {
+  const char* name;
+  std::vector<std::string> sets;
+  const char* expected;
+};
+
+class RunRefuses : public ::testing::TestWithParam<BadRun> {};
+
+TEST_P(RunRefuses, WithOneMessageAndNoOutput) {
+  TempDir tmp;
+  const auto scene = tmp.write("small.toml", small_scene(true));
+  const fs::path out = tmp.path() / "out";
+  try {
+    run_scene(options_for(scene, out, GetParam().sets));
+    FAIL() << "accepted";
+  } catch (const UserError& e) {
+    EXPECT_NE(std::string(e.what()).find(GetParam().expected), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(fs::exists(out)) << "a refused run must not write anything";
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    BadInput, RunRefuses,
+    ::testing::Values(BadRun{"dt_past_stable_limit", {"time.dt=5e-6"}, "past the stable limit"},
+                      BadRun{"unknown_key", {"time.dtt=1"}, "unknown key"},
+                      BadRun{"phi_out_of_range", {"inflow.area_fraction=0.8"}, "must be in (0, 0.7)"}),
+    [](const auto& param_info) { return std::string(param_info.param.name); });
+
+TEST(RunRefusesDirectory, UnwritableOrExisting) {
+  TempDir tmp;
+  const auto scene = tmp.write("small.toml", small_scene(true));
+  const auto file = tmp.write("a-file", "x");
+  EXPECT_THROW(run_scene(options_for(scene, file / "out")), UserError);  // parent is a file
+  EXPECT_FALSE(fs::exists(file / "out"));
+  fs::create_directories(tmp.path() / "old");
+  tmp.write("old/run.h5", "previous results");
+  try {
+    run_scene(options_for(scene, tmp.path() / "old"));
+    FAIL() << "an existing run directory was overwritten without --overwrite";
+  } catch (const UserError& e) {
+    EXPECT_NE(std::string(e.what()).find("--overwrite"), std::string::npos) << e.what();
+  }
+  RunOptions resume = options_for(scene, tmp.path() / "nothing-here");
+  resume.resume = true;
+  EXPECT_THROW(run_scene(resume), UserError);
+}
+
+// Test 6: the default scene at reduced length forms a dense region in front of the
+// cylinder: the area fraction in a box D wide and 5 d deep just upstream of it is at
+// least twice phi_inf (averaged over the last two snapshots).
+TEST(RunDefaultScene, FormsADenseRegionInFrontOfTheObstacle) {
+  TempDir tmp;
+  const fs::path scene = fs::path(GRANSHOCK_SOURCE_DIR) / "scenes" / "default.toml";
+  ASSERT_EQ(run_scene(options_for(scene, tmp.path() / "run",
+                                  {"time.duration=0.04", "time.production_start=0.02",
+                                   "output.snapshot_interval=0.01"})),
+            0);
+  const RunFile f = RunFile::open_read_only(tmp.path() / "run" / "run.h5");
+  const auto frames = f.frames();
+  ASSERT_GE(frames.size(), 3u);
+  const double d = 1e-3, xc = 0.075, yc = 0.120, radius = 0.010;
+  const auto positions = f.read_array("/particles/all/position/value");
+  const long cap = f.particle_capacity();
+  double phi = 0;
+  for (std::size_t k = frames.size() - 2; k < frames.size(); ++k) {
+    double area = 0;
+    for (long i = 0; i < frames[k].count; ++i) {
+      const double x = positions[(k * cap + i) * 2], y = positions[(k * cap + i) * 2 + 1];
+      if (std::abs(x - xc) < radius && y > yc - radius - 5 * d && y < yc - radius)
+        area += M_PI * d * d / 4;
+    }
+    phi += area / (2 * radius * 5 * d) / 2;
+  }
+  std::printf("[ measured ] area fraction in front of the cylinder %.3f (phi_inf 0.1)\n", phi);
+  EXPECT_GE(phi, 0.2);
+}
