@@ -1,0 +1,38 @@
+// The layout of the field accumulators (DESIGN.md 2.3), shared by the device kernels that
+// fill them during a run and the analysis that turns them into fields.
+//
+// Per bin and per species a, every sample adds
+//   N_a, sum c_x, sum c_y, sum c_x c_x, sum c_x c_y, sum c_y c_y        (6 per species)
+// and, for the mixture, the contact virial of the particles in the bin
+//   sum over contacts of 1/2 r_ij (x) F_ij: W_xx, W_xy, W_yx, W_yy        (4)
+// (each particle carries half of each of its contacts; r_ij = x_i - x_j, F_ij the force
+// on i), so that the collisional stress of a bin is -<W>/V_bin.
+// Sums are kept per block: the production window is cut into `blocks` equal parts, so
+// that statistical uncertainties follow from block averages.
+#pragma once
+
+namespace granshock {
+
+struct BinLayout {
+  int n_species = 2;
+  int nx = 1, ny = 1;      // bins across (x) and along (y) the flow
+  double x0 = 0, y0 = 0;   // lower-left corner of bin (0, 0), m
+  double bin_size = 3e-3;  // m (square bins)
+  int blocks = 10;
+
+  static constexpr int per_species = 6;
+  enum SpeciesQuantity { count = 0, sum_vx, sum_vy, sum_vxvx, sum_vxvy, sum_vyvy };
+  enum VirialQuantity { w_xx = 0, w_xy, w_yx, w_yy };
+
+  int quantities() const { return per_species * n_species + 4; }
+  int species_index(int species, SpeciesQuantity q) const { return per_species * species + q; }
+  int virial_index(VirialQuantity q) const { return per_species * n_species + q; }
+  int bins() const { return nx * ny; }
+  // Offset of (block, bin iy, bin ix, quantity) in the flat row-major array
+  // [blocks][ny][nx][quantities].
+  long offset(int block, int iy, int ix, int q) const {
+    return ((long(block) * ny + iy) * nx + ix) * quantities() + q;
+  }
+};
+
+}  // namespace granshock
