@@ -35,4 +35,22 @@ struct BinLayout {
   }
 };
 
+// How sampled values are scattered into bins on the device (measured in
+// apps/bench/bench_sampling.cpp): atomic adds, or a Kokkos ScatterView.
+enum class ScatterStrategy { atomic, scatter_view };
+
+// The finer stagnation-line profile: a strip x in [x_lo, x_hi] cut along y into n bins
+// of dy from y0, with the same quantities per bin.
+struct ProfileLayout {
+  double x_lo = 0, x_hi = 0;
+  double y0 = 0, dy = 5e-4;
+  int n = 0;
+};
+
+struct FieldSampling {
+  BinLayout grid;
+  ProfileLayout profile;  // n = 0: none
+  ScatterStrategy strategy = ScatterStrategy::atomic;
+};
+
 }  // namespace granshock

@@ -32,6 +32,7 @@ struct RunControl {
   double checkpoint_interval_s = 0.5;
   double progress_interval_s = 2.0;     // wall clock
   long sample_every = 100;              // steps between field samples
+  int blocks = 10;                      // production window cut into blocks (error bars)
   std::uint64_t seed = 1;
 };
 

@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "bin_layout.hpp"
 #include "host_particles.hpp"
 #include "solver_state.hpp"
 #include "system_setup.hpp"
@@ -45,6 +46,7 @@ struct InsertionRequest {
   std::uint64_t seed = 0;
   std::uint64_t event = 0;                // insertion event number: the RNG stream
   long inserted_before = 0;               // particles inserted by earlier events
+  bool rebuild_lists = true;  // false: the caller inserts more before the next step
 };
 
 // Particles deleted because they left through an open boundary, counted per face.
@@ -74,6 +76,14 @@ class Solver {
   virtual RemovalCounts remove_escaped() = 0;
   virtual RemovalCounts removed() const = 0;
   virtual int next_id() const = 0;
+
+  // Field sampling (DESIGN.md 2.3): configure once, then add samples to a block.
+  virtual void configure_sampling(const FieldSampling& sampling) = 0;
+  virtual void sample_fields(int block) = 0;
+  // The sums as host arrays ([blocks][ny][nx][q] and [blocks][n][q]), and their restore.
+  virtual std::vector<double> field_sums(bool profile) const = 0;
+  virtual void restore_field_sums(const std::vector<double>& grid,
+                                  const std::vector<double>& profile) = 0;
 
   virtual SolverState export_state() const = 0;
   virtual void import_state(const SolverState& state) = 0;

@@ -392,6 +392,7 @@ LoadedScene parse_scene(const std::string& text, const std::vector<std::string>&
     s.run.checkpoint_interval_s = r.positive("checkpoint_interval", s.run.duration_s / 5);
     s.run.progress_interval_s = r.positive("progress_interval", 2.0);
     s.run.sample_every = r.integer_at_least("sample_every", 1, 100);
+    s.run.blocks = int(r.integer_at_least("blocks", 2, 10));
     r.finish();
   }
   top.finish();
@@ -459,7 +460,8 @@ std::string scene_to_toml(const Scene& s) {
                                     {"series_interval", s.run.series_interval_s},
                                     {"checkpoint_interval", s.run.checkpoint_interval_s},
                                     {"progress_interval", s.run.progress_interval_s},
-                                    {"sample_every", int64_t(s.run.sample_every)}});
+                                    {"sample_every", int64_t(s.run.sample_every)},
+                                    {"blocks", int64_t(s.run.blocks)}});
   root.insert("numerics", toml::table{{"precision", s.setup.precision == Precision::single ? "single" : "double"},
                                       {"skin", s.setup.skin_m},
                                       {"mass_definition", to_string(s.mass_definition)},

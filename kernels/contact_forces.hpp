@@ -21,7 +21,12 @@ struct CylinderGeometry {
   Real radius;
 };
 
-template <class Traits, class ExecSpace>
+// Mode: forces (the time step) or virial (field sampling: per particle
+// W_i = sum_j 1/2 r_ij (x) F_ij, with r_ij = x_i - x_j, written to `virial`; forces, torques
+// and contact history are left untouched, so sampling cannot change the trajectory).
+enum class ForceMode { forces, virial };
+
+template <class Traits, class ExecSpace, ForceMode Mode = ForceMode::forces>
 struct ContactForceKernel {
   static constexpr int Dim = Traits::dim;
   using Real = typename Traits::real;
@@ -35,6 +40,7 @@ struct ContactForceKernel {
   CylinderGeometry<Dim, Real> cylinder;
   History history;
   Real dt;
+  Kokkos::View<Real* [Traits::dim * Traits::dim], Mem> virial;  // ForceMode::virial only
 
   KOKKOS_INLINE_FUNCTION Vec<Dim, Real> load(const typename ParticleStore<Dim, Real, Mem>::VectorView& a,
                                              int i) const {
@@ -50,6 +56,7 @@ struct ContactForceKernel {
     const Real ri = table.radius(si);
     Vec<Dim, Real> force = Vec<Dim, Real>::zero();
     Real torque = 0;
+    Real w[Dim * Dim] = {};
     int used_slots = 0;  // bit s set when slot s carried a contact this step
 
     for (int k = offsets(i); k < offsets(i + 1); ++k) {
@@ -64,25 +71,44 @@ struct ContactForceKernel {
       const Vec<Dim, Real> vrel = vi - load(p.v, j);
       const HertzCoefficients<Real>& c = table.pair(si, sj);
       const NormalContact<Real> normal = hertz_normal(c, rsum - r, dot(vrel, n));
-      force += normal.force * n;
+      Vec<Dim, Real> pair_force = normal.force * n;
       if constexpr (Traits::friction) {
-        const int slot = claim_slot(i, p.id(j), used_slots);
-        if (slot < 0) continue;
+        const int slot = Mode == ForceMode::forces ? claim_slot(i, p.id(j), used_slots)
+                                                   : find_slot(i, p.id(j));
         const Vec<2, Real> vc = contact_point_velocity(
             vrel, n, ri * p.omega(i) + table.radius(sj) * p.omega(j));
-        Vec<2, Real> xi_t{{history.spring(i, 2 * slot), history.spring(i, 2 * slot + 1)}};
+        Vec<2, Real> xi_t = Vec<2, Real>::zero();
+        if (slot >= 0) xi_t = {{history.spring(i, 2 * slot), history.spring(i, 2 * slot + 1)}};
         const Vec<2, Real> ft = hertz_tangential(c, normal, n, vc, dt, xi_t);
-        history.spring(i, 2 * slot) = xi_t[0];
-        history.spring(i, 2 * slot + 1) = xi_t[1];
-        force += ft;
-        torque += contact_torque(ri, n, ft);
+        if constexpr (Mode == ForceMode::forces) {
+          if (slot >= 0) {
+            history.spring(i, 2 * slot) = xi_t[0];
+            history.spring(i, 2 * slot + 1) = xi_t[1];
+          }
+          torque += contact_torque(ri, n, ft);
+        }
+        pair_force += ft;
       }
+      force += pair_force;
+      if constexpr (Mode == ForceMode::virial)
+        for (int a = 0; a < Dim; ++a)
+          for (int b = 0; b < Dim; ++b) w[a * Dim + b] += Real(0.5) * dx[a] * pair_force[b];
     }
-    if constexpr (Traits::friction) release_unused_slots(i, used_slots);
-    if constexpr (Traits::obstacle) obstacle_contact(i, xi, vi, si, ri, force, torque);
+    if constexpr (Mode == ForceMode::virial) {
+      for (int k = 0; k < Dim * Dim; ++k) virial(i, k) = w[k];
+      return;
+    } else {
+      if constexpr (Traits::friction) release_unused_slots(i, used_slots);
+      if constexpr (Traits::obstacle) obstacle_contact(i, xi, vi, si, ri, force, torque);
+      for (int d = 0; d < Dim; ++d) p.f(i, d) = force[d];
+      if constexpr (Traits::friction) p.torque(i) = torque;
+    }
+  }
 
-    for (int d = 0; d < Dim; ++d) p.f(i, d) = force[d];
-    if constexpr (Traits::friction) p.torque(i) = torque;
+  KOKKOS_INLINE_FUNCTION int find_slot(int i, int partner) const {
+    for (int s = 0; s < History::slots; ++s)
+      if (history.partner(i, s) == partner) return s;
+    return -1;
   }
 
   // Contact with the fixed cylinder: overlap r_i + R - |x_i - x_c|, radial normal,

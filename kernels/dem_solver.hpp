@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "bin_accumulator.hpp"
 #include "cell_grid.hpp"
 #include "cell_sort.hpp"
 #include "contact_forces.hpp"
@@ -168,10 +169,43 @@ class DemSolver final : public Solver {
   }
 
   void compute_forces() {
-    ContactForceKernel<Traits, ExecSpace> kernel{p_,     list_.offsets, list_.neighbours,
-                                                 table_, box_,          cylinder_,
-                                                 history_, Real(setup_.dt)};
+    ContactForceKernel<Traits, ExecSpace> kernel{
+        p_, list_.offsets, list_.neighbours, table_, box_, cylinder_, history_, Real(setup_.dt), {}};
     Kokkos::parallel_for("contact_forces", Policy(0, p_.n), kernel);
+  }
+
+  void configure_sampling(const FieldSampling& f) override {
+    sampling_ = f;
+    grid_sums_ = BinAccumulator<ExecSpace>(f.grid.bins(), f.grid.quantities(), f.grid.blocks);
+    if (f.profile.n > 0)
+      profile_sums_ = BinAccumulator<ExecSpace>(f.profile.n, f.grid.quantities(), f.grid.blocks);
+  }
+
+  void sample_fields(int block) override {
+    if (int(virial_.extent(0)) < p_.n) virial_ = decltype(virial_)("virial", p_.capacity());
+    ContactForceKernel<Traits, ExecSpace, ForceMode::virial> kernel{
+        p_, list_.offsets, list_.neighbours, table_, box_, cylinder_, history_, Real(setup_.dt), virial_};
+    Kokkos::parallel_for("contact_virial", Policy(0, p_.n), kernel);
+    const BinLayout& g = sampling_.grid;
+    const GridIndex grid{g.x0, g.y0, 1.0 / g.bin_size, g.nx, g.ny};
+    const ProfileLayout& pr = sampling_.profile;
+    const ProfileIndex profile{pr.x_lo, pr.x_hi, pr.y0, 1.0 / pr.dy, pr.n};
+    if (sampling_.strategy == ScatterStrategy::atomic) {
+      grid_sums_.template sample<ScatterStrategy::atomic>(block, grid, p_, virial_);
+      if (!profile_sums_.empty()) profile_sums_.template sample<ScatterStrategy::atomic>(block, profile, p_, virial_);
+    } else {
+      grid_sums_.template sample<ScatterStrategy::scatter_view>(block, grid, p_, virial_);
+      if (!profile_sums_.empty())
+        profile_sums_.template sample<ScatterStrategy::scatter_view>(block, profile, p_, virial_);
+    }
+  }
+
+  std::vector<double> field_sums(bool profile) const override {
+    return profile ? profile_sums_.to_host() : grid_sums_.to_host();
+  }
+  void restore_field_sums(const std::vector<double>& grid, const std::vector<double>& profile) override {
+    grid_sums_.from_host(grid);
+    if (!profile_sums_.empty()) profile_sums_.from_host(profile);
   }
 
  private:
@@ -292,6 +326,9 @@ class DemSolver final : public Solver {
     bool check_any = false;
   } escape_;
   Kokkos::View<int*, Mem> keep_order_;
+  FieldSampling sampling_;
+  BinAccumulator<ExecSpace> grid_sums_, profile_sums_;
+  Kokkos::View<Real* [Dim * Dim], Mem> virial_;
   RemovalCounts removed_;
   int next_id_ = 0;
   long steps_ = 0;

@@ -124,7 +124,7 @@ int DemSolver<Traits, ExecSpace>::insert(const InsertionRequest& rq) {
       });
   p_.n = n + take;
   next_id_ += take;
-  rebuild_lists();
+  if (rq.rebuild_lists) rebuild_lists();
   return take;
 }
 

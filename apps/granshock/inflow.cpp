@@ -17,7 +17,8 @@ InflowController::InflowController(const Scene& scene) : scene_(scene) {
   per_batch_ = in.area_fraction * scene.setup.box.length(0) * swept / mean_disk_area;
 }
 
-int InflowController::insert_batch(Solver& solver, double y_lo, double y_hi, double expected) {
+int InflowController::insert_batch(Solver& solver, double y_lo, double y_hi, double expected,
+                                   bool rebuild_lists) {
   const double wanted = expected + carry_;
   InsertionRequest rq;
   rq.x_range = {scene_.setup.box.lo[0], scene_.setup.box.hi[0]};
@@ -29,21 +30,38 @@ int InflowController::insert_batch(Solver& solver, double y_lo, double y_hi, dou
   rq.seed = scene_.run.seed;
   rq.event = events_++;
   rq.inserted_before = inserted_;
+  rq.rebuild_lists = rebuild_lists;
   const int placed = solver.insert(rq);
   inserted_ += placed;
   carry_ = wanted - placed;
   return placed;
 }
 
+double InflowController::free_area(double y_lo, double y_hi) const {
+  double area = scene_.setup.box.length(0) * (y_hi - y_lo);
+  if (!scene_.setup.obstacle) return area;
+  // Disk of radius rho = R + d_max centred at yc: its area between two horizontal lines
+  // is G(y_hi - yc) - G(y_lo - yc) with G(t) = t sqrt(rho^2 - t^2) + rho^2 asin(t/rho).
+  const double rho = 0.5 * scene_.setup.obstacle->diameter_m + scene_.setup.max_diameter();
+  const double yc = scene_.setup.obstacle->centre[1];
+  const auto G = [rho](double t) {
+    t = std::clamp(t, -rho, rho);
+    return t * std::sqrt(rho * rho - t * t) + rho * rho * std::asin(t / rho);
+  };
+  return area - (G(y_hi - yc) - G(y_lo - yc));
+}
+
 void InflowController::prefill(Solver& solver) {
   const double strip = scene_.inflow.strip_m;
   const double length = scene_.setup.box.length(1);
-  const double per_length = per_batch_ / (period_steps_ * scene_.setup.dt * scene_.inflow.speed_m_per_s);
+  const double per_area = per_batch_ / (period_steps_ * scene_.setup.dt * scene_.inflow.speed_m_per_s *
+                                        scene_.setup.box.length(0));
   for (double y = strip; y < length; y += strip) {
     const double top = std::min(y + strip, length);
-    insert_batch(solver, y, top, per_length * (top - y));
+    // Lists are rebuilt once, after the last slab: insertion itself needs only positions.
+    insert_batch(solver, y, top, per_area * free_area(y, top), top >= length);
   }
-  carry_ = 0;  // what the obstacle's area displaced is not owed to the inflow
+  carry_ = 0;
 }
 
 void InflowController::insert_if_due(Solver& solver, long step) {

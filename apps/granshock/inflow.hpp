@@ -35,7 +35,11 @@ class InflowController {
   void restore(std::uint64_t events, long inserted, double carry);
 
  private:
-  int insert_batch(Solver& solver, double y_lo, double y_hi, double expected);
+  int insert_batch(Solver& solver, double y_lo, double y_hi, double expected,
+                   bool rebuild_lists = true);
+  // Area of the slab y in [y_lo, y_hi] where insertion may place particles: the slab
+  // minus the disk around the obstacle that insertion keeps clear.
+  double free_area(double y_lo, double y_hi) const;
 
   const Scene& scene_;
   long period_steps_ = 1;

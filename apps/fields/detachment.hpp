@@ -1,0 +1,38 @@
+// The detachment (stand-off) length delta on the stagnation line (DESIGN.md 2.3; the
+// paper's Fig. 1 and Fig. 6): the distance from the shock front, found on the fine
+// stagnation-line profile with the threshold rule of front_crossing.hpp, to the cylinder's
+// upstream surface y_c - R. Its statistical uncertainty comes from block averages: delta is
+// found again in each block's profile alone, and the standard error of the mean over the
+// blocks, s_B / sqrt(B), is reported (B blocks with samples, s_B their sample standard
+// deviation).
+#pragma once
+
+#include <vector>
+
+#include "bin_sums.hpp"
+#include "field_physics.hpp"
+#include "front_crossing.hpp"
+
+namespace granshock {
+
+struct Detachment {
+  bool found = false;
+  double y_shock = 0;           // shock position on the axis (pooled profile), m
+  double surface = 0;           // y_c - R, m
+  double delta = 0;             // surface - y_shock, m
+  double delta_over_d = 0;      // delta / D
+  double delta_err = 0;         // standard error from the blocks, m (NaN with < 2 blocks)
+  double delta_over_d_err = 0;
+  double phi_peak = 0, threshold = 0;
+  std::vector<double> delta_blocks;  // per block with samples; NaN where no front was found
+  int blocks_used = 0;               // blocks whose delta entered the error
+};
+
+// y_search_begin: the search starts at the first profile bin whose centre is at or beyond
+// it (the upstream reference row of the grid, beyond the insertion strip); it ends at the
+// last bin whose centre lies upstream of the surface. phi_up: the measured upstream phi.
+// Not found (NaN) without an obstacle or when the pooled profile shows no front.
+Detachment measure_detachment(const BinSums& profile, const FieldPhysics& physics, double phi_up,
+                              double y_search_begin, const ThresholdRule& rule = {});
+
+}  // namespace granshock

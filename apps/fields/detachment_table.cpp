@@ -1,0 +1,70 @@
+#include "detachment_table.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <nlohmann/json.hpp>
+
+#include "atomic_file.hpp"
+
+namespace granshock {
+
+namespace {
+
+std::string csv_number(double v) {
+  if (!std::isfinite(v)) return "";
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.10g", v);
+  return buffer;
+}
+
+std::string csv_text(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+
+nlohmann::json json_number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); }
+
+}  // namespace
+
+DetachmentRow detachment_row(const std::filesystem::path& run_dir, const FieldAnalysis& a, double ma_inf_target) {
+  DetachmentRow r;
+  r.run = run_dir.string();
+  r.d_over_particle = a.physics.obstacle ? a.physics.obstacle->diameter / a.physics.d : std::numeric_limits<double>::quiet_NaN();
+  r.ma_inf_target = ma_inf_target;
+  r.ma_inf_measured = a.upstream_inlet.mach;
+  r.ma_inf_measured_downstream = a.upstream_downstream.mach;
+  r.delta_over_D = a.detachment.delta_over_d;
+  r.delta_over_D_err = a.detachment.delta_over_d_err;
+  r.phi_peak = a.phi_peak;
+  r.shock_angle_deg = a.front.angle_deg;
+  return r;
+}
+
+void write_detachment_table(const std::filesystem::path& out_dir, const std::vector<DetachmentRow>& rows) {
+  std::string csv =
+      "run,D_over_d,ma_inf_target,ma_inf_measured,ma_inf_measured_downstream,delta_over_D,delta_over_D_err,"
+      "phi_peak,shock_angle_deg\n";
+  nlohmann::json table = nlohmann::json::array();
+  for (const DetachmentRow& r : rows) {
+    csv += csv_text(r.run);
+    for (double v : {r.d_over_particle, r.ma_inf_target, r.ma_inf_measured, r.ma_inf_measured_downstream,
+                     r.delta_over_D, r.delta_over_D_err, r.phi_peak, r.shock_angle_deg})
+      csv += "," + csv_number(v);
+    csv += "\n";
+    table.push_back({{"run", r.run},
+                     {"D_over_d", json_number(r.d_over_particle)},
+                     {"ma_inf_target", json_number(r.ma_inf_target)},
+                     {"ma_inf_measured", json_number(r.ma_inf_measured)},
+                     {"ma_inf_measured_downstream", json_number(r.ma_inf_measured_downstream)},
+                     {"delta_over_D", json_number(r.delta_over_D)},
+                     {"delta_over_D_err", json_number(r.delta_over_D_err)},
+                     {"phi_peak", json_number(r.phi_peak)},
+                     {"shock_angle_deg", json_number(r.shock_angle_deg)}});
+  }
+  write_file_atomically(out_dir / "detachment.csv", csv);
+  write_file_atomically(out_dir / "detachment.json", table.dump(2) + "\n");
+}
+
+}  // namespace granshock

@@ -1,0 +1,28 @@
+// The comparison of several runs (the paper's Fig. 6): delta/D against D/d for each
+// upstream Mach number, as a CSV and a JSON table.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "field_analysis.hpp"
+
+namespace granshock {
+
+struct DetachmentRow {
+  std::string run;  // the run directory
+  double d_over_particle = 0;  // D/d
+  double ma_inf_target = 0, ma_inf_measured = 0, ma_inf_measured_downstream = 0;
+  double delta_over_D = 0, delta_over_D_err = 0;
+  double phi_peak = 0, shock_angle_deg = 0;
+};
+
+DetachmentRow detachment_row(const std::filesystem::path& run_dir, const FieldAnalysis& analysis,
+                             double ma_inf_target);
+
+// Writes out_dir/detachment.csv and out_dir/detachment.json (a list of objects with the
+// CSV's columns; NaN as an empty CSV cell and as JSON null), atomically.
+void write_detachment_table(const std::filesystem::path& out_dir, const std::vector<DetachmentRow>& rows);
+
+}  // namespace granshock

@@ -1,0 +1,112 @@
+#include "fields_command.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "detachment_table.hpp"
+#include "field_analysis.hpp"
+#include "fields_output.hpp"
+#include "figures.hpp"
+#include "summary_json.hpp"
+#include "user_error.hpp"
+
+namespace granshock {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// The run's own target Mach number (summary.json of `granshock run`), else the inflow's
+// nominal one.
+double target_mach(const fs::path& summary, double nominal) {
+  std::error_code ec;
+  if (!fs::exists(summary, ec)) return nominal;
+  std::ifstream in(summary);
+  std::stringstream text;
+  text << in.rdbuf();
+  const nlohmann::json j = nlohmann::json::parse(text.str(), nullptr, false);
+  if (j.is_object() && j.contains("ma_inf_target") && j["ma_inf_target"].is_number())
+    return j["ma_inf_target"].get<double>();
+  return nominal;
+}
+
+void make_directory(const fs::path& dir) {
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) throw UserError("cannot create '" + dir.string() + "': " + ec.message());
+}
+
+std::string number(double v, int digits) {
+  if (!std::isfinite(v)) return "n/a";
+  std::ostringstream s;
+  s.precision(digits);
+  s << v;
+  return s.str();
+}
+
+struct Done {
+  fs::path run_dir, dest;
+  DetachmentRow row;
+};
+
+}  // namespace
+
+int fields_command(const std::vector<fs::path>& run_dirs, const fs::path& out) {
+  return fields_command(run_dirs, out, FieldsCommandOptions{});
+}
+
+int fields_command(const std::vector<fs::path>& run_dirs, const fs::path& out, const FieldsCommandOptions& o) {
+  if (run_dirs.empty()) throw UserError("granshock fields needs at least one run directory");
+  const bool several = run_dirs.size() > 1;
+  if (several && out.empty())
+    throw UserError("granshock fields with " + std::to_string(run_dirs.size()) +
+                    " run directories needs --out DIR for their comparison (detachment table and figure)");
+  // Every run is checked before anything is written.
+  std::vector<FieldAnalysis> analyses;
+  for (const fs::path& dir : run_dirs) analyses.push_back(analyse_run_file(dir / "run.h5"));
+
+  std::vector<Done> done;
+  for (std::size_t i = 0; i < run_dirs.size(); ++i) {
+    const fs::path& dir = run_dirs[i];
+    const fs::path dest = (!several && !out.empty()) ? out : dir;
+    make_directory(dest);
+    write_fields_outputs(analyses[i], dest);
+    nlohmann::json keys = summary_keys(analyses[i]);
+    const double target = target_mach(dir / "summary.json", analyses[i].ma_target);
+    keys["ma_inf_target"] = std::isfinite(target) ? nlohmann::json(target) : nlohmann::json();
+    std::error_code ec;
+    if (dest != dir && fs::exists(dir / "summary.json", ec) && !fs::exists(dest / "summary.json", ec))
+      fs::copy_file(dir / "summary.json", dest / "summary.json", ec);
+    merge_summary_json(dest / "summary.json", keys);
+    done.push_back({dir, dest, detachment_row(dir, analyses[i], target)});
+  }
+  if (several) {
+    make_directory(out);
+    std::vector<DetachmentRow> rows;
+    for (const Done& d : done) rows.push_back(d.row);
+    write_detachment_table(out, rows);
+  }
+
+  if (o.figures) {
+    require_plotting_python();
+    for (const Done& d : done) plot_run_figures(d.dest / "fields.h5", d.dest / "figures");
+    if (several) plot_detachment_figure(out / "detachment.json", out / "figures" / "detachment_length.png");
+  }
+
+  if (!o.quiet) {
+    for (const Done& d : done)
+      std::cout << "granshock fields: " << d.run_dir.string() << ": Ma_inf " << number(d.row.ma_inf_target, 3)
+                << " (target), " << number(d.row.ma_inf_measured, 3) << " (measured at the inlet), "
+                << number(d.row.ma_inf_measured_downstream, 3) << " (beyond the strip); delta/D = "
+                << number(d.row.delta_over_D, 3) << " +- " << number(d.row.delta_over_D_err, 2)
+                << "; shock angle " << number(d.row.shock_angle_deg, 3) << " deg; results in " << d.dest.string()
+                << "\n";
+    if (several) std::cout << "granshock fields: comparison in " << out.string() << "\n";
+  }
+  return 0;
+}
+
+}  // namespace granshock

@@ -1,0 +1,27 @@
+// `granshock fields DIR... [--out DIR]` (DESIGN.md section 3): recompute the fields,
+// derived quantities, figures and summary keys from each DIR/run.h5.
+#pragma once
+
+#include <filesystem>
+#include <vector>
+
+namespace granshock {
+
+struct FieldsCommandOptions {
+  bool figures = true;  // draw the PNG figures (needs Python with matplotlib)
+  bool quiet = false;   // no result line on stdout
+};
+
+// For each run directory DIR: reads DIR/run.h5, writes fields.h5, fields.xmf,
+// figures/*.png and merges its keys into summary.json, all in DIR (or, with one DIR and a
+// non-empty `out`, in `out`, starting from DIR/summary.json). With several directories it
+// also writes the comparison of their detachment lengths (the paper's Fig. 6) into `out`:
+// detachment.csv, detachment.json and figures/detachment_length.png; `out` is then
+// required. The files that do not need Python are written before the figures, so that a
+// missing matplotlib costs only the PNGs. Returns 0; throws UserError for bad input (no
+// run.h5, no field sums, several DIRs without `out`, no matplotlib).
+int fields_command(const std::vector<std::filesystem::path>& run_dirs, const std::filesystem::path& out);
+int fields_command(const std::vector<std::filesystem::path>& run_dirs, const std::filesystem::path& out,
+                   const FieldsCommandOptions& options);
+
+}  // namespace granshock

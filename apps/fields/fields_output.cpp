@@ -1,0 +1,195 @@
+#include "fields_output.hpp"
+
+#include <cctype>
+#include <cmath>
+#include <limits>
+
+#include "fields_xdmf.hpp"
+
+namespace granshock {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// Dataset names from species names: letters, digits, '_' and '-' kept, the rest '_'.
+std::string dataset_name(const std::string& name) {
+  std::string out;
+  for (char c : name) out += std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' ? c : '_';
+  return out;
+}
+
+std::vector<std::vector<std::array<double, 2>>> as_arrays(const std::vector<Polyline>& lines) {
+  std::vector<std::vector<std::array<double, 2>>> out;
+  for (const Polyline& line : lines) {
+    out.emplace_back();
+    for (const Point2& p : line) out.back().push_back({p.x, p.y});
+  }
+  return out;
+}
+
+nlohmann::json number_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); }
+
+void add_upstream(FieldsFileContent& c, const std::string& group, const UpstreamState& u) {
+  c.attributes.push_back({group, "row_begin", double(u.row_begin)});
+  c.attributes.push_back({group, "row_end", double(u.row_end)});
+  c.attributes.push_back({group, "bins", double(u.bins)});
+  c.attributes.push_back({group, "phi", u.phi});
+  c.attributes.push_back({group, "T", u.temperature});
+  c.attributes.push_back({group, "uy", u.uy});
+  c.attributes.push_back({group, "a", u.sound_speed});
+  c.attributes.push_back({group, "Ma", u.mach});
+  c.attributes.push_back({group, "Ma_mixture_mean", u.mach_mixture_mean});
+  c.attributes.push_back({group, "Ma_paper_sum", u.mach_paper_sum});
+}
+
+void add_flank(FieldsFileContent& c, const std::string& side, const FlankFit& f) {
+  c.attributes.push_back({"/front", side + "_points", double(f.points)});
+  c.attributes.push_back({"/front", side + "_slope", f.slope});
+  c.attributes.push_back({"/front", side + "_intercept", f.intercept});
+  c.attributes.push_back({"/front", side + "_angle_deg", f.angle_deg});
+  c.attributes.push_back({"/front", side + "_angle_err_deg", f.angle_err_deg});
+  c.attributes.push_back({"/front", side + "_region_near", f.region_near});
+  c.attributes.push_back({"/front", side + "_region_far", f.region_far});
+}
+
+}  // namespace
+
+FieldsFileContent fields_file_content(const FieldAnalysis& a) {
+  const FieldPhysics& p = a.physics;
+  FieldsFileContent c;
+  c.nx = a.grid.nx;
+  c.ny = a.grid.ny;
+  c.x0 = a.grid.x0;
+  c.y0 = a.grid.y0;
+  c.dx = a.grid.dx;
+  c.dy = a.grid.dy;
+
+  std::vector<std::string> species;
+  for (const std::string& s : p.species) species.push_back(dataset_name(s));
+  for (const BinFields::Named& f : a.fields.named(species))
+    c.cell_fields.push_back({f.name, f.unit, f.description, *f.values});
+  c.cell_flags.push_back({"masked", "1 where the bin is masked (too few particle samples or T <= 0): NaN fields",
+                          a.fields.masked});
+
+  c.lines.push_back({"sonic", "Ma = 1 iso-lines (marching squares on bin centres)", as_arrays(a.sonic_lines)});
+  c.lines.push_back({"shock_threshold", "shock front: phi crosses phi_up + 0.5 (phi_peak - phi_up) per column",
+                     as_arrays(a.front.threshold_lines)});
+  c.lines.push_back({"shock_max_gradient", "shock front: steepest rise of phi per column",
+                     as_arrays(a.front.gradient_lines)});
+
+  c.series.push_back({"/front/x", "m", "bin column centres", a.front.x});
+  c.series.push_back({"/front/y_threshold", "m", "front position (threshold rule), NaN: no front", a.front.y_threshold});
+  c.series.push_back({"/front/y_max_gradient", "m", "front position (maximum gradient)", a.front.y_max_gradient});
+  c.series.push_back({"/front/phi_peak", "", "largest phi of the searched rows", a.front.phi_peak});
+  c.series.push_back({"/front/threshold", "", "phi_up + fraction (phi_peak - phi_up)", a.front.threshold});
+  add_flank(c, "left", a.front.left);
+  add_flank(c, "right", a.front.right);
+  c.attributes.push_back({"/front", "angle_deg", a.front.angle_deg});
+  c.attributes.push_back({"/front", "phi_up", a.phi_up});
+  c.attributes.push_back({"/front", "reference_row", double(a.reference_row)});
+
+  // The stagnation-line profile.
+  const BinFields& pf = a.profile_fields;
+  std::vector<double> y(static_cast<std::size_t>(a.profile.ny)), masked(pf.size());
+  for (int k = 0; k < a.profile.ny; ++k) y[static_cast<std::size_t>(k)] = a.profile.y_centre(k);
+  for (std::size_t k = 0; k < pf.size(); ++k) masked[k] = pf.masked[k];
+  c.series.push_back({"/profile/y", "m", "profile bin centres", y});
+  c.series.push_back({"/profile/phi", "", "area fraction", pf.phi});
+  c.series.push_back({"/profile/T", "J", "mixture temperature", pf.temperature});
+  c.series.push_back({"/profile/T_norm", "", "T / (m_av U^2)", pf.temperature_norm});
+  c.series.push_back({"/profile/Ma", "", "Mach number (scene's mass definition)", pf.mach});
+  c.series.push_back({"/profile/uy", "m s-1", "streamwise velocity", pf.uy});
+  c.series.push_back({"/profile/pressure", "N m-1", "tr P / Dim", pf.pressure});
+  c.series.push_back({"/profile/mean_count", "", "time-averaged particles in the bin", pf.mean_count});
+  c.series.push_back({"/profile/masked", "", "1 where the bin is masked", masked});
+  c.series.push_back({"/profile/delta_blocks", "m", "detachment length of each block with samples", a.detachment.delta_blocks});
+  const Detachment& d = a.detachment;
+  for (const auto& [name, value] :
+       std::vector<std::pair<std::string, double>>{{"x_lo", a.profile.x0},
+                                                   {"x_hi", a.profile.x0 + a.profile.dx},
+                                                   {"y0", a.profile.y0},
+                                                   {"dy", a.profile.dy},
+                                                   {"from_grid", a.profile_from_grid ? 1.0 : 0.0},
+                                                   {"y_shock", d.y_shock},
+                                                   {"surface", d.surface},
+                                                   {"delta", d.delta},
+                                                   {"delta_err", d.delta_err},
+                                                   {"delta_over_D", d.delta_over_d},
+                                                   {"delta_over_D_err", d.delta_over_d_err},
+                                                   {"phi_peak", d.phi_peak},
+                                                   {"threshold", d.threshold},
+                                                   {"blocks_used", double(d.blocks_used)}})
+    c.attributes.push_back({"/profile", name, value});
+
+  add_upstream(c, "/upstream/inlet", a.upstream_inlet);
+  add_upstream(c, "/upstream/downstream", a.upstream_downstream);
+
+  // Scene facts the figures need, and how the fields were made.
+  const bool has_obstacle = p.obstacle.has_value();
+  for (const auto& [name, value] : std::vector<std::pair<std::string, double>>{
+           {"d", p.d},
+           {"U", p.inflow_speed},
+           {"m_av", p.m_av()},
+           {"restitution", p.restitution},
+           {"strip", p.inflow_strip},
+           {"box_x_lo", p.box_x_lo},
+           {"box_x_hi", p.box_x_hi},
+           {"box_y_lo", p.box_y_lo},
+           {"box_y_hi", p.box_y_hi},
+           {"obstacle_xc", has_obstacle ? p.obstacle->xc : kNaN},
+           {"obstacle_yc", has_obstacle ? p.obstacle->yc : kNaN},
+           {"obstacle_diameter", has_obstacle ? p.obstacle->diameter : kNaN},
+           {"blocks", double(a.grid.blocks)},
+           {"samples", a.grid.total_samples()},
+           {"production_start", a.grid.production_start},
+           {"production_end", a.grid.production_end}})
+    c.attributes.push_back({"/", name, value});
+  c.text_attributes.push_back({"/", "mass_definition", to_string(p.mass_definition)});
+  std::string names;
+  for (const std::string& s : species) names += (names.empty() ? "" : ",") + s;
+  c.text_attributes.push_back({"/", "species", names});
+
+  const nlohmann::json summary = summary_keys(a);
+  for (const auto& [key, value] : summary.items()) {
+    if (value.is_number()) c.attributes.push_back({"/summary", key, value.get<double>()});
+    else if (value.is_null()) c.attributes.push_back({"/summary", key, kNaN});
+    else if (value.is_string()) c.text_attributes.push_back({"/summary", key, value.get<std::string>()});
+  }
+  return c;
+}
+
+void write_fields_outputs(const FieldAnalysis& a, const std::filesystem::path& dir) {
+  const FieldsFileContent content = fields_file_content(a);
+  write_fields_file(dir / "fields.h5", content);
+  write_fields_xdmf(dir / "fields.xmf", "fields.h5", content);
+}
+
+nlohmann::json summary_keys(const FieldAnalysis& a) {
+  nlohmann::json j;
+  j["ma_inf_target"] = number_or_null(a.ma_target);
+  j["ma_inf_measured"] = number_or_null(a.upstream_inlet.mach);
+  j["ma_inf_measured_downstream"] = number_or_null(a.upstream_downstream.mach);
+  j["phi_inf_measured"] = number_or_null(a.upstream_inlet.phi);
+  j["phi_inf_measured_downstream"] = number_or_null(a.upstream_downstream.phi);
+  j["delta_over_D"] = number_or_null(a.detachment.delta_over_d);
+  j["delta_over_D_err"] = number_or_null(a.detachment.delta_over_d_err);
+  j["detachment_length_m"] = number_or_null(a.detachment.delta);
+  j["detachment_blocks"] = a.detachment.blocks_used;
+  j["phi_peak"] = number_or_null(a.phi_peak);
+  j["shock_angle_deg"] = number_or_null(a.front.angle_deg);
+  j["shock_angle_deg_left"] = number_or_null(a.front.left.angle_deg);
+  j["shock_angle_deg_right"] = number_or_null(a.front.right.angle_deg);
+  j["eos_deviation_dilute"] = number_or_null(a.eos.dilute_mean);
+  j["eos_deviation_dense"] = number_or_null(a.eos.dense_mean);
+  j["eos_bins_dilute"] = a.eos.dilute_bins;
+  j["eos_bins_dense"] = a.eos.dense_bins;
+  j["mass_definition"] = to_string(a.physics.mass_definition);
+  long masked = 0;
+  for (int m : a.fields.masked) masked += m;
+  j["fields_masked_bins"] = masked;
+  j["fields_bins"] = static_cast<long>(a.fields.size());
+  return j;
+}
+
+}  // namespace granshock

@@ -1,0 +1,33 @@
+// The figures of `granshock fields`, drawn by Python scripts next to this file
+// (plot_fields.py: the paper's Figs. 3-5 and the stagnation-line profiles;
+// plot_detachment.py: Fig. 6) with matplotlib's Agg backend. The interpreter is
+// $GRANSHOCK_PYTHON or /usr/bin/python3 (Debian's, which has python3-matplotlib and
+// python3-h5py; another python3 first on PATH may lack them).
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace granshock {
+
+// The interpreter the figures use.
+std::filesystem::path plotting_python();
+
+// The path of a figure script: found in $GRANSHOCK_SCRIPT_DIR, then in
+// <directory of the program>/../share/granshock (an installed granshock), then in the
+// source directory this library was built from. Throws UserError when none has it.
+std::filesystem::path figure_script(const std::string& name);
+
+// Throws UserError with the packages to install when the interpreter is missing or
+// cannot import matplotlib, h5py and numpy.
+void require_plotting_python();
+
+// Writes figures_dir/{solid_fraction,temperature,mach,stagnation_profiles}.png from fields.h5.
+void plot_run_figures(const std::filesystem::path& fields_h5, const std::filesystem::path& figures_dir);
+
+// Writes png: delta/D against D/d for each Ma_inf, with error bars, from the table JSON of
+// detachment_table.hpp.
+void plot_detachment_figure(const std::filesystem::path& table_json, const std::filesystem::path& png);
+
+}  // namespace granshock

@@ -1,0 +1,53 @@
+#include "front_crossing.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace granshock {
+
+FrontCrossing find_front_crossing(const std::vector<double>& phi, const std::vector<double>& y, int begin, int end,
+                                  double phi_up, const ThresholdRule& rule) {
+  if (phi.size() != y.size()) throw std::invalid_argument("find_front_crossing: phi and y differ in length");
+  FrontCrossing c;
+  begin = std::max(begin, 0);
+  end = std::min(end, static_cast<int>(phi.size()));
+  if (end - begin < 2 || !(phi_up > 0)) return c;
+  for (int k = begin; k < end; ++k)
+    if (std::isfinite(phi[k]) && (c.peak_index < 0 || phi[k] > c.phi_peak)) {
+      c.phi_peak = phi[k];
+      c.peak_index = k;
+    }
+  if (c.peak_index < 0 || !(c.phi_peak >= rule.min_jump_ratio * phi_up)) return c;
+  c.threshold = phi_up + rule.fraction * (c.phi_peak - phi_up);
+  for (int k = begin; k <= c.peak_index; ++k)
+    if (!std::isfinite(phi[k])) return c;
+  if (phi[begin] >= c.threshold) return c;
+
+  for (int k = begin + 1; k <= c.peak_index; ++k) {
+    if (phi[k] >= c.threshold && phi[k - 1] < c.threshold) {
+      const double t = (c.threshold - phi[k - 1]) / (phi[k] - phi[k - 1]);
+      c.y_threshold = y[k - 1] + t * (y[k] - y[k - 1]);
+      c.found = true;
+      break;
+    }
+  }
+  if (!c.found) return c;
+
+  // Steepest rise upstream of the peak.
+  auto gradient = [&](int k) { return (phi[k + 1] - phi[k]) / (y[k + 1] - y[k]); };
+  int best = begin;
+  for (int k = begin; k < c.peak_index; ++k)
+    if (gradient(k) > gradient(best)) best = k;
+  const double h = y[best + 1] - y[best];
+  double offset = 0;
+  if (best > begin && best + 1 < c.peak_index) {
+    const double gm = gradient(best - 1), g0 = gradient(best), gp = gradient(best + 1);
+    const double curvature = gm - 2 * g0 + gp;
+    if (curvature < 0) offset = std::clamp(0.5 * (gm - gp) / curvature, -0.5, 0.5);
+  }
+  c.y_max_gradient = 0.5 * (y[best] + y[best + 1]) + offset * h;
+  return c;
+}
+
+}  // namespace granshock

@@ -1,0 +1,35 @@
+// The upstream state and Ma_inf as the paper measures it (its section 2, after eq. 8):
+// "the upstream sound-speed a_inf [is calculated] by using T and phi averaged over two
+// bins from the inlet", and Ma_inf = U_inf / a_inf (eq. 5) with U_inf the inflow speed.
+// The first bin row overlaps the insertion strip, where particles appear with the inflow's
+// fluctuation and the area fraction builds up batch by batch, so the same average is also
+// taken over the two rows that start one bin beyond the strip (DESIGN.md 2.3).
+#pragma once
+
+#include "bin_fields.hpp"
+#include "bin_sums.hpp"
+#include "field_physics.hpp"
+
+namespace granshock {
+
+struct UpstreamState {
+  int row_begin = 0, row_end = 0;  // rows [row_begin, row_end) of the grid
+  int bins = 0;                    // unmasked bins averaged
+  double phi = 0;                  // mean over the rows' bins
+  double temperature = 0;          // particle-weighted mean of the bins' T
+  double uy = 0;                   // particle-weighted mean streamwise velocity (measured)
+  double sound_speed = 0;          // a(T, phi) with the scene's mass definition
+  double mach = 0;                 // U / a, U the inflow speed (eq. 5)
+  double mach_mixture_mean = 0, mach_paper_sum = 0;
+};
+
+// Averages rows [row_begin, row_end): phi over every sampled bin, T and u_y weighted with
+// the particles counted in each unmasked bin, the number fractions of the mixture-mean mass
+// from the pooled counts. NaN values (bins = 0) when no bin of those rows is usable.
+UpstreamState measure_upstream(const BinFields& fields, const FieldPhysics& physics, int row_begin, int row_end);
+
+// The first row whose lower edge lies at least one bin beyond the insertion strip:
+// y0 + row dy >= strip + dy.
+int first_row_beyond_strip(const BinSums& grid, double strip);
+
+}  // namespace granshock

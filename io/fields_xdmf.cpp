@@ -1,0 +1,58 @@
+#include "fields_xdmf.hpp"
+
+#include <sstream>
+
+#include "atomic_file.hpp"
+
+namespace granshock {
+
+namespace {
+
+std::string xml_escape(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      case '\'': out += "&apos;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+void write_fields_xdmf(const std::filesystem::path& xmf_path, const std::string& h5_name,
+                       const FieldsFileContent& c) {
+  const std::string h5 = xml_escape(h5_name);
+  const std::string cells = std::to_string(c.ny) + " " + std::to_string(c.nx);
+  const std::string nodes = std::to_string(c.ny + 1) + " " + std::to_string(c.nx + 1);
+  std::ostringstream out;
+  out << "<?xml version=\"1.0\" ?>\n"
+      << "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
+      << "<Xdmf Version=\"2.0\">\n"
+      << "  <Domain>\n"
+      << "    <Grid Name=\"fields\" GridType=\"Uniform\">\n"
+      << "      <Topology TopologyType=\"2DSMesh\" Dimensions=\"" << nodes << "\"/>\n"
+      << "      <Geometry GeometryType=\"XY\">\n"
+      << "        <DataItem Dimensions=\"" << nodes << " 2\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">"
+      << h5 << ":/grid/nodes</DataItem>\n"
+      << "      </Geometry>\n";
+  auto attribute = [&](const std::string& name, const char* type, int precision) {
+    out << "      <Attribute Name=\"" << xml_escape(name) << "\" AttributeType=\"Scalar\" Center=\"Cell\">\n"
+        << "        <DataItem Dimensions=\"" << cells << "\" NumberType=\"" << type << "\" Precision=\"" << precision
+        << "\" Format=\"HDF\">" << h5 << ":/fields/" << xml_escape(name) << "</DataItem>\n"
+        << "      </Attribute>\n";
+  };
+  for (const auto& f : c.cell_fields) attribute(f.name, "Float", 8);
+  for (const auto& f : c.cell_flags) attribute(f.name, "Int", 4);
+  out << "    </Grid>\n"
+      << "  </Domain>\n"
+      << "</Xdmf>\n";
+  write_file_atomically(xmf_path, out.str());
+}
+
+}  // namespace granshock
