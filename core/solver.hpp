@@ -23,6 +23,7 @@ struct Diagnostics {
   double elastic_energy = 0;     // Hertz normal springs: 8/15 Y* sqrt(R*) dn^(5/2)
   long contacts = 0;             // particle pairs plus particle-obstacle contacts
   std::array<double, 3> momentum{0, 0, 0};
+  long non_finite = 0;  // particles with a NaN or infinite position or velocity
 
   double total_energy() const { return kinetic_energy + rotational_energy + elastic_energy; }
 };

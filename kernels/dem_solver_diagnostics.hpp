@@ -22,6 +22,12 @@ Diagnostics DemSolver<Traits, ExecSpace>::diagnostics() const {
     return total;
   };
   Diagnostics out;
+  out.non_finite = long(sum(
+      "diag::non_finite", KOKKOS_LAMBDA(const int i, double& acc) {
+        bool ok = true;
+        for (int d = 0; d < Dim; ++d) ok = ok && dmath::is_finite(double(x(i, d))) && dmath::is_finite(double(v(i, d)));
+        acc += ok ? 0.0 : 1.0;
+      }));
   out.kinetic_energy = sum(
       "diag::kinetic", KOKKOS_LAMBDA(const int i, double& acc) {
         double v2 = 0;

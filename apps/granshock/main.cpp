@@ -79,6 +79,9 @@ int main(int argc, char** argv) {
         std::cerr << "granshock: warning: " << result.time_step.message << "\n";
       std::cout << granshock::to_json(result) << "\n";
     }
+  } catch (const granshock::NumericalFailure& e) {
+    std::cerr << "granshock: error: " << e.what() << "\n";
+    return 4;
   } catch (const granshock::UserError& e) {
     std::cerr << "granshock: error: " << e.what() << "\n";
     return 2;

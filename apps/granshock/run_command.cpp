@@ -88,6 +88,7 @@ class BowShockRun {
   bool sample_due(long step) const;
   long next_sample_after(long step) const;
   void write_field_sums();
+  void check_health(long step, const Diagnostics& d) const;
   nlohmann::json restitution_at_dt() const;
 
   const RunOptions& options_;
@@ -223,6 +224,7 @@ void BowShockRun::write_series_row(long step) {
   row.kinetic_energy = d.kinetic_energy + d.rotational_energy;
   row.temperature = mixture_temperature(scene_, solver_->species_moments());
   row.contacts = d.contacts;
+  check_health(step, d);
   row.inserted = inflow_.inserted();
   row.deleted_outlet = removed.high[1];
   row.deleted_inlet = removed.low[1];
@@ -355,6 +357,25 @@ long BowShockRun::next_sample_after(long step) const {
   if (step < production_first_step_) return production_first_step_;
   const long every = scene_.run.sample_every;
   return production_first_step_ + ((step - production_first_step_) / every + 1) * every;
+}
+
+// DESIGN.md section 4: a run either stays correct or stops with a diagnosis. A NaN or
+// infinite state, or a mean kinetic energy per particle 100 times that of the inflow
+// (energy is only ever supplied by the inflow), means the integration has blown up,
+// almost always because dt is too large for the impacts that occur.
+void BowShockRun::check_health(long step, const Diagnostics& d) const {
+  const double per_particle_inflow =
+      0.5 * scene_.mean_mass() *
+      (scene_.inflow.speed_m_per_s * scene_.inflow.speed_m_per_s + 2 * scene_.inflow.sigma * scene_.inflow.sigma);
+  const double per_particle = solver_->size() > 0 ? d.kinetic_energy / double(solver_->size()) : 0.0;
+  if (d.non_finite == 0 && per_particle <= 100 * per_particle_inflow) return;
+  const TimeStepAssessment guard = scene_.assess_time_step();
+  throw NumericalFailure(fmt::format(
+      "the integration blew up at step {} (t = {:.4g} s): {} particles with a non-finite state, mean "
+      "kinetic energy {:.3g} times the inflow's; dt = {:.3g} s is {:.2f} t_c (stable limit {:.3g} s); "
+      "reduce time.dt",
+      step, step * scene_.setup.dt, d.non_finite, per_particle / per_particle_inflow, scene_.setup.dt,
+      guard.dt_over_tc(), guard.dt_stable));
 }
 
 // The accumulated sums in run.h5 (layout: core/bin_layout.hpp, docs/output_format.md).

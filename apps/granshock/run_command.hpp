@@ -3,10 +3,17 @@
 #pragma once
 
 #include <filesystem>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace granshock {
+
+// A run that blew up numerically (NaN state, exploding energy): exit code 4.
+class NumericalFailure : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 
 struct RunOptions {
   std::filesystem::path scene_file;

@@ -153,3 +153,19 @@ TEST(RunDefaultScene, FormsADenseRegionInFrontOfTheObstacle) {
   std::printf("[ measured ] area fraction in front of the cylinder %.3f (phi_inf 0.1)\n", phi);
   EXPECT_GE(phi, 0.2);
 }
+
+// DESIGN.md section 4: past the stable limit (forced), the run does not produce garbage
+// silently: it stops with a diagnosis naming dt and t_c.
+TEST(RunStability, ForcedUnstableStepStopsWithADiagnosis) {
+  TempDir tmp;
+  const auto scene = tmp.write("small.toml", small_scene(true));
+  RunOptions o = options_for(scene, tmp.path() / "run", {"time.dt=3e-6"});
+  o.force = true;
+  try {
+    run_scene(o);
+    FAIL() << "a run at dt = 1.2 t_c finished without a diagnosis";
+  } catch (const NumericalFailure& e) {
+    EXPECT_NE(std::string(e.what()).find("blew up"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("reduce time.dt"), std::string::npos) << e.what();
+  }
+}

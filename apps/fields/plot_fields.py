@@ -1,0 +1,174 @@
+#!/usr/bin/python3
+"""Figures of one run from its fields.h5 (written by `granshock fields`), like the
+paper's Figs. 3-5: solid fraction, normalised temperature and Mach number on the bin
+grid (axes in units of the particle diameter d, the obstacle drawn, the sonic line and the
+shock front over the Mach field), and the stagnation-line profiles of phi, T and Ma.
+
+Usage: plot_fields.py FIELDS_H5 FIGURES_DIR
+
+Writes FIGURES_DIR/{solid_fraction,temperature,mach,stagnation_profiles}.png. Needs
+numpy, h5py and matplotlib (Debian: python3-numpy python3-h5py python3-matplotlib).
+"""
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")  # files only, no display
+
+import h5py  # noqa: E402
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+from matplotlib.colors import LogNorm  # noqa: E402
+from matplotlib.patches import Circle  # noqa: E402
+
+
+def read_lines(f, name):
+    """The polylines stored as /lines/NAME/{points,offsets}, as a list of (k, 2) arrays."""
+    group = f.get("lines/" + name)
+    if group is None:
+        return []
+    points, offsets = group["points"][...], group["offsets"][...]
+    return [points[offsets[i]:offsets[i + 1]] for i in range(len(offsets) - 1)]
+
+
+class Run:
+    def __init__(self, path):
+        with h5py.File(path, "r") as f:
+            attrs = f.attrs
+            self.d = float(attrs["d"])
+            self.u_inf = float(attrs["U"])
+            self.xc = float(attrs["obstacle_xc"])
+            self.yc = float(attrs["obstacle_yc"])
+            self.diameter = float(attrs["obstacle_diameter"])
+            mass_definition = attrs["mass_definition"]
+            self.mass_definition = (mass_definition.decode() if isinstance(mass_definition, bytes)
+                                    else str(mass_definition))
+            self.x_nodes = f["grid/x_nodes"][...] / self.d
+            self.y_nodes = f["grid/y_nodes"][...] / self.d
+            self.fields = {name: f["fields/" + name][...] for name in ("phi", "T_norm", "Ma", "masked")}
+            self.sonic = [line / self.d for line in read_lines(f, "sonic")]
+            self.front = [line / self.d for line in read_lines(f, "shock_threshold")]
+            profile = f["profile"]
+            self.profile = {name: profile[name][...] for name in ("y", "phi", "T_norm", "Ma")}
+            self.profile["y"] = self.profile["y"] / self.d
+            self.y_shock = float(profile.attrs["y_shock"]) / self.d
+            self.surface = float(profile.attrs["surface"]) / self.d
+            self.delta_over_d = float(profile.attrs["delta_over_D"])
+            self.delta_over_d_err = float(profile.attrs["delta_over_D_err"])
+            summary = f["summary"].attrs
+            self.ma_target = float(summary["ma_inf_target"])
+            self.ma_measured = float(summary["ma_inf_measured"])
+
+    def has_obstacle(self):
+        return np.isfinite(self.diameter) and self.diameter > 0
+
+    def draw_obstacle(self, ax):
+        if self.has_obstacle():
+            ax.add_patch(Circle((self.xc / self.d, self.yc / self.d), self.diameter / (2 * self.d),
+                                facecolor="0.75", edgecolor="k", linewidth=0.8, zorder=3))
+
+    def title(self, what):
+        parts = [what]
+        if self.has_obstacle():
+            parts.append(f"D = {self.diameter / self.d:.0f} d")
+        if np.isfinite(self.ma_target):
+            parts.append(f"Ma$_\\infty$ = {self.ma_target:.3g}")
+        return ", ".join(parts)
+
+
+def field_figure(run, values, label, title, path, norm=None, cmap="viridis", lines=()):
+    """One field on the bin grid; masked (NaN) bins are drawn grey."""
+    width = run.x_nodes[-1] - run.x_nodes[0]
+    height = run.y_nodes[-1] - run.y_nodes[0]
+    fig_w = 6.0
+    fig_h = min(max(fig_w * height / width * 0.85, 3.0), 10.0)
+    fig, ax = plt.subplots(figsize=(fig_w, fig_h), constrained_layout=True)
+    ax.set_facecolor("0.85")
+    data = np.ma.masked_invalid(values)
+    mesh = ax.pcolormesh(run.x_nodes, run.y_nodes, data, shading="flat", cmap=cmap, norm=norm)
+    fig.colorbar(mesh, ax=ax, label=label, shrink=0.9)
+    for line_set, style in lines:
+        for i, line in enumerate(line_set):
+            if len(line) > 1:
+                ax.plot(line[:, 0], line[:, 1], **style, label=style.get("label") if i == 0 else None)
+    if any(len(s) for s, _ in lines):
+        ax.legend(loc="lower left", fontsize=8, framealpha=0.8)
+    run.draw_obstacle(ax)
+    ax.set_xlim(run.x_nodes[0], run.x_nodes[-1])
+    ax.set_ylim(run.y_nodes[0], run.y_nodes[-1])
+    ax.set_aspect("equal")
+    ax.set_xlabel("x / d (crosswise)")
+    ax.set_ylabel("y / d (streamwise)")
+    ax.set_title(title, fontsize=10)
+    fig.savefig(path, dpi=150)
+    plt.close(fig)
+
+
+def positive_norm(values):
+    """Log colour scale when a positive field spans more than two decades, else linear."""
+    finite = values[np.isfinite(values) & (values > 0)]
+    if finite.size == 0:
+        return None
+    lo, hi = np.percentile(finite, 1), finite.max()
+    return LogNorm(vmin=lo, vmax=hi) if hi > 100 * lo else None
+
+
+def profile_figure(run, path):
+    p = run.profile
+    fig, axes = plt.subplots(3, 1, figsize=(6.0, 7.0), sharex=True, constrained_layout=True)
+    for ax, (name, label) in zip(axes, (("phi", "$\\phi$"), ("T_norm", "$T/(m_{av}U_\\infty^2)$"),
+                                        ("Ma", "Ma"))):
+        ax.plot(p["y"], p[name], "-o", markersize=2.5, linewidth=1.0)
+        if np.isfinite(run.y_shock):
+            ax.axvline(run.y_shock, color="C3", linestyle="--", linewidth=0.9, label="shock (threshold rule)")
+        if np.isfinite(run.surface):
+            ax.axvline(run.surface, color="k", linewidth=0.9, label="cylinder surface")
+        if name == "Ma":
+            ax.axhline(1.0, color="0.5", linestyle=":", linewidth=0.9)
+        if name == "T_norm" and np.nanmax(p[name], initial=0) > 0:
+            positive = p[name][np.isfinite(p[name]) & (p[name] > 0)]
+            if positive.size and positive.max() > 100 * positive.min():
+                ax.set_yscale("log")
+        ax.set_ylabel(label)
+        ax.grid(alpha=0.3)
+    axes[0].legend(fontsize=8)
+    axes[-1].set_xlabel("y / d (along the stagnation line)")
+    title = run.title("Stagnation line")
+    if np.isfinite(run.delta_over_d):
+        title += f", $\\delta/D$ = {run.delta_over_d:.3g}"
+        if np.isfinite(run.delta_over_d_err):
+            title += f" $\\pm$ {run.delta_over_d_err:.2g}"
+    axes[0].set_title(title, fontsize=10)
+    fig.savefig(path, dpi=150)
+    plt.close(fig)
+
+
+def main():
+    if len(sys.argv) != 3:
+        print(__doc__, file=sys.stderr)
+        return 2
+    run = Run(sys.argv[1])
+    out = sys.argv[2]
+    os.makedirs(out, exist_ok=True)
+    f = run.fields
+    front_style = dict(color="w", linestyle="--", linewidth=1.0, label="shock front")
+    field_figure(run, f["phi"], "solid fraction $\\phi$", run.title("Solid fraction"),
+                 os.path.join(out, "solid_fraction.png"), cmap="viridis",
+                 lines=((run.front, dict(front_style, color="r")),))
+    field_figure(run, f["T_norm"], "$T/(m_{av}U_\\infty^2)$", run.title("Granular temperature"),
+                 os.path.join(out, "temperature.png"), norm=positive_norm(f["T_norm"]), cmap="inferno")
+    ma = f["Ma"]
+    finite = ma[np.isfinite(ma)]
+    vmax = np.percentile(finite, 99) if finite.size else 1.0
+    field_figure(run, ma, f"Ma ({run.mass_definition})", run.title("Mach number"),
+                 os.path.join(out, "mach.png"), cmap="coolwarm",
+                 norm=matplotlib.colors.TwoSlopeNorm(vmin=0.0, vcenter=1.0, vmax=max(vmax, 1.5)),
+                 lines=((run.sonic, dict(color="k", linewidth=1.4, label="sonic line Ma = 1")),
+                        (run.front, front_style)))
+    profile_figure(run, os.path.join(out, "stagnation_profiles.png"))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

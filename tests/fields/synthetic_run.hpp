@@ -1,0 +1,214 @@
+// Synthetic field sums for the tests of `granshock fields`: bins filled with the exact
+// moments of known states (per species a Maxwellian of temperature T_a about a common mean
+// velocity u, and an isotropic collisional pressure), a small bow-shock scene, and run.h5
+// files written the way `granshock run` stores its sums (RunFile::write_array and
+// write_attribute, layout of core/bin_layout.hpp).
+#pragma once
+
+#include <stdlib.h>
+
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "bin_sums.hpp"
+#include "field_physics.hpp"
+#include "kinetic_theory.hpp"
+#include "run_file.hpp"
+#include "scene_file.hpp"
+
+namespace granshock::test {
+
+// A channel 60 d wide and 90 d long, the paper's mixture (steel and aluminium, d = 1 mm,
+// e = 0.5, equimolar), U = 1 m/s at Ma_inf 5.9, a cylinder of `diameter_d` d at (30 d, 60 d).
+inline std::string bow_shock_scene(double diameter_d = 12, double mach = 5.9) {
+  return R"(
+[scene]
+name = "synthetic"
+[units]
+d = 0.001
+[[species]]
+name = "steel"
+material = "steel"
+diameter = "1 d"
+number_fraction = 0.5
+[[species]]
+name = "aluminium"
+material = "aluminium"
+diameter = "1 d"
+number_fraction = 0.5
+[contact]
+restitution = 0.5
+[domain]
+width = "60 d"
+length = "90 d"
+[obstacle]
+diameter = ")" + std::to_string(diameter_d) + R"( d"
+centre = ["30 d", "60 d"]
+[inflow]
+area_fraction = 0.1
+velocity = 1.0
+mach = )" + std::to_string(mach) + R"(
+[time]
+dt = 2e-7
+duration = 0.01
+production_start = 0.005
+)";
+}
+
+inline FieldPhysics physics_of(const std::string& toml) {
+  return field_physics_from_scene(parse_scene(toml).scene);
+}
+
+// The time-averaged state of a bin: per species number density (1/m^2) and temperature
+// (J), the common mean velocity, and the collisional pressure (isotropic, N/m).
+struct BinState {
+  std::vector<double> n, temperature;
+  double ux = 0, uy = 0;
+  double p_col = 0;
+};
+
+inline BinSums empty_sums(int nx, int ny, int blocks, double x0, double y0, double dx, double dy, int n_species = 2) {
+  BinSums s;
+  s.n_species = n_species;
+  s.nx = nx;
+  s.ny = ny;
+  s.blocks = blocks;
+  s.x0 = x0;
+  s.y0 = y0;
+  s.dx = dx;
+  s.dy = dy;
+  s.production_start = 0.005;
+  s.production_end = 0.01;
+  s.sums.assign(static_cast<std::size_t>(blocks) * nx * ny * s.quantities(), 0.0);
+  s.samples.assign(static_cast<std::size_t>(blocks), 0.0);
+  return s;
+}
+
+// Adds `weight` times the sums that `samples` samples of `state` give to bin (iy, ix) of
+// `block` (a weight below 1: the state fills that fraction of the bin; sums are linear).
+// N_a = n_a V S, sum c = N_a u, sum c_i c_j = N_a (u_i u_j + delta_ij T_a / m_a),
+// W = p_col V S (identity), so that p_col = <W> / V.
+inline void add_state(BinSums& s, int block, int iy, int ix, const BinState& st, const FieldPhysics& phys,
+                      double samples, double weight = 1.0) {
+  const BinLayout l = s.layout();
+  auto at = [&](int q) -> double& { return s.sums[static_cast<std::size_t>(l.offset(block, iy, ix, q))]; };
+  const double volume = s.bin_area() * samples * weight;
+  for (int a = 0; a < s.n_species; ++a) {
+    const double n = st.n[static_cast<std::size_t>(a)] * volume;
+    const double c2 = st.temperature[static_cast<std::size_t>(a)] / phys.mass[static_cast<std::size_t>(a)];
+    at(l.species_index(a, BinLayout::count)) += n;
+    at(l.species_index(a, BinLayout::sum_vx)) += n * st.ux;
+    at(l.species_index(a, BinLayout::sum_vy)) += n * st.uy;
+    at(l.species_index(a, BinLayout::sum_vxvx)) += n * (st.ux * st.ux + c2);
+    at(l.species_index(a, BinLayout::sum_vxvy)) += n * st.ux * st.uy;
+    at(l.species_index(a, BinLayout::sum_vyvy)) += n * (st.uy * st.uy + c2);
+  }
+  at(l.virial_index(BinLayout::w_xx)) += st.p_col * volume;
+  at(l.virial_index(BinLayout::w_yy)) += st.p_col * volume;
+}
+
+// An equimolar state of area fraction phi (diameters from the scene), both species at the
+// same temperature T, obeying the equation of state p = n T F(phi) when eos is set.
+inline BinState mixture_state(const FieldPhysics& phys, double phi, double temperature, double ux, double uy,
+                              bool eos = true) {
+  BinState st;
+  double disk = 0;
+  for (double d : phys.diameter) disk += 0.5 * M_PI * d * d / 4;
+  const double n_total = phi / disk;
+  st.n = {0.5 * n_total, 0.5 * n_total};
+  st.temperature = {temperature, temperature};
+  st.ux = ux;
+  st.uy = uy;
+  if (eos) st.p_col = n_total * temperature * (pressure_factor(phi, phys.restitution, phys.dim) - 1);
+  return st;
+}
+
+// The temperature that gives Mach number `mach` at speed u in an equimolar state of area
+// fraction phi (mixture-mean mass).
+inline double temperature_for_mach(const FieldPhysics& phys, double phi, double speed, double mach) {
+  const double m = 0.5 * (phys.mass[0] + phys.mass[1]);
+  const double a = speed / mach;
+  return a * a * m / sound_speed_factor(phi, phys.restitution, phys.dim);
+}
+
+// Fills every bin of every block with a mixture of two states split by a front: the
+// fraction of the bin (sampled on sub x sub points) where behind(x, y, block) holds gets
+// `post`, the rest `pre`; points inside the cylinder get nothing. samples_per_block for
+// every block.
+inline void fill_with_front(BinSums& s, const FieldPhysics& phys, const BinState& pre, const BinState& post,
+                            const std::function<bool(double, double, int)>& behind, double samples_per_block,
+                            int sub = 8) {
+  for (int b = 0; b < s.blocks; ++b) {
+    s.samples[static_cast<std::size_t>(b)] = samples_per_block;
+    for (int iy = 0; iy < s.ny; ++iy) {
+      for (int ix = 0; ix < s.nx; ++ix) {
+        double f_pre = 0, f_post = 0;
+        for (int j = 0; j < sub; ++j) {
+          for (int i = 0; i < sub; ++i) {
+            const double x = s.x0 + (ix + (i + 0.5) / sub) * s.dx, y = s.y0 + (iy + (j + 0.5) / sub) * s.dy;
+            if (phys.obstacle && std::hypot(x - phys.obstacle->xc, y - phys.obstacle->yc) < phys.obstacle->radius())
+              continue;
+            (behind(x, y, b) ? f_post : f_pre) += 1.0 / (sub * sub);
+          }
+        }
+        if (f_pre > 0) add_state(s, b, iy, ix, pre, phys, samples_per_block, f_pre);
+        if (f_post > 0) add_state(s, b, iy, ix, post, phys, samples_per_block, f_post);
+      }
+    }
+  }
+}
+
+// Writes run.h5 in dir with the scene and the sums, as `granshock run` stores them.
+inline void write_run_file(const std::filesystem::path& dir, const std::string& scene_toml, const BinSums& grid,
+                           const BinSums* profile) {
+  std::filesystem::create_directories(dir);
+  const LoadedScene loaded = parse_scene(scene_toml);
+  RunFile run = RunFile::create(dir / "run.h5", scene_toml, loaded.resolved, 2);
+  const std::string g = "/fields/grid";
+  run.write_array(g + "/sums", grid.sums, {grid.blocks, grid.ny, grid.nx, grid.quantities()});
+  run.write_array(g + "/samples", grid.samples, {grid.blocks});
+  run.write_attribute(g, "nx", long(grid.nx));
+  run.write_attribute(g, "ny", long(grid.ny));
+  run.write_attribute(g, "blocks", long(grid.blocks));
+  run.write_attribute(g, "n_species", long(grid.n_species));
+  run.write_attribute(g, "x0", grid.x0);
+  run.write_attribute(g, "y0", grid.y0);
+  run.write_attribute(g, "bin_size", grid.dx);
+  run.write_attribute(g, "production_start", grid.production_start);
+  run.write_attribute(g, "production_end", grid.production_end);
+  if (profile != nullptr) {
+    const std::string p = "/fields/profile";
+    run.write_array(p + "/sums", profile->sums, {profile->blocks, profile->ny, profile->quantities()});
+    run.write_array(p + "/samples", profile->samples, {profile->blocks});
+    run.write_attribute(p, "n", long(profile->ny));
+    run.write_attribute(p, "x_lo", profile->x0);
+    run.write_attribute(p, "x_hi", profile->x0 + profile->dx);
+    run.write_attribute(p, "y0", profile->y0);
+    run.write_attribute(p, "dy", profile->dy);
+  }
+  run.flush();
+}
+
+// A fresh temporary directory, removed with its contents.
+class ScratchDir {
+ public:
+  ScratchDir() {
+    std::string pattern = (std::filesystem::temp_directory_path() / "granshock-fields-XXXXXX").string();
+    path_ = mkdtemp(pattern.data());
+  }
+  ~ScratchDir() {
+    std::error_code ec;
+    std::filesystem::remove_all(path_, ec);
+  }
+  ScratchDir(const ScratchDir&) = delete;
+  ScratchDir& operator=(const ScratchDir&) = delete;
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+};
+
+}  // namespace granshock::test
