@@ -160,6 +160,17 @@ class DemSolver final : public Solver {
     Kokkos::parallel_for("contact_forces", Policy(0, p_.n), kernel);
   }
 
+  // Public because it launches a KOKKOS_LAMBDA: nvcc rejects an extended lambda whose
+  // enclosing member function is private or protected.
+  void wrap_periodic() {
+    const auto box = box_;
+    const auto x = p_.x;
+    Kokkos::parallel_for(
+        "wrap_periodic", Policy(0, p_.n), KOKKOS_LAMBDA(const int i) {
+          for (int d = 0; d < Dim; ++d) x(i, d) = box.wrap(d, x(i, d));
+        });
+  }
+
  private:
   static const SystemSetup& validated(const SystemSetup& s) {
     if (s.species.empty()) throw UserError("a scene needs at least one species");
@@ -173,15 +184,6 @@ class DemSolver final : public Solver {
     p_.allocate(capacity, Traits::friction);
     x_ref_ = decltype(x_ref_)("x_ref", capacity);
     if constexpr (Traits::friction) history_.allocate(capacity);
-  }
-
-  void wrap_periodic() {
-    const auto box = box_;
-    const auto x = p_.x;
-    Kokkos::parallel_for(
-        "wrap_periodic", Policy(0, p_.n), KOKKOS_LAMBDA(const int i) {
-          for (int d = 0; d < Dim; ++d) x(i, d) = box.wrap(d, x(i, d));
-        });
   }
 
   SystemSetup setup_;
