@@ -75,7 +75,7 @@ struct CellGrid {
     return flat(nc);
   }
 
-  static constexpr int neighbour_count() { return Dim == 2 ? 9 : 27; }
+  KOKKOS_INLINE_FUNCTION static constexpr int neighbour_count() { return Dim == 2 ? 9 : 27; }
 };
 
 }  // namespace granshock

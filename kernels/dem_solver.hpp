@@ -15,6 +15,7 @@
 #include "cell_sort.hpp"
 #include "contact_forces.hpp"
 #include "contact_history.hpp"
+#include "device_lambda.hpp"
 #include "particle_population.hpp"
 #include "reorder.hpp"
 #include "scene_traits.hpp"
@@ -208,6 +209,32 @@ class DemSolver final : public Solver {
     if (!profile_sums_.empty()) profile_sums_.from_host(profile);
   }
 
+  // Public because it launches a KOKKOS_LAMBDA: nvcc rejects an extended lambda whose
+  // enclosing member function is private or protected.
+  void wrap_periodic() {
+    const auto box = box_;
+    const auto x = p_.x;
+    Kokkos::parallel_for(
+        "wrap_periodic", Policy(0, p_.n), KOKKOS_LAMBDA(const int i) {
+          for (int d = 0; d < Dim; ++d) x(i, d) = box.wrap(d, x(i, d));
+        });
+  }
+
+  // Public for the same reason (nvcc and KOKKOS_LAMBDA).
+  template <class View>
+  static void copy_prefix(const View& dst, const View& src, int n) {
+    if (src.extent(0) == 0 || n == 0) return;
+    Kokkos::parallel_for(
+        "copy_prefix", Policy(0, n), KOKKOS_LAMBDA(const int i) {
+          capture_before_if_constexpr(dst, src);
+          if constexpr (View::rank == 1) {
+            dst(i) = src(i);
+          } else {
+            for (int c = 0; c < int(src.extent(1)); ++c) dst(i, c) = src(i, c);
+          }
+        });
+  }
+
  private:
   static const SystemSetup& validated(const SystemSetup& s) {
     if (s.species.empty()) throw UserError("a scene needs at least one species");
@@ -246,19 +273,6 @@ class DemSolver final : public Solver {
     }
   }
 
-  template <class View>
-  static void copy_prefix(const View& dst, const View& src, int n) {
-    if (src.extent(0) == 0 || n == 0) return;
-    Kokkos::parallel_for(
-        "copy_prefix", Policy(0, n), KOKKOS_LAMBDA(const int i) {
-          if constexpr (View::rank == 1) {
-            dst(i) = src(i);
-          } else {
-            for (int c = 0; c < int(src.extent(1)); ++c) dst(i, c) = src(i, c);
-          }
-        });
-  }
-
   // Reorders every per-particle array: new index k holds old particle order(k).
   template <class OrderView>
   void permute(const OrderView& order, int n) {
@@ -275,15 +289,6 @@ class DemSolver final : public Solver {
       gather_in_place<ExecSpace>(history_.spring, scratch_spring_, order, n);
       gather_in_place<ExecSpace>(history_.wall_spring, scratch_vec_, order, n);
     }
-  }
-
-  void wrap_periodic() {
-    const auto box = box_;
-    const auto x = p_.x;
-    Kokkos::parallel_for(
-        "wrap_periodic", Policy(0, p_.n), KOKKOS_LAMBDA(const int i) {
-          for (int d = 0; d < Dim; ++d) x(i, d) = box.wrap(d, x(i, d));
-        });
   }
 
   void remove_escaped_now() {

@@ -4,11 +4,14 @@
 
 #include <algorithm>
 
+#include "device_lambda.hpp"
+
 namespace granshock {
 
 template <class Traits, class ExecSpace>
 Diagnostics DemSolver<Traits, ExecSpace>::diagnostics() const {
-  const auto x = p_.x, v = p_.v, omega = p_.omega;
+  const auto x = p_.x, v = p_.v;  // one type per auto declaration (VectorView)
+  const auto omega = p_.omega;
   const auto species = p_.species, id = p_.id;
   const auto off = list_.offsets, nb = list_.neighbours;
   const auto table = table_;
@@ -51,6 +54,7 @@ Diagnostics DemSolver<Traits, ExecSpace>::diagnostics() const {
   // and give each appearance half of the pair's elastic energy.
   out.elastic_energy = sum(
       "diag::elastic", KOKKOS_LAMBDA(const int i, double& acc) {
+        capture_before_if_constexpr(cyl);
         const int si = species(i);
         for (int k = off(i); k < off(i + 1); ++k) {
           const int j = nb(k);
@@ -70,6 +74,7 @@ Diagnostics DemSolver<Traits, ExecSpace>::diagnostics() const {
       });
   out.contacts = long(sum(
       "diag::contacts", KOKKOS_LAMBDA(const int i, double& acc) {
+        capture_before_if_constexpr(cyl);
         const int si = species(i);
         for (int k = off(i); k < off(i + 1); ++k) {
           const int j = nb(k);

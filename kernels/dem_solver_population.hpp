@@ -56,6 +56,7 @@ int DemSolver<Traits, ExecSpace>::insert(const InsertionRequest& rq) {
   Kokkos::parallel_scan(
       "insert::accept", Policy(0, m),
       KOKKOS_LAMBDA(const int k, int& running, const bool final) {
+        capture_before_if_constexpr(cyl);
         bool ok = true;
         Vec<Dim, Real> ck = Vec<Dim, Real>::zero();
         ck[0] = cand(k, 0);
@@ -102,6 +103,7 @@ int DemSolver<Traits, ExecSpace>::insert(const InsertionRequest& rq) {
   const auto history = history_;
   Kokkos::parallel_for(
       "insert::place", Policy(0, m), KOKKOS_LAMBDA(const int k) {
+        capture_before_if_constexpr(omega, torque, history);
         const int r = rank(k);
         if (r < 0 || r >= take) return;
         const int i = n + r;

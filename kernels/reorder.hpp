@@ -5,6 +5,8 @@
 #include <Kokkos_Core.hpp>
 #include <utility>
 
+#include "device_lambda.hpp"
+
 namespace granshock {
 
 // Gathers `view` through `order` into `scratch`, then swaps the two handles, so that
@@ -19,6 +21,7 @@ void gather_in_place(View& view, View& scratch, const OrderView& order, int n) {
   auto dst = scratch;
   Kokkos::parallel_for(
       "reorder::gather", Kokkos::RangePolicy<ExecSpace>(0, n), KOKKOS_LAMBDA(const int k) {
+        capture_before_if_constexpr(src, dst);
         const int from = order(k);
         if constexpr (View::rank == 1) {
           dst(k) = src(from);

@@ -6,6 +6,7 @@
 
 #include <Kokkos_Core.hpp>
 
+#include "device_lambda.hpp"
 #include "particle_store.hpp"
 #include "species_table.hpp"
 #include "vec.hpp"
@@ -36,6 +37,7 @@ struct VelocityVerlet {
     Kokkos::parallel_reduce(
         "verlet::first_half", Policy(0, p.n),
         KOKKOS_LAMBDA(const int i, Real& worst) {
+          capture_before_if_constexpr(omega, torque, inv_inertia);
           const int s = species(i);
           const Real im = inv_mass(s);
           Real d2 = 0;
@@ -62,6 +64,7 @@ struct VelocityVerlet {
     const auto inv_mass = table.inv_mass, inv_inertia = table.inv_inertia;
     Kokkos::parallel_for(
         "verlet::second_half", Policy(0, p.n), KOKKOS_LAMBDA(const int i) {
+          capture_before_if_constexpr(omega, torque, inv_inertia);
           const int s = species(i);
           const Real im = inv_mass(s);
           for (int d = 0; d < Dim; ++d) v(i, d) += half * (f(i, d) * im + g[d]);
