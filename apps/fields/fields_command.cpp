@@ -6,10 +6,12 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "bin_sums.hpp"
 #include "detachment_table.hpp"
 #include "field_analysis.hpp"
 #include "fields_output.hpp"
 #include "figures.hpp"
+#include "run_file.hpp"
 #include "summary_json.hpp"
 #include "user_error.hpp"
 
@@ -53,6 +55,18 @@ struct Done {
 };
 
 }  // namespace
+
+bool run_has_field_sums(const fs::path& run_dir) {
+  std::error_code ec;
+  if (!fs::exists(run_dir / "run.h5", ec)) return false;
+  try {
+    const RunFile run = RunFile::open_read_only(run_dir / "run.h5");
+    static_cast<void>(read_grid_sums(run));
+    return true;
+  } catch (const UserError&) {
+    return false;
+  }
+}
 
 int fields_command(const std::vector<fs::path>& run_dirs, const fs::path& out) {
   return fields_command(run_dirs, out, FieldsCommandOptions{});

@@ -21,7 +21,12 @@ struct FieldsCommandOptions {
 // missing matplotlib costs only the PNGs. Returns 0; throws UserError for bad input (no
 // run.h5, no field sums, several DIRs without `out`, no matplotlib).
 int fields_command(const std::vector<std::filesystem::path>& run_dirs, const std::filesystem::path& out);
+// The same, without figures or without the result line on stdout.
 int fields_command(const std::vector<std::filesystem::path>& run_dirs, const std::filesystem::path& out,
                    const FieldsCommandOptions& options);
+
+// Whether run_dir/run.h5 exists and holds field sums (/fields/grid): a run stopped before
+// its production window has none, and `granshock run` can skip the fields then.
+bool run_has_field_sums(const std::filesystem::path& run_dir);
 
 }  // namespace granshock

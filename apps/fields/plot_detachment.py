@@ -46,6 +46,7 @@ def main():
         err = [e if math.isfinite(e) else 0.0 for e in err]
         label = f"Ma$_\\infty$ = {key:g}" if math.isfinite(key) else "Ma$_\\infty$ unknown"
         ax.errorbar(x, y, yerr=err, marker=markers[i % len(markers)], capsize=3, linewidth=1.0, label=label)
+    ax.set_ylim(bottom=0)
     ax.set_xlabel("D / d")
     ax.set_ylabel("$\\delta$ / D")
     ax.set_title("Detachment length", fontsize=10)

@@ -20,7 +20,7 @@ import h5py  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.colors import LogNorm  # noqa: E402
-from matplotlib.patches import Circle  # noqa: E402
+from matplotlib.patches import Circle, Rectangle  # noqa: E402
 
 
 def read_lines(f, name):
@@ -78,21 +78,25 @@ class Run:
 
 
 def field_figure(run, values, label, title, path, norm=None, cmap="viridis", lines=()):
-    """One field on the bin grid; masked (NaN) bins are drawn grey."""
+    """One field on the bin grid; masked (NaN) bins show a hatched background."""
     width = run.x_nodes[-1] - run.x_nodes[0]
     height = run.y_nodes[-1] - run.y_nodes[0]
     fig_w = 6.0
     fig_h = min(max(fig_w * height / width * 0.85, 3.0), 10.0)
     fig, ax = plt.subplots(figsize=(fig_w, fig_h), constrained_layout=True)
-    ax.set_facecolor("0.85")
+    ax.set_facecolor("white")
+    ax.add_patch(Rectangle((run.x_nodes[0], run.y_nodes[0]), width, height, hatch="///", fill=False,
+                           edgecolor="0.6", linewidth=0, zorder=0))
     data = np.ma.masked_invalid(values)
     mesh = ax.pcolormesh(run.x_nodes, run.y_nodes, data, shading="flat", cmap=cmap, norm=norm)
     fig.colorbar(mesh, ax=ax, label=label, shrink=0.9)
     for line_set, style in lines:
+        style = dict(style)
+        label = style.pop("label", None)
         for i, line in enumerate(line_set):
             if len(line) > 1:
-                ax.plot(line[:, 0], line[:, 1], **style, label=style.get("label") if i == 0 else None)
-    if any(len(s) for s, _ in lines):
+                ax.plot(line[:, 0], line[:, 1], **style, label=label if i == 0 else None)
+    if ax.get_legend_handles_labels()[0]:
         ax.legend(loc="lower left", fontsize=8, framealpha=0.8)
     run.draw_obstacle(ax)
     ax.set_xlim(run.x_nodes[0], run.x_nodes[-1])
@@ -101,6 +105,9 @@ def field_figure(run, values, label, title, path, norm=None, cmap="viridis", lin
     ax.set_xlabel("x / d (crosswise)")
     ax.set_ylabel("y / d (streamwise)")
     ax.set_title(title, fontsize=10)
+    if np.isnan(values).any():
+        ax.text(1.0, -0.06, "hatched: masked bins (too few particles)", transform=ax.transAxes,
+                ha="right", va="top", fontsize=7, color="0.3")
     fig.savefig(path, dpi=150)
     plt.close(fig)
 
@@ -132,7 +139,8 @@ def profile_figure(run, path):
                 ax.set_yscale("log")
         ax.set_ylabel(label)
         ax.grid(alpha=0.3)
-    axes[0].legend(fontsize=8)
+    if axes[0].get_legend_handles_labels()[0]:
+        axes[0].legend(fontsize=8)
     axes[-1].set_xlabel("y / d (along the stagnation line)")
     title = run.title("Stagnation line")
     if np.isfinite(run.delta_over_d):
@@ -160,10 +168,11 @@ def main():
                  os.path.join(out, "temperature.png"), norm=positive_norm(f["T_norm"]), cmap="inferno")
     ma = f["Ma"]
     finite = ma[np.isfinite(ma)]
-    vmax = np.percentile(finite, 99) if finite.size else 1.0
+    # The 95th percentile: a few sparse, cold bins (in the wake) can have a huge Ma.
+    vmax = np.percentile(finite, 95) if finite.size else 1.0
     field_figure(run, ma, f"Ma ({run.mass_definition})", run.title("Mach number"),
                  os.path.join(out, "mach.png"), cmap="coolwarm",
-                 norm=matplotlib.colors.TwoSlopeNorm(vmin=0.0, vcenter=1.0, vmax=max(vmax, 1.5)),
+                 norm=matplotlib.colors.TwoSlopeNorm(vmin=0.0, vcenter=1.0, vmax=max(vmax, 2.0)),
                  lines=((run.sonic, dict(color="k", linewidth=1.4, label="sonic line Ma = 1")),
                         (run.front, front_style)))
     profile_figure(run, os.path.join(out, "stagnation_profiles.png"))

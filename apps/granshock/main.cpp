@@ -6,6 +6,7 @@
 #include <map>
 
 #include "build_info.hpp"
+#include "fields_command.hpp"
 #include "head_on_collision.hpp"
 #include "kokkos_runtime.hpp"
 #include "run_command.hpp"
@@ -44,6 +45,14 @@ void add_run_command(CLI::App& app, granshock::RunOptions& o) {
   cmd->add_flag("--quiet", o.quiet, "no progress lines");
 }
 
+void add_fields_command(CLI::App& app, std::vector<std::filesystem::path>& dirs,
+                        std::filesystem::path& out) {
+  auto* cmd = app.add_subcommand("fields", "recompute fields, figures and summary from DIR/run.h5; "
+                                           "with several DIRs also the delta/D table and figure");
+  cmd->add_option("dirs", dirs, "run directories")->required()->check(CLI::ExistingDirectory);
+  cmd->add_option("--out", out, "where to write (required with several DIRs)");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -55,6 +64,9 @@ int main(int argc, char** argv) {
   add_collide_command(app, collide, precision);
   granshock::RunOptions run;
   add_run_command(app, run);
+  std::vector<std::filesystem::path> field_dirs;
+  std::filesystem::path field_out;
+  add_fields_command(app, field_dirs, field_out);
   auto* info = app.add_subcommand("info", "version, Kokkos backends and threads, build options");
 
   // Kokkos takes its own --kokkos-* arguments; CLI11 sees the rest.
@@ -69,6 +81,7 @@ int main(int argc, char** argv) {
       if (run.overwrite && run.resume) throw granshock::UserError("--overwrite and --resume exclude each other");
       return granshock::run_scene(run);
     }
+    if (app.got_subcommand("fields")) return granshock::fields_command(field_dirs, field_out);
     if (info->parsed()) {
       std::cout << granshock::build_info_json() << "\n";
     } else if (app.got_subcommand("collide")) {

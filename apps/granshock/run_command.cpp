@@ -12,6 +12,7 @@
 
 #include "atomic_file.hpp"
 #include "checkpoint_file.hpp"
+#include "fields_command.hpp"
 #include "head_on_collision.hpp"
 #include "inflow.hpp"
 #include "progress_meter.hpp"
@@ -315,6 +316,11 @@ void BowShockRun::finish(bool completed) {
   j["particle_steps_per_second"] = leg_wall > 0 ? particle_steps_ / leg_wall : 0.0;
   j["effective_restitution_at_dt"] = restitution_at_dt();
   write_file_atomically(dir_ / "summary.json", j.dump(2) + "\n");
+  if (completed && run_file_) {
+    // The field analysis reads run.h5, which must be closed first.
+    run_file_.reset();
+    if (run_has_field_sums(dir_)) fields_command({dir_}, {}, FieldsCommandOptions{true, options_.quiet});
+  }
   if (completed && !options_.quiet)
     std::cout << fmt::format("granshock: {} done: {} steps, {:.4g} s simulated in {:.1f} s wall, {:.3g} particle-steps/s, "
                              "{} particles at the end; results in {}\n",

@@ -8,6 +8,7 @@
 #include <stdlib.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -22,9 +23,13 @@
 namespace granshock::test {
 
 // A channel 60 d wide and 90 d long, the paper's mixture (steel and aluminium, d = 1 mm,
-// e = 0.5, equimolar), U = 1 m/s at Ma_inf 5.9, a cylinder of `diameter_d` d at (30 d, 60 d).
+// e = 0.5, equimolar), U = 1 m/s at Ma_inf 5.9, a cylinder of `diameter_d` d at (30 d, 60 d)
+// (none when diameter_d = 0).
 inline std::string bow_shock_scene(double diameter_d = 12, double mach = 5.9) {
-  return R"(
+  const std::string obstacle = diameter_d > 0 ? "[obstacle]\ndiameter = \"" + std::to_string(diameter_d) +
+                                                    " d\"\ncentre = [\"30 d\", \"60 d\"]\n"
+                                              : "";
+  return obstacle + R"(
 [scene]
 name = "synthetic"
 [units]
@@ -44,9 +49,6 @@ restitution = 0.5
 [domain]
 width = "60 d"
 length = "90 d"
-[obstacle]
-diameter = ")" + std::to_string(diameter_d) + R"( d"
-centre = ["30 d", "60 d"]
 [inflow]
 area_fraction = 0.1
 velocity = 1.0
@@ -192,7 +194,8 @@ inline void write_run_file(const std::filesystem::path& dir, const std::string& 
   run.flush();
 }
 
-// A fresh temporary directory, removed with its contents.
+// A fresh temporary directory, removed with its contents (kept, for a look at the files
+// and figures, when GRANSHOCK_KEEP_TEST_DIRS is set).
 class ScratchDir {
  public:
   ScratchDir() {
@@ -200,6 +203,7 @@ class ScratchDir {
     path_ = mkdtemp(pattern.data());
   }
   ~ScratchDir() {
+    if (std::getenv("GRANSHOCK_KEEP_TEST_DIRS") != nullptr) return;
     std::error_code ec;
     std::filesystem::remove_all(path_, ec);
   }

@@ -95,12 +95,13 @@ TEST(BinFields, EosDeviationVanishesForAStateThatSatisfiesIt) {
 TEST(BinFields, SparseAndEmptyBinsAreMaskedNotHuge) {
   const FieldPhysics& phys = physics();
   BinSums s = test::empty_sums(3, 1, 1, 0, 0, 3e-3, 3e-3);
-  s.samples = {10};
-  // Bin 0: plenty; bin 1: 15 particle samples in all (below 20); bin 2: empty.
+  s.samples = {100};
+  // Bin 0: plenty (115 particle samples); bin 1: 15 in all (below 20); bin 2: empty.
   test::BinState st = test::mixture_state(phys, 0.1, 1e-7, 0, 1);
-  test::add_state(s, 0, 0, 0, st, phys, 10, 1.0);
-  const double full = 10 * 9e-6 * (st.n[0] + st.n[1]);  // particle samples of a full bin
-  test::add_state(s, 0, 0, 1, st, phys, 10, 15.0 / full);
+  test::add_state(s, 0, 0, 0, st, phys, 100, 1.0);
+  const double full = 100 * 9e-6 * (st.n[0] + st.n[1]);  // particle samples of a full bin
+  ASSERT_GT(full, 100.0);
+  test::add_state(s, 0, 0, 1, st, phys, 100, 15.0 / full);
   // A cold bin: particles but no fluctuation at all (T = 0): Ma would be infinite.
   BinSums cold = test::empty_sums(1, 1, 1, 0, 0, 3e-3, 3e-3);
   cold.samples = {10};

