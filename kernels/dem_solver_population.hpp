@@ -56,7 +56,7 @@ int DemSolver<Traits, ExecSpace>::insert(const InsertionRequest& rq) {
   Kokkos::parallel_scan(
       "insert::accept", Policy(0, m),
       KOKKOS_LAMBDA(const int k, int& running, const bool final) {
-        capture_before_if_constexpr(cyl);
+        capture_before_if_constexpr(cyl, dmax);
         bool ok = true;
         Vec<Dim, Real> ck = Vec<Dim, Real>::zero();
         ck[0] = cand(k, 0);
