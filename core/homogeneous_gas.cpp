@@ -37,7 +37,6 @@ HostParticles make_homogeneous_gas(const SystemSetup& setup, const GasSpec& spec
   const CounterRng rng{spec.seed};
   const int n_species = int(setup.species.size());
   HostParticles p;
-  std::array<double, 3> mean_v{0, 0, 0};
   for (int k = 0; k < side * side; ++k) {
     const int ix = k % side, iy = k / side;
     // Jitter keeps every pair at least one diameter apart: each centre stays within
@@ -49,11 +48,17 @@ HostParticles make_homogeneous_gas(const SystemSetup& setup, const GasSpec& spec
     const std::array<double, 3> v{spec.sigma_m_per_s * rng.normal(k, 1),
                                   spec.sigma_m_per_s * rng.normal(k, 2), 0};
     p.add(x, v, k % n_species, k);
-    for (int d = 0; d < 2; ++d) mean_v[d] += v[d];
   }
-  // Remove the net velocity (per particle, equal weights) so the gas is at rest.
+  // Remove the centre-of-mass velocity so the total momentum is zero.
+  std::array<double, 2> momentum{0, 0};
+  double mass = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const double m = setup.species[p.species[i]].mass_kg();
+    mass += m;
+    for (int d = 0; d < 2; ++d) momentum[d] += m * p.velocity[i][d];
+  }
   for (auto& v : p.velocity)
-    for (int d = 0; d < 2; ++d) v[d] -= mean_v[d] / double(p.size());
+    for (int d = 0; d < 2; ++d) v[d] -= momentum[d] / mass;
   return p;
 }
 

@@ -31,7 +31,9 @@
 // collision scales as dt^(5/2) with a sign set by where in a step the contact begins,
 // i.e. random. E(t) at contact-free moments is therefore a random walk: its end value or
 // maximum in one realisation scatters by factors of 2-3 between realisations, which
-// makes a ratio of two such numbers a poor convergence measure. We define the drift
+// makes a ratio of two such numbers a poor convergence measure (four seeds of an
+// earlier version of this set-up gave dt/(dt/2) ratios of 5.3 to 16 for the maxima and
+// 0.8 to 70 for the end values, but 5.4 to 6.4 for D below). We define the drift
 // over the run as the root-mean-square random-walk drift
 //     D = sqrt( sum_k (E_k - E_{k-1})^2 ) / E_0
 // over consecutive contact-free samples E_k (E_0: initial state, which is contact-free):
@@ -179,6 +181,11 @@ ConservationRun run_elastic(const ElasticGas& gas, int steps_per_tc) {
                         std::back_inserter(started));
     run.collisions += long(started.size());
     touching.swap(now);
+    // A run that never becomes contact-free again is a failure, not a hang.
+    if (run.samples > 100 * kCollisions) {
+      ADD_FAILURE() << "no contact-free moment after " << run.samples << " samples";
+      break;
+    }
     if (!touching.empty()) continue;
     const double e = solver->diagnostics().total_energy();
     ++run.contact_free_samples;
@@ -187,11 +194,6 @@ ConservationRun run_elastic(const ElasticGas& gas, int steps_per_tc) {
     run.max_drift = std::max(run.max_drift, std::abs(e - e0) / e0);
     run.end_drift = (e - e0) / e0;
     done = run.collisions >= kCollisions;
-    // A run that never becomes contact-free again is a failure, not a hang.
-    if (run.samples > 100 * kCollisions) {
-      ADD_FAILURE() << "no contact-free moment after " << run.samples << " samples";
-      break;
-    }
   }
   run.rms_drift = std::sqrt(sum_sq) / e0;
   run.simulated_time = solver->time();
@@ -241,7 +243,8 @@ TEST(EnergyConservation, ElasticMixtureOver10kCollisions) {
   // Convergence: the error per collision ~ dt^(5/2) (see the top) predicts a ratio of
   // 2^(5/2) = 5.7; the test asks for 2.5 (order > 1.3), i.e. clearly better than first
   // order, which is what a dt-proportional error (e.g. a force evaluated with stale
-  // positions or velocities) would give.
+  // positions or velocities) would give. The ratio of the maxima is printed, not
+  // asserted: for one realisation it is a random number (see the top).
   EXPECT_GE(coarse.rms_drift / fine.rms_drift, 2.5);
 }
 

@@ -22,24 +22,34 @@
 // coefficient a2 = -0.027 in 2-D at e = 0.9, changing the cooling rate by 3 a2 / 16 =
 // -0.5 %, Brilliantov & Poeschel 2004) and velocity correlations (small at phi = 0.05).
 //
-// Scene: 1024 steel spheres (d = 1 mm, Young's modulus scaled down 1000x: contacts last
-// 1000^(2/5) = 16x longer, so the run is 16x cheaper) at area fraction 0.05, e = 0.9,
-// no friction, periodic square box of 127 d (about 25 mean free paths). They start on
-// the jittered lattice of make_homogeneous_gas; an elastic (e = 1) warm-up of 5 mean
-// collision times randomises the positions first, so that pairs near contact occur with
-// their equilibrium frequency (the contact value g(phi)) when the cooling starts; on the
-// bare lattice no pair is near contact and the first collision time cools too slowly.
-// The cooling run lasts 2 tau (T falls to T0 / 9, ~23 collisions per particle, 1.2e4 in
-// all). Clustering (the shear and density instabilities of the cooling state) needs a
-// box larger than a few tens of mean free paths and many more collisions per particle;
-// the test checks that the gas stayed homogeneous by comparing the coarse-grained flow
-// energy and the density fluctuations on an 8 x 8 grid with their values in an
-// equilibrium gas.
+// Scene: 529 steel spheres (d = 1 mm, Young's modulus scaled down 1000x: contacts last
+// 1000^(2/5) = 16x longer, so the run is 16x cheaper) at area fraction phi = 0.05,
+// e = 0.9, no friction, in a periodic square box of L = 91 d (18 mean free paths
+// l = 1 / (2 sqrt(2) n sigma g)), started on the jittered lattice of make_homogeneous_gas
+// with Gaussian velocities. The cooling run lasts 2 tau (T falls to T0 / 9; ~23
+// collisions per particle, 6e3 in all).
 //
-// Soft contacts: with finite collision duration t_c a particle spends a fraction ~nu t_c
-// (1-2 % here) of its time in contact, which slows the cooling slightly. In runs with
-// other seeds the fitted tau exceeded the theory by 3-5 % at E / 10^3 and 4 % at E / 10^4,
-// by 2 % at E / 10^2: the expected sign and trend, well inside the 10 % tolerance.
+// Homogeneity. The cooling state is unstable to shear (vortex) modes longer than
+// L_c = 2 pi / k_c: a transverse velocity mode decays by viscosity at nu_visc k^2 while
+// the thermal speed decays at 1 / tau (at t = 0), with the dilute 2-D kinematic viscosity
+// nu_visc = sqrt(T / (pi m)) / (2 n sigma) (Chapman & Cowling), so modes with
+// k^2 < (1 - e^2) pi g (n sigma)^2 grow relative to the thermal motion. Here
+// L_c = 123 d: the box (91 d) keeps every mode stable. (A 1024-particle box of 127 d was
+// marginal: its box-scale shear modes grew to 5x their thermal energy within 2 tau.)
+// The test checks both the shear modes and density clustering.
+//
+// Initial state: on the lattice no pair is near contact, so the first collision time
+// cools more slowly than kinetic theory (which assumes the equilibrium contact value
+// g(phi)). The effect is within the scatter: over 12 seeds, an elastic warm-up of 5
+// collision times before the cooling moved the mean excess of the fitted tau from
+// 2.8 % to 2.2 % (scatter of one run: 1.6 %), so the test starts from the lattice.
+//
+// Expected deviation. Over those 24 runs the fitted tau exceeded the theory by -0.1 to
+// +6.1 % (mean 2.5 %, standard deviation 1.6 %); the fitted line started within 1.8 % of
+// T0^(-1/2). Contributions: the Sonine correction (+0.5 %), and soft contacts: with
+// finite collision duration t_c a particle spends a fraction ~nu t_c (about 1 % here)
+// of its time in contact, which slows the cooling; in a larger box the excess grew with
+// softening (about 2 % at E / 10^2, 4 % at E / 10^3 and 10^4).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -60,42 +70,53 @@ constexpr int kGrid = 8;  // homogeneity grid, kGrid x kGrid bins
 
 struct GasState {
   double temperature = 0;    // m <c^2> / 2, c relative to the mean velocity
-  double flow_ratio = 0;     // coarse-grained flow energy / its equilibrium value
+  double shear_ratio = 0;    // energy of the longest shear modes / its equilibrium value
   double density_ratio = 0;  // variance / mean of the bin counts (1 for Poisson)
 };
 
-// Temperature from the particle velocities, and two homogeneity measures on a
-// kGrid x kGrid grid. In an equilibrium gas the mean velocity of the n_b particles in a
-// bin has variance T / (m n_b) per component, so the bin's flow energy n_b m u_b^2 / 2
-// averages T: the flow ratio sum_b (n_b m u_b^2 / 2) / (kGrid^2 T) is ~1 without
-// collective motion and grows with a shear (vortex) instability. The count variance over
-// mean is ~1 (slightly less with excluded volume) and grows with clustering.
+// Temperature from the particle velocities, and two homogeneity measures.
+// Shear: the transverse velocity field of the four longest modes k = 2 pi (1,0)/L,
+// (0,1)/L, (1,1)/L, (1,-1)/L, u_k = sum_i (c_i . t_k) exp(i k . x_i) with t_k the unit
+// vector normal to k. In equilibrium each |u_k|^2 averages N T / m (independent
+// particles), so shear_ratio = (m / (4 N T)) sum_k |u_k|^2 averages 1. In the cooling
+// state the stable long modes are enhanced by 1 / (1 - (k_c / k)^2) (fluctuating
+// hydrodynamics: van Noije, Ernst, Brito & Orza, Phys. Rev. Lett. 79, 411 (1997)), here
+// 2.2 for the two longest modes and 1.4 for the diagonal ones: mean ~1.8 once the
+// cooling state is established, with the scatter of a sum of 4 exponential variables
+// (seen over seven runs: sample maxima 1.6 to 3.5). An unstable mode grows without bound.
+// Clustering: variance over mean of the particle counts on a kGrid x kGrid grid: ~1 in
+// equilibrium (Poisson; slightly less with excluded volume), larger when clusters form.
 GasState measure(const HostParticles& p, double mass, double box_length) {
   const double n = double(p.size());
   double mean_v[2] = {0, 0};
   for (const auto& v : p.velocity)
     for (int d = 0; d < 2; ++d) mean_v[d] += v[d] / n;
-  std::vector<double> count(kGrid * kGrid, 0), vx(kGrid * kGrid, 0), vy(kGrid * kGrid, 0);
+  std::vector<double> count(kGrid * kGrid, 0);
   double kinetic = 0;
+  const int modes[4][2] = {{1, 0}, {0, 1}, {1, 1}, {1, -1}};
+  double re[4] = {0, 0, 0, 0}, im[4] = {0, 0, 0, 0};
   for (std::size_t i = 0; i < p.size(); ++i) {
-    const double cx = p.velocity[i][0] - mean_v[0], cy = p.velocity[i][1] - mean_v[1];
-    kinetic += 0.5 * mass * (cx * cx + cy * cy);
+    const double c[2] = {p.velocity[i][0] - mean_v[0], p.velocity[i][1] - mean_v[1]};
+    kinetic += 0.5 * mass * (c[0] * c[0] + c[1] * c[1]);
+    for (int k = 0; k < 4; ++k) {
+      const double kx = modes[k][0], ky = modes[k][1];
+      const double transverse = (-c[0] * ky + c[1] * kx) / std::sqrt(kx * kx + ky * ky);
+      const double phase =
+          2 * M_PI * (kx * p.position[i][0] + ky * p.position[i][1]) / box_length;
+      re[k] += transverse * std::cos(phase);
+      im[k] += transverse * std::sin(phase);
+    }
     const int bx = std::min(kGrid - 1, int(p.position[i][0] / box_length * kGrid));
     const int by = std::min(kGrid - 1, int(p.position[i][1] / box_length * kGrid));
-    const int b = bx + kGrid * by;
-    count[b] += 1;
-    vx[b] += cx;
-    vy[b] += cy;
+    count[bx + kGrid * by] += 1;
   }
   GasState s;
   s.temperature = kinetic / n;  // Dim = 2
+  for (int k = 0; k < 4; ++k)
+    s.shear_ratio += mass * (re[k] * re[k] + im[k] * im[k]) / (4 * n * s.temperature);
   const double mean_count = n / (kGrid * kGrid);
-  double flow = 0, variance = 0;
-  for (int b = 0; b < kGrid * kGrid; ++b) {
-    if (count[b] > 0) flow += 0.5 * mass * (vx[b] * vx[b] + vy[b] * vy[b]) / count[b];
-    variance += (count[b] - mean_count) * (count[b] - mean_count) / (kGrid * kGrid);
-  }
-  s.flow_ratio = flow / (kGrid * kGrid * s.temperature);
+  double variance = 0;
+  for (double c : count) variance += (c - mean_count) * (c - mean_count) / (kGrid * kGrid);
   s.density_ratio = variance / mean_count;
   return s;
 }
@@ -105,14 +126,14 @@ TEST(HomogeneousCooling, HaffLawMatchesKineticTheory) {
   SystemSetup setup;
   setup.species = {{"steel", steel(), 1e-3}};
   setup.species[0].material.youngs_modulus_pa *= 1e-3;  // softened, see the top
-  setup.contacts = ContactModel::uniform(1, 1.0, 0.0);   // elastic warm-up first
+  setup.contacts = ContactModel::uniform(1, kRestitution, 0.0);
   GasSpec spec;
-  spec.particles = 1024;
+  spec.particles = 529;  // a full 23 x 23 lattice
   spec.area_fraction = 0.05;
   spec.sigma_m_per_s = 1.0;
   spec.seed = 1;
   size_periodic_box(setup, spec);
-  HostParticles gas = make_homogeneous_gas(setup, spec);
+  const HostParticles gas = make_homogeneous_gas(setup, spec);
 
   const double mass = setup.species[0].mass_kg();
   const double sigma = setup.species[0].diameter_m;
@@ -120,32 +141,20 @@ TEST(HomogeneousCooling, HaffLawMatchesKineticTheory) {
   const double n = double(gas.size()) / (length * length);
   const double phi = n * M_PI * sigma * sigma / 4;
   const double g = (16 - 7 * phi) / (16 * (1 - phi) * (1 - phi));  // Henderson 1975
+  const GasState initial = measure(gas, mass, length);
+  const double t0 = initial.temperature;
 
-  // Time step: t_c / 50 (DESIGN.md's safe step) for the impact speed exceeded by one
-  // collision in 10^4 (the flux-weighted normal speed w has P(w > x) = exp(-x^2 / (2 s^2)),
-  // s^2 = 2 T / m) at the initial temperature; the gas only cools from there. At this
-  // step the Verlet-integrated contact restores e = 0.9 to within 1e-4 (a direct
-  // integration of the two-particle contact, averaged over the phase of the contact
-  // onset within a step), which changes 1 - e^2 by < 0.1 %.
-  const double t_nominal = mass * spec.sigma_m_per_s * spec.sigma_m_per_s;
-  const double v_fast = std::sqrt(2 * t_nominal / mass) * std::sqrt(2 * std::log(1e4));
-  const double t_c = hertz_collision_time(setup.pair(0, 0), v_fast);
-  setup.dt = t_c / 50;
+  // Time step: t_c / 50 (DESIGN.md's safe step) at the impact speed exceeded by one
+  // collision in 10^4 at the initial temperature (the flux-weighted normal speed w has
+  // P(w > x) = exp(-x^2 / (2 s^2)), s^2 = 2 T / m); the gas only cools from there. At
+  // this step the Verlet-integrated contact restores e = 0.9 to within 1e-4 (a direct
+  // integration of the two-particle contact law, averaged over where in a step the
+  // contact begins), which changes 1 - e^2 by < 0.1 %.
+  const double v_fast = std::sqrt(2 * t0 / mass) * std::sqrt(2 * std::log(1e4));
+  setup.dt = hertz_collision_time(setup.pair(0, 0), v_fast) / 50;
 
-  // Elastic warm-up: 5 mean collision times (the lattice melts, velocities stay Maxwellian).
-  const double nu_nominal = 2 * n * sigma * g * std::sqrt(M_PI * t_nominal / mass);
-  {
-    auto warm = make_solver(setup, gas.size());
-    warm->set_particles(gas);
-    warm->advance(std::lround(5.0 / nu_nominal / setup.dt));
-    gas = warm->particles();
-  }
-
-  setup.contacts = ContactModel::uniform(1, kRestitution, 0.0);
   auto solver = make_solver(setup, gas.size());
   solver->set_particles(gas);
-  const GasState initial = measure(solver->particles(), mass, length);
-  const double t0 = initial.temperature;
   const double slope_theory =
       (1 - kRestitution * kRestitution) * n * sigma * g * std::sqrt(M_PI / mass) / 2;
   const double tau_theory = 1 / (slope_theory * std::sqrt(t0));
@@ -153,16 +162,17 @@ TEST(HomogeneousCooling, HaffLawMatchesKineticTheory) {
   // 100 samples of T over 2 tau; least-squares line through (t, T^(-1/2)).
   const int samples = 100;
   const long steps_per_sample = std::lround(2 * tau_theory / samples / setup.dt);
-  std::vector<double> time{0}, inv_sqrt_t{1 / std::sqrt(t0)}, temperature{t0};
-  double worst_flow = initial.flow_ratio, worst_density = initial.density_ratio;
+  std::vector<double> time{0}, inv_sqrt_t{1 / std::sqrt(t0)};
+  double worst_shear = initial.shear_ratio, worst_density = initial.density_ratio;
+  double t_end = t0;
   for (int k = 1; k <= samples; ++k) {
     solver->advance(steps_per_sample);
     const GasState s = measure(solver->particles(), mass, length);
-    time.push_back(double(k * steps_per_sample) * setup.dt);
+    time.push_back(solver->time());
     inv_sqrt_t.push_back(1 / std::sqrt(s.temperature));
-    temperature.push_back(s.temperature);
-    worst_flow = std::max(worst_flow, s.flow_ratio);
+    worst_shear = std::max(worst_shear, s.shear_ratio);
     worst_density = std::max(worst_density, s.density_ratio);
+    t_end = s.temperature;
   }
   const double count = double(time.size());
   double st = 0, sy = 0, stt = 0, sty = 0;
@@ -175,37 +185,30 @@ TEST(HomogeneousCooling, HaffLawMatchesKineticTheory) {
   const double slope = (count * sty - st * sy) / (count * stt - st * st);
   const double intercept = (sy - slope * st) / count;
   const double tau_fit = 1 / (slope * std::sqrt(t0));
-  // Largest deviation of T from the fitted Haff curve T = 1 / (intercept + slope t)^2.
-  double worst_residual = 0;
-  for (std::size_t k = 0; k < time.size(); ++k) {
-    const double haff = 1 / std::pow(intercept + slope * time[k], 2);
-    worst_residual = std::max(worst_residual, std::abs(temperature[k] / haff - 1));
-  }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::printf(
-      "  N = %zu, phi = %.4f, g = %.4f, dt = %.3g s (t_c/50), %ld steps\n"
-      "  tau fitted %.5g s, kinetic theory %.5g s: %+.2f %%; intercept sqrt(T0) = %.4f; "
-      "T(2 tau) / T0 = %.4f (Haff 1/9 = 0.1111)\n"
-      "  worst |T / T_fit - 1| = %.4f, worst flow ratio %.2f, worst density ratio %.2f; "
-      "%.1f s wall\n",
-      gas.size(), phi, g, setup.dt, solver->steps_done(), tau_fit, tau_theory,
-      100 * (tau_fit / tau_theory - 1), intercept * std::sqrt(t0), temperature.back() / t0,
-      worst_residual, worst_flow, worst_density, wall);
+      "  N = %zu, phi = %.4f, g = %.4f, L = %.1f d, dt = %.3g s (t_c/50), %ld steps\n"
+      "  tau fitted %.5g s, kinetic theory %.5g s: %+.2f %%; intercept * sqrt(T0) = %.4f; "
+      "T(end) / T0 = %.4f at t = %.3f tau_theory (Haff: %.4f)\n"
+      "  worst shear-mode ratio %.2f, worst density ratio %.2f; %.1f s wall\n",
+      gas.size(), phi, g, length / sigma, setup.dt, solver->steps_done(), tau_fit, tau_theory,
+      100 * (tau_fit / tau_theory - 1), intercept * std::sqrt(t0), t_end / t0,
+      time.back() / tau_theory, 1 / std::pow(1 + time.back() / tau_theory, 2), worst_shear,
+      worst_density, wall);
 
-  // Reference: Haff / Enskog kinetic theory above. Tolerance 10 % (required); the known
-  // neglected effects (Sonine a2, soft-contact duration, correlations) add up to ~3 %,
-  // the statistical scatter between seeds is ~1 %.
+  // Reference: Haff's law with the Enskog cooling rate (top of the file). Tolerance 10 %
+  // (required); expected: +2.5 % from neglected effects, scatter 1.6 % (top of the file).
   EXPECT_NEAR(tau_fit / tau_theory, 1.0, 0.10);
-  // Haff's law, not just its initial slope: T^(-1/2) is a straight line through T0.
-  // Intercept: within 3 % of T0^(-1/2) (the fitted line's value at t = 0; run-to-run
-  // scatter seen: 1.6 %). Shape: T within 3 % of the fitted curve at every sample (T
-  // falls by 9x; its scatter from the finite number of collisions is ~1 %).
+  // Haff's law, not only its mean slope: the fitted line T^(-1/2) = a + s t must start at
+  // the measured T0, a = T0^(-1/2), within 3 % (24 runs with other seeds: within 1.8 %,
+  // standard deviation 0.9 %); a transient at the start or a bending curve (cooling that
+  // slows down or speeds up) would move it.
   EXPECT_NEAR(intercept * std::sqrt(t0), 1.0, 0.03);
-  EXPECT_LT(worst_residual, 0.03);
-  // Homogeneity (the window of the fit): both ratios ~1 in equilibrium, with a sampling
-  // scatter of 13-18 % per sample on this 8 x 8 grid (max over 101 samples ~1.5); a
-  // developing shear or clustering instability would multiply them. Bound: 2.
-  EXPECT_LT(worst_flow, 2.0);
+  // Homogeneity over the fit window (see measure()): the shear-mode ratio below 8 (about
+  // 4x its expected value of ~1.8 in the cooling state; with its Gamma(4) scatter a
+  // sample exceeds 8 with probability ~1e-4), the density variance below twice the
+  // Poisson value (expected ~0.9, sampling scatter 18 % on 64 bins; seen: up to 1.5).
+  EXPECT_LT(worst_shear, 8.0);
   EXPECT_LT(worst_density, 2.0);
 }
 

@@ -126,3 +126,23 @@ TEST(NeighbourSearchMoving, ListsStayCompleteBetweenRebuilds) {
 }
 
 }  // namespace
+
+// The homogeneous gas starts at rest: zero total momentum (a bug fixed: the mean velocity
+// was removed with equal weights, leaving the mixture's centre of mass moving).
+TEST(HomogeneousGas, TotalMomentumIsZero) {
+  SystemSetup s = paper_mixture(0.5);
+  GasSpec spec;
+  spec.particles = 1024;
+  size_periodic_box(s, spec);
+  const HostParticles p = make_homogeneous_gas(s, spec);
+  double momentum[2] = {0, 0}, scale = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const double m = s.species[p.species[i]].mass_kg();
+    for (int d = 0; d < 2; ++d) {
+      momentum[d] += m * p.velocity[i][d];
+      scale += m * std::abs(p.velocity[i][d]);
+    }
+  }
+  EXPECT_LT(std::abs(momentum[0]), 1e-12 * scale);
+  EXPECT_LT(std::abs(momentum[1]), 1e-12 * scale);
+}
