@@ -8,19 +8,39 @@
 
 namespace granshock::dmath {
 
-KOKKOS_INLINE_FUNCTION double sqrt(double x) { return ::sqrt(x); }
-KOKKOS_INLINE_FUNCTION float sqrt(float x) { return ::sqrtf(x); }
-KOKKOS_INLINE_FUNCTION double rint(double x) { return ::rint(x); }
-KOKKOS_INLINE_FUNCTION float rint(float x) { return ::rintf(x); }
-KOKKOS_INLINE_FUNCTION double floor(double x) { return ::floor(x); }
-KOKKOS_INLINE_FUNCTION float floor(float x) { return ::floorf(x); }
-KOKKOS_INLINE_FUNCTION double log(double x) { return ::log(x); }
-KOKKOS_INLINE_FUNCTION double cos(double x) { return ::cos(x); }
-KOKKOS_INLINE_FUNCTION double sin(double x) { return ::sin(x); }
+KOKKOS_INLINE_FUNCTION double sqrt(double x) {
+  return ::sqrt(x);
+}
+KOKKOS_INLINE_FUNCTION float sqrt(float x) {
+  return ::sqrtf(x);
+}
+KOKKOS_INLINE_FUNCTION double rint(double x) {
+  return ::rint(x);
+}
+KOKKOS_INLINE_FUNCTION float rint(float x) {
+  return ::rintf(x);
+}
+KOKKOS_INLINE_FUNCTION double floor(double x) {
+  return ::floor(x);
+}
+KOKKOS_INLINE_FUNCTION float floor(float x) {
+  return ::floorf(x);
+}
+KOKKOS_INLINE_FUNCTION double log(double x) {
+  return ::log(x);
+}
+KOKKOS_INLINE_FUNCTION double cos(double x) {
+  return ::cos(x);
+}
+KOKKOS_INLINE_FUNCTION double sin(double x) {
+  return ::sin(x);
+}
 
 // True unless x is NaN or infinite (x - x is NaN for both); portable to every backend
 // and Kokkos version, unlike isfinite, which moved between Kokkos namespaces.
-KOKKOS_INLINE_FUNCTION bool is_finite(double x) { return x - x == 0.0; }
+KOKKOS_INLINE_FUNCTION bool is_finite(double x) {
+  return x - x == 0.0;
+}
 
 template <class T>
 KOKKOS_INLINE_FUNCTION T max(T a, T b) {

@@ -11,7 +11,7 @@
 namespace granshock {
 
 struct GasSpec {
-  int particles = 1000;      // rounded to a full lattice
+  int particles = 1000;  // rounded to a full lattice
   double area_fraction = 0.1;
   double sigma_m_per_s = 1.0;  // velocity standard deviation per component
   std::uint64_t seed = 1;

@@ -7,7 +7,9 @@
 
 namespace granshock {
 
-double radial_distribution(double phi) { return (16.0 - 7.0 * phi) / (16.0 * (1 - phi) * (1 - phi)); }
+double radial_distribution(double phi) {
+  return (16.0 - 7.0 * phi) / (16.0 * (1 - phi) * (1 - phi));
+}
 
 double radial_distribution_slope(double phi) {
   return (25.0 - 7.0 * phi) / (16.0 * (1 - phi) * (1 - phi) * (1 - phi));

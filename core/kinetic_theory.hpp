@@ -10,9 +10,9 @@
 
 namespace granshock {
 
-double radial_distribution(double phi);             // g(phi)
-double radial_distribution_slope(double phi);       // dg/dphi = (25 - 7 phi) / (16 (1 - phi)^3)
-double pressure_factor(double phi, double e, int dim);        // F
+double radial_distribution(double phi);                 // g(phi)
+double radial_distribution_slope(double phi);           // dg/dphi = (25 - 7 phi) / (16 (1 - phi)^3)
+double pressure_factor(double phi, double e, int dim);  // F
 double pressure_factor_slope(double phi, double e, int dim);  // dF/dphi
 // a^2 / (T/m): the dimensionless factor (1 + (2/Dim) F + (phi/F) F') F.
 double sound_speed_factor(double phi, double e, int dim);

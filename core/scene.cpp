@@ -4,7 +4,9 @@
 
 namespace granshock {
 
-long Scene::total_steps() const { return long(std::llround(run.duration_s / setup.dt)); }
+long Scene::total_steps() const {
+  return long(std::llround(run.duration_s / setup.dt));
+}
 
 double Scene::fastest_impact_speed() const {
   return 2.0 * (inflow.speed_m_per_s + 4.0 * inflow.sigma);
@@ -26,7 +28,8 @@ double Scene::mean_restitution() const {
   double e = 0;
   const auto& xi = inflow.number_fraction;
   for (std::size_t a = 0; a < xi.size(); ++a)
-    for (std::size_t b = 0; b < xi.size(); ++b) e += xi[a] * xi[b] * setup.contacts.restitution[a][b];
+    for (std::size_t b = 0; b < xi.size(); ++b)
+      e += xi[a] * xi[b] * setup.contacts.restitution[a][b];
   return e;
 }
 
@@ -46,9 +49,9 @@ void resolve_inflow(Scene& s) {
   std::vector<double> masses;
   for (const auto& sp : s.setup.species) masses.push_back(sp.mass_kg());
   const double m_sound = sound_speed_mass(s.mass_definition, masses, s.inflow.number_fraction);
-  s.inflow.sigma = sigma_for_mach(*s.inflow.target_mach, s.inflow.speed_m_per_s,
-                                  s.inflow.area_fraction, s.mean_restitution(), s.setup.dim,
-                                  m_sound, s.mean_mass());
+  s.inflow.sigma =
+      sigma_for_mach(*s.inflow.target_mach, s.inflow.speed_m_per_s, s.inflow.area_fraction,
+                     s.mean_restitution(), s.setup.dim, m_sound, s.mean_mass());
 }
 
 }  // namespace granshock

@@ -26,13 +26,13 @@ struct InflowSpec {
 
 struct RunControl {
   double duration_s = 1.0;
-  double production_start_s = 0.5;      // fields average over [production_start, duration]
+  double production_start_s = 0.5;  // fields average over [production_start, duration]
   double snapshot_interval_s = 0.1;
   double series_interval_s = 0.01;
   double checkpoint_interval_s = 0.5;
-  double progress_interval_s = 2.0;     // wall clock
-  long sample_every = 100;              // steps between field samples
-  int blocks = 10;                      // production window cut into blocks (error bars)
+  double progress_interval_s = 2.0;  // wall clock
+  long sample_every = 100;           // steps between field samples
+  int blocks = 10;                   // production window cut into blocks (error bars)
   std::uint64_t seed = 1;
 };
 

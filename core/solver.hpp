@@ -40,13 +40,13 @@ struct SpeciesMoments {
 struct InsertionRequest {
   std::array<double, 2> x_range{0, 0};
   std::array<double, 2> y_range{0, 0};
-  int count = 0;                          // particles wanted
-  std::vector<double> number_fraction;    // per species, sums to 1
+  int count = 0;                        // particles wanted
+  std::vector<double> number_fraction;  // per species, sums to 1
   std::array<double, 2> mean_velocity{0, 0};
-  double sigma_m_per_s = 0;               // Gaussian fluctuation per component
+  double sigma_m_per_s = 0;  // Gaussian fluctuation per component
   std::uint64_t seed = 0;
-  std::uint64_t event = 0;                // insertion event number: the RNG stream
-  long inserted_before = 0;               // particles inserted by earlier events
+  std::uint64_t event = 0;    // insertion event number: the RNG stream
+  long inserted_before = 0;   // particles inserted by earlier events
   bool rebuild_lists = true;  // false: the caller inserts more before the next step
 };
 

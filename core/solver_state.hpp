@@ -14,8 +14,8 @@ namespace granshock {
 
 struct SolverState {
   int dim = 2;
-  long step = 0;      // steps done
-  int next_id = 0;    // the next global id to hand out
+  long step = 0;    // steps done
+  int next_id = 0;  // the next global id to hand out
   // Per particle, n = id.size(); vectors are flattened [particle][component].
   std::vector<double> position;          // n * dim
   std::vector<double> velocity;          // n * dim
@@ -26,9 +26,9 @@ struct SolverState {
   std::vector<int> id;                   // n
   // Contact history (friction only): slots per particle, partner ids (-1 free), springs.
   int history_slots = 0;
-  std::vector<int> history_partner;        // n * slots
-  std::vector<double> history_spring;      // n * slots * dim
-  std::vector<double> history_wall_spring; // n * dim
+  std::vector<int> history_partner;         // n * slots
+  std::vector<double> history_spring;       // n * slots * dim
+  std::vector<double> history_wall_spring;  // n * dim
 
   // The Verlet list and the reference positions of the skin criterion.
   std::vector<double> reference_position;  // n * dim

@@ -8,9 +8,9 @@
 namespace granshock {
 
 double hertz_collision_time(const PairProperties& p, double v) {
-  return 2.87 * std::pow(p.mass_star * p.mass_star /
-                             (p.radius_star * p.youngs_star * p.youngs_star * v),
-                         0.2);
+  return 2.87 *
+         std::pow(p.mass_star * p.mass_star / (p.radius_star * p.youngs_star * p.youngs_star * v),
+                  0.2);
 }
 
 double stable_time_step(const PairProperties& p, double v, bool friction) {
@@ -28,10 +28,11 @@ double stable_time_step(const PairProperties& p, double v, bool friction) {
   return margin / omega;
 }
 
-TimeStepAssessment assess_time_step(const std::vector<PairProperties>& pairs,
-                                    double impact_speed, double dt, bool friction) {
+TimeStepAssessment assess_time_step(const std::vector<PairProperties>& pairs, double impact_speed,
+                                    double dt, bool friction) {
   if (pairs.empty()) throw std::invalid_argument("assess_time_step: no contact pairs");
-  if (!(impact_speed > 0)) throw std::invalid_argument("assess_time_step: impact speed must be > 0");
+  if (!(impact_speed > 0))
+    throw std::invalid_argument("assess_time_step: impact speed must be > 0");
   TimeStepAssessment a;
   a.dt = dt;
   a.impact_speed = impact_speed;

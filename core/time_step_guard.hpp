@@ -36,7 +36,7 @@ struct TimeStepAssessment {
 
 // Compares dt with every pair the scene can form at the fastest impact speed it can
 // produce: warn past t_c/10, refuse past the stability limit.
-TimeStepAssessment assess_time_step(const std::vector<PairProperties>& pairs,
-                                    double impact_speed, double dt, bool friction);
+TimeStepAssessment assess_time_step(const std::vector<PairProperties>& pairs, double impact_speed,
+                                    double dt, bool friction);
 
 }  // namespace granshock

@@ -175,8 +175,7 @@ SolverState read_checkpoint(const fs::path& path, CheckpointExtras& extras) {
     const hid_t f = file.get();
     if (!h5::has_attribute(f, "granshock_file") ||
         h5::read_string_attribute(f, "granshock_file") != kFileKind) {
-      throw UserError("cannot read checkpoint '" + path.string() +
-                      "': not a granshock checkpoint");
+      throw UserError("cannot read checkpoint '" + path.string() + "': not a granshock checkpoint");
     }
     const int version = h5::read_attribute<int>(f, "granshock_format_version");
     if (version > kFormatVersion) {

@@ -14,8 +14,8 @@ namespace granshock {
 
 // The run loop's state beside the solver's.
 struct CheckpointExtras {
-  std::uint64_t rng_counter = 0;   // insertion RNG events done (counter-based RNG position)
-  long inserted = 0;               // cumulative counters since the start of the run
+  std::uint64_t rng_counter = 0;  // insertion RNG events done (counter-based RNG position)
+  long inserted = 0;              // cumulative counters since the start of the run
   long deleted_outlet = 0;
   long deleted_inlet = 0;
   double insertion_carry = 0;      // fractional particles owed to the inflow

@@ -20,12 +20,15 @@ constexpr int kFormatVersion = 1;
 
 void check_content(const FieldsFileContent& c) {
   if (c.nx < 1 || c.ny < 1 || !(c.dx > 0) || !(c.dy > 0))
-    throw std::invalid_argument("write_fields_file: the grid needs nx, ny >= 1 and positive dx, dy");
+    throw std::invalid_argument(
+        "write_fields_file: the grid needs nx, ny >= 1 and positive dx, dy");
   const std::size_t cells = static_cast<std::size_t>(c.nx) * static_cast<std::size_t>(c.ny);
   for (const auto& f : c.cell_fields)
-    if (f.values.size() != cells) throw std::invalid_argument("write_fields_file: field '" + f.name + "' is not nx x ny");
+    if (f.values.size() != cells)
+      throw std::invalid_argument("write_fields_file: field '" + f.name + "' is not nx x ny");
   for (const auto& f : c.cell_flags)
-    if (f.values.size() != cells) throw std::invalid_argument("write_fields_file: flag '" + f.name + "' is not nx x ny");
+    if (f.values.size() != cells)
+      throw std::invalid_argument("write_fields_file: flag '" + f.name + "' is not nx x ny");
 }
 
 void write_grid(hid_t file, const FieldsFileContent& c) {
@@ -59,7 +62,8 @@ void write_grid(hid_t file, const FieldsFileContent& c) {
   }
 }
 
-void describe(hid_t file, const std::string& path, const std::string& unit, const std::string& description) {
+void describe(hid_t file, const std::string& path, const std::string& unit,
+              const std::string& description) {
   Handle set = h5::open_dataset(file, path);
   if (!unit.empty()) h5::write_attribute(set.get(), "unit", unit);
   if (!description.empty()) h5::write_attribute(set.get(), "description", description);
@@ -91,7 +95,8 @@ void write_content(hid_t file, const FieldsFileContent& c) {
     const std::string base = "/lines/" + set.name;
     h5::write_dataset(file, base + "/points", points, {static_cast<hsize_t>(points.size() / 2), 2});
     h5::write_dataset(file, base + "/offsets", offsets, {static_cast<hsize_t>(offsets.size())});
-    describe(file, base + "/points", "m", "polyline vertices (x, y); line i is points[offsets[i]:offsets[i+1]]");
+    describe(file, base + "/points", "m",
+             "polyline vertices (x, y); line i is points[offsets[i]:offsets[i+1]]");
     Handle group = h5::open_group(file, base);
     h5::write_attribute(group.get(), "description", set.description);
   }

@@ -12,12 +12,23 @@ std::string xml_escape(const std::string& text) {
   std::string out;
   for (char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&apos;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -38,13 +49,16 @@ void write_fields_xdmf(const std::filesystem::path& xmf_path, const std::string&
       << "    <Grid Name=\"fields\" GridType=\"Uniform\">\n"
       << "      <Topology TopologyType=\"2DSMesh\" Dimensions=\"" << nodes << "\"/>\n"
       << "      <Geometry GeometryType=\"XY\">\n"
-      << "        <DataItem Dimensions=\"" << nodes << " 2\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">"
-      << h5 << ":/grid/nodes</DataItem>\n"
+      << "        <DataItem Dimensions=\"" << nodes
+      << " 2\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << h5
+      << ":/grid/nodes</DataItem>\n"
       << "      </Geometry>\n";
   auto attribute = [&](const std::string& name, const char* type, int precision) {
-    out << "      <Attribute Name=\"" << xml_escape(name) << "\" AttributeType=\"Scalar\" Center=\"Cell\">\n"
-        << "        <DataItem Dimensions=\"" << cells << "\" NumberType=\"" << type << "\" Precision=\"" << precision
-        << "\" Format=\"HDF\">" << h5 << ":/fields/" << xml_escape(name) << "</DataItem>\n"
+    out << "      <Attribute Name=\"" << xml_escape(name)
+        << "\" AttributeType=\"Scalar\" Center=\"Cell\">\n"
+        << "        <DataItem Dimensions=\"" << cells << "\" NumberType=\"" << type
+        << "\" Precision=\"" << precision << "\" Format=\"HDF\">" << h5 << ":/fields/"
+        << xml_escape(name) << "</DataItem>\n"
         << "      </Attribute>\n";
   };
   for (const auto& f : c.cell_fields) attribute(f.name, "Float", 8);

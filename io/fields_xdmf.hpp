@@ -17,7 +17,7 @@ namespace granshock {
 
 // Writes xmf_path atomically; h5_filename_relative is fields.h5 as seen from the XMF's
 // directory. Throws UserError when the file cannot be written.
-void write_fields_xdmf(const std::filesystem::path& xmf_path, const std::string& h5_filename_relative,
-                       const FieldsFileContent& content);
+void write_fields_xdmf(const std::filesystem::path& xmf_path,
+                       const std::string& h5_filename_relative, const FieldsFileContent& content);
 
 }  // namespace granshock

@@ -82,13 +82,29 @@ inline void check(herr_t status, const std::string& what) {
 }
 
 // One factory per kind of identifier, so a handle always has the matching close call.
-inline Handle file(hid_t id, const std::string& what) { return checked(id, H5Fclose, what); }
-inline Handle group(hid_t id, const std::string& what) { return checked(id, H5Gclose, what); }
-inline Handle dataset(hid_t id, const std::string& what) { return checked(id, H5Dclose, what); }
-inline Handle dataspace(hid_t id, const std::string& what) { return checked(id, H5Sclose, what); }
-inline Handle datatype(hid_t id, const std::string& what) { return checked(id, H5Tclose, what); }
-inline Handle attribute(hid_t id, const std::string& what) { return checked(id, H5Aclose, what); }
-inline Handle plist(hid_t id, const std::string& what) { return checked(id, H5Pclose, what); }
-inline Handle object(hid_t id, const std::string& what) { return checked(id, H5Oclose, what); }
+inline Handle file(hid_t id, const std::string& what) {
+  return checked(id, H5Fclose, what);
+}
+inline Handle group(hid_t id, const std::string& what) {
+  return checked(id, H5Gclose, what);
+}
+inline Handle dataset(hid_t id, const std::string& what) {
+  return checked(id, H5Dclose, what);
+}
+inline Handle dataspace(hid_t id, const std::string& what) {
+  return checked(id, H5Sclose, what);
+}
+inline Handle datatype(hid_t id, const std::string& what) {
+  return checked(id, H5Tclose, what);
+}
+inline Handle attribute(hid_t id, const std::string& what) {
+  return checked(id, H5Aclose, what);
+}
+inline Handle plist(hid_t id, const std::string& what) {
+  return checked(id, H5Pclose, what);
+}
+inline Handle object(hid_t id, const std::string& what) {
+  return checked(id, H5Oclose, what);
+}
 
 }  // namespace granshock::h5

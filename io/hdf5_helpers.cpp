@@ -119,10 +119,10 @@ void write_attribute_raw(hid_t object, const std::string& name, hid_t stored_typ
   check(H5Awrite(attr.get(), memory_type, data), "writing attribute '" + name + "'");
 }
 
-void read_attribute_raw(hid_t object, const std::string& name, hid_t memory_type,
-                        std::size_t count, void* data) {
-  Handle attr = attribute(H5Aopen(object, name.c_str(), H5P_DEFAULT),
-                          "opening attribute '" + name + "'");
+void read_attribute_raw(hid_t object, const std::string& name, hid_t memory_type, std::size_t count,
+                        void* data) {
+  Handle attr =
+      attribute(H5Aopen(object, name.c_str(), H5P_DEFAULT), "opening attribute '" + name + "'");
   Handle space = dataspace(H5Aget_space(attr.get()), "reading attribute '" + name + "'");
   const hssize_t points = H5Sget_simple_extent_npoints(space.get());
   if (points < 0 || static_cast<std::size_t>(points) != count) {
@@ -133,8 +133,8 @@ void read_attribute_raw(hid_t object, const std::string& name, hid_t memory_type
 }
 
 std::size_t attribute_size(hid_t object, const std::string& name) {
-  Handle attr = attribute(H5Aopen(object, name.c_str(), H5P_DEFAULT),
-                          "opening attribute '" + name + "'");
+  Handle attr =
+      attribute(H5Aopen(object, name.c_str(), H5P_DEFAULT), "opening attribute '" + name + "'");
   Handle space = dataspace(H5Aget_space(attr.get()), "reading attribute '" + name + "'");
   const hssize_t points = H5Sget_simple_extent_npoints(space.get());
   check(static_cast<herr_t>(points < 0 ? -1 : 0), "sizing attribute '" + name + "'");
@@ -147,17 +147,18 @@ void write_attribute(hid_t object, const std::string& name, const std::string& v
 }
 
 std::string read_string_attribute(hid_t object, const std::string& name) {
-  Handle attr = attribute(H5Aopen(object, name.c_str(), H5P_DEFAULT),
-                          "opening attribute '" + name + "'");
+  Handle attr =
+      attribute(H5Aopen(object, name.c_str(), H5P_DEFAULT), "opening attribute '" + name + "'");
   Handle stored = datatype(H5Aget_type(attr.get()), "reading the type of '" + name + "'");
   return read_string(stored.get(), [&](hid_t memory_type, void* buffer) {
     check(H5Aread(attr.get(), memory_type, buffer), "reading attribute '" + name + "'");
   });
 }
 
-void write_dataset_raw(hid_t loc, const std::string& name, hid_t stored_type,
-                       hid_t memory_type, const std::vector<hsize_t>& shape, const void* data) {
-  if (exists(loc, name)) check(H5Ldelete(loc, name.c_str(), H5P_DEFAULT), "replacing '" + name + "'");
+void write_dataset_raw(hid_t loc, const std::string& name, hid_t stored_type, hid_t memory_type,
+                       const std::vector<hsize_t>& shape, const void* data) {
+  if (exists(loc, name))
+    check(H5Ldelete(loc, name.c_str(), H5P_DEFAULT), "replacing '" + name + "'");
   Handle space = simple_space(shape, "creating the dataspace of '" + name + "'");
   Handle links = plist(H5Pcreate(H5P_LINK_CREATE), "creating link properties");
   check(H5Pset_create_intermediate_group(links.get(), 1), "setting intermediate groups");

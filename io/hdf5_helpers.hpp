@@ -69,8 +69,8 @@ std::vector<hsize_t> shape_of(hid_t dataset);
 bool has_attribute(hid_t object, const std::string& name);
 void write_attribute_raw(hid_t object, const std::string& name, hid_t stored_type,
                          hid_t memory_type, const std::vector<hsize_t>& shape, const void* data);
-void read_attribute_raw(hid_t object, const std::string& name, hid_t memory_type,
-                        std::size_t count, void* data);
+void read_attribute_raw(hid_t object, const std::string& name, hid_t memory_type, std::size_t count,
+                        void* data);
 std::size_t attribute_size(hid_t object, const std::string& name);
 
 template <class T>
@@ -102,8 +102,8 @@ std::vector<T> read_attribute_vector(hid_t object, const std::string& name) {
 std::string read_string_attribute(hid_t object, const std::string& name);
 
 // --- Whole datasets (contiguous, fixed shape; a written one replaces an existing one) --
-void write_dataset_raw(hid_t loc, const std::string& name, hid_t stored_type,
-                       hid_t memory_type, const std::vector<hsize_t>& shape, const void* data);
+void write_dataset_raw(hid_t loc, const std::string& name, hid_t stored_type, hid_t memory_type,
+                       const std::vector<hsize_t>& shape, const void* data);
 // Reads the whole dataset; `count` must equal its number of elements.
 void read_dataset_raw(hid_t dataset, hid_t memory_type, std::size_t count, void* data);
 

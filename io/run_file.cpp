@@ -63,9 +63,9 @@ void create_time_element(hid_t file, const std::string& group_path, hid_t stored
     Handle space = h5::dataspace(H5Screate_simple(1, dims, max_dims), "creating a dataspace");
     Handle props = h5::plist(H5Pcreate(H5P_DATASET_CREATE), "creating dataset properties");
     h5::check(H5Pset_chunk(props.get(), 1, chunk), "setting the chunk shape");
-    return h5::dataset(H5Dcreate2(group.get(), name, type, space.get(), H5P_DEFAULT,
-                                  props.get(), H5P_DEFAULT),
-                       "creating '" + group_path + "/" + name + "'");
+    return h5::dataset(
+        H5Dcreate2(group.get(), name, type, space.get(), H5P_DEFAULT, props.get(), H5P_DEFAULT),
+        "creating '" + group_path + "/" + name + "'");
   };
   create_series("step", H5T_STD_I64LE);
   Handle time = create_series("time", H5T_IEEE_F64LE);
@@ -79,21 +79,22 @@ void create_time_element(hid_t file, const std::string& group_path, hid_t stored
     max_dims.push_back(i == 0 ? H5S_UNLIMITED : tail[i]);
     chunk.push_back(i == 0 ? kParticleChunk : tail[i]);
   }
-  Handle space = h5::dataspace(
-      H5Screate_simple(static_cast<int>(dims.size()), dims.data(), max_dims.data()),
-      "creating a dataspace");
+  Handle space =
+      h5::dataspace(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), max_dims.data()),
+                    "creating a dataspace");
   Handle props = h5::plist(H5Pcreate(H5P_DATASET_CREATE), "creating dataset properties");
   h5::check(H5Pset_chunk(props.get(), static_cast<int>(chunk.size()), chunk.data()),
             "setting the chunk shape");
-  if (fill != nullptr) h5::check(H5Pset_fill_value(props.get(), fill_type, fill), "setting a fill value");
+  if (fill != nullptr)
+    h5::check(H5Pset_fill_value(props.get(), fill_type, fill), "setting a fill value");
   if (per_particle && kSnapshotDeflate > 0 && H5Zfilter_avail(H5Z_FILTER_DEFLATE) > 0) {
     // Shuffling groups the bytes of equal significance (sign and exponent bytes of
     // nearby values agree), which gzip then compresses: 3.0 instead of 3.4 MB.
     h5::check(H5Pset_shuffle(props.get()), "enabling shuffle");
     h5::check(H5Pset_deflate(props.get(), kSnapshotDeflate), "enabling gzip");
   }
-  Handle value = h5::dataset(H5Dcreate2(group.get(), "value", stored_type, space.get(),
-                                        H5P_DEFAULT, props.get(), H5P_DEFAULT),
+  Handle value = h5::dataset(H5Dcreate2(group.get(), "value", stored_type, space.get(), H5P_DEFAULT,
+                                        props.get(), H5P_DEFAULT),
                              "creating '" + group_path + "/value'");
   if (unit != nullptr) h5::write_attribute(value.get(), "unit", unit);
 }
@@ -110,8 +111,9 @@ void extend_and_write(hid_t dataset, const std::vector<hsize_t>& new_dims,
   h5::check(H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start.data(), nullptr,
                                 count.data(), nullptr),
             "selecting a hyperslab");
-  Handle memory_space = h5::dataspace(
-      H5Screate_simple(static_cast<int>(count.size()), count.data(), nullptr), "creating a dataspace");
+  Handle memory_space =
+      h5::dataspace(H5Screate_simple(static_cast<int>(count.size()), count.data(), nullptr),
+                    "creating a dataspace");
   h5::check(H5Dwrite(dataset, memory_type, memory_space.get(), file_space.get(), H5P_DEFAULT, data),
             "writing a dataset");
 }
@@ -134,8 +136,8 @@ SeriesEnd series_end(hid_t file, const std::string& group_path) {
   h5::check(H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start, nullptr, count, nullptr),
             "selecting the last step");
   Handle memory_space = h5::dataspace(H5Screate_simple(1, count, nullptr), "creating a dataspace");
-  h5::check(H5Dread(step.get(), H5T_NATIVE_LONG, memory_space.get(), file_space.get(),
-                    H5P_DEFAULT, &end.last_step),
+  h5::check(H5Dread(step.get(), H5T_NATIVE_LONG, memory_space.get(), file_space.get(), H5P_DEFAULT,
+                    &end.last_step),
             "reading the last step");
   end.any = true;
   return end;
@@ -161,8 +163,8 @@ void append_step_time(hid_t file, const std::string& group_path, hsize_t index, 
 
 // Appends one scalar entry to a time series group.
 template <class T>
-void append_scalar(hid_t file, const std::string& group_path, hsize_t index, long step,
-                   double time, T value) {
+void append_scalar(hid_t file, const std::string& group_path, hsize_t index, long step, double time,
+                   T value) {
   Handle value_set = h5::open_dataset(file, group_path + "/value");
   extend_and_write(value_set.get(), {index + 1}, {index}, {1}, h5::TypeOf<T>::memory(), &value);
   append_step_time(file, group_path, index, step, time);
@@ -238,9 +240,9 @@ struct ObservableSpec {
 
 // The /observables series, one per TimeSeriesRow field (time_series.hpp).
 constexpr ObservableSpec kObservableSpecs[] = {
-    {"particles", true, nullptr},      {"kinetic_energy", false, "J"},
-    {"temperature", false, "J"},       {"contacts", true, nullptr},
-    {"inserted", true, nullptr},       {"deleted_outlet", true, nullptr},
+    {"particles", true, nullptr},     {"kinetic_energy", false, "J"},
+    {"temperature", false, "J"},      {"contacts", true, nullptr},
+    {"inserted", true, nullptr},      {"deleted_outlet", true, nullptr},
     {"deleted_inlet", true, nullptr},
 };
 
@@ -279,10 +281,10 @@ void write_layout(hid_t f, const std::string& scene_toml_as_given,
 
   const std::string all = kParticles;
   const hsize_t d = static_cast<hsize_t>(dim);
-  create_time_element(f, all + "/position", H5T_IEEE_F64LE, {0, d}, &kFloatFill,
-                      H5T_NATIVE_DOUBLE, "m");
-  create_time_element(f, all + "/velocity", H5T_IEEE_F64LE, {0, d}, &kFloatFill,
-                      H5T_NATIVE_DOUBLE, "m s-1");
+  create_time_element(f, all + "/position", H5T_IEEE_F64LE, {0, d}, &kFloatFill, H5T_NATIVE_DOUBLE,
+                      "m");
+  create_time_element(f, all + "/velocity", H5T_IEEE_F64LE, {0, d}, &kFloatFill, H5T_NATIVE_DOUBLE,
+                      "m s-1");
   create_time_element(f, all + "/species", H5T_STD_I32LE, {0}, &kIntFill, H5T_NATIVE_INT, nullptr);
   create_time_element(f, all + "/id", H5T_STD_I32LE, {0}, &kIntFill, H5T_NATIVE_INT, nullptr);
   create_time_element(f, all + "/count", H5T_STD_I64LE, {}, nullptr, H5T_NATIVE_LONG, nullptr);
@@ -430,15 +432,13 @@ long RunFile::particle_capacity() const {
 }
 
 std::string RunFile::scene_as_given() const {
-  return h5::naming_file_in_errors(path_, "reading", [&] {
-    return h5::read_string_dataset(file_.get(), "/scene/as_given");
-  });
+  return h5::naming_file_in_errors(
+      path_, "reading", [&] { return h5::read_string_dataset(file_.get(), "/scene/as_given"); });
 }
 
 std::string RunFile::scene_resolved() const {
-  return h5::naming_file_in_errors(path_, "reading", [&] {
-    return h5::read_string_dataset(file_.get(), "/scene/resolved");
-  });
+  return h5::naming_file_in_errors(
+      path_, "reading", [&] { return h5::read_string_dataset(file_.get(), "/scene/resolved"); });
 }
 
 void RunFile::write_attribute(const std::string& object, const std::string& name, double value) {
@@ -491,12 +491,12 @@ void RunFile::write_array(const std::string& dataset, const std::vector<double>&
   if (elements != values.size()) {
     throw std::invalid_argument("RunFile::write_array: shape does not match the value count");
   }
-  h5::naming_file_in_errors(path_, "writing", [&] {
-    h5::write_dataset(file_.get(), dataset, values, dims);
-  });
+  h5::naming_file_in_errors(path_, "writing",
+                            [&] { h5::write_dataset(file_.get(), dataset, values, dims); });
 }
 
-std::vector<double> RunFile::read_array(const std::string& dataset, std::vector<long>* shape) const {
+std::vector<double> RunFile::read_array(const std::string& dataset,
+                                        std::vector<long>* shape) const {
   return h5::naming_file_in_errors(path_, "reading", [&] {
     std::vector<hsize_t> dims;
     std::vector<double> values = h5::read_dataset<double>(file_.get(), dataset, &dims);
@@ -506,9 +506,8 @@ std::vector<double> RunFile::read_array(const std::string& dataset, std::vector<
 }
 
 void RunFile::flush() {
-  h5::naming_file_in_errors(path_, "flushing", [&] {
-    h5::check(H5Fflush(file_.get(), H5F_SCOPE_GLOBAL), "H5Fflush");
-  });
+  h5::naming_file_in_errors(
+      path_, "flushing", [&] { h5::check(H5Fflush(file_.get(), H5F_SCOPE_GLOBAL), "H5Fflush"); });
 }
 
 }  // namespace granshock

@@ -67,7 +67,8 @@ class RunFile {
   // A row-major array of the given shape (product of shape == values.size()).
   void write_array(const std::string& dataset, const std::vector<double>& values,
                    const std::vector<long>& shape);
-  std::vector<double> read_array(const std::string& dataset, std::vector<long>* shape = nullptr) const;
+  std::vector<double> read_array(const std::string& dataset,
+                                 std::vector<long>* shape = nullptr) const;
 
   // Pushes buffered data to the file (H5Fflush), so that a crash loses at most what was
   // appended since.

@@ -2,12 +2,12 @@
 
 #include <fmt/format.h>
 
+#include <toml++/toml.h>
 #include <cmath>
 #include <fstream>
 #include <map>
 #include <set>
 #include <sstream>
-#include <toml++/toml.h>
 
 #include "user_error.hpp"
 
@@ -21,10 +21,14 @@ namespace {
 
 std::string show(const toml::node& n) {
   std::ostringstream os;
-  if (auto s = n.as_string()) os << '"' << s->get() << '"';
-  else if (n.is_table()) os << "(a table)";
-  else if (n.is_array()) os << "(an array)";
-  else n.visit([&](auto&& v) { os << v; });
+  if (auto s = n.as_string())
+    os << '"' << s->get() << '"';
+  else if (n.is_table())
+    os << "(a table)";
+  else if (n.is_array())
+    os << "(an array)";
+  else
+    n.visit([&](auto&& v) { os << v; });
   return os.str();
 }
 
@@ -35,7 +39,9 @@ class TableReader {
   TableReader(const toml::table* table, std::string path, double d_m)
       : table_(table), path_(std::move(path)), d_m_(d_m) {}
 
-  std::string key(const std::string& name) const { return path_.empty() ? name : path_ + "." + name; }
+  std::string key(const std::string& name) const {
+    return path_.empty() ? name : path_ + "." + name;
+  }
   bool has(const std::string& name) {
     known_.insert(name);
     return table_ && table_->contains(name);
@@ -151,7 +157,9 @@ class TableReader {
   }
 
  private:
-  static std::string fmt_bound(double b) { return std::isinf(b) ? (b > 0 ? "inf" : "-inf") : fmt::format("{}", b); }
+  static std::string fmt_bound(double b) {
+    return std::isinf(b) ? (b > 0 ? "inf" : "-inf") : fmt::format("{}", b);
+  }
   const toml::table* table_;
   std::string path_;
   double d_m_;
@@ -163,7 +171,8 @@ class TableReader {
 void apply_override(toml::table& root, const std::string& assignment) {
   const auto eq = assignment.find('=');
   if (eq == std::string::npos || eq == 0)
-    throw UserError(fmt::format("--set '{}': expected key=value (e.g. inflow.mach=13.7)", assignment));
+    throw UserError(
+        fmt::format("--set '{}': expected key=value (e.g. inflow.mach=13.7)", assignment));
   const std::string path = assignment.substr(0, eq), text = assignment.substr(eq + 1);
   toml::table parsed;
   try {
@@ -191,7 +200,9 @@ void apply_override(toml::table& root, const std::string& assignment) {
     }
   }
   auto* target = here->as_table();
-  if (!target) throw UserError(fmt::format("--set '{}': the parent of '{}' is not a table", assignment, parts.back()));
+  if (!target)
+    throw UserError(
+        fmt::format("--set '{}': the parent of '{}' is not a table", assignment, parts.back()));
   target->insert_or_assign(parts.back(), *parsed.get("v"));
 }
 
@@ -232,7 +243,8 @@ LoadedScene parse_scene(const std::string& text, const std::vector<std::string>&
     TableReader r(top.table("scene"), "scene", d);
     s.name = r.string("name", "unnamed");
     const long dim = r.integer_at_least("dim", 2, 2);
-    if (dim != 2) fail("scene.dim", std::to_string(dim), "only quasi-2-D scenes (dim = 2) are supported");
+    if (dim != 2)
+      fail("scene.dim", std::to_string(dim), "only quasi-2-D scenes (dim = 2) are supported");
     s.setup.dim = 2;
     s.run.seed = std::uint64_t(r.integer_at_least("seed", 0, 1));
     r.finish();
@@ -253,7 +265,8 @@ LoadedScene parse_scene(const std::string& text, const std::vector<std::string>&
     if (it == materials.end()) {
       std::vector<std::string> names;
       for (const auto& [n, m] : materials) names.push_back(n);
-      fail(key, '"' + name + '"', fmt::format("unknown material (defined: {})", fmt::join(names, ", ")));
+      fail(key, '"' + name + '"',
+           fmt::format("unknown material (defined: {})", fmt::join(names, ", ")));
     }
     return it->second;
   };
@@ -269,7 +282,8 @@ LoadedScene parse_scene(const std::string& text, const std::vector<std::string>&
       Species species;
       species.name = r.string("name");
       for (const auto& other : s.setup.species)
-        if (other.name == species.name) fail(r.key("name"), '"' + species.name + '"', "species names must be unique");
+        if (other.name == species.name)
+          fail(r.key("name"), '"' + species.name + '"', "species names must be unique");
       species.material = material_named(r.key("material"), r.string("material"));
       species.diameter_m = r.positive_length("diameter");
       const double fraction = r.number_in("number_fraction", 0, 1, true, false);
@@ -279,7 +293,8 @@ LoadedScene parse_scene(const std::string& text, const std::vector<std::string>&
       r.finish();
     }
     if (std::abs(fraction_sum - 1.0) > 1e-9)
-      fail("species.*.number_fraction", fmt::format("sum {}", fraction_sum), "the number fractions must add up to 1");
+      fail("species.*.number_fraction", fmt::format("sum {}", fraction_sum),
+           "the number fractions must add up to 1");
   }
   const int n_species = int(s.setup.species.size());
   auto species_index = [&](const std::string& key, const std::string& name) {
@@ -304,12 +319,16 @@ LoadedScene parse_scene(const std::string& text, const std::vector<std::string>&
         const std::string other = name.substr(dash + 1);
         TableReader pr(v.as_table(), key, d);
         if (other == "obstacle") {
-          s.setup.contacts.wall_restitution[a] = pr.number_in("restitution", 0, 1, true, false, s.setup.contacts.wall_restitution[a]);
-          s.setup.contacts.wall_friction[a] = pr.number_in("friction", 0, INFINITY, false, true, s.setup.contacts.wall_friction[a]);
+          s.setup.contacts.wall_restitution[a] =
+              pr.number_in("restitution", 0, 1, true, false, s.setup.contacts.wall_restitution[a]);
+          s.setup.contacts.wall_friction[a] =
+              pr.number_in("friction", 0, INFINITY, false, true, s.setup.contacts.wall_friction[a]);
         } else {
           const int b = species_index(key, other);
-          const double pe = pr.number_in("restitution", 0, 1, true, false, s.setup.contacts.restitution[a][b]);
-          const double pm = pr.number_in("friction", 0, INFINITY, false, true, s.setup.contacts.friction[a][b]);
+          const double pe =
+              pr.number_in("restitution", 0, 1, true, false, s.setup.contacts.restitution[a][b]);
+          const double pm =
+              pr.number_in("friction", 0, INFINITY, false, true, s.setup.contacts.friction[a][b]);
           s.setup.contacts.restitution[a][b] = s.setup.contacts.restitution[b][a] = pe;
           s.setup.contacts.friction[a][b] = s.setup.contacts.friction[b][a] = pm;
         }
@@ -321,10 +340,14 @@ LoadedScene parse_scene(const std::string& text, const std::vector<std::string>&
 
   {
     TableReader r(top.table("numerics"), "numerics", d);
-    s.setup.precision = r.choice("precision", {"double", "single"}, "double") == "single" ? Precision::single : Precision::dual;
+    s.setup.precision = r.choice("precision", {"double", "single"}, "double") == "single"
+                            ? Precision::single
+                            : Precision::dual;
     s.setup.skin_m = r.length("skin", 0.3 * s.setup.max_diameter());
-    if (!(s.setup.skin_m > 0)) fail("numerics.skin", fmt::format("{} m", s.setup.skin_m), "must be > 0");
-    s.mass_definition = parse_mass_definition(r.choice("mass_definition", {"mixture_mean", "paper_sum"}, "mixture_mean"));
+    if (!(s.setup.skin_m > 0))
+      fail("numerics.skin", fmt::format("{} m", s.setup.skin_m), "must be > 0");
+    s.mass_definition = parse_mass_definition(
+        r.choice("mass_definition", {"mixture_mean", "paper_sum"}, "mixture_mean"));
     s.bin_size_m = r.positive_length("bin_size", 3 * d);
     r.finish();
   }
@@ -334,7 +357,8 @@ LoadedScene parse_scene(const std::string& text, const std::vector<std::string>&
     const double width = r.positive_length("width"), length = r.positive_length("length");
     const double range = s.setup.max_diameter() + s.setup.skin_m;
     if (width < 3 * range)
-      fail("domain.width", fmt::format("{} m", width), fmt::format("must be at least 3 interaction ranges ({} m)", 3 * range));
+      fail("domain.width", fmt::format("{} m", width),
+           fmt::format("must be at least 3 interaction ranges ({} m)", 3 * range));
     s.setup.box.lo = {0, 0, 0};
     s.setup.box.hi = {width, length, s.setup.max_diameter()};
     s.setup.box.periodic = {true, false, false};
@@ -348,12 +372,14 @@ LoadedScene parse_scene(const std::string& text, const std::vector<std::string>&
     s.inflow.area_fraction = r.number_in("area_fraction", 0, 0.7, true, true);
     s.inflow.speed_m_per_s = r.positive("velocity");
     if (r.has("sigma") == r.has("mach"))
-      fail("inflow.sigma / inflow.mach", "(both or neither)", "give exactly one: sigma (m/s) or mach");
+      fail("inflow.sigma / inflow.mach", "(both or neither)",
+           "give exactly one: sigma (m/s) or mach");
     if (r.has("sigma")) s.inflow.sigma_m_per_s = r.number_in("sigma", 0, INFINITY, false, true);
     if (r.has("mach")) s.inflow.target_mach = r.positive("mach");
     s.inflow.strip_m = r.length("strip", 2 * d);
     if (s.inflow.strip_m < s.setup.max_diameter() || s.inflow.strip_m >= length)
-      fail("inflow.strip", fmt::format("{} m", s.inflow.strip_m), "must be at least one diameter and shorter than the domain");
+      fail("inflow.strip", fmt::format("{} m", s.inflow.strip_m),
+           "must be at least one diameter and shorter than the domain");
     r.finish();
   }
 
@@ -371,8 +397,10 @@ LoadedScene parse_scene(const std::string& text, const std::vector<std::string>&
     }
     const double radius = 0.5 * c.diameter_m;
     if (c.centre[0] - radius < 0 || c.centre[0] + radius > width ||
-        c.centre[1] - radius < s.inflow.strip_m + s.setup.max_diameter() || c.centre[1] + radius > length)
-      fail("obstacle", fmt::format("centre ({}, {}) m, diameter {} m", c.centre[0], c.centre[1], c.diameter_m),
+        c.centre[1] - radius < s.inflow.strip_m + s.setup.max_diameter() ||
+        c.centre[1] + radius > length)
+      fail("obstacle",
+           fmt::format("centre ({}, {}) m, diameter {} m", c.centre[0], c.centre[1], c.diameter_m),
            "the cylinder must lie inside the domain, downstream of the insertion strip");
     s.setup.obstacle = c;
     r.finish();
@@ -382,7 +410,8 @@ LoadedScene parse_scene(const std::string& text, const std::vector<std::string>&
     TableReader r(top.table("time"), "time", d);
     s.setup.dt = r.positive("dt");
     s.run.duration_s = r.positive("duration");
-    s.run.production_start_s = r.number_in("production_start", 0, s.run.duration_s, false, true, 0.5 * s.run.duration_s);
+    s.run.production_start_s =
+        r.number_in("production_start", 0, s.run.duration_s, false, true, 0.5 * s.run.duration_s);
     r.finish();
   }
   {
@@ -402,7 +431,8 @@ LoadedScene parse_scene(const std::string& text, const std::vector<std::string>&
   return out;
 }
 
-LoadedScene load_scene_file(const std::filesystem::path& path, const std::vector<std::string>& overrides) {
+LoadedScene load_scene_file(const std::filesystem::path& path,
+                            const std::vector<std::string>& overrides) {
   std::ifstream in(path);
   if (!in) throw UserError(fmt::format("cannot read scene file '{}'", path.string()));
   std::stringstream text;
@@ -412,7 +442,8 @@ LoadedScene load_scene_file(const std::filesystem::path& path, const std::vector
 
 std::string scene_to_toml(const Scene& s) {
   toml::table root;
-  root.insert("scene", toml::table{{"name", s.name}, {"dim", s.setup.dim}, {"seed", int64_t(s.run.seed)}});
+  root.insert("scene",
+              toml::table{{"name", s.name}, {"dim", s.setup.dim}, {"seed", int64_t(s.run.seed)}});
   root.insert("units", toml::table{{"d", s.d_m}});
   toml::table materials;
   toml::array species;
@@ -422,7 +453,9 @@ std::string scene_to_toml(const Scene& s) {
     materials.insert(mat, toml::table{{"youngs_modulus", sp.material.youngs_modulus_pa},
                                       {"poisson_ratio", sp.material.poisson_ratio},
                                       {"density", sp.material.density_kg_m3}});
-    species.push_back(toml::table{{"name", sp.name}, {"material", mat}, {"diameter", sp.diameter_m},
+    species.push_back(toml::table{{"name", sp.name},
+                                  {"material", mat},
+                                  {"diameter", sp.diameter_m},
                                   {"number_fraction", s.inflow.number_fraction[a]}});
   }
   toml::table contact{{"restitution", s.setup.contacts.restitution[0][0]},
@@ -444,17 +477,21 @@ std::string scene_to_toml(const Scene& s) {
     materials.insert("obstacle", toml::table{{"youngs_modulus", c.material.youngs_modulus_pa},
                                              {"poisson_ratio", c.material.poisson_ratio},
                                              {"density", c.material.density_kg_m3}});
-    root.insert("obstacle", toml::table{{"diameter", c.diameter_m}, {"material", "obstacle"},
+    root.insert("obstacle", toml::table{{"diameter", c.diameter_m},
+                                        {"material", "obstacle"},
                                         {"centre", toml::array{c.centre[0], c.centre[1]}}});
   }
   root.insert("materials", materials);
   root.insert("species", species);
   root.insert("contact", contact);
   root.insert("domain", toml::table{{"width", s.setup.box.hi[0]}, {"length", s.setup.box.hi[1]}});
-  toml::table inflow{{"area_fraction", s.inflow.area_fraction}, {"velocity", s.inflow.speed_m_per_s},
-                     {"sigma", s.inflow.sigma}, {"strip", s.inflow.strip_m}};
+  toml::table inflow{{"area_fraction", s.inflow.area_fraction},
+                     {"velocity", s.inflow.speed_m_per_s},
+                     {"sigma", s.inflow.sigma},
+                     {"strip", s.inflow.strip_m}};
   root.insert("inflow", inflow);
-  root.insert("time", toml::table{{"dt", s.setup.dt}, {"duration", s.run.duration_s},
+  root.insert("time", toml::table{{"dt", s.setup.dt},
+                                  {"duration", s.run.duration_s},
                                   {"production_start", s.run.production_start_s}});
   root.insert("output", toml::table{{"snapshot_interval", s.run.snapshot_interval_s},
                                     {"series_interval", s.run.series_interval_s},
@@ -462,10 +499,12 @@ std::string scene_to_toml(const Scene& s) {
                                     {"progress_interval", s.run.progress_interval_s},
                                     {"sample_every", int64_t(s.run.sample_every)},
                                     {"blocks", int64_t(s.run.blocks)}});
-  root.insert("numerics", toml::table{{"precision", s.setup.precision == Precision::single ? "single" : "double"},
-                                      {"skin", s.setup.skin_m},
-                                      {"mass_definition", to_string(s.mass_definition)},
-                                      {"bin_size", s.bin_size_m}});
+  root.insert(
+      "numerics",
+      toml::table{{"precision", s.setup.precision == Precision::single ? "single" : "double"},
+                  {"skin", s.setup.skin_m},
+                  {"mass_definition", to_string(s.mass_definition)},
+                  {"bin_size", s.bin_size_m}});
   std::ostringstream os;
   os << root << "\n";
   return os.str();

@@ -14,12 +14,23 @@ std::string xml_escape(const std::string& text) {
   std::string out;
   for (char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&apos;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -53,12 +64,11 @@ class XdmfBuilder {
     out << indent << "<DataItem ItemType=\"HyperSlab\" Type=\"HyperSlab\" Dimensions=\"" << result
         << "\">\n";
     if (src.vector) {
-      out << indent << "  <DataItem Dimensions=\"3 3\" Format=\"XML\" NumberType=\"Int\">"
-          << frame << " 0 " << first << "  1 1 1  1 " << n << " " << components
-          << "</DataItem>\n";
+      out << indent << "  <DataItem Dimensions=\"3 3\" Format=\"XML\" NumberType=\"Int\">" << frame
+          << " 0 " << first << "  1 1 1  1 " << n << " " << components << "</DataItem>\n";
     } else {
-      out << indent << "  <DataItem Dimensions=\"3 2\" Format=\"XML\" NumberType=\"Int\">"
-          << frame << " 0  1 1  1 " << n << "</DataItem>\n";
+      out << indent << "  <DataItem Dimensions=\"3 2\" Format=\"XML\" NumberType=\"Int\">" << frame
+          << " 0  1 1  1 " << n << "</DataItem>\n";
     }
     out << indent << "  <DataItem Dimensions=\"" << frames_ << " " << capacity_;
     if (src.vector) out << " " << dim_;
@@ -82,10 +92,9 @@ void write_particles_xdmf(const std::filesystem::path& xmf_path,
   if (dim != 2 && dim != 3) throw std::invalid_argument("write_particles_xdmf: dim must be 2 or 3");
   for (const SnapshotFrame& frame : frames) {
     if (frame.count < 0 || frame.count > capacity) {
-      throw std::invalid_argument("write_particles_xdmf: frame at step " +
-                                  std::to_string(frame.step) + " has " +
-                                  std::to_string(frame.count) + " particles, capacity " +
-                                  std::to_string(capacity));
+      throw std::invalid_argument(
+          "write_particles_xdmf: frame at step " + std::to_string(frame.step) + " has " +
+          std::to_string(frame.count) + " particles, capacity " + std::to_string(capacity));
     }
   }
   const Source position{"/particles/all/position/value", "Float", 8, true};

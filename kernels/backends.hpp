@@ -5,8 +5,8 @@
 
 #include <Kokkos_Core.hpp>
 
-#if defined(KOKKOS_ENABLE_SERIAL) &&                                                   \
-    (defined(KOKKOS_ENABLE_OPENMP) || defined(KOKKOS_ENABLE_CUDA) ||                   \
+#if defined(KOKKOS_ENABLE_SERIAL) &&                                 \
+    (defined(KOKKOS_ENABLE_OPENMP) || defined(KOKKOS_ENABLE_CUDA) || \
      defined(KOKKOS_ENABLE_THREADS) || defined(KOKKOS_ENABLE_HIP))
 #define GRANSHOCK_SEPARATE_SERIAL 1
 #else

@@ -107,11 +107,14 @@ class BinAccumulator {
  public:
   using Mem = typename ExecSpace::memory_space;
   using Sums = Kokkos::View<double*, Mem>;
-  using Scatter = Kokkos::Experimental::ScatterView<double*, typename Sums::array_layout, ExecSpace>;
+  using Scatter =
+      Kokkos::Experimental::ScatterView<double*, typename Sums::array_layout, ExecSpace>;
 
   BinAccumulator() = default;
   BinAccumulator(long bins, int quantities, int blocks)
-      : bins_(bins), quantities_(quantities), blocks_(blocks),
+      : bins_(bins),
+        quantities_(quantities),
+        blocks_(blocks),
         sums_("field_sums", bins * quantities * blocks),
         block_("field_block", bins * quantities),
         scatter_(block_) {}
@@ -127,13 +130,17 @@ class BinAccumulator {
     using Contribution = SampleContribution<Where, Store, VirialView>;
     const long offset = long(block) * block_size();
     if constexpr (Strategy == ScatterStrategy::atomic) {
-      const Contribution one{where, p, virial, offset, quantities_, BinLayout::per_species, virial_terms};
-      Kokkos::parallel_for("fields::sample_atomic", Policy(0, p.n), AtomicSample<Contribution, Sums>{one, sums_});
+      const Contribution one{where,       p, virial, offset, quantities_, BinLayout::per_species,
+                             virial_terms};
+      Kokkos::parallel_for("fields::sample_atomic", Policy(0, p.n),
+                           AtomicSample<Contribution, Sums>{one, sums_});
     } else {
-      const Contribution one{where, p, virial, 0, quantities_, BinLayout::per_species, virial_terms};
+      const Contribution one{where,       p, virial, 0, quantities_, BinLayout::per_species,
+                             virial_terms};
       Kokkos::deep_copy(block_, 0.0);
       scatter_.reset_except(block_);
-      Kokkos::parallel_for("fields::sample_scatter", Policy(0, p.n), ScatterSample<Contribution, Scatter>{one, scatter_});
+      Kokkos::parallel_for("fields::sample_scatter", Policy(0, p.n),
+                           ScatterSample<Contribution, Scatter>{one, scatter_});
       Kokkos::Experimental::contribute(block_, scatter_);
       const auto sums = sums_, blk = block_;
       Kokkos::parallel_for(

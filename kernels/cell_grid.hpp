@@ -29,9 +29,9 @@ struct CellGrid {
       g.inv_cell[d] = Real(g.ncell[d] / len);
       g.periodic[d] = box.periodic[d];
       if (g.periodic[d] && g.ncell[d] < 3)
-        throw UserError("periodic box axis " + std::to_string(d) + " is " +
-                        std::to_string(len) + " m long; it must hold at least 3 interaction " +
-                        "ranges (" + std::to_string(3 * min_cell_size) + " m)");
+        throw UserError("periodic box axis " + std::to_string(d) + " is " + std::to_string(len) +
+                        " m long; it must hold at least 3 interaction " + "ranges (" +
+                        std::to_string(3 * min_cell_size) + " m)");
     }
     return g;
   }

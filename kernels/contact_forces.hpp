@@ -40,10 +40,10 @@ struct ContactForceKernel {
   CylinderGeometry<Dim, Real> cylinder;
   History history;
   Real dt;
-  Kokkos::View<Real* [Traits::dim * Traits::dim], Mem> virial;  // ForceMode::virial only
+  Kokkos::View<Real * [Traits::dim * Traits::dim], Mem> virial;  // ForceMode::virial only
 
-  KOKKOS_INLINE_FUNCTION Vec<Dim, Real> load(const typename ParticleStore<Dim, Real, Mem>::VectorView& a,
-                                             int i) const {
+  KOKKOS_INLINE_FUNCTION Vec<Dim, Real> load(
+      const typename ParticleStore<Dim, Real, Mem>::VectorView& a, int i) const {
     Vec<Dim, Real> r;
     for (int d = 0; d < Dim; ++d) r[d] = a(i, d);
     return r;
@@ -73,10 +73,10 @@ struct ContactForceKernel {
       const NormalContact<Real> normal = hertz_normal(c, rsum - r, dot(vrel, n));
       Vec<Dim, Real> pair_force = normal.force * n;
       if constexpr (Traits::friction) {
-        const int slot = Mode == ForceMode::forces ? claim_slot(i, p.id(j), used_slots)
-                                                   : find_slot(i, p.id(j));
-        const Vec<2, Real> vc = contact_point_velocity(
-            vrel, n, ri * p.omega(i) + table.radius(sj) * p.omega(j));
+        const int slot =
+            Mode == ForceMode::forces ? claim_slot(i, p.id(j), used_slots) : find_slot(i, p.id(j));
+        const Vec<2, Real> vc =
+            contact_point_velocity(vrel, n, ri * p.omega(i) + table.radius(sj) * p.omega(j));
         Vec<2, Real> xi_t = Vec<2, Real>::zero();
         if (slot >= 0) xi_t = {{history.spring(i, 2 * slot), history.spring(i, 2 * slot + 1)}};
         const Vec<2, Real> ft = hertz_tangential(c, normal, n, vc, dt, xi_t);

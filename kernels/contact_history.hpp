@@ -13,7 +13,7 @@ struct ContactHistory {
   static constexpr int slots = Dim == 2 ? 8 : 16;  // > the contacts a sphere can have
 
   Kokkos::View<int* [slots], MemSpace> partner;         // global id, -1 when free
-  Kokkos::View<Real* [slots * Dim], MemSpace> spring;   // xi per slot
+  Kokkos::View<Real * [slots * Dim], MemSpace> spring;  // xi per slot
   Kokkos::View<Real* [Dim], MemSpace> wall_spring;      // xi against the obstacle
   Kokkos::View<int, MemSpace> overflow;                 // set when a particle runs out of slots
 

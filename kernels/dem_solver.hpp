@@ -78,7 +78,8 @@ class DemSolver final : public Solver {
                         std::to_string(hp.species[i]));
       species(i) = hp.species[i];
       id(i) = hp.id[i];
-      if constexpr (Traits::friction) omega(i) = hp.angular_velocity.empty() ? Real(0) : Real(hp.angular_velocity[i]);
+      if constexpr (Traits::friction)
+        omega(i) = hp.angular_velocity.empty() ? Real(0) : Real(hp.angular_velocity[i]);
     }
     Kokkos::deep_copy(p_.x, x);
     Kokkos::deep_copy(p_.v, v);
@@ -171,7 +172,8 @@ class DemSolver final : public Solver {
 
   void compute_forces() {
     ContactForceKernel<Traits, ExecSpace> kernel{
-        p_, list_.offsets, list_.neighbours, table_, box_, cylinder_, history_, Real(setup_.dt), {}};
+        p_,        list_.offsets, list_.neighbours, table_, box_,
+        cylinder_, history_,      Real(setup_.dt),  {}};
     Kokkos::parallel_for("contact_forces", Policy(0, p_.n), kernel);
   }
 
@@ -185,7 +187,8 @@ class DemSolver final : public Solver {
   void sample_fields(int block) override {
     if (int(virial_.extent(0)) < p_.n) virial_ = decltype(virial_)("virial", p_.capacity());
     ContactForceKernel<Traits, ExecSpace, ForceMode::virial> kernel{
-        p_, list_.offsets, list_.neighbours, table_, box_, cylinder_, history_, Real(setup_.dt), virial_};
+        p_,        list_.offsets, list_.neighbours, table_, box_,
+        cylinder_, history_,      Real(setup_.dt),  virial_};
     Kokkos::parallel_for("contact_virial", Policy(0, p_.n), kernel);
     const BinLayout& g = sampling_.grid;
     const GridIndex grid{g.x0, g.y0, 1.0 / g.bin_size, g.nx, g.ny};
@@ -193,7 +196,8 @@ class DemSolver final : public Solver {
     const ProfileIndex profile{pr.x_lo, pr.x_hi, pr.y0, 1.0 / pr.dy, pr.n};
     if (sampling_.strategy == ScatterStrategy::atomic) {
       grid_sums_.template sample<ScatterStrategy::atomic>(block, grid, p_, virial_);
-      if (!profile_sums_.empty()) profile_sums_.template sample<ScatterStrategy::atomic>(block, profile, p_, virial_);
+      if (!profile_sums_.empty())
+        profile_sums_.template sample<ScatterStrategy::atomic>(block, profile, p_, virial_);
     } else {
       grid_sums_.template sample<ScatterStrategy::scatter_view>(block, grid, p_, virial_);
       if (!profile_sums_.empty())
@@ -204,7 +208,8 @@ class DemSolver final : public Solver {
   std::vector<double> field_sums(bool profile) const override {
     return profile ? profile_sums_.to_host() : grid_sums_.to_host();
   }
-  void restore_field_sums(const std::vector<double>& grid, const std::vector<double>& profile) override {
+  void restore_field_sums(const std::vector<double>& grid,
+                          const std::vector<double>& profile) override {
     grid_sums_.from_host(grid);
     if (!profile_sums_.empty()) profile_sums_.from_host(profile);
   }
@@ -295,8 +300,8 @@ class DemSolver final : public Solver {
     if (int(keep_order_.extent(0)) < p_.capacity())
       keep_order_ = Kokkos::View<int*, Mem>("keep_order", p_.capacity());
     long per_face[2 * Dim];
-    const int kept = compact_escaped<Dim, Real, ExecSpace>(escape_.test, p_.x, p_.n,
-                                                           keep_order_, per_face);
+    const int kept =
+        compact_escaped<Dim, Real, ExecSpace>(escape_.test, p_.x, p_.n, keep_order_, per_face);
     if (kept == p_.n) return;
     for (int d = 0; d < Dim; ++d) {
       removed_.low[d] += per_face[2 * d];
@@ -333,7 +338,7 @@ class DemSolver final : public Solver {
   Kokkos::View<int*, Mem> keep_order_;
   FieldSampling sampling_;
   BinAccumulator<ExecSpace> grid_sums_, profile_sums_;
-  Kokkos::View<Real* [Dim * Dim], Mem> virial_;
+  Kokkos::View<Real * [Dim * Dim], Mem> virial_;
   RemovalCounts removed_;
   int next_id_ = 0;
   long steps_ = 0;

@@ -28,7 +28,8 @@ Diagnostics DemSolver<Traits, ExecSpace>::diagnostics() const {
   out.non_finite = long(sum(
       "diag::non_finite", KOKKOS_LAMBDA(const int i, double& acc) {
         bool ok = true;
-        for (int d = 0; d < Dim; ++d) ok = ok && dmath::is_finite(double(x(i, d))) && dmath::is_finite(double(v(i, d)));
+        for (int d = 0; d < Dim; ++d)
+          ok = ok && dmath::is_finite(double(x(i, d))) && dmath::is_finite(double(v(i, d)));
         acc += ok ? 0.0 : 1.0;
       }));
   out.kinetic_energy = sum(
@@ -40,8 +41,7 @@ Diagnostics DemSolver<Traits, ExecSpace>::diagnostics() const {
   if constexpr (Traits::friction) {
     out.rotational_energy = sum(
         "diag::rotational", KOKKOS_LAMBDA(const int i, double& acc) {
-          acc += 0.5 * double(omega(i)) * double(omega(i)) /
-                 double(table.inv_inertia(species(i)));
+          acc += 0.5 * double(omega(i)) * double(omega(i)) / double(table.inv_inertia(species(i)));
         });
   }
   for (int c = 0; c < Dim; ++c) {
@@ -63,11 +63,13 @@ Diagnostics DemSolver<Traits, ExecSpace>::diagnostics() const {
           dx = box.minimum_image(dx);
           const double dn = double(table.radius(si) + table.radius(species(j))) -
                             dmath::sqrt(double(dot(dx, dx)));
-          if (dn > 0) acc += 0.5 * double(table.pair(si, species(j)).energy_coef) * dn * dn * dmath::sqrt(dn);
+          if (dn > 0)
+            acc += 0.5 * double(table.pair(si, species(j)).energy_coef) * dn * dn * dmath::sqrt(dn);
         }
         if constexpr (Traits::obstacle) {
           double r2 = 0;
-          for (int d = 0; d < 2; ++d) r2 += double(x(i, d) - cyl.centre[d]) * double(x(i, d) - cyl.centre[d]);
+          for (int d = 0; d < 2; ++d)
+            r2 += double(x(i, d) - cyl.centre[d]) * double(x(i, d) - cyl.centre[d]);
           const double dn = double(table.radius(si) + cyl.radius) - dmath::sqrt(r2);
           if (dn > 0) acc += double(table.wall(si).energy_coef) * dn * dn * dmath::sqrt(dn);
         }

@@ -120,7 +120,8 @@ int DemSolver<Traits, ExecSpace>::insert(const InsertionRequest& rq) {
         if constexpr (Traits::friction) {
           omega(i) = 0;
           torque(i) = 0;
-          for (int s = 0; s < ContactHistory<Dim, Real, Mem>::slots; ++s) history.partner(i, s) = -1;
+          for (int s = 0; s < ContactHistory<Dim, Real, Mem>::slots; ++s)
+            history.partner(i, s) = -1;
           for (int d = 0; d < Dim; ++d) history.wall_spring(i, d) = 0;
         }
       });
@@ -144,7 +145,9 @@ std::vector<SpeciesMoments> DemSolver<Traits, ExecSpace>::species_moments() cons
     for (int c = 0; c < Dim; ++c) {
       Kokkos::parallel_reduce(
           "moments::velocity", Policy(0, p_.n),
-          KOKKOS_LAMBDA(const int i, double& acc) { acc += species(i) == s ? double(v(i, c)) : 0.0; },
+          KOKKOS_LAMBDA(const int i, double& acc) {
+            acc += species(i) == s ? double(v(i, c)) : 0.0;
+          },
           out[s].velocity_sum[c]);
     }
     Kokkos::parallel_reduce(

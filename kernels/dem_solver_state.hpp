@@ -29,7 +29,8 @@ void from_host(const View& view, int n, const std::vector<T>& in, const char* wh
     if constexpr (View::rank == 1) {
       h(i) = typename View::value_type(in[i]);
     } else {
-      for (int c = 0; c < width; ++c) h(i, c) = typename View::value_type(in[std::size_t(i) * width + c]);
+      for (int c = 0; c < width; ++c)
+        h(i, c) = typename View::value_type(in[std::size_t(i) * width + c]);
     }
   }
   Kokkos::deep_copy(view, h);

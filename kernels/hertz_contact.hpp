@@ -21,8 +21,8 @@ struct NormalContact {
 };
 
 template <class Real>
-KOKKOS_INLINE_FUNCTION NormalContact<Real> hertz_normal(const HertzCoefficients<Real>& c,
-                                                         Real dn, Real vn) {
+KOKKOS_INLINE_FUNCTION NormalContact<Real> hertz_normal(const HertzCoefficients<Real>& c, Real dn,
+                                                        Real vn) {
   const Real sqrt_dn = dmath::sqrt(dn);
   const Real kn = c.kn_coef * sqrt_dn;
   const Real gn = c.gn_coef * dmath::sqrt(sqrt_dn);
@@ -42,10 +42,9 @@ KOKKOS_INLINE_FUNCTION NormalContact<Real> hertz_normal(const HertzCoefficients<
 // vc is the relative velocity of the contact points; returns Ft and updates xi.
 template <class Real>
 KOKKOS_INLINE_FUNCTION Vec<2, Real> hertz_tangential(const HertzCoefficients<Real>& c,
-                                                      const NormalContact<Real>& normal,
-                                                      const Vec<2, Real>& n,
-                                                      const Vec<2, Real>& vc, Real dt,
-                                                      Vec<2, Real>& xi) {
+                                                     const NormalContact<Real>& normal,
+                                                     const Vec<2, Real>& n, const Vec<2, Real>& vc,
+                                                     Real dt, Vec<2, Real>& xi) {
   const Vec<2, Real> vt = vc - dot(vc, n) * n;
   // Rotate the stored spring into the tangent plane, preserving its magnitude.
   const Real old_len2 = dot(xi, xi);
@@ -70,8 +69,7 @@ KOKKOS_INLINE_FUNCTION Vec<2, Real> hertz_tangential(const HertzCoefficients<Rea
 // spins about z: v_rel - (r_i w_i + r_j w_j) (z x n), with z x n = (-n_y, n_x).
 template <class Real>
 KOKKOS_INLINE_FUNCTION Vec<2, Real> contact_point_velocity(const Vec<2, Real>& vrel,
-                                                            const Vec<2, Real>& n,
-                                                            Real spin_sum) {
+                                                           const Vec<2, Real>& n, Real spin_sum) {
   Vec<2, Real> vc;
   vc[0] = vrel[0] + spin_sum * n[1];
   vc[1] = vrel[1] - spin_sum * n[0];

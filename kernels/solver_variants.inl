@@ -13,12 +13,16 @@ std::unique_ptr<Solver> make_solver_variant(const SystemSetup& setup, std::size_
   const bool friction = setup.contacts.has_friction();
   const bool obstacle = setup.obstacle.has_value();
   if (friction && obstacle)
-    return std::make_unique<DemSolver<SceneTraits<2, Real, true, true>, ExecSpace>>(setup, capacity);
+    return std::make_unique<DemSolver<SceneTraits<2, Real, true, true>, ExecSpace>>(setup,
+                                                                                    capacity);
   if (friction)
-    return std::make_unique<DemSolver<SceneTraits<2, Real, true, false>, ExecSpace>>(setup, capacity);
+    return std::make_unique<DemSolver<SceneTraits<2, Real, true, false>, ExecSpace>>(setup,
+                                                                                     capacity);
   if (obstacle)
-    return std::make_unique<DemSolver<SceneTraits<2, Real, false, true>, ExecSpace>>(setup, capacity);
-  return std::make_unique<DemSolver<SceneTraits<2, Real, false, false>, ExecSpace>>(setup, capacity);
+    return std::make_unique<DemSolver<SceneTraits<2, Real, false, true>, ExecSpace>>(setup,
+                                                                                     capacity);
+  return std::make_unique<DemSolver<SceneTraits<2, Real, false, false>, ExecSpace>>(setup,
+                                                                                    capacity);
 }
 
 }  // namespace granshock

@@ -4,6 +4,6 @@
 
 namespace granshock {
 template std::unique_ptr<Solver> make_solver_variant<float, Kokkos::Serial>(const SystemSetup&,
-                                                                              std::size_t);
+                                                                            std::size_t);
 }  // namespace granshock
 #endif

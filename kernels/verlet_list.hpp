@@ -42,7 +42,8 @@ class VerletList {
   void build(const CellGrid<Dim, Real>& grid, const BoxGeometry<Dim, Real>& box,
              const StartView& cell_start, const PositionView& x, const SpeciesView& species,
              const RadiusView& radius, Real skin, int n) {
-    if (int(offsets.extent(0)) < n + 1) offsets = Kokkos::View<int*, Mem>("verlet_offsets", n + n / 4 + 16);
+    if (int(offsets.extent(0)) < n + 1)
+      offsets = Kokkos::View<int*, Mem>("verlet_offsets", n + n / 4 + 16);
     auto off = offsets;
     // Pass 1: count. Pass 2: fill. Both visit the same candidates in the same order.
     Kokkos::parallel_for(

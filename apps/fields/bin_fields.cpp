@@ -15,14 +15,36 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 void resize_all(BinFields& f) {
   const std::size_t n = f.size();
-  for (std::vector<double>* v :
-       {&f.particle_samples, &f.mean_count, &f.n, &f.rho, &f.phi, &f.ux, &f.uy, &f.speed, &f.temperature,
-        &f.temperature_norm, &f.p_kin_xx, &f.p_kin_xy, &f.p_kin_yy, &f.p_col_xx, &f.p_col_xy, &f.p_col_yx,
-        &f.p_col_yy, &f.pressure, &f.pressure_eos, &f.eos_deviation, &f.sound_speed, &f.mach,
-        &f.sound_speed_mixture_mean, &f.mach_mixture_mean, &f.sound_speed_paper_sum, &f.mach_paper_sum})
+  for (std::vector<double>* v : {&f.particle_samples,
+                                 &f.mean_count,
+                                 &f.n,
+                                 &f.rho,
+                                 &f.phi,
+                                 &f.ux,
+                                 &f.uy,
+                                 &f.speed,
+                                 &f.temperature,
+                                 &f.temperature_norm,
+                                 &f.p_kin_xx,
+                                 &f.p_kin_xy,
+                                 &f.p_kin_yy,
+                                 &f.p_col_xx,
+                                 &f.p_col_xy,
+                                 &f.p_col_yx,
+                                 &f.p_col_yy,
+                                 &f.pressure,
+                                 &f.pressure_eos,
+                                 &f.eos_deviation,
+                                 &f.sound_speed,
+                                 &f.mach,
+                                 &f.sound_speed_mixture_mean,
+                                 &f.mach_mixture_mean,
+                                 &f.sound_speed_paper_sum,
+                                 &f.mach_paper_sum})
     v->assign(n, kNaN);
   f.masked.assign(n, 1);
-  for (auto* per_species : {&f.species_samples, &f.species_n, &f.species_ux, &f.species_uy, &f.species_temperature})
+  for (auto* per_species :
+       {&f.species_samples, &f.species_n, &f.species_ux, &f.species_uy, &f.species_temperature})
     per_species->assign(static_cast<std::size_t>(f.n_species), std::vector<double>(n, kNaN));
 }
 
@@ -50,7 +72,9 @@ BinFields compute_bin_fields(const BinSums& sums, const FieldPhysics& phys, cons
     for (int ix = 0; ix < sums.nx; ++ix) {
       const std::size_t k = f.index(iy, ix);
       if (!(samples > 0)) continue;  // never sampled: everything NaN, masked
-      auto q = [&](int a, BinLayout::SpeciesQuantity what) { return sums.pooled(iy, ix, l.species_index(a, what)); };
+      auto q = [&](int a, BinLayout::SpeciesQuantity what) {
+        return sums.pooled(iy, ix, l.species_index(a, what));
+      };
 
       // Densities (eq. 3) and the mass-averaged velocity.
       double count = 0, mass_count = 0, mass_cx = 0, mass_cy = 0, phi = 0, rho = 0;
@@ -80,7 +104,8 @@ BinFields compute_bin_fields(const BinSums& sums, const FieldPhysics& phys, cons
       std::vector<double> xi(ns);
       for (std::size_t a = 0; a < ns; ++a) {
         const int ai = static_cast<int>(a);
-        const double na = q(ai, BinLayout::count), cx = q(ai, BinLayout::sum_vx), cy = q(ai, BinLayout::sum_vy);
+        const double na = q(ai, BinLayout::count), cx = q(ai, BinLayout::sum_vx),
+                     cy = q(ai, BinLayout::sum_vy);
         const double qxx = q(ai, BinLayout::sum_vxvx) - 2 * ux * cx + na * ux * ux;
         const double qxy = q(ai, BinLayout::sum_vxvy) - ux * cy - uy * cx + na * ux * uy;
         const double qyy = q(ai, BinLayout::sum_vyvy) - 2 * uy * cy + na * uy * uy;
@@ -93,11 +118,13 @@ BinFields compute_bin_fields(const BinSums& sums, const FieldPhysics& phys, cons
           f.species_ux[a][k] = cx / na;
           f.species_uy[a][k] = cy / na;
         }
-        if (na >= rule.min_particle_samples) f.species_temperature[a][k] = phys.mass[a] * (qxx + qyy) / (dim * na);
+        if (na >= rule.min_particle_samples)
+          f.species_temperature[a][k] = phys.mass[a] * (qxx + qyy) / (dim * na);
       }
       const double temperature = trace_mass / (dim * count);  // sum_a xi_a T_a
       if (!(temperature > 0) || !std::isfinite(temperature)) {
-        for (std::size_t a = 0; a < ns; ++a) f.species_temperature[a][k] = f.species_ux[a][k] = f.species_uy[a][k] = kNaN;
+        for (std::size_t a = 0; a < ns; ++a)
+          f.species_temperature[a][k] = f.species_ux[a][k] = f.species_uy[a][k] = kNaN;
         continue;
       }
       f.masked[k] = 0;
@@ -137,7 +164,8 @@ BinFields compute_bin_fields(const BinSums& sums, const FieldPhysics& phys, cons
 
 std::vector<BinFields::Named> BinFields::named(const std::vector<std::string>& names) const {
   std::vector<Named> out = {
-      {"particle_samples", "", "particles counted in the bin over all samples (the masking statistic)", &particle_samples},
+      {"particle_samples", "",
+       "particles counted in the bin over all samples (the masking statistic)", &particle_samples},
       {"mean_count", "", "time-averaged number of particles in the bin", &mean_count},
       {"n", "m-2", "number density (per unit area)", &n},
       {"rho", "kg m-2", "mass density varrho = sum_a m_a n_a (per unit area)", &rho},
@@ -150,7 +178,8 @@ std::vector<BinFields::Named> BinFields::named(const std::vector<std::string>& n
       {"P_kin_xx", "N m-1", "kinetic pressure tensor sum_a m_a <(c-u)(c-u)> n_a, xx", &p_kin_xx},
       {"P_kin_xy", "N m-1", "kinetic pressure tensor, xy", &p_kin_xy},
       {"P_kin_yy", "N m-1", "kinetic pressure tensor, yy", &p_kin_yy},
-      {"P_col_xx", "N m-1", "collisional pressure tensor <W>/V_bin (compression positive), xx", &p_col_xx},
+      {"P_col_xx", "N m-1", "collisional pressure tensor <W>/V_bin (compression positive), xx",
+       &p_col_xx},
       {"P_col_xy", "N m-1", "collisional pressure tensor, xy", &p_col_xy},
       {"P_col_yx", "N m-1", "collisional pressure tensor, yx", &p_col_yx},
       {"P_col_yy", "N m-1", "collisional pressure tensor, yy", &p_col_yy},
@@ -161,14 +190,18 @@ std::vector<BinFields::Named> BinFields::named(const std::vector<std::string>& n
       {"Ma", "", "|u| / a, the scene's mass definition", &mach},
       {"a_mixture_mean", "m s-1", "sound speed with m = sum_a xi_a m_a", &sound_speed_mixture_mean},
       {"Ma_mixture_mean", "", "Mach number with m = sum_a xi_a m_a", &mach_mixture_mean},
-      {"a_paper_sum", "m s-1", "sound speed with m = sum_a m_a (the paper's eq. 7)", &sound_speed_paper_sum},
+      {"a_paper_sum", "m s-1", "sound speed with m = sum_a m_a (the paper's eq. 7)",
+       &sound_speed_paper_sum},
       {"Ma_paper_sum", "", "Mach number with m = sum_a m_a", &mach_paper_sum},
   };
   for (std::size_t a = 0; a < names.size() && a < species_n.size(); ++a) {
     out.push_back({"n_" + names[a], "m-2", "number density of species " + names[a], &species_n[a]});
-    out.push_back({"ux_" + names[a], "m s-1", "mean velocity of species " + names[a] + ", x", &species_ux[a]});
-    out.push_back({"uy_" + names[a], "m s-1", "mean velocity of species " + names[a] + ", y", &species_uy[a]});
-    out.push_back({"T_" + names[a], "J", "species temperature m_a <|c_a - u|^2> / Dim", &species_temperature[a]});
+    out.push_back({"ux_" + names[a], "m s-1", "mean velocity of species " + names[a] + ", x",
+                   &species_ux[a]});
+    out.push_back({"uy_" + names[a], "m s-1", "mean velocity of species " + names[a] + ", y",
+                   &species_uy[a]});
+    out.push_back({"T_" + names[a], "J", "species temperature m_a <|c_a - u|^2> / Dim",
+                   &species_temperature[a]});
   }
   return out;
 }

@@ -33,22 +33,23 @@ struct MaskRule {
 struct BinFields {
   int nx = 0, ny = 0, n_species = 0;
   // Every vector is [ny * nx], index iy * nx + ix.
-  std::vector<double> particle_samples;  // sum_a N_a over all samples
-  std::vector<double> mean_count;        // <N> = sum_a N_a / S
-  std::vector<double> n, rho, phi;       // 1/m^2, kg/m^2, area fraction
-  std::vector<double> ux, uy, speed;     // m/s, mass-averaged
+  std::vector<double> particle_samples;               // sum_a N_a over all samples
+  std::vector<double> mean_count;                     // <N> = sum_a N_a / S
+  std::vector<double> n, rho, phi;                    // 1/m^2, kg/m^2, area fraction
+  std::vector<double> ux, uy, speed;                  // m/s, mass-averaged
   std::vector<double> temperature, temperature_norm;  // J; T / (m_av U^2)
   std::vector<double> p_kin_xx, p_kin_xy, p_kin_yy;   // N/m (2-D pressure: force per length)
   std::vector<double> p_col_xx, p_col_xy, p_col_yx, p_col_yy;
-  std::vector<double> pressure;          // tr(P_kin + P_col) / Dim
-  std::vector<double> pressure_eos;      // n T F(phi) = n T (1 + (Dim - 1)(1 + e) phi g(phi))
-  std::vector<double> eos_deviation;     // pressure / pressure_eos - 1
-  std::vector<double> sound_speed, mach; // with the scene's mass definition
+  std::vector<double> pressure;           // tr(P_kin + P_col) / Dim
+  std::vector<double> pressure_eos;       // n T F(phi) = n T (1 + (Dim - 1)(1 + e) phi g(phi))
+  std::vector<double> eos_deviation;      // pressure / pressure_eos - 1
+  std::vector<double> sound_speed, mach;  // with the scene's mass definition
   std::vector<double> sound_speed_mixture_mean, mach_mixture_mean;
   std::vector<double> sound_speed_paper_sum, mach_paper_sum;
-  std::vector<int> masked;               // 1 = masked
+  std::vector<int> masked;  // 1 = masked
   // Per species a, [a][bin]:
-  std::vector<std::vector<double>> species_samples, species_n, species_ux, species_uy, species_temperature;
+  std::vector<std::vector<double>> species_samples, species_n, species_ux, species_uy,
+      species_temperature;
 
   std::size_t size() const { return static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny); }
   std::size_t index(int iy, int ix) const { return static_cast<std::size_t>(iy) * nx + ix; }
@@ -62,6 +63,7 @@ struct BinFields {
 };
 
 // The fields of the sums pooled over all blocks of `sums`.
-BinFields compute_bin_fields(const BinSums& sums, const FieldPhysics& physics, const MaskRule& rule = {});
+BinFields compute_bin_fields(const BinSums& sums, const FieldPhysics& physics,
+                             const MaskRule& rule = {});
 
 }  // namespace granshock

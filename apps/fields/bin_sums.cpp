@@ -23,7 +23,9 @@ BinLayout BinSums::layout() const {
   return l;
 }
 
-double BinSums::total_samples() const { return std::accumulate(samples.begin(), samples.end(), 0.0); }
+double BinSums::total_samples() const {
+  return std::accumulate(samples.begin(), samples.end(), 0.0);
+}
 
 double BinSums::pooled(int iy, int ix, int q) const {
   const BinLayout l = layout();
@@ -33,10 +35,12 @@ double BinSums::pooled(int iy, int ix, int q) const {
 }
 
 BinSums BinSums::block(int b) const {
-  if (b < 0 || b >= blocks) throw std::invalid_argument("BinSums::block: no block " + std::to_string(b));
+  if (b < 0 || b >= blocks)
+    throw std::invalid_argument("BinSums::block: no block " + std::to_string(b));
   BinSums out = *this;
   out.blocks = 1;
-  const std::size_t per_block = static_cast<std::size_t>(bins()) * static_cast<std::size_t>(quantities());
+  const std::size_t per_block =
+      static_cast<std::size_t>(bins()) * static_cast<std::size_t>(quantities());
   out.sums.assign(sums.begin() + static_cast<long>(per_block * static_cast<std::size_t>(b)),
                   sums.begin() + static_cast<long>(per_block * static_cast<std::size_t>(b + 1)));
   out.samples = {samples[static_cast<std::size_t>(b)]};
@@ -46,16 +50,19 @@ BinSums BinSums::block(int b) const {
 BinSums BinSums::pooled_blocks() const {
   BinSums out = *this;
   out.blocks = 1;
-  const std::size_t per_block = static_cast<std::size_t>(bins()) * static_cast<std::size_t>(quantities());
+  const std::size_t per_block =
+      static_cast<std::size_t>(bins()) * static_cast<std::size_t>(quantities());
   out.sums.assign(per_block, 0.0);
   for (int b = 0; b < blocks; ++b)
-    for (std::size_t k = 0; k < per_block; ++k) out.sums[k] += sums[per_block * static_cast<std::size_t>(b) + k];
+    for (std::size_t k = 0; k < per_block; ++k)
+      out.sums[k] += sums[per_block * static_cast<std::size_t>(b) + k];
   out.samples = {total_samples()};
   return out;
 }
 
 BinSums BinSums::column(int ix) const {
-  if (ix < 0 || ix >= nx) throw std::invalid_argument("BinSums::column: no column " + std::to_string(ix));
+  if (ix < 0 || ix >= nx)
+    throw std::invalid_argument("BinSums::column: no column " + std::to_string(ix));
   BinSums out = *this;
   out.nx = 1;
   out.x0 = x0 + ix * dx;
@@ -63,7 +70,8 @@ BinSums BinSums::column(int ix) const {
   const BinLayout l = layout();
   for (int b = 0; b < blocks; ++b)
     for (int iy = 0; iy < ny; ++iy)
-      for (int q = 0; q < quantities(); ++q) out.sums.push_back(sums[static_cast<std::size_t>(l.offset(b, iy, ix, q))]);
+      for (int q = 0; q < quantities(); ++q)
+        out.sums.push_back(sums[static_cast<std::size_t>(l.offset(b, iy, ix, q))]);
   return out;
 }
 
@@ -77,8 +85,8 @@ void BinSums::check_consistent() const {
     throw std::invalid_argument("BinSums: " + std::to_string(sums.size()) + " sums, expected " +
                                 std::to_string(expected));
   if (samples.size() != static_cast<std::size_t>(blocks))
-    throw std::invalid_argument("BinSums: " + std::to_string(samples.size()) + " sample counts for " +
-                                std::to_string(blocks) + " blocks");
+    throw std::invalid_argument("BinSums: " + std::to_string(samples.size()) +
+                                " sample counts for " + std::to_string(blocks) + " blocks");
 }
 
 namespace {
@@ -111,17 +119,18 @@ double optional_double(const RunFile& run, const std::string& object, const std:
 
 // Checks what was read against the attributes: sums [blocks, ny, nx, q] (grid) or
 // [blocks, n, q] (profile) with q = 6 n_species + 4, samples [blocks].
-void validate(const RunFile& run, const std::string& group, BinSums& s, const std::vector<long>& shape,
-              const std::vector<long>& sample_shape, std::size_t rank) {
+void validate(const RunFile& run, const std::string& group, BinSums& s,
+              const std::vector<long>& shape, const std::vector<long>& sample_shape,
+              std::size_t rank) {
   const std::string where = "'" + run.path().string() + "': " + group;
   if (s.nx < 1 || s.ny < 1 || s.blocks < 1 || !(s.dx > 0) || !(s.dy > 0))
-    throw UserError(where + " has " + std::to_string(s.nx) + " x " + std::to_string(s.ny) + " bins of " +
-                    std::to_string(s.dx) + " m x " + std::to_string(s.dy) + " m in " + std::to_string(s.blocks) +
-                    " blocks; all must be positive");
+    throw UserError(where + " has " + std::to_string(s.nx) + " x " + std::to_string(s.ny) +
+                    " bins of " + std::to_string(s.dx) + " m x " + std::to_string(s.dy) + " m in " +
+                    std::to_string(s.blocks) + " blocks; all must be positive");
   const long q = shape.size() == rank ? shape.back() : 0;
   if (q < 4 + BinLayout::per_species || (q - 4) % BinLayout::per_species != 0)
-    throw UserError(where + "/sums has shape " + shape_text(shape) +
-                    ": expected rank " + std::to_string(rank) +
+    throw UserError(where + "/sums has shape " + shape_text(shape) + ": expected rank " +
+                    std::to_string(rank) +
                     " with a last extent of 6 n_species + 4 (core/bin_layout.hpp)");
   const int species_from_shape = static_cast<int>((q - 4) / BinLayout::per_species);
   if (s.n_species <= 0) s.n_species = species_from_shape;
@@ -129,8 +138,9 @@ void validate(const RunFile& run, const std::string& group, BinSums& s, const st
                                          ? std::vector<long>{s.blocks, s.ny, s.nx, s.quantities()}
                                          : std::vector<long>{s.blocks, s.ny, s.quantities()};
   if (shape != expected || sample_shape != std::vector<long>{s.blocks})
-    throw UserError(where + "/sums has shape " + shape_text(shape) + " and /samples " + shape_text(sample_shape) +
-                    "; its attributes ask for " + shape_text(expected) + " and [" + std::to_string(s.blocks) + "]");
+    throw UserError(where + "/sums has shape " + shape_text(shape) + " and /samples " +
+                    shape_text(sample_shape) + "; its attributes ask for " + shape_text(expected) +
+                    " and [" + std::to_string(s.blocks) + "]");
   for (double n : s.samples)
     if (!(n >= 0)) throw UserError(where + "/samples holds " + std::to_string(n) + ", not a count");
 }

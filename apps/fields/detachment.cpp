@@ -11,8 +11,8 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // The shock position in one profile (pooled or one block), NaN when none is found.
-double shock_position(const BinSums& profile, const FieldPhysics& phys, double phi_up, int begin, int end,
-                      const ThresholdRule& rule, FrontCrossing* out = nullptr) {
+double shock_position(const BinSums& profile, const FieldPhysics& phys, double phi_up, int begin,
+                      int end, const ThresholdRule& rule, FrontCrossing* out = nullptr) {
   const BinFields f = compute_bin_fields(profile, phys);
   std::vector<double> y(static_cast<std::size_t>(profile.ny));
   for (int k = 0; k < profile.ny; ++k) y[static_cast<std::size_t>(k)] = profile.y_centre(k);
@@ -46,7 +46,8 @@ Detachment measure_detachment(const BinSums& profile, const FieldPhysics& phys, 
 
   std::vector<double> finite;
   for (int b = 0; b < profile.blocks; ++b) {
-    if (!(profile.samples[static_cast<std::size_t>(b)] > 0)) continue;  // a block the run never reached
+    if (!(profile.samples[static_cast<std::size_t>(b)] > 0))
+      continue;  // a block the run never reached
     const double y = shock_position(profile.block(b), phys, phi_up, begin, end, rule);
     const double delta = d.surface - y;
     d.delta_blocks.push_back(delta);

@@ -17,11 +17,11 @@ namespace granshock {
 
 struct Detachment {
   bool found = false;
-  double y_shock = 0;           // shock position on the axis (pooled profile), m
-  double surface = 0;           // y_c - R, m
-  double delta = 0;             // surface - y_shock, m
-  double delta_over_d = 0;      // delta / D
-  double delta_err = 0;         // standard error from the blocks, m (NaN with < 2 blocks)
+  double y_shock = 0;       // shock position on the axis (pooled profile), m
+  double surface = 0;       // y_c - R, m
+  double delta = 0;         // surface - y_shock, m
+  double delta_over_d = 0;  // delta / D
+  double delta_err = 0;     // standard error from the blocks, m (NaN with < 2 blocks)
   double delta_over_d_err = 0;
   double phi_peak = 0, threshold = 0;
   std::vector<double> delta_blocks;  // per block with samples; NaN where no front was found

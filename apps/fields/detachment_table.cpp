@@ -24,14 +24,18 @@ std::string csv_text(const std::string& s) {
   return out + "\"";
 }
 
-nlohmann::json json_number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); }
+nlohmann::json json_number(double v) {
+  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json();
+}
 
 }  // namespace
 
-DetachmentRow detachment_row(const std::filesystem::path& run_dir, const FieldAnalysis& a, double ma_inf_target) {
+DetachmentRow detachment_row(const std::filesystem::path& run_dir, const FieldAnalysis& a,
+                             double ma_inf_target) {
   DetachmentRow r;
   r.run = run_dir.string();
-  r.d_over_particle = a.physics.obstacle ? a.physics.obstacle->diameter / a.physics.d : std::numeric_limits<double>::quiet_NaN();
+  r.d_over_particle = a.physics.obstacle ? a.physics.obstacle->diameter / a.physics.d
+                                         : std::numeric_limits<double>::quiet_NaN();
   r.ma_inf_target = ma_inf_target;
   r.ma_inf_measured = a.upstream_inlet.mach;
   r.ma_inf_measured_downstream = a.upstream_downstream.mach;
@@ -42,15 +46,18 @@ DetachmentRow detachment_row(const std::filesystem::path& run_dir, const FieldAn
   return r;
 }
 
-void write_detachment_table(const std::filesystem::path& out_dir, const std::vector<DetachmentRow>& rows) {
+void write_detachment_table(const std::filesystem::path& out_dir,
+                            const std::vector<DetachmentRow>& rows) {
   std::string csv =
-      "run,D_over_d,ma_inf_target,ma_inf_measured,ma_inf_measured_downstream,delta_over_D,delta_over_D_err,"
+      "run,D_over_d,ma_inf_target,ma_inf_measured,ma_inf_measured_downstream,delta_over_D,delta_"
+      "over_D_err,"
       "phi_peak,shock_angle_deg\n";
   nlohmann::json table = nlohmann::json::array();
   for (const DetachmentRow& r : rows) {
     csv += csv_text(r.run);
-    for (double v : {r.d_over_particle, r.ma_inf_target, r.ma_inf_measured, r.ma_inf_measured_downstream,
-                     r.delta_over_D, r.delta_over_D_err, r.phi_peak, r.shock_angle_deg})
+    for (double v :
+         {r.d_over_particle, r.ma_inf_target, r.ma_inf_measured, r.ma_inf_measured_downstream,
+          r.delta_over_D, r.delta_over_D_err, r.phi_peak, r.shock_angle_deg})
       csv += "," + csv_number(v);
     csv += "\n";
     table.push_back({{"run", r.run},

@@ -11,7 +11,7 @@
 namespace granshock {
 
 struct DetachmentRow {
-  std::string run;  // the run directory
+  std::string run;             // the run directory
   double d_over_particle = 0;  // D/d
   double ma_inf_target = 0, ma_inf_measured = 0, ma_inf_measured_downstream = 0;
   double delta_over_D = 0, delta_over_D_err = 0;
@@ -23,6 +23,7 @@ DetachmentRow detachment_row(const std::filesystem::path& run_dir, const FieldAn
 
 // Writes out_dir/detachment.csv and out_dir/detachment.json (a list of objects with the
 // CSV's columns; NaN as an empty CSV cell and as JSON null), atomically.
-void write_detachment_table(const std::filesystem::path& out_dir, const std::vector<DetachmentRow>& rows);
+void write_detachment_table(const std::filesystem::path& out_dir,
+                            const std::vector<DetachmentRow>& rows);
 
 }  // namespace granshock

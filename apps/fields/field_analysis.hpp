@@ -32,24 +32,25 @@ struct FieldAnalysis {
   FieldPhysics physics;
   BinSums grid;
   BinFields fields;
-  BinSums profile;             // the stagnation-line profile (or the grid column on the axis)
+  BinSums profile;  // the stagnation-line profile (or the grid column on the axis)
   bool profile_from_grid = false;
   BinFields profile_fields;
   UpstreamState upstream_inlet;       // first two rows (the paper)
   UpstreamState upstream_downstream;  // two rows from one bin beyond the strip
-  int reference_row = 0;              // where front searches start (= upstream_downstream.row_begin)
-  double phi_up = 0;                  // upstream phi of the threshold rule
+  int reference_row = 0;  // where front searches start (= upstream_downstream.row_begin)
+  double phi_up = 0;      // upstream phi of the threshold rule
   std::vector<Polyline> sonic_lines;  // Ma = 1 (scene's mass definition)
   ShockFront front;
   Detachment detachment;
   EosCheck eos;
-  double phi_peak = 0;                // max phi over unmasked grid bins
-  double ma_target = 0;               // the inflow's nominal Mach number (FieldPhysics::nominal_mach)
+  double phi_peak = 0;   // max phi over unmasked grid bins
+  double ma_target = 0;  // the inflow's nominal Mach number (FieldPhysics::nominal_mach)
 };
 
 FieldAnalysis analyse_fields(const Scene& scene, BinSums grid, std::optional<BinSums> profile,
                              const FieldAnalysisOptions& options = {});
 // Reads DIR/run.h5 (its resolved scene and field sums) and analyses it.
-FieldAnalysis analyse_run_file(const std::filesystem::path& run_h5, const FieldAnalysisOptions& options = {});
+FieldAnalysis analyse_run_file(const std::filesystem::path& run_h5,
+                               const FieldAnalysisOptions& options = {});
 
 }  // namespace granshock

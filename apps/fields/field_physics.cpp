@@ -23,8 +23,8 @@ double FieldPhysics::nominal_mach(MassDefinition def) const {
   double m_mean = 0;
   for (std::size_t a = 0; a < mass.size(); ++a) m_mean += inflow_number_fraction[a] * mass[a];
   const double temperature = m_mean * inflow_sigma * inflow_sigma;
-  const double a = sound_speed(temperature, sound_speed_mass(def, inflow_number_fraction), inflow_phi,
-                               restitution, dim);
+  const double a = sound_speed(temperature, sound_speed_mass(def, inflow_number_fraction),
+                               inflow_phi, restitution, dim);
   return inflow_speed / a;
 }
 

@@ -20,13 +20,13 @@ struct FieldPhysics {
   std::vector<double> diameter;  // m
   double restitution = 0.5;      // Scene::mean_restitution(): e in F(phi)
   MassDefinition mass_definition = MassDefinition::mixture_mean;
-  double d = 1e-3;               // the scene's length unit, m
+  double d = 1e-3;  // the scene's length unit, m
 
   // Inflow (DESIGN.md 2.2).
-  double inflow_speed = 0;       // U, m/s along +y
-  double inflow_phi = 0.1;       // phi_inf asked for
-  double inflow_sigma = 0;       // velocity fluctuation per component, m/s
-  double inflow_strip = 2e-3;    // insertion strip y in [0, strip], m
+  double inflow_speed = 0;     // U, m/s along +y
+  double inflow_phi = 0.1;     // phi_inf asked for
+  double inflow_sigma = 0;     // velocity fluctuation per component, m/s
+  double inflow_strip = 2e-3;  // insertion strip y in [0, strip], m
   std::vector<double> inflow_number_fraction;
 
   double box_x_lo = 0, box_x_hi = 0, box_y_lo = 0, box_y_hi = 0;  // m; x periodic

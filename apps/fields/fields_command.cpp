@@ -72,12 +72,14 @@ int fields_command(const std::vector<fs::path>& run_dirs, const fs::path& out) {
   return fields_command(run_dirs, out, FieldsCommandOptions{});
 }
 
-int fields_command(const std::vector<fs::path>& run_dirs, const fs::path& out, const FieldsCommandOptions& o) {
+int fields_command(const std::vector<fs::path>& run_dirs, const fs::path& out,
+                   const FieldsCommandOptions& o) {
   if (run_dirs.empty()) throw UserError("granshock fields needs at least one run directory");
   const bool several = run_dirs.size() > 1;
   if (several && out.empty())
-    throw UserError("granshock fields with " + std::to_string(run_dirs.size()) +
-                    " run directories needs --out DIR for their comparison (detachment table and figure)");
+    throw UserError(
+        "granshock fields with " + std::to_string(run_dirs.size()) +
+        " run directories needs --out DIR for their comparison (detachment table and figure)");
   // Every run is checked before anything is written.
   std::vector<FieldAnalysis> analyses;
   for (const fs::path& dir : run_dirs) analyses.push_back(analyse_run_file(dir / "run.h5"));
@@ -92,7 +94,8 @@ int fields_command(const std::vector<fs::path>& run_dirs, const fs::path& out, c
     const double target = target_mach(dir / "summary.json", analyses[i].ma_target);
     keys["ma_inf_target"] = std::isfinite(target) ? nlohmann::json(target) : nlohmann::json();
     std::error_code ec;
-    if (dest != dir && fs::exists(dir / "summary.json", ec) && !fs::exists(dest / "summary.json", ec))
+    if (dest != dir && fs::exists(dir / "summary.json", ec) &&
+        !fs::exists(dest / "summary.json", ec))
       fs::copy_file(dir / "summary.json", dest / "summary.json", ec);
     merge_summary_json(dest / "summary.json", keys);
     done.push_back({dir, dest, detachment_row(dir, analyses[i], target)});
@@ -107,16 +110,19 @@ int fields_command(const std::vector<fs::path>& run_dirs, const fs::path& out, c
   if (o.figures) {
     require_plotting_python();
     for (const Done& d : done) plot_run_figures(d.dest / "fields.h5", d.dest / "figures");
-    if (several) plot_detachment_figure(out / "detachment.json", out / "figures" / "detachment_length.png");
+    if (several)
+      plot_detachment_figure(out / "detachment.json", out / "figures" / "detachment_length.png");
   }
 
   if (!o.quiet) {
     for (const Done& d : done)
-      std::cout << "granshock fields: " << d.run_dir.string() << ": Ma_inf " << number(d.row.ma_inf_target, 3)
-                << " (target), " << number(d.row.ma_inf_measured, 3) << " (measured at the inlet), "
-                << number(d.row.ma_inf_measured_downstream, 3) << " (beyond the strip); delta/D = "
-                << number(d.row.delta_over_D, 3) << " +- " << number(d.row.delta_over_D_err, 2)
-                << "; shock angle " << number(d.row.shock_angle_deg, 3) << " deg; results in " << d.dest.string()
+      std::cout << "granshock fields: " << d.run_dir.string() << ": Ma_inf "
+                << number(d.row.ma_inf_target, 3) << " (target), "
+                << number(d.row.ma_inf_measured, 3) << " (measured at the inlet), "
+                << number(d.row.ma_inf_measured_downstream, 3)
+                << " (beyond the strip); delta/D = " << number(d.row.delta_over_D, 3) << " +- "
+                << number(d.row.delta_over_D_err, 2) << "; shock angle "
+                << number(d.row.shock_angle_deg, 3) << " deg; results in " << d.dest.string()
                 << "\n";
     if (several) std::cout << "granshock fields: comparison in " << out.string() << "\n";
   }

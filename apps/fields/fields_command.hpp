@@ -20,10 +20,11 @@ struct FieldsCommandOptions {
 // required. The files that do not need Python are written before the figures, so that a
 // missing matplotlib costs only the PNGs. Returns 0; throws UserError for bad input (no
 // run.h5, no field sums, several DIRs without `out`, no matplotlib).
-int fields_command(const std::vector<std::filesystem::path>& run_dirs, const std::filesystem::path& out);
+int fields_command(const std::vector<std::filesystem::path>& run_dirs,
+                   const std::filesystem::path& out);
 // The same, without figures or without the result line on stdout.
-int fields_command(const std::vector<std::filesystem::path>& run_dirs, const std::filesystem::path& out,
-                   const FieldsCommandOptions& options);
+int fields_command(const std::vector<std::filesystem::path>& run_dirs,
+                   const std::filesystem::path& out, const FieldsCommandOptions& options);
 
 // Whether run_dir/run.h5 exists and holds field sums (/fields/grid): a run stopped before
 // its production window has none, and `granshock run` can skip the fields then.

@@ -15,7 +15,8 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // Dataset names from species names: letters, digits, '_' and '-' kept, the rest '_'.
 std::string dataset_name(const std::string& name) {
   std::string out;
-  for (char c : name) out += std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' ? c : '_';
+  for (char c : name)
+    out += std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' ? c : '_';
   return out;
 }
 
@@ -28,7 +29,9 @@ std::vector<std::vector<std::array<double, 2>>> as_arrays(const std::vector<Poly
   return out;
 }
 
-nlohmann::json number_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); }
+nlohmann::json number_or_null(double v) {
+  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json();
+}
 
 void add_upstream(FieldsFileContent& c, const std::string& group, const UpstreamState& u) {
   c.attributes.push_back({group, "row_begin", double(u.row_begin)});
@@ -69,20 +72,26 @@ FieldsFileContent fields_file_content(const FieldAnalysis& a) {
   for (const std::string& s : p.species) species.push_back(dataset_name(s));
   for (const BinFields::Named& f : a.fields.named(species))
     c.cell_fields.push_back({f.name, f.unit, f.description, *f.values});
-  c.cell_flags.push_back({"masked", "1 where the bin is masked (too few particle samples or T <= 0): NaN fields",
-                          a.fields.masked});
+  c.cell_flags.push_back(
+      {"masked", "1 where the bin is masked (too few particle samples or T <= 0): NaN fields",
+       a.fields.masked});
 
-  c.lines.push_back({"sonic", "Ma = 1 iso-lines (marching squares on bin centres)", as_arrays(a.sonic_lines)});
-  c.lines.push_back({"shock_threshold", "shock front: phi crosses phi_up + 0.5 (phi_peak - phi_up) per column",
+  c.lines.push_back(
+      {"sonic", "Ma = 1 iso-lines (marching squares on bin centres)", as_arrays(a.sonic_lines)});
+  c.lines.push_back({"shock_threshold",
+                     "shock front: phi crosses phi_up + 0.5 (phi_peak - phi_up) per column",
                      as_arrays(a.front.threshold_lines)});
   c.lines.push_back({"shock_max_gradient", "shock front: steepest rise of phi per column",
                      as_arrays(a.front.gradient_lines)});
 
   c.series.push_back({"/front/x", "m", "bin column centres", a.front.x});
-  c.series.push_back({"/front/y_threshold", "m", "front position (threshold rule), NaN: no front", a.front.y_threshold});
-  c.series.push_back({"/front/y_max_gradient", "m", "front position (maximum gradient)", a.front.y_max_gradient});
+  c.series.push_back({"/front/y_threshold", "m", "front position (threshold rule), NaN: no front",
+                      a.front.y_threshold});
+  c.series.push_back(
+      {"/front/y_max_gradient", "m", "front position (maximum gradient)", a.front.y_max_gradient});
   c.series.push_back({"/front/phi_peak", "", "largest phi of the searched rows", a.front.phi_peak});
-  c.series.push_back({"/front/threshold", "", "phi_up + fraction (phi_peak - phi_up)", a.front.threshold});
+  c.series.push_back(
+      {"/front/threshold", "", "phi_up + fraction (phi_peak - phi_up)", a.front.threshold});
   add_flank(c, "left", a.front.left);
   add_flank(c, "right", a.front.right);
   c.attributes.push_back({"/front", "angle_deg", a.front.angle_deg});
@@ -101,9 +110,11 @@ FieldsFileContent fields_file_content(const FieldAnalysis& a) {
   c.series.push_back({"/profile/Ma", "", "Mach number (scene's mass definition)", pf.mach});
   c.series.push_back({"/profile/uy", "m s-1", "streamwise velocity", pf.uy});
   c.series.push_back({"/profile/pressure", "N m-1", "tr P / Dim", pf.pressure});
-  c.series.push_back({"/profile/mean_count", "", "time-averaged particles in the bin", pf.mean_count});
+  c.series.push_back(
+      {"/profile/mean_count", "", "time-averaged particles in the bin", pf.mean_count});
   c.series.push_back({"/profile/masked", "", "1 where the bin is masked", masked});
-  c.series.push_back({"/profile/delta_blocks", "m", "detachment length of each block with samples", a.detachment.delta_blocks});
+  c.series.push_back({"/profile/delta_blocks", "m", "detachment length of each block with samples",
+                      a.detachment.delta_blocks});
   const Detachment& d = a.detachment;
   for (const auto& [name, value] :
        std::vector<std::pair<std::string, double>>{{"x_lo", a.profile.x0},
@@ -152,9 +163,12 @@ FieldsFileContent fields_file_content(const FieldAnalysis& a) {
 
   const nlohmann::json summary = summary_keys(a);
   for (const auto& [key, value] : summary.items()) {
-    if (value.is_number()) c.attributes.push_back({"/summary", key, value.get<double>()});
-    else if (value.is_null()) c.attributes.push_back({"/summary", key, kNaN});
-    else if (value.is_string()) c.text_attributes.push_back({"/summary", key, value.get<std::string>()});
+    if (value.is_number())
+      c.attributes.push_back({"/summary", key, value.get<double>()});
+    else if (value.is_null())
+      c.attributes.push_back({"/summary", key, kNaN});
+    else if (value.is_string())
+      c.text_attributes.push_back({"/summary", key, value.get<std::string>()});
   }
   return c;
 }

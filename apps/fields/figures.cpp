@@ -53,8 +53,8 @@ void run_script(const std::string& script_name, const std::vector<std::string>& 
   args.insert(args.end(), script_args.begin(), script_args.end());
   const int status = run_process(args, false);
   if (status != 0)
-    throw UserError(script_name + " failed (exit status " + std::to_string(status) + ") drawing the figures; " +
-                    "its message is above");
+    throw UserError(script_name + " failed (exit status " + std::to_string(status) +
+                    ") drawing the figures; " + "its message is above");
 }
 
 }  // namespace
@@ -83,10 +83,12 @@ fs::path figure_script(const std::string& name) {
 void require_plotting_python() {
   const fs::path python = plotting_python();
   const std::string install =
-      "; the figures need Python 3 with matplotlib, h5py and numpy (Debian: apt-get install python3 "
+      "; the figures need Python 3 with matplotlib, h5py and numpy (Debian: apt-get install "
+      "python3 "
       "python3-matplotlib python3-h5py), or GRANSHOCK_PYTHON naming an interpreter that has them";
   std::error_code ec;
-  if (!fs::exists(python, ec)) throw UserError("no Python interpreter at " + python.string() + install);
+  if (!fs::exists(python, ec))
+    throw UserError("no Python interpreter at " + python.string() + install);
   if (run_process({python.string(), "-c", "import matplotlib, h5py, numpy"}, true) != 0)
     throw UserError(python.string() + " cannot import matplotlib, h5py and numpy" + install);
 }

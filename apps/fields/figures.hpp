@@ -24,10 +24,12 @@ std::filesystem::path figure_script(const std::string& name);
 void require_plotting_python();
 
 // Writes figures_dir/{solid_fraction,temperature,mach,stagnation_profiles}.png from fields.h5.
-void plot_run_figures(const std::filesystem::path& fields_h5, const std::filesystem::path& figures_dir);
+void plot_run_figures(const std::filesystem::path& fields_h5,
+                      const std::filesystem::path& figures_dir);
 
 // Writes png: delta/D against D/d for each Ma_inf, with error bars, from the table JSON of
 // detachment_table.hpp.
-void plot_detachment_figure(const std::filesystem::path& table_json, const std::filesystem::path& png);
+void plot_detachment_figure(const std::filesystem::path& table_json,
+                            const std::filesystem::path& png);
 
 }  // namespace granshock

@@ -6,9 +6,10 @@
 
 namespace granshock {
 
-FrontCrossing find_front_crossing(const std::vector<double>& phi, const std::vector<double>& y, int begin, int end,
-                                  double phi_up, const ThresholdRule& rule) {
-  if (phi.size() != y.size()) throw std::invalid_argument("find_front_crossing: phi and y differ in length");
+FrontCrossing find_front_crossing(const std::vector<double>& phi, const std::vector<double>& y,
+                                  int begin, int end, double phi_up, const ThresholdRule& rule) {
+  if (phi.size() != y.size())
+    throw std::invalid_argument("find_front_crossing: phi and y differ in length");
   FrontCrossing c;
   begin = std::max(begin, 0);
   end = std::min(end, static_cast<int>(phi.size()));

@@ -17,11 +17,12 @@ struct ThresholdRule {
 
 struct FrontCrossing {
   bool found = false;
-  double threshold = 0;       // phi_up + fraction (phi_peak - phi_up)
-  double phi_peak = 0;        // max phi over the searched bins
+  double threshold = 0;  // phi_up + fraction (phi_peak - phi_up)
+  double phi_peak = 0;   // max phi over the searched bins
   int peak_index = -1;
-  double y_threshold = 0;     // linear interpolation between the two bins around the crossing
-  double y_max_gradient = 0;  // steepest rise of phi between phi_up and the peak (parabolic refinement)
+  double y_threshold = 0;  // linear interpolation between the two bins around the crossing
+  double y_max_gradient =
+      0;  // steepest rise of phi between phi_up and the peak (parabolic refinement)
 };
 
 // phi and y: the bins of one line, y (bin centres) increasing downstream. Searches bins
@@ -31,7 +32,7 @@ struct FrontCrossing {
 // pair's midpoint and refined by a parabola through its neighbours' gradients. Not found
 // when the jump is too small, when phi is already above the threshold at `begin`, or when
 // a NaN lies between `begin` and the peak.
-FrontCrossing find_front_crossing(const std::vector<double>& phi, const std::vector<double>& y, int begin, int end,
-                                  double phi_up, const ThresholdRule& rule);
+FrontCrossing find_front_crossing(const std::vector<double>& phi, const std::vector<double>& y,
+                                  int begin, int end, double phi_up, const ThresholdRule& rule);
 
 }  // namespace granshock

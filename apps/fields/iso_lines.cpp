@@ -33,28 +33,51 @@ std::vector<Polyline> iso_lines(const std::vector<double>& v, const NodeGrid& g,
     const double va = at(ix, iy), vb = horizontal ? at(ix + 1, iy) : at(ix, iy + 1);
     const double t = (level - va) / (vb - va);
     Point2 p{g.x0 + ix * g.dx, g.y0 + iy * g.dy};
-    if (horizontal) p.x += t * g.dx;
-    else p.y += t * g.dy;
+    if (horizontal)
+      p.x += t * g.dx;
+    else
+      p.y += t * g.dy;
     return p;
   };
 
   std::vector<Segment> segments;
   for (int iy = 0; iy + 1 < g.ny; ++iy) {
     for (int ix = 0; ix + 1 < g.nx; ++ix) {
-      const double c00 = at(ix, iy), c10 = at(ix + 1, iy), c11 = at(ix + 1, iy + 1), c01 = at(ix, iy + 1);
-      if (!std::isfinite(c00) || !std::isfinite(c10) || !std::isfinite(c11) || !std::isfinite(c01)) continue;
+      const double c00 = at(ix, iy), c10 = at(ix + 1, iy), c11 = at(ix + 1, iy + 1),
+                   c01 = at(ix, iy + 1);
+      if (!std::isfinite(c00) || !std::isfinite(c10) || !std::isfinite(c11) || !std::isfinite(c01))
+        continue;
       const int cell = (c00 >= level ? 1 : 0) | (c10 >= level ? 2 : 0) | (c11 >= level ? 4 : 0) |
                        (c01 >= level ? 8 : 0);
       if (cell == 0 || cell == 15) continue;
-      const long bottom = hkey(ix, iy), top = hkey(ix, iy + 1), left = vkey(ix, iy), right = vkey(ix + 1, iy);
+      const long bottom = hkey(ix, iy), top = hkey(ix, iy + 1), left = vkey(ix, iy),
+                 right = vkey(ix + 1, iy);
       const bool centre_above = (c00 + c10 + c11 + c01) / 4 >= level;
       switch (cell) {
-        case 1: case 14: segments.push_back({left, bottom}); break;
-        case 2: case 13: segments.push_back({bottom, right}); break;
-        case 3: case 12: segments.push_back({left, right}); break;
-        case 4: case 11: segments.push_back({right, top}); break;
-        case 6: case 9: segments.push_back({bottom, top}); break;
-        case 7: case 8: segments.push_back({left, top}); break;
+        case 1:
+        case 14:
+          segments.push_back({left, bottom});
+          break;
+        case 2:
+        case 13:
+          segments.push_back({bottom, right});
+          break;
+        case 3:
+        case 12:
+          segments.push_back({left, right});
+          break;
+        case 4:
+        case 11:
+          segments.push_back({right, top});
+          break;
+        case 6:
+        case 9:
+          segments.push_back({bottom, top});
+          break;
+        case 7:
+        case 8:
+          segments.push_back({left, top});
+          break;
         case 5:  // c00 and c11 above
           if (centre_above) {
             segments.push_back({left, top});
@@ -73,7 +96,8 @@ std::vector<Polyline> iso_lines(const std::vector<double>& v, const NodeGrid& g,
             segments.push_back({bottom, right});
           }
           break;
-        default: break;
+        default:
+          break;
       }
     }
   }

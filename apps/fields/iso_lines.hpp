@@ -9,9 +9,9 @@
 namespace granshock {
 
 struct NodeGrid {
-  int nx = 0, ny = 0;          // nodes across and along
-  double x0 = 0, y0 = 0;       // position of node (0, 0)
-  double dx = 1, dy = 1;       // node spacing
+  int nx = 0, ny = 0;     // nodes across and along
+  double x0 = 0, y0 = 0;  // position of node (0, 0)
+  double dx = 1, dy = 1;  // node spacing
 };
 
 // values: [ny][nx] row-major, node (ix, iy) at (x0 + ix dx, y0 + iy dy). Each grid cell
@@ -21,6 +21,7 @@ struct NodeGrid {
 // with a NaN corner (a masked bin) contributes nothing, so lines end there. Segments that
 // share an edge crossing are joined into polylines; a closed loop repeats its first point
 // at its end. Lines are returned in a deterministic order (by their first crossing).
-std::vector<Polyline> iso_lines(const std::vector<double>& values, const NodeGrid& grid, double level);
+std::vector<Polyline> iso_lines(const std::vector<double>& values, const NodeGrid& grid,
+                                double level);
 
 }  // namespace granshock

@@ -64,8 +64,8 @@ FlankFit fit_flank(const std::vector<double>& x, const std::vector<double>& y) {
   return fit;
 }
 
-ShockFront find_shock_front(const BinFields& f, const BinSums& grid, const FieldPhysics& phys, double phi_up,
-                            int row_begin, const ThresholdRule& rule) {
+ShockFront find_shock_front(const BinFields& f, const BinSums& grid, const FieldPhysics& phys,
+                            double phi_up, int row_begin, const ThresholdRule& rule) {
   ShockFront s;
   const std::size_t nx = static_cast<std::size_t>(grid.nx);
   s.x.resize(nx);
@@ -73,13 +73,16 @@ ShockFront find_shock_front(const BinFields& f, const BinSums& grid, const Field
   s.y_max_gradient.assign(nx, kNaN);
   s.phi_peak.assign(nx, kNaN);
   s.threshold.assign(nx, kNaN);
-  std::vector<double> y(static_cast<std::size_t>(grid.ny)), column(static_cast<std::size_t>(grid.ny));
+  std::vector<double> y(static_cast<std::size_t>(grid.ny)),
+      column(static_cast<std::size_t>(grid.ny));
   for (int iy = 0; iy < grid.ny; ++iy) y[static_cast<std::size_t>(iy)] = grid.y_centre(iy);
   for (int ix = 0; ix < grid.nx; ++ix) {
     const std::size_t i = static_cast<std::size_t>(ix);
     s.x[i] = grid.x_centre(ix);
-    for (int iy = 0; iy < grid.ny; ++iy) column[static_cast<std::size_t>(iy)] = f.phi[f.index(iy, ix)];
-    const FrontCrossing c = find_front_crossing(column, y, row_begin, search_end(grid, phys, s.x[i]), phi_up, rule);
+    for (int iy = 0; iy < grid.ny; ++iy)
+      column[static_cast<std::size_t>(iy)] = f.phi[f.index(iy, ix)];
+    const FrontCrossing c =
+        find_front_crossing(column, y, row_begin, search_end(grid, phys, s.x[i]), phi_up, rule);
     if (!c.found) continue;
     s.y_threshold[i] = c.y_threshold;
     s.y_max_gradient[i] = c.y_max_gradient;

@@ -21,23 +21,25 @@ struct FlankFit {
   int points = 0;
   double slope = 0, intercept = 0;
   double angle_deg = 0, angle_err_deg = 0;  // error from the slope's standard error
-  double region_near = 0, region_far = 0;   // the fit region: region_near <= |x - xc| <= region_far, m
+  double region_near = 0,
+         region_far = 0;  // the fit region: region_near <= |x - xc| <= region_far, m
 };
 
 struct ShockFront {
-  std::vector<double> x;                        // column centres, m [nx]
+  std::vector<double> x;                                                 // column centres, m [nx]
   std::vector<double> y_threshold, y_max_gradient, phi_peak, threshold;  // NaN where no front [nx]
   std::vector<Polyline> threshold_lines, gradient_lines;  // consecutive columns with a front
-  FlankFit left, right;                         // x < xc and x > xc
-  double angle_deg = 0;                         // mean of the flanks that have a fit (NaN if none)
+  FlankFit left, right;                                   // x < xc and x > xc
+  double angle_deg = 0;  // mean of the flanks that have a fit (NaN if none)
 };
 
 // Fit region of each flank: columns with D <= |x - xc| <= W/2 - 2 bins (one obstacle
 // diameter away from the axis, where the front has become straight, and two bins short of
 // the line midway to the periodic image, where the fronts of neighbouring images meet).
 // A flank needs 3 points; its angle is NaN otherwise, and both are NaN without an obstacle.
-ShockFront find_shock_front(const BinFields& fields, const BinSums& grid, const FieldPhysics& physics,
-                            double phi_up, int row_begin, const ThresholdRule& rule = {});
+ShockFront find_shock_front(const BinFields& fields, const BinSums& grid,
+                            const FieldPhysics& physics, double phi_up, int row_begin,
+                            const ThresholdRule& rule = {});
 
 // Least-squares line fit of (x, y) points (Eigen) and the resulting angle to +y.
 FlankFit fit_flank(const std::vector<double>& x, const std::vector<double>& y);

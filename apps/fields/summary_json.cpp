@@ -19,7 +19,8 @@ void merge_summary_json(const std::filesystem::path& path, const nlohmann::json&
     try {
       merged = nlohmann::json::parse(text.str());
     } catch (const nlohmann::json::parse_error& e) {
-      throw UserError("'" + path.string() + "' is not valid JSON (" + e.what() + "); move it away to start a new one");
+      throw UserError("'" + path.string() + "' is not valid JSON (" + e.what() +
+                      "); move it away to start a new one");
     }
     if (!merged.is_object()) throw UserError("'" + path.string() + "' does not hold a JSON object");
   }

@@ -8,7 +8,8 @@
 
 namespace granshock {
 
-UpstreamState measure_upstream(const BinFields& f, const FieldPhysics& phys, int row_begin, int row_end) {
+UpstreamState measure_upstream(const BinFields& f, const FieldPhysics& phys, int row_begin,
+                               int row_end) {
   constexpr double nan = std::numeric_limits<double>::quiet_NaN();
   UpstreamState s;
   s.row_begin = std::clamp(row_begin, 0, f.ny);
@@ -33,7 +34,8 @@ UpstreamState measure_upstream(const BinFields& f, const FieldPhysics& phys, int
     }
   }
   if (s.bins == 0 || phi_bins == 0) {
-    s.phi = s.temperature = s.uy = s.sound_speed = s.mach = s.mach_mixture_mean = s.mach_paper_sum = nan;
+    s.phi = s.temperature = s.uy = s.sound_speed = s.mach = s.mach_mixture_mean = s.mach_paper_sum =
+        nan;
     return s;
   }
   s.phi = phi_sum / phi_bins;
@@ -44,12 +46,13 @@ UpstreamState measure_upstream(const BinFields& f, const FieldPhysics& phys, int
   std::vector<double> xi(species.size());
   for (std::size_t a = 0; a < xi.size(); ++a) xi[a] = species[a] / total;
   auto mach_with = [&](MassDefinition def) {
-    return phys.inflow_speed /
-           sound_speed(s.temperature, phys.sound_speed_mass(def, xi), s.phi, phys.restitution, phys.dim);
+    return phys.inflow_speed / sound_speed(s.temperature, phys.sound_speed_mass(def, xi), s.phi,
+                                           phys.restitution, phys.dim);
   };
   s.mach_mixture_mean = mach_with(MassDefinition::mixture_mean);
   s.mach_paper_sum = mach_with(MassDefinition::paper_sum);
-  s.mach = phys.mass_definition == MassDefinition::mixture_mean ? s.mach_mixture_mean : s.mach_paper_sum;
+  s.mach =
+      phys.mass_definition == MassDefinition::mixture_mean ? s.mach_mixture_mean : s.mach_paper_sum;
   s.sound_speed = phys.inflow_speed / s.mach;
   return s;
 }

@@ -26,7 +26,8 @@ struct UpstreamState {
 // Averages rows [row_begin, row_end): phi over every sampled bin, T and u_y weighted with
 // the particles counted in each unmasked bin, the number fractions of the mixture-mean mass
 // from the pooled counts. NaN values (bins = 0) when no bin of those rows is usable.
-UpstreamState measure_upstream(const BinFields& fields, const FieldPhysics& physics, int row_begin, int row_end);
+UpstreamState measure_upstream(const BinFields& fields, const FieldPhysics& physics, int row_begin,
+                               int row_end);
 
 // The first row whose lower edge lies at least one bin beyond the insertion strip:
 // y0 + row dy >= strip + dy.

@@ -17,9 +17,8 @@ namespace granshock {
 
 namespace {
 
-const std::vector<std::string> kPairs = {"steel-steel", "steel-aluminium",
-                                         "aluminium-aluminium", "steel-wall",
-                                         "aluminium-wall"};
+const std::vector<std::string> kPairs = {"steel-steel", "steel-aluminium", "aluminium-aluminium",
+                                         "steel-wall", "aluminium-wall"};
 
 // The collision's own small world: the scene's species, contacts and precision, an open
 // box, and (for wall impacts) a cylinder of the scene's obstacle material at the origin.
@@ -62,19 +61,23 @@ double separation_speed(const Geometry& g, const HostParticles& p) {
   return p.velocity[1][0] - p.velocity[0][0];
 }
 
-int paper_species(const std::string& name) { return name == "steel" ? 0 : 1; }
+int paper_species(const std::string& name) {
+  return name == "steel" ? 0 : 1;
+}
 
 }  // namespace
 
-std::vector<std::string> collision_pair_names() { return kPairs; }
+std::vector<std::string> collision_pair_names() {
+  return kPairs;
+}
 
 CollisionResult collide_species(const SystemSetup& scene, int a, int b, double speed, double dt,
                                 bool force) {
-  const PairProperties props = b < 0 ? particle_wall(scene.species[a],
-                                                     scene.obstacle ? scene.obstacle->material : aluminium(),
-                                                     scene.contacts.wall_restitution[a],
-                                                     scene.contacts.wall_friction[a])
-                                     : scene.pair(a, b);
+  const PairProperties props =
+      b < 0
+          ? particle_wall(scene.species[a], scene.obstacle ? scene.obstacle->material : aluminium(),
+                          scene.contacts.wall_restitution[a], scene.contacts.wall_friction[a])
+          : scene.pair(a, b);
   CollisionResult r;
   r.pair = props.name;
   r.speed = speed;

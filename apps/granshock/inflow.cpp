@@ -13,7 +13,8 @@ InflowController::InflowController(const Scene& scene) : scene_(scene) {
   const double swept = period_steps_ * scene.setup.dt * in.speed_m_per_s;
   double mean_disk_area = 0;
   for (std::size_t a = 0; a < scene.setup.species.size(); ++a)
-    mean_disk_area += in.number_fraction[a] * M_PI * std::pow(scene.setup.species[a].diameter_m, 2) / 4;
+    mean_disk_area +=
+        in.number_fraction[a] * M_PI * std::pow(scene.setup.species[a].diameter_m, 2) / 4;
   per_batch_ = in.area_fraction * scene.setup.box.length(0) * swept / mean_disk_area;
 }
 
@@ -54,8 +55,8 @@ double InflowController::free_area(double y_lo, double y_hi) const {
 void InflowController::prefill(Solver& solver) {
   const double strip = scene_.inflow.strip_m;
   const double length = scene_.setup.box.length(1);
-  const double per_area = per_batch_ / (period_steps_ * scene_.setup.dt * scene_.inflow.speed_m_per_s *
-                                        scene_.setup.box.length(0));
+  const double per_area = per_batch_ / (period_steps_ * scene_.setup.dt *
+                                        scene_.inflow.speed_m_per_s * scene_.setup.box.length(0));
   for (double y = strip; y < length; y += strip) {
     const double top = std::min(y + strip, length);
     // Lists are rebuilt once, after the last slab: insertion itself needs only positions.

@@ -15,8 +15,9 @@
 namespace {
 
 void add_collide_command(CLI::App& app, granshock::CollisionOptions& o, std::string& precision) {
-  auto* cmd = app.add_subcommand("collide", "head-on collision of two particles or a particle and "
-                                            "the fixed cylinder; prints JSON");
+  auto* cmd = app.add_subcommand("collide",
+                                 "head-on collision of two particles or a particle and "
+                                 "the fixed cylinder; prints JSON");
   cmd->add_option("--pair", o.pair,
                   "steel-steel | steel-aluminium | aluminium-aluminium | steel-wall | "
                   "aluminium-wall")
@@ -35,7 +36,8 @@ void add_run_command(CLI::App& app, granshock::RunOptions& o) {
   auto* cmd = app.add_subcommand("run", "simulate a bow-shock scene and write its run directory");
   cmd->add_option("scene", o.scene_file, "scene file (TOML)")->required()->check(CLI::ExistingFile);
   cmd->add_option("--out", o.out_dir, "run directory (default: runs/<scene name>)");
-  cmd->add_option("--set", o.overrides, "override a scene key, e.g. --set inflow.mach=13.7 (repeatable)");
+  cmd->add_option("--set", o.overrides,
+                  "override a scene key, e.g. --set inflow.mach=13.7 (repeatable)");
   cmd->add_flag("--overwrite", o.overwrite, "replace an existing run directory");
   cmd->add_flag("--resume", o.resume, "continue the run in --out from its last checkpoint");
   cmd->add_flag("--force", o.force, "run even when dt is past the stable limit");
@@ -47,8 +49,9 @@ void add_run_command(CLI::App& app, granshock::RunOptions& o) {
 
 void add_fields_command(CLI::App& app, std::vector<std::filesystem::path>& dirs,
                         std::filesystem::path& out) {
-  auto* cmd = app.add_subcommand("fields", "recompute fields, figures and summary from DIR/run.h5; "
-                                           "with several DIRs also the delta/D table and figure");
+  auto* cmd = app.add_subcommand("fields",
+                                 "recompute fields, figures and summary from DIR/run.h5; "
+                                 "with several DIRs also the delta/D table and figure");
   cmd->add_option("dirs", dirs, "run directories")->required()->check(CLI::ExistingDirectory);
   cmd->add_option("--out", out, "where to write (required with several DIRs)");
 }
@@ -78,7 +81,8 @@ int main(int argc, char** argv) {
   }
   try {
     if (app.got_subcommand("run")) {
-      if (run.overwrite && run.resume) throw granshock::UserError("--overwrite and --resume exclude each other");
+      if (run.overwrite && run.resume)
+        throw granshock::UserError("--overwrite and --resume exclude each other");
       return granshock::run_scene(run);
     }
     if (app.got_subcommand("fields")) return granshock::fields_command(field_dirs, field_out);

@@ -1,7 +1,7 @@
 #include "run_command.hpp"
 
-#include <Kokkos_Core.hpp>
 #include <fmt/format.h>
+#include <Kokkos_Core.hpp>
 
 #include <algorithm>
 #include <atomic>
@@ -30,7 +30,9 @@ namespace fs = std::filesystem;
 namespace {
 
 volatile std::sig_atomic_t g_signal = 0;
-extern "C" void on_signal(int sig) { g_signal = sig; }
+extern "C" void on_signal(int sig) {
+  g_signal = sig;
+}
 
 // Mixture granular temperature of the whole domain (DESIGN.md 2.3 applied to all
 // particles at once): T_a = m_a <|c - u|^2> / Dim about the mass-averaged velocity u,
@@ -101,7 +103,7 @@ class BowShockRun {
   std::optional<RunFile> run_file_;
   Schedule series_{1}, snapshots_{1}, checkpoints_{1};
   long total_steps_ = 0, first_step_ = 0;
-  double wall_before_ = 0;  // wall seconds of earlier legs (resumed runs)
+  double wall_before_ = 0;     // wall seconds of earlier legs (resumed runs)
   double particle_steps_ = 0;  // particle-steps of this leg
   FieldSampling sampling_;
   long production_first_step_ = 0;
@@ -115,7 +117,7 @@ int BowShockRun::execute() {
   const TimeStepAssessment guard = scene_.assess_time_step();
   if (guard.verdict == TimeStepAssessment::Verdict::refuse && !options_.force)
     throw UserError(guard.message);
-  const DirectoryMode mode = options_.resume ? DirectoryMode::resume
+  const DirectoryMode mode = options_.resume      ? DirectoryMode::resume
                              : options_.overwrite ? DirectoryMode::overwrite
                                                   : DirectoryMode::create;
   check_run_directory(dir_, mode);
@@ -146,26 +148,32 @@ int BowShockRun::execute() {
     // time, so that progress and signals are answered promptly.
     long next = std::min(total_steps_, step + meter_->steps_per(0.25, 50));
     next = std::min(next, (step / inflow_.period_steps() + 1) * inflow_.period_steps());
-    for (const Schedule* s : {&series_, &snapshots_, &checkpoints_}) next = std::min(next, s->next_after(step));
+    for (const Schedule* s : {&series_, &snapshots_, &checkpoints_})
+      next = std::min(next, s->next_after(step));
     next = std::min(next, next_sample_after(step));
-    if (options_.stop_after_steps > 0) next = std::min(next, first_step_ + options_.stop_after_steps);
+    if (options_.stop_after_steps > 0)
+      next = std::min(next, first_step_ + options_.stop_after_steps);
     particle_steps_ += double(solver_->size()) * double(next - step);
     solver_->advance(next - step);
     step = next;
     actions_at(step);
     if (meter_->due() && !options_.quiet)
-      meter_->report(step, step * scene_.setup.dt, long(solver_->size()), solver_->diagnostics().contacts, particle_steps_);
+      meter_->report(step, step * scene_.setup.dt, long(solver_->size()),
+                     solver_->diagnostics().contacts, particle_steps_);
     if (g_signal != 0) {
       write_checkpoint_now();
       finish(false);
-      std::cerr << fmt::format("granshock: interrupted at step {}; checkpoint written, continue with --resume\n", step);
+      std::cerr << fmt::format(
+          "granshock: interrupted at step {}; checkpoint written, continue with --resume\n", step);
       return 128 + int(g_signal);
     }
-    if (options_.stop_after_steps > 0 && step >= first_step_ + options_.stop_after_steps && step < total_steps_) {
+    if (options_.stop_after_steps > 0 && step >= first_step_ + options_.stop_after_steps &&
+        step < total_steps_) {
       write_checkpoint_now();
       finish(false);
-      std::cerr << fmt::format("granshock: stopped after {} steps at step {}; continue with --resume\n",
-                               options_.stop_after_steps, step);
+      std::cerr << fmt::format(
+          "granshock: stopped after {} steps at step {}; continue with --resume\n",
+          options_.stop_after_steps, step);
       return 0;
     }
   }
@@ -174,7 +182,8 @@ int BowShockRun::execute() {
 }
 
 void BowShockRun::start_fresh() {
-  run_file_.emplace(RunFile::create(dir_ / "run.h5", loaded_.as_given, loaded_.resolved, scene_.setup.dim));
+  run_file_.emplace(
+      RunFile::create(dir_ / "run.h5", loaded_.as_given, loaded_.resolved, scene_.setup.dim));
   solver_->set_particles(HostParticles{});
   inflow_.prefill(*solver_);
   actions_at(0);
@@ -184,8 +193,10 @@ void BowShockRun::resume() {
   CheckpointExtras extras;
   const SolverState state = read_checkpoint(dir_ / "checkpoint.h5", extras);
   if (extras.scene_resolved != loaded_.resolved)
-    throw UserError(fmt::format("--resume: the scene differs from the one '{}' was run with; "
-                                "resume with the same scene file and --set options", dir_.string()));
+    throw UserError(
+        fmt::format("--resume: the scene differs from the one '{}' was run with; "
+                    "resume with the same scene file and --set options",
+                    dir_.string()));
   solver_->import_state(state);
   inflow_.restore(extras.rng_counter, extras.inserted, extras.insertion_carry);
   if (extras.bin_shape.size() != 3 || extras.bin_shape[2] != long(samples_.size()))
@@ -205,8 +216,8 @@ void BowShockRun::actions_at(long step) {
   inflow_.insert_if_due(*solver_, step);
   if (sample_due(step)) {
     const long span = total_steps_ - production_first_step_;
-    const int block = int(std::min<long>(sampling_.grid.blocks - 1,
-                                         (step - production_first_step_) * sampling_.grid.blocks / span));
+    const int block = int(std::min<long>(
+        sampling_.grid.blocks - 1, (step - production_first_step_) * sampling_.grid.blocks / span));
     solver_->sample_fields(block);
     ++samples_[block];
   }
@@ -270,8 +281,9 @@ nlohmann::json BowShockRun::restitution_at_dt() const {
     for (int b = scene_.setup.obstacle ? -1 : a; b < n; ++b) {
       if (b >= 0 && b < a) continue;
       nlohmann::json entry;
-      for (const auto& [label, speed] : {std::pair<const char*, double>{"at_inflow_speed", scene_.inflow.speed_m_per_s},
-                                        {"at_fastest_impact", scene_.fastest_impact_speed()}}) {
+      for (const auto& [label, speed] :
+           {std::pair<const char*, double>{"at_inflow_speed", scene_.inflow.speed_m_per_s},
+            {"at_fastest_impact", scene_.fastest_impact_speed()}}) {
         const CollisionResult r = collide_species(scene_.setup, a, b, speed, scene_.setup.dt, true);
         entry[label] = {{"speed", speed}, {"e_eff", r.e_eff}, {"dt_over_tc", r.dt / r.t_c}};
         entry["e_in"] = r.e_in;
@@ -308,7 +320,8 @@ void BowShockRun::finish(bool completed) {
   j["impact_speed_for_t_c"] = guard.impact_speed;
   j["stiffest_pair"] = guard.stiffest_pair;
   j["inflow_sigma"] = scene_.inflow.sigma;
-  j["ma_inf_target"] = scene_.inflow.target_mach ? nlohmann::json(*scene_.inflow.target_mach) : nlohmann::json();
+  j["ma_inf_target"] =
+      scene_.inflow.target_mach ? nlohmann::json(*scene_.inflow.target_mach) : nlohmann::json();
   j["variant"] = solver_->variant();
   j["backend"] = Kokkos::DefaultExecutionSpace::name();
   j["threads"] = Kokkos::DefaultExecutionSpace().concurrency();
@@ -319,13 +332,16 @@ void BowShockRun::finish(bool completed) {
   if (completed && run_file_) {
     // The field analysis reads run.h5, which must be closed first.
     run_file_.reset();
-    if (run_has_field_sums(dir_)) fields_command({dir_}, {}, FieldsCommandOptions{true, options_.quiet});
+    if (run_has_field_sums(dir_))
+      fields_command({dir_}, {}, FieldsCommandOptions{true, options_.quiet});
   }
   if (completed && !options_.quiet)
-    std::cout << fmt::format("granshock: {} done: {} steps, {:.4g} s simulated in {:.1f} s wall, {:.3g} particle-steps/s, "
-                             "{} particles at the end; results in {}\n",
-                             scene_.name, steps, steps * scene_.setup.dt, wall, j["particle_steps_per_second"].get<double>(),
-                             solver_->size(), dir_.string());
+    std::cout << fmt::format(
+        "granshock: {} done: {} steps, {:.4g} s simulated in {:.1f} s wall, {:.3g} "
+        "particle-steps/s, "
+        "{} particles at the end; results in {}\n",
+        scene_.name, steps, steps * scene_.setup.dt, wall,
+        j["particle_steps_per_second"].get<double>(), solver_->size(), dir_.string());
 }
 
 // Square bins over the whole domain and, with an obstacle, a strip 4 d wide on its axis
@@ -370,26 +386,31 @@ long BowShockRun::next_sample_after(long step) const {
 // (energy is only ever supplied by the inflow), means the integration has blown up,
 // almost always because dt is too large for the impacts that occur.
 void BowShockRun::check_health(long step, const Diagnostics& d) const {
-  const double per_particle_inflow =
-      0.5 * scene_.mean_mass() *
-      (scene_.inflow.speed_m_per_s * scene_.inflow.speed_m_per_s + 2 * scene_.inflow.sigma * scene_.inflow.sigma);
-  const double per_particle = solver_->size() > 0 ? d.kinetic_energy / double(solver_->size()) : 0.0;
+  const double per_particle_inflow = 0.5 * scene_.mean_mass() *
+                                     (scene_.inflow.speed_m_per_s * scene_.inflow.speed_m_per_s +
+                                      2 * scene_.inflow.sigma * scene_.inflow.sigma);
+  const double per_particle =
+      solver_->size() > 0 ? d.kinetic_energy / double(solver_->size()) : 0.0;
   if (d.non_finite == 0 && per_particle <= 100 * per_particle_inflow) return;
   const TimeStepAssessment guard = scene_.assess_time_step();
-  throw NumericalFailure(fmt::format(
-      "the integration blew up at step {} (t = {:.4g} s): {} particles with a non-finite state, mean "
-      "kinetic energy {:.3g} times the inflow's; dt = {:.3g} s is {:.2f} t_c (stable limit {:.3g} s); "
-      "reduce time.dt",
-      step, step * scene_.setup.dt, d.non_finite, per_particle / per_particle_inflow, scene_.setup.dt,
-      guard.dt_over_tc(), guard.dt_stable));
+  throw NumericalFailure(
+      fmt::format("the integration blew up at step {} (t = {:.4g} s): {} particles with a "
+                  "non-finite state, mean "
+                  "kinetic energy {:.3g} times the inflow's; dt = {:.3g} s is {:.2f} t_c (stable "
+                  "limit {:.3g} s); "
+                  "reduce time.dt",
+                  step, step * scene_.setup.dt, d.non_finite, per_particle / per_particle_inflow,
+                  scene_.setup.dt, guard.dt_over_tc(), guard.dt_stable));
 }
 
 // The accumulated sums in run.h5 (layout: core/bin_layout.hpp, docs/output_format.md).
 void BowShockRun::write_field_sums() {
   const BinLayout& g = sampling_.grid;
   RunFile& f = *run_file_;
-  f.write_array("/fields/grid/sums", solver_->field_sums(false), {g.blocks, g.ny, g.nx, g.quantities()});
-  f.write_array("/fields/grid/samples", std::vector<double>(samples_.begin(), samples_.end()), {g.blocks});
+  f.write_array("/fields/grid/sums", solver_->field_sums(false),
+                {g.blocks, g.ny, g.nx, g.quantities()});
+  f.write_array("/fields/grid/samples", std::vector<double>(samples_.begin(), samples_.end()),
+                {g.blocks});
   f.write_attribute("/fields/grid", "nx", long(g.nx));
   f.write_attribute("/fields/grid", "ny", long(g.ny));
   f.write_attribute("/fields/grid", "blocks", long(g.blocks));
@@ -402,8 +423,10 @@ void BowShockRun::write_field_sums() {
   f.write_attribute("/fields/grid", "sample_every", scene_.run.sample_every);
   const ProfileLayout& p = sampling_.profile;
   if (p.n > 0) {
-    f.write_array("/fields/profile/sums", solver_->field_sums(true), {g.blocks, p.n, g.quantities()});
-    f.write_array("/fields/profile/samples", std::vector<double>(samples_.begin(), samples_.end()), {g.blocks});
+    f.write_array("/fields/profile/sums", solver_->field_sums(true),
+                  {g.blocks, p.n, g.quantities()});
+    f.write_array("/fields/profile/samples", std::vector<double>(samples_.begin(), samples_.end()),
+                  {g.blocks});
     f.write_attribute("/fields/profile", "n", long(p.n));
     f.write_attribute("/fields/profile", "x_lo", p.x_lo);
     f.write_attribute("/fields/profile", "x_hi", p.x_hi);

@@ -26,9 +26,10 @@ namespace granshock::test {
 // e = 0.5, equimolar), U = 1 m/s at Ma_inf 5.9, a cylinder of `diameter_d` d at (30 d, 60 d)
 // (none when diameter_d = 0).
 inline std::string bow_shock_scene(double diameter_d = 12, double mach = 5.9) {
-  const std::string obstacle = diameter_d > 0 ? "[obstacle]\ndiameter = \"" + std::to_string(diameter_d) +
-                                                    " d\"\ncentre = [\"30 d\", \"60 d\"]\n"
-                                              : "";
+  const std::string obstacle = diameter_d > 0
+                                   ? "[obstacle]\ndiameter = \"" + std::to_string(diameter_d) +
+                                         " d\"\ncentre = [\"30 d\", \"60 d\"]\n"
+                                   : "";
   return obstacle + R"(
 [scene]
 name = "synthetic"
@@ -52,7 +53,8 @@ length = "90 d"
 [inflow]
 area_fraction = 0.1
 velocity = 1.0
-mach = )" + std::to_string(mach) + R"(
+mach = )" +
+         std::to_string(mach) + R"(
 [time]
 dt = 2e-7
 duration = 0.01
@@ -72,7 +74,8 @@ struct BinState {
   double p_col = 0;
 };
 
-inline BinSums empty_sums(int nx, int ny, int blocks, double x0, double y0, double dx, double dy, int n_species = 2) {
+inline BinSums empty_sums(int nx, int ny, int blocks, double x0, double y0, double dx, double dy,
+                          int n_species = 2) {
   BinSums s;
   s.n_species = n_species;
   s.nx = nx;
@@ -93,14 +96,17 @@ inline BinSums empty_sums(int nx, int ny, int blocks, double x0, double y0, doub
 // `block` (a weight below 1: the state fills that fraction of the bin; sums are linear).
 // N_a = n_a V S, sum c = N_a u, sum c_i c_j = N_a (u_i u_j + delta_ij T_a / m_a),
 // W = p_col V S (identity), so that p_col = <W> / V.
-inline void add_state(BinSums& s, int block, int iy, int ix, const BinState& st, const FieldPhysics& phys,
-                      double samples, double weight = 1.0) {
+inline void add_state(BinSums& s, int block, int iy, int ix, const BinState& st,
+                      const FieldPhysics& phys, double samples, double weight = 1.0) {
   const BinLayout l = s.layout();
-  auto at = [&](int q) -> double& { return s.sums[static_cast<std::size_t>(l.offset(block, iy, ix, q))]; };
+  auto at = [&](int q) -> double& {
+    return s.sums[static_cast<std::size_t>(l.offset(block, iy, ix, q))];
+  };
   const double volume = s.bin_area() * samples * weight;
   for (int a = 0; a < s.n_species; ++a) {
     const double n = st.n[static_cast<std::size_t>(a)] * volume;
-    const double c2 = st.temperature[static_cast<std::size_t>(a)] / phys.mass[static_cast<std::size_t>(a)];
+    const double c2 =
+        st.temperature[static_cast<std::size_t>(a)] / phys.mass[static_cast<std::size_t>(a)];
     at(l.species_index(a, BinLayout::count)) += n;
     at(l.species_index(a, BinLayout::sum_vx)) += n * st.ux;
     at(l.species_index(a, BinLayout::sum_vy)) += n * st.uy;
@@ -114,8 +120,8 @@ inline void add_state(BinSums& s, int block, int iy, int ix, const BinState& st,
 
 // An equimolar state of area fraction phi (diameters from the scene), both species at the
 // same temperature T, obeying the equation of state p = n T F(phi) when eos is set.
-inline BinState mixture_state(const FieldPhysics& phys, double phi, double temperature, double ux, double uy,
-                              bool eos = true) {
+inline BinState mixture_state(const FieldPhysics& phys, double phi, double temperature, double ux,
+                              double uy, bool eos = true) {
   BinState st;
   double disk = 0;
   for (double d : phys.diameter) disk += 0.5 * M_PI * d * d / 4;
@@ -124,13 +130,15 @@ inline BinState mixture_state(const FieldPhysics& phys, double phi, double tempe
   st.temperature = {temperature, temperature};
   st.ux = ux;
   st.uy = uy;
-  if (eos) st.p_col = n_total * temperature * (pressure_factor(phi, phys.restitution, phys.dim) - 1);
+  if (eos)
+    st.p_col = n_total * temperature * (pressure_factor(phi, phys.restitution, phys.dim) - 1);
   return st;
 }
 
 // The temperature that gives Mach number `mach` at speed u in an equimolar state of area
 // fraction phi (mixture-mean mass).
-inline double temperature_for_mach(const FieldPhysics& phys, double phi, double speed, double mach) {
+inline double temperature_for_mach(const FieldPhysics& phys, double phi, double speed,
+                                   double mach) {
   const double m = 0.5 * (phys.mass[0] + phys.mass[1]);
   const double a = speed / mach;
   return a * a * m / sound_speed_factor(phi, phys.restitution, phys.dim);
@@ -140,9 +148,10 @@ inline double temperature_for_mach(const FieldPhysics& phys, double phi, double 
 // fraction of the bin (sampled on sub x sub points) where behind(x, y, block) holds gets
 // `post`, the rest `pre`; points inside the cylinder get nothing. samples_per_block for
 // every block.
-inline void fill_with_front(BinSums& s, const FieldPhysics& phys, const BinState& pre, const BinState& post,
-                            const std::function<bool(double, double, int)>& behind, double samples_per_block,
-                            int sub = 8) {
+inline void fill_with_front(BinSums& s, const FieldPhysics& phys, const BinState& pre,
+                            const BinState& post,
+                            const std::function<bool(double, double, int)>& behind,
+                            double samples_per_block, int sub = 8) {
   for (int b = 0; b < s.blocks; ++b) {
     s.samples[static_cast<std::size_t>(b)] = samples_per_block;
     for (int iy = 0; iy < s.ny; ++iy) {
@@ -150,8 +159,10 @@ inline void fill_with_front(BinSums& s, const FieldPhysics& phys, const BinState
         double f_pre = 0, f_post = 0;
         for (int j = 0; j < sub; ++j) {
           for (int i = 0; i < sub; ++i) {
-            const double x = s.x0 + (ix + (i + 0.5) / sub) * s.dx, y = s.y0 + (iy + (j + 0.5) / sub) * s.dy;
-            if (phys.obstacle && std::hypot(x - phys.obstacle->xc, y - phys.obstacle->yc) < phys.obstacle->radius())
+            const double x = s.x0 + (ix + (i + 0.5) / sub) * s.dx,
+                         y = s.y0 + (iy + (j + 0.5) / sub) * s.dy;
+            if (phys.obstacle &&
+                std::hypot(x - phys.obstacle->xc, y - phys.obstacle->yc) < phys.obstacle->radius())
               continue;
             (behind(x, y, b) ? f_post : f_pre) += 1.0 / (sub * sub);
           }
@@ -164,8 +175,8 @@ inline void fill_with_front(BinSums& s, const FieldPhysics& phys, const BinState
 }
 
 // Writes run.h5 in dir with the scene and the sums, as `granshock run` stores them.
-inline void write_run_file(const std::filesystem::path& dir, const std::string& scene_toml, const BinSums& grid,
-                           const BinSums* profile) {
+inline void write_run_file(const std::filesystem::path& dir, const std::string& scene_toml,
+                           const BinSums& grid, const BinSums* profile) {
   std::filesystem::create_directories(dir);
   const LoadedScene loaded = parse_scene(scene_toml);
   RunFile run = RunFile::create(dir / "run.h5", scene_toml, loaded.resolved, 2);
@@ -183,7 +194,8 @@ inline void write_run_file(const std::filesystem::path& dir, const std::string& 
   run.write_attribute(g, "production_end", grid.production_end);
   if (profile != nullptr) {
     const std::string p = "/fields/profile";
-    run.write_array(p + "/sums", profile->sums, {profile->blocks, profile->ny, profile->quantities()});
+    run.write_array(p + "/sums", profile->sums,
+                    {profile->blocks, profile->ny, profile->quantities()});
     run.write_array(p + "/samples", profile->samples, {profile->blocks});
     run.write_attribute(p, "n", long(profile->ny));
     run.write_attribute(p, "x_lo", profile->x0);
@@ -199,7 +211,8 @@ inline void write_run_file(const std::filesystem::path& dir, const std::string& 
 class ScratchDir {
  public:
   ScratchDir() {
-    std::string pattern = (std::filesystem::temp_directory_path() / "granshock-fields-XXXXXX").string();
+    std::string pattern =
+        (std::filesystem::temp_directory_path() / "granshock-fields-XXXXXX").string();
     path_ = mkdtemp(pattern.data());
   }
   ~ScratchDir() {

@@ -76,7 +76,8 @@ TEST(BinFields, EosDeviationVanishesForAStateThatSatisfiesIt) {
   const BinFields f = compute_bin_fields(s, phys);
   for (std::size_t k = 0; k < 3; ++k) {
     EXPECT_NEAR(f.eos_deviation[k], 0.0, 1e-12) << "phi " << phis[k];
-    EXPECT_NEAR(f.pressure[k], f.n[k] * 3e-7 * pressure_factor(phis[k], 0.5, 2), 1e-12 * f.pressure[k]);
+    EXPECT_NEAR(f.pressure[k], f.n[k] * 3e-7 * pressure_factor(phis[k], 0.5, 2),
+                1e-12 * f.pressure[k]);
   }
   const EosCheck check = check_equation_of_state(f);
   EXPECT_EQ(check.dilute_bins, 1);
@@ -116,8 +117,8 @@ TEST(BinFields, SparseAndEmptyBinsAreMaskedNotHuge) {
     EXPECT_TRUE(std::isnan(f.temperature[k])) << k;
     EXPECT_TRUE(std::isnan(f.pressure[k])) << k;
   }
-  EXPECT_GT(f.phi[1], 0.0);       // phi stays defined in a sparse bin
-  EXPECT_EQ(f.phi[2], 0.0);       // and is 0 in an empty one
+  EXPECT_GT(f.phi[1], 0.0);  // phi stays defined in a sparse bin
+  EXPECT_EQ(f.phi[2], 0.0);  // and is 0 in an empty one
   EXPECT_EQ(c.masked[0], 1);
   EXPECT_TRUE(std::isnan(c.mach[0]));
 }
@@ -132,13 +133,16 @@ TEST(BinFields, UpstreamMachFromTheFirstRowsAndBeyondTheStrip) {
   const double t2 = test::temperature_for_mach(phys, 0.1, 1.0, 6.0);
   for (int iy = 0; iy < 6; ++iy)
     for (int ix = 0; ix < 4; ++ix)
-      test::add_state(s, 0, iy, ix, iy < 2 ? test::mixture_state(phys, 0.08, t1, 0, 0.9)
-                                           : test::mixture_state(phys, 0.1, t2, 0, 1.0), phys, 2000);
+      test::add_state(s, 0, iy, ix,
+                      iy < 2 ? test::mixture_state(phys, 0.08, t1, 0, 0.9)
+                             : test::mixture_state(phys, 0.1, t2, 0, 1.0),
+                      phys, 2000);
   const BinFields f = compute_bin_fields(s, phys);
   EXPECT_EQ(first_row_beyond_strip(s, phys.inflow_strip), 2);
-  const UpstreamState inlet = measure_upstream(f, phys, 0, 2), beyond = measure_upstream(f, phys, 2, 4);
+  const UpstreamState inlet = measure_upstream(f, phys, 0, 2),
+                      beyond = measure_upstream(f, phys, 2, 4);
   EXPECT_NEAR(inlet.phi, 0.08, 1e-12);
-  EXPECT_NEAR(inlet.mach, 4.0, 1e-9);   // U = 1 m/s, not the measured 0.9
+  EXPECT_NEAR(inlet.mach, 4.0, 1e-9);  // U = 1 m/s, not the measured 0.9
   EXPECT_NEAR(inlet.uy, 0.9, 1e-12);
   EXPECT_NEAR(beyond.phi, 0.1, 1e-12);
   EXPECT_NEAR(beyond.mach, 6.0, 1e-9);

@@ -53,7 +53,8 @@ void make_run(const fs::path& dir, double diameter_d) {
   BinSums profile = test::empty_sums(1, 180, 4, 28.5 * kD, 0, 3 * kD, 0.5 * kD);
   test::fill_with_front(profile, phys, pre, post, behind, 250, 6);
   test::write_run_file(dir, scene, grid, &profile);
-  std::ofstream(dir / "summary.json") << R"({"scene": "synthetic", "steps": 123, "ma_inf_target": 5.9})";
+  std::ofstream(dir / "summary.json")
+      << R"({"scene": "synthetic", "steps": 123, "ma_inf_target": 5.9})";
 }
 
 struct DataItem {
@@ -63,8 +64,10 @@ struct DataItem {
 // Every HDF DataItem of an XDMF file: its declared Dimensions and dataset path.
 std::vector<DataItem> hdf_items(const std::string& xmf) {
   std::vector<DataItem> items;
-  const std::regex item(R"re(<DataItem Dimensions="([0-9 ]+)"[^>]*Format="HDF">fields\.h5:([^<]+)</DataItem>)re");
-  for (auto it = std::sregex_iterator(xmf.begin(), xmf.end(), item); it != std::sregex_iterator(); ++it)
+  const std::regex item(
+      R"re(<DataItem Dimensions="([0-9 ]+)"[^>]*Format="HDF">fields\.h5:([^<]+)</DataItem>)re");
+  for (auto it = std::sregex_iterator(xmf.begin(), xmf.end(), item); it != std::sregex_iterator();
+       ++it)
     items.push_back({(*it)[1].str(), (*it)[2].str()});
   return items;
 }
@@ -94,7 +97,9 @@ bool is_png(const fs::path& p) {
   return in && std::string(head + 1, 3) == "PNG" && fs::file_size(p) > 5000;
 }
 
-bool python_with_h5py() { return std::system("/usr/bin/python3 -c 'import h5py' >/dev/null 2>&1") == 0; }
+bool python_with_h5py() {
+  return std::system("/usr/bin/python3 -c 'import h5py' >/dev/null 2>&1") == 0;
+}
 
 // Sets an environment variable for one scope.
 class ScopedEnv {
@@ -104,8 +109,10 @@ class ScopedEnv {
     setenv(name, value, 1);
   }
   ~ScopedEnv() {
-    if (had_) setenv(name_.c_str(), old_.c_str(), 1);
-    else unsetenv(name_.c_str());
+    if (had_)
+      setenv(name_.c_str(), old_.c_str(), 1);
+    else
+      unsetenv(name_.c_str());
   }
 
  private:
@@ -122,7 +129,8 @@ TEST(FieldsCommand, OneRunWritesFieldsXdmfFiguresAndSummary) {
   ASSERT_TRUE(run_has_field_sums(run));
   ASSERT_EQ(fields_command({run}, {}, FieldsCommandOptions{true, true}), 0);
 
-  for (const char* png : {"solid_fraction.png", "temperature.png", "mach.png", "stagnation_profiles.png"})
+  for (const char* png :
+       {"solid_fraction.png", "temperature.png", "mach.png", "stagnation_profiles.png"})
     EXPECT_TRUE(is_png(run / "figures" / png)) << png;
 
   // fields.xmf: every data item is a dataset of fields.h5 with the declared shape.
@@ -132,24 +140,27 @@ TEST(FieldsCommand, OneRunWritesFieldsXdmfFiguresAndSummary) {
   for (const DataItem& item : items)
     EXPECT_EQ(dataset_dimensions(run / "fields.h5", item.path), item.dimensions) << item.path;
   EXPECT_NE(xmf.find("TopologyType=\"2DSMesh\" Dimensions=\"31 21\""), std::string::npos);
-  for (const char* name : {"\"phi\"", "\"T_norm\"", "\"Ma\"", "\"masked\"", "\"P_col_xx\"", "\"T_steel\""})
+  for (const char* name :
+       {"\"phi\"", "\"T_norm\"", "\"Ma\"", "\"masked\"", "\"P_col_xx\"", "\"T_steel\""})
     EXPECT_NE(xmf.find(std::string("Attribute Name=") + name), std::string::npos) << name;
   if (python_with_h5py()) {
-    const std::string check = "/usr/bin/python3 " GRANSHOCK_TEST_FIELDS_DIR "/check_fields_xdmf.py '" +
+    const std::string check = "/usr/bin/python3 " GRANSHOCK_TEST_FIELDS_DIR
+                              "/check_fields_xdmf.py '" +
                               (run / "fields.xmf").string() + "'";
     EXPECT_EQ(std::system(check.c_str()), 0) << check;
   }
-  for (const char* dataset : {"/lines/sonic/points", "/lines/shock_threshold/offsets", "/profile/phi",
-                              "/front/y_threshold", "/grid/x", "/grid/y"})
+  for (const char* dataset : {"/lines/sonic/points", "/lines/shock_threshold/offsets",
+                              "/profile/phi", "/front/y_threshold", "/grid/x", "/grid/y"})
     EXPECT_NE(dataset_dimensions(run / "fields.h5", dataset), "missing") << dataset;
 
   // summary.json: the run's keys kept, the fields' keys added.
   const nlohmann::json j = nlohmann::json::parse(read_text(run / "summary.json"));
   EXPECT_EQ(j["steps"], 123);
   EXPECT_EQ(j["scene"], "synthetic");
-  for (const char* key : {"ma_inf_target", "ma_inf_measured", "ma_inf_measured_downstream", "phi_inf_measured",
-                          "delta_over_D", "delta_over_D_err", "phi_peak", "shock_angle_deg",
-                          "eos_deviation_dilute", "eos_deviation_dense", "mass_definition"})
+  for (const char* key :
+       {"ma_inf_target", "ma_inf_measured", "ma_inf_measured_downstream", "phi_inf_measured",
+        "delta_over_D", "delta_over_D_err", "phi_peak", "shock_angle_deg", "eos_deviation_dilute",
+        "eos_deviation_dense", "mass_definition"})
     EXPECT_TRUE(j.contains(key)) << key;
   EXPECT_DOUBLE_EQ(j["ma_inf_target"].get<double>(), 5.9);
   EXPECT_NEAR(j["ma_inf_measured"].get<double>(), 6.0, 1e-6);
@@ -174,7 +185,9 @@ TEST(FieldsCommand, SeveralRunsGiveTheDetachmentTableAndFigure) {
   make_run(tmp.path() / "d12", 12);
   make_run(tmp.path() / "d18", 18);
   const fs::path out = tmp.path() / "comparison";
-  ASSERT_EQ(fields_command({tmp.path() / "d12", tmp.path() / "d18"}, out, FieldsCommandOptions{true, true}), 0);
+  ASSERT_EQ(fields_command({tmp.path() / "d12", tmp.path() / "d18"}, out,
+                           FieldsCommandOptions{true, true}),
+            0);
   EXPECT_TRUE(is_png(out / "figures" / "detachment_length.png"));
   EXPECT_TRUE(is_png(tmp.path() / "d18" / "figures" / "mach.png"));
   const nlohmann::json table = nlohmann::json::parse(read_text(out / "detachment.json"));
@@ -199,7 +212,8 @@ TEST(FieldsCommand, RunWithoutObstacleHasNoDetachmentButFigures) {
   BinSums grid = test::empty_sums(20, 30, 2, 0, 0, 3 * kD, 3 * kD);
   const test::BinState flow =
       test::mixture_state(phys, 0.1, test::temperature_for_mach(phys, 0.1, 1.0, 6.0), 0, 1.0);
-  test::fill_with_front(grid, phys, flow, flow, [](double, double, int) { return false; }, 100, 2);
+  test::fill_with_front(
+      grid, phys, flow, flow, [](double, double, int) { return false; }, 100, 2);
   test::write_run_file(run, scene, grid, nullptr);  // no profile: the axis column stands in
   ASSERT_EQ(fields_command({run}, {}, FieldsCommandOptions{true, true}), 0);
   EXPECT_TRUE(is_png(run / "figures" / "stagnation_profiles.png"));
@@ -228,7 +242,8 @@ TEST(FieldsCommand, BadInputEndsInOneUserError) {
     fields_command({bare}, {});
     ADD_FAILURE() << "a run without sums must be refused";
   } catch (const UserError& e) {
-    EXPECT_NE(std::string(e.what()).find("no usable field sums at /fields/grid"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("no usable field sums at /fields/grid"), std::string::npos)
+        << e.what();
   }
   EXPECT_FALSE(fs::exists(bare / "fields.h5"));
   EXPECT_FALSE(run_has_field_sums(bare));

@@ -15,7 +15,9 @@ namespace {
 // grid's symmetry so that crossings fall at all fractions of a bin.
 constexpr double kBin = 3e-3, kR0 = 10 * kBin, kXc = 20.3 * kBin, kYc = 19.6 * kBin;
 
-NodeGrid centres() { return NodeGrid{40, 40, 0.5 * kBin, 0.5 * kBin, kBin, kBin}; }
+NodeGrid centres() {
+  return NodeGrid{40, 40, 0.5 * kBin, 0.5 * kBin, kBin, kBin};
+}
 
 std::vector<double> mach_field(const NodeGrid& g) {
   std::vector<double> ma;
@@ -40,7 +42,8 @@ TEST(SonicLine, AnalyticMachFieldWithinATenthOfABin) {
   for (std::size_t i = 0; i < line.size(); ++i) {
     worst = std::max(worst, std::abs(std::hypot(line[i].x - kXc, line[i].y - kYc) - kR0));
     if (i > 0) {
-      double dphi = std::atan2(line[i].y - kYc, line[i].x - kXc) - std::atan2(line[i - 1].y - kYc, line[i - 1].x - kXc);
+      double dphi = std::atan2(line[i].y - kYc, line[i].x - kXc) -
+                    std::atan2(line[i - 1].y - kYc, line[i - 1].x - kXc);
       dphi -= 2 * M_PI * std::round(dphi / (2 * M_PI));
       turn += dphi;
     }

@@ -23,7 +23,9 @@ constexpr double kXc = 30 * kD, kYc = 60 * kD, kSurface = 54 * kD;
 constexpr double kApex = kSurface - 6.3 * kD;
 const double kCotBeta = 1.0 / std::tan(50.0 * M_PI / 180.0);
 
-double front_y(double x, double shift = 0) { return kApex + shift + std::abs(x - kXc) * kCotBeta; }
+double front_y(double x, double shift = 0) {
+  return kApex + shift + std::abs(x - kXc) * kCotBeta;
+}
 
 const FieldPhysics& physics() {
   static const FieldPhysics phys = test::physics_of(test::bow_shock_scene(12));
@@ -43,10 +45,14 @@ test::BinState post() {
 // The stagnation-line profile: x in [xc - 1.5 d, xc + 1.5 d], bins of 0.5 d from y = 0,
 // with the front of block b at front_y + shifts[b].
 BinSums profile_with_shifts(const std::vector<double>& shifts) {
-  BinSums s = test::empty_sums(1, 180, static_cast<int>(shifts.size()), kXc - 1.5 * kD, 0, 3 * kD, 0.5 * kD);
-  test::fill_with_front(s, physics(), pre(), post(),
-                        [&](double x, double y, int b) { return y > front_y(x, shifts[static_cast<std::size_t>(b)]); },
-                        200);
+  BinSums s = test::empty_sums(1, 180, static_cast<int>(shifts.size()), kXc - 1.5 * kD, 0, 3 * kD,
+                               0.5 * kD);
+  test::fill_with_front(
+      s, physics(), pre(), post(),
+      [&](double x, double y, int b) {
+        return y > front_y(x, shifts[static_cast<std::size_t>(b)]);
+      },
+      200);
   return s;
 }
 
@@ -55,7 +61,8 @@ BinSums profile_with_shifts(const std::vector<double>& shifts) {
 TEST(ShockFront, StepFieldFoundWithinOneBinAndFarFieldAngle) {
   const FieldPhysics& phys = physics();
   BinSums grid = test::empty_sums(20, 30, 1, 0, 0, 3 * kD, 3 * kD);
-  test::fill_with_front(grid, phys, pre(), post(), [](double x, double y, int) { return y > front_y(x); }, 300);
+  test::fill_with_front(
+      grid, phys, pre(), post(), [](double x, double y, int) { return y > front_y(x); }, 300);
   const BinFields f = compute_bin_fields(grid, phys);
   const ShockFront front = find_shock_front(f, grid, phys, 0.1, 2);
   int columns = 0;
@@ -64,8 +71,10 @@ TEST(ShockFront, StepFieldFoundWithinOneBinAndFarFieldAngle) {
     if (expected > grid.y0 + grid.ny * grid.dy - 2 * grid.dy) continue;  // front leaves the domain
     ++columns;
     ASSERT_TRUE(std::isfinite(front.y_threshold[static_cast<std::size_t>(ix)])) << "column " << ix;
-    EXPECT_NEAR(front.y_threshold[static_cast<std::size_t>(ix)], expected, grid.dy) << "column " << ix;
-    EXPECT_NEAR(front.y_max_gradient[static_cast<std::size_t>(ix)], expected, grid.dy) << "column " << ix;
+    EXPECT_NEAR(front.y_threshold[static_cast<std::size_t>(ix)], expected, grid.dy)
+        << "column " << ix;
+    EXPECT_NEAR(front.y_max_gradient[static_cast<std::size_t>(ix)], expected, grid.dy)
+        << "column " << ix;
     // Beside the cylinder the peak is the post-shock phi; in front of it, the last bins
     // searched are cut by the cylinder's surface and hold less.
     if (std::abs(x - kXc) > 6 * kD) {
@@ -90,7 +99,8 @@ TEST(Detachment, StepProfileFoundWithinOneBin) {
   // The strip is 3 d wide, so the front inside it spans |x - xc| <= 1.5 d: its bins see
   // the front smeared over 1.5 d cot(beta) = 1.26 d; the threshold rule lands within it.
   const double expected = kSurface - kApex;
-  EXPECT_NEAR(d.delta, expected, profile.dy + 1.5 * kD * kCotBeta) << "delta = " << d.delta / kD << " d";
+  EXPECT_NEAR(d.delta, expected, profile.dy + 1.5 * kD * kCotBeta)
+      << "delta = " << d.delta / kD << " d";
   EXPECT_NEAR(d.delta_over_d, d.delta / (12 * kD), 1e-12);
   EXPECT_TRUE(std::isnan(d.delta_err)) << "one block has no spread to measure";
 }
@@ -98,7 +108,8 @@ TEST(Detachment, StepProfileFoundWithinOneBin) {
 TEST(Detachment, StepProfileOnTheAxisFoundWithinOneBin) {
   // A plane front across the strip (no smearing): delta within one profile bin.
   BinSums s = test::empty_sums(1, 180, 1, kXc - 1.5 * kD, 0, 3 * kD, 0.5 * kD);
-  test::fill_with_front(s, physics(), pre(), post(), [](double, double y, int) { return y > kApex; }, 200);
+  test::fill_with_front(
+      s, physics(), pre(), post(), [](double, double y, int) { return y > kApex; }, 200);
   const Detachment d = measure_detachment(s, physics(), 0.1, 5 * kD);
   ASSERT_TRUE(d.found);
   EXPECT_NEAR(d.delta, kSurface - kApex, s.dy);
@@ -131,10 +142,12 @@ TEST(Detachment, UncertaintyShrinksAsBlocksAreAdded) {
   EXPECT_EQ(d16.blocks_used, 16);
   // Each block's delta follows its own front (within one bin plus the strip's smearing).
   for (std::size_t b = 0; b < s16.size(); ++b)
-    EXPECT_NEAR(d16.delta_blocks[b], kSurface - kApex - s16[b], 0.5 * kD + 1.5 * kD * kCotBeta) << "block " << b;
+    EXPECT_NEAR(d16.delta_blocks[b], kSurface - kApex - s16[b], 0.5 * kD + 1.5 * kD * kCotBeta)
+        << "block " << b;
   // The standard error is about sigma / sqrt(B) (sigma = 1 d): halves from 4 to 16 blocks.
   EXPECT_GT(d4.delta_err, 0.0);
-  EXPECT_LT(d16.delta_err, 0.7 * d4.delta_err) << d16.delta_err / kD << " d vs " << d4.delta_err / kD << " d";
+  EXPECT_LT(d16.delta_err, 0.7 * d4.delta_err)
+      << d16.delta_err / kD << " d vs " << d4.delta_err / kD << " d";
   EXPECT_NEAR(d4.delta_err / kD, 1.0 / 2.0, 0.25);
   EXPECT_NEAR(d16.delta_err / kD, 1.0 / 4.0, 0.12);
   EXPECT_NEAR(d16.delta_over_d_err, d16.delta_err / (12 * kD), 1e-15);

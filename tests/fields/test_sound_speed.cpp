@@ -44,8 +44,10 @@ TEST(SoundSpeed, MatchesHandCalculationForBothMassDefinitions) {
     const double m_sum = sound_speed_mass(MassDefinition::paper_sum, masses, xi);
     EXPECT_NEAR(m_mean, 2.7620826054e-06, 1e-15);
     EXPECT_NEAR(m_sum, 5.5241652108e-06, 1e-15);
-    EXPECT_NEAR(sound_speed(kTemperature, m_mean, h.phi, 0.5, 2), h.a_mixture_mean, 1e-9) << "phi " << h.phi;
-    EXPECT_NEAR(sound_speed(kTemperature, m_sum, h.phi, 0.5, 2), h.a_paper_sum, 1e-9) << "phi " << h.phi;
+    EXPECT_NEAR(sound_speed(kTemperature, m_mean, h.phi, 0.5, 2), h.a_mixture_mean, 1e-9)
+        << "phi " << h.phi;
+    EXPECT_NEAR(sound_speed(kTemperature, m_sum, h.phi, 0.5, 2), h.a_paper_sum, 1e-9)
+        << "phi " << h.phi;
   }
 }
 
@@ -58,7 +60,8 @@ TEST(SoundSpeed, FieldComputationUsesBothMassDefinitions) {
   BinSums s = test::empty_sums(3, 1, 1, 0, 0, 3e-3, 3e-3);
   s.samples = {1000};
   for (int ix = 0; ix < 3; ++ix)
-    test::add_state(s, 0, 0, ix, test::mixture_state(phys, kHand[ix].phi, kTemperature, 0, 1), phys, 1000);
+    test::add_state(s, 0, 0, ix, test::mixture_state(phys, kHand[ix].phi, kTemperature, 0, 1), phys,
+                    1000);
   const BinFields f = compute_bin_fields(s, phys);
   for (int ix = 0; ix < 3; ++ix) {
     const HandValue& h = kHand[ix];
@@ -69,6 +72,7 @@ TEST(SoundSpeed, FieldComputationUsesBothMassDefinitions) {
     EXPECT_NEAR(f.mach_mixture_mean[static_cast<std::size_t>(ix)], 1.0 / h.a_mixture_mean, 1e-7);
     EXPECT_NEAR(f.mach_paper_sum[static_cast<std::size_t>(ix)], 1.0 / h.a_paper_sum, 1e-7);
     // The scene's default (numerics.mass_definition = mixture_mean) is the Ma field.
-    EXPECT_EQ(f.mach[static_cast<std::size_t>(ix)], f.mach_mixture_mean[static_cast<std::size_t>(ix)]);
+    EXPECT_EQ(f.mach[static_cast<std::size_t>(ix)],
+              f.mach_mixture_mean[static_cast<std::size_t>(ix)]);
   }
 }

@@ -90,7 +90,8 @@ SolverState make_state(int n, int dim, int slots, unsigned seed) {
       s.angular_velocity.push_back(value());
       s.torque.push_back(value());
     }
-    for (std::size_t i = 0; i < un * us; ++i) s.history_partner.push_back(i % 3 == 0 ? -1 : static_cast<int>(i));
+    for (std::size_t i = 0; i < un * us; ++i)
+      s.history_partner.push_back(i % 3 == 0 ? -1 : static_cast<int>(i));
     for (std::size_t i = 0; i < un * us * ud; ++i) s.history_spring.push_back(value());
     for (std::size_t i = 0; i < un * ud; ++i) s.history_wall_spring.push_back(value());
   }
@@ -131,7 +132,8 @@ TEST(Checkpoint, FloatDerivedStateWithFrictionHistoryRoundTripsExactly) {
   expect_equal(state, back);
   // A float solver gets its own values back after double -> float.
   for (std::size_t i = 0; i < state.history_spring.size(); ++i) {
-    EXPECT_EQ(static_cast<float>(back.history_spring[i]), static_cast<float>(state.history_spring[i]));
+    EXPECT_EQ(static_cast<float>(back.history_spring[i]),
+              static_cast<float>(state.history_spring[i]));
   }
   EXPECT_EQ(back.history_partner.size(), 40u * 4u);
 }
@@ -198,7 +200,8 @@ TEST(Checkpoint, UnwritableDirectoryIsAUserErrorAndLeavesNothing) {
   // Root may write anywhere, but nobody can create a file below a regular file or in
   // a directory that does not exist.
   std::ofstream(dir / "plain_file") << "x";
-  for (const auto& path : {dir / "plain_file" / "checkpoint.h5", dir / "missing" / "checkpoint.h5"}) {
+  for (const auto& path :
+       {dir / "plain_file" / "checkpoint.h5", dir / "missing" / "checkpoint.h5"}) {
     try {
       write_checkpoint(path, make_state<double>(2, 2, 0, 8), make_extras());
       FAIL() << "no exception for " << path;
@@ -236,7 +239,8 @@ TEST(Checkpoint, ReadingWhatIsNotACheckpointIsAUserError) {
     read_checkpoint(dir / "run.h5", extras);
     FAIL() << "no exception";
   } catch (const UserError& e) {
-    EXPECT_NE(std::string(e.what()).find("not a granshock checkpoint"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("not a granshock checkpoint"), std::string::npos)
+        << e.what();
   }
 }
 

@@ -192,10 +192,10 @@ TEST(RunFile, ResumeTruncatesToTheCheckpointStep) {
     EXPECT_EQ(frames[4].count, 2);
   }
   const std::vector<long> steps{100, 200, 300, 400, 500};
-  for (const char* group : {"/particles/all/position", "/particles/all/velocity",
-                            "/particles/all/species", "/particles/all/id", "/particles/all/count",
-                            "/observables/particles", "/observables/kinetic_energy",
-                            "/observables/deleted_inlet"}) {
+  for (const char* group :
+       {"/particles/all/position", "/particles/all/velocity", "/particles/all/species",
+        "/particles/all/id", "/particles/all/count", "/observables/particles",
+        "/observables/kinetic_energy", "/observables/deleted_inlet"}) {
     EXPECT_EQ(read_array<long>(path, std::string(group) + "/step").values, steps) << group;
     EXPECT_EQ(read_array<double>(path, std::string(group) + "/time").values.size(), 5u) << group;
   }
@@ -316,8 +316,8 @@ TEST(RunFile, SnapshotOf100kParticlesIsFast) {
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / frames;
   std::printf("[ info ] 100k-particle 2-D snapshot: %.1f ms, file %.1f MB for %d frames\n",
-              1e3 * seconds,
-              static_cast<double>(std::filesystem::file_size(dir / "run.h5")) / 1e6, frames);
+              1e3 * seconds, static_cast<double>(std::filesystem::file_size(dir / "run.h5")) / 1e6,
+              frames);
   EXPECT_LT(seconds, 1.0);
 }
 

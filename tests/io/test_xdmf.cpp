@@ -88,7 +88,8 @@ TEST(Xdmf, DescribesWhatARunFileHolds) {
     RunFile run = RunFile::create(dir / "run.h5", "", "", 2);
     run.append_snapshot(1, 0.1, test::make_particles(3, 0));
     run.append_snapshot(2, 0.2, test::make_particles(7, 1));
-    write_particles_xdmf(dir / "run.xmf", "run.h5", run.frames(), run.dim(), run.particle_capacity());
+    write_particles_xdmf(dir / "run.xmf", "run.h5", run.frames(), run.dim(),
+                         run.particle_capacity());
   }
   const std::string xml = read_text(dir / "run.xmf");
   EXPECT_NE(xml.find("Dimensions=\"2 7 2\""), std::string::npos);

@@ -23,7 +23,8 @@ void write_run(const std::filesystem::path& dir, const std::string& name, int di
                                 "# resolved\nmach = 5.0\n", dim);
   for (std::size_t f = 0; f < counts.size(); ++f) {
     const long step = 1000 * static_cast<long>(f + 1);
-    run.append_snapshot(step, 1e-3 * static_cast<double>(f + 1), test::make_particles(counts[f], static_cast<int>(f)));
+    run.append_snapshot(step, 1e-3 * static_cast<double>(f + 1),
+                        test::make_particles(counts[f], static_cast<int>(f)));
     TimeSeriesRow row;
     row.step = step;
     row.time = 1e-3 * static_cast<double>(f + 1);
@@ -82,8 +83,8 @@ int bench(const std::filesystem::path& dir, int n, int dim) {
   run.flush();
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::printf("%d particles, dim %d: %.1f ms per snapshot, %.2f MB per snapshot on disk\n", n,
-              dim, 1e3 * seconds / frames,
+  std::printf("%d particles, dim %d: %.1f ms per snapshot, %.2f MB per snapshot on disk\n", n, dim,
+              1e3 * seconds / frames,
               static_cast<double>(std::filesystem::file_size(dir / "bench.h5")) / 1e6 / frames);
   return 0;
 }

@@ -36,7 +36,7 @@ SystemSetup wall_setup(double dt) {
 }
 
 struct Impact {
-  double jn, jt, spin;  // impulses on the particle (normal = -x, tangential = -y), final w
+  double jn, jt, spin;          // impulses on the particle (normal = -x, tangential = -y), final w
   double worst_coulomb_excess;  // max over steps of (J_t - mu J_n) / J_n at the end
 };
 
@@ -80,7 +80,9 @@ double reference_tangential_impulse(double vn, double vt) {
   const double beta = std::log(kE) / std::sqrt(std::log(kE) * std::log(kE) + M_PI * M_PI);
   const double damp = -2 * std::sqrt(5.0 / 6.0) * beta;
   const double inv_mt = 1 / m + kR * kR / (0.4 * m * kR * kR);  // 1/m + r^2/I = 3.5/m
-  struct State { double x, xd, u, xi; };
+  struct State {
+    double x, xd, u, xi;
+  };
   auto forces = [&](const State& s, double& fn, double& ft) {
     fn = ft = 0;
     if (s.x <= 0) return;
@@ -106,7 +108,8 @@ double reference_tangential_impulse(double vn, double vt) {
     auto add = [](const State& a, const State& b, double f) {
       return State{a.x + f * b.x, a.xd + f * b.xd, a.u + f * b.u, a.xi + f * b.xi};
     };
-    const State k2 = deriv(add(s, k1, h / 2)), k3 = deriv(add(s, k2, h / 2)), k4 = deriv(add(s, k3, h));
+    const State k2 = deriv(add(s, k1, h / 2)), k3 = deriv(add(s, k2, h / 2)),
+                k4 = deriv(add(s, k3, h));
     State next{s.x + h / 6 * (k1.x + 2 * k2.x + 2 * k3.x + k4.x),
                s.xd + h / 6 * (k1.xd + 2 * k2.xd + 2 * k3.xd + k4.xd),
                s.u + h / 6 * (k1.u + 2 * k2.u + 2 * k3.u + k4.u),

@@ -48,14 +48,16 @@ ContactOutcome integrate_contact(const Reference& p, double e, double v, bool li
   const auto accel = [&](double x, double xdot) {
     if (x <= 0) return 0.0;
     const double stiffness = 4.0 / 3.0 * p.youngs_star * std::sqrt(p.radius_star * x);
-    const double damping = -2.0 * std::sqrt(5.0 / 6.0) * beta *
-                           std::sqrt(2.0 * p.youngs_star * std::sqrt(p.radius_star * x) * p.mass_star);
+    const double damping =
+        -2.0 * std::sqrt(5.0 / 6.0) * beta *
+        std::sqrt(2.0 * p.youngs_star * std::sqrt(p.radius_star * x) * p.mass_star);
     double force = stiffness * x + damping * xdot;
     if (limit_force && force < 0) force = 0;
     return -force / p.mass_star;
   };
   const double tc = 2.87 * std::pow(p.mass_star * p.mass_star /
-                                        (p.radius_star * p.youngs_star * p.youngs_star * v), 0.2);
+                                        (p.radius_star * p.youngs_star * p.youngs_star * v),
+                                    0.2);
   const double h = tc / 20000.0;
   double x = 0, xd = v, t = 0;
   while (true) {
@@ -106,12 +108,13 @@ std::string case_name(const ::testing::TestParamInfo<Case>& info) {
   return name + "_v" + std::to_string(speed_cm) + "cm_e" + std::to_string(e_pct);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    PaperPairs, HeadOnCollision,
-    ::testing::Combine(::testing::Values("steel-steel", "steel-aluminium", "aluminium-aluminium",
-                                         "steel-wall", "aluminium-wall"),
-                       ::testing::Values(0.1, 1.0, 5.0), ::testing::Values(0.5, 0.9)),
-    case_name);
+INSTANTIATE_TEST_SUITE_P(PaperPairs, HeadOnCollision,
+                         ::testing::Combine(::testing::Values("steel-steel", "steel-aluminium",
+                                                              "aluminium-aluminium", "steel-wall",
+                                                              "aluminium-wall"),
+                                            ::testing::Values(0.1, 1.0, 5.0),
+                                            ::testing::Values(0.5, 0.9)),
+                         case_name);
 
 // With limit_force the attractive end of the contact is cut off: the effective
 // restitution rises (0.550 for e = 0.5 in the reference), and the solver follows the

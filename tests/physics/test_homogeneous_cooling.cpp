@@ -101,8 +101,7 @@ GasState measure(const HostParticles& p, double mass, double box_length) {
     for (int k = 0; k < 4; ++k) {
       const double kx = modes[k][0], ky = modes[k][1];
       const double transverse = (-c[0] * ky + c[1] * kx) / std::sqrt(kx * kx + ky * ky);
-      const double phase =
-          2 * M_PI * (kx * p.position[i][0] + ky * p.position[i][1]) / box_length;
+      const double phase = 2 * M_PI * (kx * p.position[i][0] + ky * p.position[i][1]) / box_length;
       re[k] += transverse * std::cos(phase);
       im[k] += transverse * std::sin(phase);
     }
@@ -185,7 +184,8 @@ TEST(HomogeneousCooling, HaffLawMatchesKineticTheory) {
   const double slope = (count * sty - st * sy) / (count * stt - st * st);
   const double intercept = (sy - slope * st) / count;
   const double tau_fit = 1 / (slope * std::sqrt(t0));
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::printf(
       "  N = %zu, phi = %.4f, g = %.4f, L = %.1f d, dt = %.3g s (t_c/50), %ld steps\n"
       "  tau fitted %.5g s, kinetic theory %.5g s: %+.2f %%; intercept * sqrt(T0) = %.4f; "

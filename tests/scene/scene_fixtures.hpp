@@ -2,10 +2,10 @@
 // them to a temporary directory.
 #pragma once
 
+#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <unistd.h>
 
 namespace granshock::testing {
 
@@ -29,7 +29,8 @@ material = "aluminium"
 diameter = "1 d"
 number_fraction = 0.5
 [contact]
-restitution = )" + std::to_string(restitution) + R"(
+restitution = )" + std::to_string(restitution) +
+                  R"(
 [domain]
 width = "40 d"
 length = "60 d"
@@ -55,7 +56,8 @@ progress_interval = 1000.0
 class TempDir {
  public:
   TempDir() {
-    std::string pattern = (std::filesystem::temp_directory_path() / "granshock-test-XXXXXX").string();
+    std::string pattern =
+        (std::filesystem::temp_directory_path() / "granshock-test-XXXXXX").string();
     path_ = mkdtemp(pattern.data());
   }
   ~TempDir() {

@@ -20,7 +20,8 @@ using namespace granshock;
 
 TEST(Inflow, ReproducesTheUpstreamState) {
   const Scene s = parse_scene(granshock::testing::small_scene(false, 1.0),
-                              {"domain.width=400 d", "domain.length=20 d"}).scene;
+                              {"domain.width=400 d", "domain.length=20 d"})
+                      .scene;
   auto solver = make_solver(s.setup, s.capacity_estimate());
   solver->set_particles({});
   InflowController inflow(s);
@@ -63,10 +64,11 @@ TEST(Inflow, ReproducesTheUpstreamState) {
   ASSERT_GT(particles, 10000);
   const double phi = area / (samples * width * (y_hi - y_lo));
   const double sigma2 = fluct / particles;  // T / m_mean: equals sigma^2 for equal fractions
-  std::printf("[ measured ] phi %.4f (target %.3f)  U %.4f  vx %.4f  T/(m sigma^2) %.4f  "
-              "steel fraction %.4f  from %.0f particle samples\n",
-              phi, s.inflow.area_fraction, vy / particles, vx / particles,
-              sigma2 / (s.inflow.sigma * s.inflow.sigma), count[0] / particles, particles);
+  std::printf(
+      "[ measured ] phi %.4f (target %.3f)  U %.4f  vx %.4f  T/(m sigma^2) %.4f  "
+      "steel fraction %.4f  from %.0f particle samples\n",
+      phi, s.inflow.area_fraction, vy / particles, vx / particles,
+      sigma2 / (s.inflow.sigma * s.inflow.sigma), count[0] / particles, particles);
   EXPECT_NEAR(phi, s.inflow.area_fraction, 0.05 * s.inflow.area_fraction);
   EXPECT_NEAR(vy / particles, s.inflow.speed_m_per_s, 0.05 * s.inflow.speed_m_per_s);
   EXPECT_NEAR(vx / particles, 0.0, 0.05 * s.inflow.sigma);

@@ -17,7 +17,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-RunOptions options_for(const fs::path& scene, const fs::path& out, std::vector<std::string> sets = {}) {
+RunOptions options_for(const fs::path& scene, const fs::path& out,
+                       std::vector<std::string> sets = {}) {
   RunOptions o;
   o.scene_file = scene;
   o.out_dir = out;
@@ -102,7 +103,8 @@ INSTANTIATE_TEST_SUITE_P(
     BadInput, RunRefuses,
     ::testing::Values(BadRun{"dt_past_stable_limit", {"time.dt=5e-6"}, "past the stable limit"},
                       BadRun{"unknown_key", {"time.dtt=1"}, "unknown key"},
-                      BadRun{"phi_out_of_range", {"inflow.area_fraction=0.8"}, "must be in (0, 0.7)"}),
+                      BadRun{
+                          "phi_out_of_range", {"inflow.area_fraction=0.8"}, "must be in (0, 0.7)"}),
     [](const auto& param_info) { return std::string(param_info.param.name); });
 
 TEST(RunRefusesDirectory, UnwritableOrExisting) {

@@ -41,9 +41,10 @@ TEST(SceneFile, ParsesTheSmallSceneWithUnitsOfD) {
 }
 
 TEST(SceneFile, OverridesReplaceAndAddKeys) {
-  const Scene s = parse_scene(small_scene(), {"inflow.velocity=2.375", "obstacle.diameter=12 d",
-                                              "contact.limit_force=true", "species.1.diameter=\"1 d\""})
-                      .scene;
+  const Scene s =
+      parse_scene(small_scene(), {"inflow.velocity=2.375", "obstacle.diameter=12 d",
+                                  "contact.limit_force=true", "species.1.diameter=\"1 d\""})
+          .scene;
   EXPECT_DOUBLE_EQ(s.inflow.speed_m_per_s, 2.375);
   EXPECT_DOUBLE_EQ(s.setup.obstacle->diameter_m, 0.012);
   EXPECT_TRUE(s.setup.contacts.limit_force);
@@ -84,22 +85,37 @@ TEST_P(SceneErrors, NameTheKeyAndWhatIsAccepted) {
 INSTANTIATE_TEST_SUITE_P(
     AllKinds, SceneErrors,
     ::testing::Values(
-        BadInput{"unknown_key", {"inflow.mahc=3"}, "scene key 'inflow.mahc' = 3: unknown key (accepted here:"},
+        BadInput{"unknown_key",
+                 {"inflow.mahc=3"},
+                 "scene key 'inflow.mahc' = 3: unknown key (accepted here:"},
         BadInput{"unknown_table", {"outptu.x=1"}, "scene key 'outptu' = (a table): unknown key"},
-        BadInput{"wrong_type", {"inflow.velocity=\"fast\""}, "'inflow.velocity' = \"fast\": must be a number"},
+        BadInput{"wrong_type",
+                 {"inflow.velocity=\"fast\""},
+                 "'inflow.velocity' = \"fast\": must be a number"},
         BadInput{"zero_width", {"domain.width=0"}, "'domain.width' = 0 m: must be > 0"},
-        BadInput{"negative_length", {"domain.length=-5 d"}, "'domain.length' = -0.005 m: must be > 0"},
+        BadInput{
+            "negative_length", {"domain.length=-5 d"}, "'domain.length' = -0.005 m: must be > 0"},
         BadInput{"bad_length_unit", {"domain.length=5 furlongs"}, "must be a length"},
-        BadInput{"obstacle_outside", {"obstacle.centre=[\"39 d\", \"35 d\"]"}, "the cylinder must lie inside the domain"},
-        BadInput{"obstacle_on_the_strip", {"obstacle.centre=[\"20 d\", \"5 d\"]"}, "downstream of the insertion strip"},
-        BadInput{"phi_too_high", {"inflow.area_fraction=0.7"}, "'inflow.area_fraction' = 0.7: must be in (0, 0.7)"},
+        BadInput{"obstacle_outside",
+                 {"obstacle.centre=[\"39 d\", \"35 d\"]"},
+                 "the cylinder must lie inside the domain"},
+        BadInput{"obstacle_on_the_strip",
+                 {"obstacle.centre=[\"20 d\", \"5 d\"]"},
+                 "downstream of the insertion strip"},
+        BadInput{"phi_too_high",
+                 {"inflow.area_fraction=0.7"},
+                 "'inflow.area_fraction' = 0.7: must be in (0, 0.7)"},
         BadInput{"phi_zero", {"inflow.area_fraction=0"}, "must be in (0, 0.7)"},
-        BadInput{"restitution_zero", {"contact.restitution=0"}, "'contact.restitution' = 0: must be in (0, 1]"},
+        BadInput{"restitution_zero",
+                 {"contact.restitution=0"},
+                 "'contact.restitution' = 0: must be in (0, 1]"},
         BadInput{"restitution_above_one", {"contact.restitution=1.2"}, "must be in (0, 1]"},
         BadInput{"sigma_and_mach", {"inflow.mach=5"}, "give exactly one: sigma (m/s) or mach"},
         BadInput{"negative_dt", {"time.dt=-1e-7"}, "'time.dt' = -1e-07: must be > 0"},
         BadInput{"production_after_end", {"time.production_start=0.02"}, "must be in [0, 0.01)"},
-        BadInput{"unknown_material", {"species.0.material=\"copper\""}, "unknown material (defined: aluminium, steel)"},
+        BadInput{"unknown_material",
+                 {"species.0.material=\"copper\""},
+                 "unknown material (defined: aluminium, steel)"},
         BadInput{"fractions_do_not_add_up", {"species.0.number_fraction=0.6"}, "must add up to 1"},
         BadInput{"dim_three", {"scene.dim=3"}, "only quasi-2-D scenes"},
         BadInput{"bad_precision", {"numerics.precision=\"half\""}, "must be one of double, single"},
@@ -109,7 +125,8 @@ INSTANTIATE_TEST_SUITE_P(
 TEST(SceneErrorsText, MissingKeyAndBrokenToml) {
   std::string text = small_scene();
   text.erase(text.find("velocity = 1.0"), 14);
-  EXPECT_NE(error_of(text).find("'inflow.velocity' = (missing): this key is required"), std::string::npos)
+  EXPECT_NE(error_of(text).find("'inflow.velocity' = (missing): this key is required"),
+            std::string::npos)
       << error_of(text);
   EXPECT_NE(error_of("[scene\nname=1").find("not valid TOML"), std::string::npos);
 }

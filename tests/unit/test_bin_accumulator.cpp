@@ -43,7 +43,8 @@ Fixture dense_gas(int warmup_steps) {
 }
 
 // The host reference: the same binning, summed serially.
-std::vector<double> reference_sums(const Fixture& f, const HostParticles& p, int block, bool profile) {
+std::vector<double> reference_sums(const Fixture& f, const HostParticles& p, int block,
+                                   bool profile) {
   const BinLayout& g = f.sampling.grid;
   const ProfileLayout& pr = f.sampling.profile;
   const int q = g.quantities();
@@ -54,8 +55,10 @@ std::vector<double> reference_sums(const Fixture& f, const HostParticles& p, int
     const double x = p.position[i][0], y = p.position[i][1];
     long bin = -1;
     if (profile) {
-      if (x >= pr.x_lo && x < pr.x_hi && y >= pr.y0 && int((y - pr.y0) / pr.dy) < pr.n) bin = int((y - pr.y0) / pr.dy);
-    } else if (x >= g.x0 && y >= g.y0 && int((x - g.x0) / g.bin_size) < g.nx && int((y - g.y0) / g.bin_size) < g.ny) {
+      if (x >= pr.x_lo && x < pr.x_hi && y >= pr.y0 && int((y - pr.y0) / pr.dy) < pr.n)
+        bin = int((y - pr.y0) / pr.dy);
+    } else if (x >= g.x0 && y >= g.y0 && int((x - g.x0) / g.bin_size) < g.nx &&
+               int((y - g.y0) / g.bin_size) < g.ny) {
       bin = long(int((y - g.y0) / g.bin_size)) * g.nx + int((x - g.x0) / g.bin_size);
     }
     if (bin < 0) continue;
@@ -82,13 +85,15 @@ std::vector<double> reference_sums(const Fixture& f, const HostParticles& p, int
       if (dn <= 0) continue;
       const double fn = 4.0 / 3.0 * pp.youngs_star * std::sqrt(pp.radius_star) * std::pow(dn, 1.5);
       for (int a = 0; a < 2; ++a)
-        for (int b = 0; b < 2; ++b) s[g.virial_index(BinLayout::w_xx) + 2 * a + b] += 0.5 * r[a] * fn * r[b] / dist;
+        for (int b = 0; b < 2; ++b)
+          s[g.virial_index(BinLayout::w_xx) + 2 * a + b] += 0.5 * r[a] * fn * r[b] / dist;
     }
   }
   return sums;
 }
 
-void expect_close(const std::vector<double>& got, const std::vector<double>& want, const char* what) {
+void expect_close(const std::vector<double>& got, const std::vector<double>& want,
+                  const char* what) {
   ASSERT_EQ(got.size(), want.size()) << what;
   double scale = 0;
   for (double w : want) scale = std::max(scale, std::abs(w));

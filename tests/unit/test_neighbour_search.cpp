@@ -15,7 +15,8 @@ using namespace granshock;
 
 namespace {
 
-std::vector<std::pair<int, int>> brute_force_contacts(const SystemSetup& s, const HostParticles& p) {
+std::vector<std::pair<int, int>> brute_force_contacts(const SystemSetup& s,
+                                                      const HostParticles& p) {
   std::vector<std::pair<int, int>> pairs;
   for (std::size_t i = 0; i < p.size(); ++i) {
     for (std::size_t j = i + 1; j < p.size(); ++j) {
@@ -52,9 +53,11 @@ HostParticles random_particles(const SystemSetup& s, int n, std::uint64_t seed) 
   const CounterRng rng{seed};
   HostParticles p;
   for (int i = 0; i < n; ++i) {
-    std::array<double, 3> x{rng.uniform(i, 0) * s.box.length(0), rng.uniform(i, 1) * s.box.length(1), 0};
-    if (i % 4 == 0) x[0] = rng.uniform(i, 2) < 0.5 ? rng.uniform(i, 3) * 1e-3
-                                                   : s.box.length(0) - rng.uniform(i, 3) * 1e-3;
+    std::array<double, 3> x{rng.uniform(i, 0) * s.box.length(0),
+                            rng.uniform(i, 1) * s.box.length(1), 0};
+    if (i % 4 == 0)
+      x[0] = rng.uniform(i, 2) < 0.5 ? rng.uniform(i, 3) * 1e-3
+                                     : s.box.length(0) - rng.uniform(i, 3) * 1e-3;
     if (i % 8 == 1) x[1] = rng.uniform(i, 4) < 0.5 ? 0.0 : s.box.length(1) - 1e-12;
     p.add(x, {0, 0, 0}, i % 3 == 0 ? 1 : 0, 1000 + 7 * i);  // ids need not be dense
   }

@@ -10,7 +10,9 @@ using namespace granshock;
 
 namespace {
 const Species kSteel{"steel", steel(), 1e-3};
-PairProperties steel_pair(double e = 0.5) { return particle_pair(kSteel, kSteel, e, 0.0); }
+PairProperties steel_pair(double e = 0.5) {
+  return particle_pair(kSteel, kSteel, e, 0.0);
+}
 }  // namespace
 
 TEST(TimeStepGuard, VerdictsAcrossTheRange) {
@@ -33,7 +35,8 @@ TEST(TimeStepGuard, StiffestPairAndFastestSpeedDecide) {
   EXPECT_EQ(a.stiffest_pair, "steel-steel");
   EXPECT_DOUBLE_EQ(a.t_c, hertz_collision_time(steel_pair(), 2.0));
   // A faster impact is stiffer: the stable step shrinks with speed as v^(-1/5).
-  EXPECT_LT(stable_time_step(steel_pair(), 10.0, false), stable_time_step(steel_pair(), 1.0, false));
+  EXPECT_LT(stable_time_step(steel_pair(), 10.0, false),
+            stable_time_step(steel_pair(), 1.0, false));
   // Friction's tangential spring with the rolling mass 2/7 m* is the stiffer mode.
   EXPECT_LT(stable_time_step(steel_pair(), 1.0, true), stable_time_step(steel_pair(), 1.0, false));
 }
@@ -41,7 +44,8 @@ TEST(TimeStepGuard, StiffestPairAndFastestSpeedDecide) {
 TEST(TimeStepGuard, StableLimitIsBelowTheContactTime) {
   // The linearised peak stiffness bounds the step well below t_c: about 0.4 t_c for
   // e = 0.5 (omega_max t_c ~ 4.1, margin 2(sqrt(1+z^2)-z) ~ 1.65 with z = 0.197).
-  const double ratio = stable_time_step(steel_pair(), 1.0, false) / hertz_collision_time(steel_pair(), 1.0);
+  const double ratio =
+      stable_time_step(steel_pair(), 1.0, false) / hertz_collision_time(steel_pair(), 1.0);
   EXPECT_GT(ratio, 0.3);
   EXPECT_LT(ratio, 0.5);
 }
