@@ -6,8 +6,8 @@
 
 #include <Kokkos_Core.hpp>
 
+#include "box_geometry.hpp"
 #include "device_math.hpp"
-#include "domain.hpp"
 #include "user_error.hpp"
 #include "vec.hpp"
 

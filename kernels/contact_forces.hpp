@@ -6,8 +6,8 @@
 
 #include <Kokkos_Core.hpp>
 
+#include "box_geometry.hpp"
 #include "contact_history.hpp"
-#include "domain.hpp"
 #include "hertz_contact.hpp"
 #include "particle_store.hpp"
 #include "species_table.hpp"

@@ -5,8 +5,8 @@
 
 #include <Kokkos_Core.hpp>
 
+#include "box_geometry.hpp"
 #include "counter_rng.hpp"
-#include "domain.hpp"
 #include "vec.hpp"
 
 namespace granshock {

@@ -8,8 +8,8 @@
 #include <Kokkos_Core.hpp>
 #include <vector>
 
+#include "box_geometry.hpp"
 #include "cell_grid.hpp"
-#include "domain.hpp"
 #include "vec.hpp"
 
 namespace granshock {

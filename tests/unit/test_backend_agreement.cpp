@@ -5,6 +5,9 @@
 // the run (the largest displacement) is a max, which is exact in any order.
 #include <gtest/gtest.h>
 
+#include <Kokkos_Core.hpp>
+#include <cmath>
+
 #include "homogeneous_gas.hpp"
 #include "solver.hpp"
 
