@@ -18,7 +18,7 @@ namespace {
 
 constexpr double kD = 1e-3;  // particle diameter
 // The scene's cylinder: D = 12 d at (30 d, 60 d), surface at y = 54 d on the axis.
-constexpr double kXc = 30 * kD, kYc = 60 * kD, kSurface = 54 * kD;
+constexpr double kXc = 30 * kD, kSurface = 54 * kD;  // obstacle axis, cylinder surface
 // A V-shaped front: apex 6.3 d ahead of the surface, flanks at beta = 50 deg to +y.
 constexpr double kApex = kSurface - 6.3 * kD;
 const double kCotBeta = 1.0 / std::tan(50.0 * M_PI / 180.0);
