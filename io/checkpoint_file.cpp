@@ -1,8 +1,5 @@
 #include "checkpoint_file.hpp"
 
-#include <fcntl.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <array>
 #include <stdexcept>
@@ -105,13 +102,6 @@ void write_extras(hid_t file, const CheckpointExtras& e) {
 
 // HDF5 leaves the data in the page cache; the rename must not reach the disk before it
 // does, or a power cut could leave a checkpoint of the right name and wrong content.
-void sync_file(const fs::path& path) {
-  const int fd = ::open(path.c_str(), O_RDONLY);
-  if (fd < 0) throw h5::Hdf5Error("reopening to sync failed");
-  const int status = ::fsync(fd);
-  ::close(fd);
-  if (status != 0) throw h5::Hdf5Error("fsync failed (disk full?)");
-}
 
 void read_axes(hid_t group, const char* name, std::array<long, 3>& axes) {
   const std::vector<long> values = h5::read_attribute_vector<long>(group, name);
@@ -125,39 +115,13 @@ void read_axes(hid_t group, const char* name, std::array<long, 3>& axes) {
 
 void write_checkpoint(const fs::path& path, const SolverState& state,
                       const CheckpointExtras& extras) {
-  h5::silence_error_printing();
-  const fs::path tmp = path.string() + ".tmp";
-  const hid_t id = H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-  if (id < 0) {
-    throw UserError("cannot write checkpoint '" + path.string() + "': " + h5::take_error_message());
-  }
-  Handle file(id, H5Fclose);
-  auto discard_tmp = [&] {
-    file.close();
-    std::error_code ignored;
-    fs::remove(tmp, ignored);
-  };
-  try {
-    h5::naming_file_in_errors(path, "writing checkpoint", [&] {
-      h5::write_attribute(file.get(), "granshock_file", kFileKind);
-      h5::write_attribute(file.get(), "granshock_format_version", kFormatVersion);
-      h5::write_attribute(file.get(), "creator_version", GRANSHOCK_IO_VERSION);
-      write_state(file.get(), state);
-      write_extras(file.get(), extras);
-      // Closing is where HDF5 writes what it buffered: check it.
-      h5::check(file.close(), "closing");
-      sync_file(tmp);
-    });
-  } catch (...) {
-    discard_tmp();
-    throw;
-  }
-  std::error_code ec;
-  fs::rename(tmp, path, ec);
-  if (ec) {
-    discard_tmp();
-    throw UserError("cannot replace checkpoint '" + path.string() + "': " + ec.message());
-  }
+  h5::write_file_atomically(path, "checkpoint", [&](hid_t file) {
+    h5::write_attribute(file, "granshock_file", kFileKind);
+    h5::write_attribute(file, "granshock_format_version", kFormatVersion);
+    h5::write_attribute(file, "creator_version", GRANSHOCK_IO_VERSION);
+    write_state(file, state);
+    write_extras(file, extras);
+  });
 }
 
 SolverState read_checkpoint(const fs::path& path, CheckpointExtras& extras) {

@@ -1,8 +1,5 @@
 #include "fields_file.hpp"
 
-#include <fcntl.h>
-#include <unistd.h>
-
 #include <stdexcept>
 #include <system_error>
 
@@ -115,44 +112,12 @@ void write_content(hid_t file, const FieldsFileContent& c) {
 }
 
 // The data must reach the disk before the rename does (as for checkpoints).
-void sync_file(const fs::path& path) {
-  const int fd = ::open(path.c_str(), O_RDONLY);
-  if (fd < 0) throw h5::Hdf5Error("reopening to sync failed");
-  const int status = ::fsync(fd);
-  ::close(fd);
-  if (status != 0) throw h5::Hdf5Error("fsync failed (disk full?)");
-}
 
 }  // namespace
 
 void write_fields_file(const fs::path& path, const FieldsFileContent& content) {
   check_content(content);
-  h5::silence_error_printing();
-  const fs::path tmp = path.string() + ".tmp";
-  const hid_t id = H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-  if (id < 0) throw UserError("cannot write '" + path.string() + "': " + h5::take_error_message());
-  Handle file(id, H5Fclose);
-  auto discard_tmp = [&] {
-    file.close();
-    std::error_code ignored;
-    fs::remove(tmp, ignored);
-  };
-  try {
-    h5::naming_file_in_errors(path, "writing", [&] {
-      write_content(file.get(), content);
-      h5::check(file.close(), "closing");
-      sync_file(tmp);
-    });
-  } catch (...) {
-    discard_tmp();
-    throw;
-  }
-  std::error_code ec;
-  fs::rename(tmp, path, ec);
-  if (ec) {
-    discard_tmp();
-    throw UserError("cannot replace '" + path.string() + "': " + ec.message());
-  }
+  h5::write_file_atomically(path, "fields file", [&](hid_t file) { write_content(file, content); });
 }
 
 }  // namespace granshock

@@ -3,38 +3,9 @@
 #include <sstream>
 
 #include "atomic_file.hpp"
+#include "xml_escape.hpp"
 
 namespace granshock {
-
-namespace {
-
-std::string xml_escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      case '\'':
-        out += "&apos;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
-
-}  // namespace
 
 void write_fields_xdmf(const std::filesystem::path& xmf_path, const std::string& h5_name,
                        const FieldsFileContent& c) {

@@ -1,5 +1,10 @@
 #include "hdf5_helpers.hpp"
 
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <system_error>
+
 #include <algorithm>
 
 namespace granshock::h5 {
@@ -196,6 +201,48 @@ std::string read_string_dataset(hid_t loc, const std::string& name) {
     check(H5Dread(set.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, buffer),
           "reading dataset '" + name + "'");
   });
+}
+
+namespace {
+void sync_file(const std::filesystem::path& path) {
+  const int fd = ::open(path.c_str(), O_RDONLY);
+  if (fd < 0) throw Hdf5Error("reopening to sync failed");
+  const int status = ::fsync(fd);
+  ::close(fd);
+  if (status != 0) throw Hdf5Error("fsync failed (disk full?)");
+}
+}  // namespace
+
+void write_file_atomically(const std::filesystem::path& path, const std::string& what,
+                           const std::function<void(hid_t file)>& write) {
+  namespace fs = std::filesystem;
+  silence_error_printing();
+  const fs::path tmp = path.string() + ".tmp";
+  const hid_t id = H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  if (id < 0)
+    throw UserError("cannot write " + what + " '" + path.string() + "': " + take_error_message());
+  Handle file(id, H5Fclose);
+  auto discard_tmp = [&] {
+    file.close();
+    std::error_code ignored;
+    fs::remove(tmp, ignored);
+  };
+  try {
+    naming_file_in_errors(path, ("writing " + what).c_str(), [&] {
+      write(file.get());
+      check(file.close(), "closing");  // closing is where HDF5 writes what it buffered
+      sync_file(tmp);
+    });
+  } catch (...) {
+    discard_tmp();
+    throw;
+  }
+  std::error_code ec;
+  fs::rename(tmp, path, ec);
+  if (ec) {
+    discard_tmp();
+    throw UserError("cannot replace " + what + " '" + path.string() + "': " + ec.message());
+  }
 }
 
 }  // namespace granshock::h5

@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -142,5 +143,12 @@ auto naming_file_in_errors(const std::filesystem::path& path, const char* doing,
     throw UserError(std::string(doing) + " '" + path.string() + "' failed: " + e.what());
   }
 }
+
+// Writes an HDF5 file so that readers never see half of it: `write` fills path.tmp,
+// which is closed (HDF5 writes its buffers there), fsync'ed and renamed over path. On
+// any failure the .tmp is removed, the previous file stays, and a UserError names
+// `what` and the path.
+void write_file_atomically(const std::filesystem::path& path, const std::string& what,
+                           const std::function<void(hid_t file)>& write);
 
 }  // namespace granshock::h5

@@ -5,36 +5,11 @@
 #include <stdexcept>
 
 #include "atomic_file.hpp"
+#include "xml_escape.hpp"
 
 namespace granshock {
 
 namespace {
-
-std::string xml_escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      case '\'':
-        out += "&apos;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
 
 // Shortest text that reads back as the same double, so the viewer's times match run.h5.
 std::string exact(double value) {
