@@ -9,16 +9,17 @@
 //
 // Threads: OMP_NUM_THREADS or --kokkos-threads=N (Kokkos 3.4 removes its own
 // --kokkos-* arguments before the benchmark's options are parsed).
+#include <sys/resource.h>
 #include <CLI/CLI.hpp>
 #include <Kokkos_Core.hpp>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <string>
-#include <sys/resource.h>
 #include <vector>
 
 #include "atomic_file.hpp"
@@ -39,6 +40,7 @@ struct Options {
   double restitution = 0.5;
   double sigma = 1.0;
   double dt = 5e-7;
+  double skin_d = 0;  // Verlet skin in diameters; 0 keeps the solver's default
   double min_cpu_share = 0.9;
   int retries = 5;
   std::string json_path;
@@ -116,6 +118,7 @@ std::pair<long, double> run_at_least(granshock::Solver& solver, long chunk, long
 Row bench_one(const Options& o, double phi, int n_wanted) {
   granshock::SystemSetup setup = granshock::paper_mixture(o.restitution);
   setup.dt = o.dt;
+  if (o.skin_d > 0) setup.skin_m = o.skin_d * setup.max_diameter();
   setup.precision =
       o.precision == "single" ? granshock::Precision::single : granshock::Precision::dual;
   granshock::GasSpec spec;
@@ -141,7 +144,8 @@ Row bench_one(const Options& o, double phi, int n_wanted) {
     Kokkos::fence();
     Kokkos::Timer timer;
     long chunk = 1, chunks = 0;
-    while (chunks < 2 || (row.warmup_steps < o.warmup_steps && timer.seconds() < o.warmup_seconds)) {
+    while (chunks < 2 ||
+           (row.warmup_steps < o.warmup_steps && timer.seconds() < o.warmup_seconds)) {
       solver->advance(chunk);
       Kokkos::fence();
       row.warmup_steps += chunk;
@@ -161,8 +165,7 @@ Row bench_one(const Options& o, double phi, int n_wanted) {
   while (int(row.rates.size()) < o.repeats) {
     const double cpu_before = process_cpu_seconds();
     const auto [steps, seconds] = run_at_least(*solver, chunk, planned, o.min_seconds);
-    const double share =
-        (process_cpu_seconds() - cpu_before) / (seconds * double(row.threads));
+    const double share = (process_cpu_seconds() - cpu_before) / (seconds * double(row.threads));
     const double rate = double(row.particles) * double(steps) / seconds;
     timed_steps += steps;
     if (share < o.min_cpu_share && int(row.rejected_rates.size()) < o.retries) {
@@ -185,8 +188,9 @@ Row bench_one(const Options& o, double phi, int n_wanted) {
 }
 
 void print_table_header() {
-  std::printf("| phi | N | threads | variant | median p-steps/s | min | max | "
-              "builds/1000 steps | contacts/particle |\n");
+  std::printf(
+      "| phi | N | threads | variant | median p-steps/s | min | max | "
+      "builds/1000 steps | contacts/particle |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|\n");
 }
 
@@ -224,8 +228,9 @@ int main(int argc, char** argv) {
   // Kokkos takes its own --kokkos-* arguments; CLI11 sees the rest.
   Kokkos::ScopeGuard kokkos(argc, argv);
 
-  CLI::App app{"granshock_bench_gas: particle-steps per second of a homogeneous 2-D granular "
-               "gas (paper mixture, periodic box)"};
+  CLI::App app{
+      "granshock_bench_gas: particle-steps per second of a homogeneous 2-D granular "
+      "gas (paper mixture, periodic box)"};
   Options o;
   app.add_option("--particles", o.particles, "particle counts (rounded to a square lattice)")
       ->delimiter(',')
@@ -248,6 +253,9 @@ int main(int argc, char** argv) {
   app.add_option("--sigma", o.sigma, "initial velocity standard deviation per component (m/s)")
       ->check(CLI::PositiveNumber);
   app.add_option("--dt", o.dt, "time step (s); the paper's is 5e-7")->check(CLI::PositiveNumber);
+  app.add_option("--skin", o.skin_d,
+                 "Verlet-list skin in particle diameters (default: the solver's)")
+      ->check(CLI::Range(0.0, 10.0));
   app.add_option("--min-cpu-share", o.min_cpu_share,
                  "a repeat whose process CPU time is below this share of wall time x threads "
                  "(other processes competed for the cores) is run again")
@@ -262,14 +270,25 @@ int main(int argc, char** argv) {
   }
 
   try {
+    // Fail before minutes of benchmarking, not after, when the JSON cannot be written.
+    if (!o.json_path.empty()) {
+      const auto dir = std::filesystem::absolute(o.json_path).parent_path();
+      if (!std::filesystem::is_directory(dir))
+        throw granshock::UserError("--json " + o.json_path + ": directory " + dir.string() +
+                                   " does not exist");
+    }
     const int threads = Kokkos::DefaultExecutionSpace().concurrency();
+    granshock::SystemSetup mixture = granshock::paper_mixture(o.restitution);
+    if (o.skin_d > 0) mixture.skin_m = o.skin_d * mixture.max_diameter();
+    const double skin_d = mixture.skin() / mixture.max_diameter();
     std::printf("# granshock_bench_gas: Kokkos %s, backend %s, %d threads, %s precision\n",
                 kokkos_version().c_str(), Kokkos::DefaultExecutionSpace::name(), threads,
                 o.precision.c_str());
     std::printf("# CPU: %s\n", cpu_model().c_str());
-    std::printf("# paper mixture (steel/aluminium, d = 1 mm), e = %g, dt = %g s, sigma = %g m/s, "
-                "%d repeats of >= %g s each\n",
-                o.restitution, o.dt, o.sigma, o.repeats, o.min_seconds);
+    std::printf(
+        "# paper mixture (steel/aluminium, d = 1 mm), e = %g, dt = %g s, sigma = %g m/s, "
+        "skin %g d, %d repeats of >= %g s each\n",
+        o.restitution, o.dt, o.sigma, skin_d, o.repeats, o.min_seconds);
     print_table_header();
     std::fflush(stdout);
 
@@ -278,7 +297,8 @@ int main(int argc, char** argv) {
       for (const int n : o.particles) {
         const Row row = bench_one(o, phi, n);
         print_row(row);
-        const double worst = *std::min_element(row.cpu_utilisation.begin(), row.cpu_utilisation.end());
+        const double worst =
+            *std::min_element(row.cpu_utilisation.begin(), row.cpu_utilisation.end());
         if (!row.rejected_rates.empty())
           std::fprintf(stderr,
                        "granshock_bench_gas: note: phi %g, N %d: %zu repeat(s) run again because "
@@ -302,6 +322,7 @@ int main(int argc, char** argv) {
                             {"restitution", o.restitution},
                             {"dt_s", o.dt},
                             {"sigma_m_per_s", o.sigma},
+                            {"skin_diameters", skin_d},
                             {"repeats", o.repeats},
                             {"min_seconds", o.min_seconds},
                             {"min_cpu_share", o.min_cpu_share},

@@ -2,7 +2,8 @@
 # Runs granshock_bench_gas over the standard matrix and prints one markdown table:
 #   phi in {0.1, 0.5} x N in {5000, 32000, 250000, 2000000} x OpenMP threads in {1, 2},
 # median particle-steps/s of 5 repeats, followed by the 2-thread / 1-thread speed-ups.
-# About 2 minutes on an idle 2-core machine.
+# About 2 minutes on an idle 2-core machine; at most about 8 with the defaults when
+# every case has to be run twice (a busy machine).
 #
 # Benchmarks are only meaningful when nothing else runs on the cores. Each case is a
 # separate run of a few seconds; a repeat that did not get its cores' full CPU time is
@@ -20,8 +21,10 @@
 #   MIN_SECONDS_2M  minimum seconds per repeat for N = 2000000 (default: 1.0)
 #   PRECISION       double | single (default: double)
 #   RETRIES         most disturbed repeats run again within one attempt (default: 3)
-#   CASE_ATTEMPTS   most attempts per case (default: 4)
-#   PAUSE           seconds to wait before another attempt (default: 20)
+#   CASE_ATTEMPTS   most attempts per case (default: 2)
+#   PAUSE           seconds to wait before another attempt (default: 10)
+#   WAIT_IDLE       before each attempt, wait up to this many seconds until the CPUs
+#                   are >= 90% idle for 2 s (default: 0, do not wait)
 set -euo pipefail
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
@@ -34,8 +37,9 @@ min_seconds="${MIN_SECONDS:-1.0}"
 min_seconds_2m="${MIN_SECONDS_2M:-1.0}"
 precision="${PRECISION:-double}"
 retries="${RETRIES:-3}"
-case_attempts="${CASE_ATTEMPTS:-4}"
-pause="${PAUSE:-20}"
+case_attempts="${CASE_ATTEMPTS:-2}"
+pause="${PAUSE:-10}"
+wait_idle="${WAIT_IDLE:-0}"
 phis=(0.1 0.5)
 sizes=(5000 32000 250000 2000000)
 
@@ -56,10 +60,33 @@ disturbed="$out/disturbed.txt"
 : > "$disturbed"
 loadavg() { cut -d' ' -f1-3 /proc/loadavg; }
 
+idle_percent() {  # share of idle CPU time over the next second, in percent
+  local a b
+  read -r -a a < <(grep '^cpu ' /proc/stat)
+  sleep 1
+  read -r -a b < <(grep '^cpu ' /proc/stat)
+  local total=0 k
+  for ((k = 1; k < ${#a[@]}; ++k)); do total=$((total + b[k] - a[k])); done
+  echo $((total > 0 ? 100 * (b[4] - a[4]) / total : 100))
+}
+
+wait_for_idle() {  # gives up after WAIT_IDLE seconds
+  local deadline=$((SECONDS + wait_idle)) quiet=0
+  while ((SECONDS < deadline)); do
+    if (($(idle_percent) >= 90)); then
+      quiet=$((quiet + 1))
+      if ((quiet >= 2)); then return 0; fi
+    else
+      quiet=0
+    fi
+  done
+}
+
 run_case() {  # run_case THREADS PHI N MIN_SECONDS
   local threads="$1" phi="$2" n="$3" seconds="$4"
   local tag="phi${phi}_n${n}_t${threads}" attempt
   for ((attempt = 1; attempt <= case_attempts; ++attempt)); do
+    if ((wait_idle > 0)); then wait_for_idle; fi
     echo "# $tag attempt $attempt: load average before: $(loadavg)" >&2
     OMP_NUM_THREADS="$threads" OMP_PROC_BIND=spread OMP_PLACES=threads \
       "$bench" --phi "$phi" --particles "$n" --repeats "$repeats" --min-seconds "$seconds" \
