@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "bin_layout.hpp"
 #include "kinetic_theory.hpp"
 #include "system_setup.hpp"
 #include "time_step_guard.hpp"
@@ -44,6 +45,7 @@ struct Scene {
   RunControl run;
   MassDefinition mass_definition = MassDefinition::mixture_mean;
   double bin_size_m = 3e-3;
+  ScatterStrategy field_scatter = ScatterStrategy::atomic;
 
   long total_steps() const;
   // The fastest relative normal impact the scene can produce: a particle at U + 4 sigma

@@ -349,6 +349,9 @@ LoadedScene parse_scene(const std::string& text, const std::vector<std::string>&
     s.mass_definition = parse_mass_definition(
         r.choice("mass_definition", {"mixture_mean", "paper_sum"}, "mixture_mean"));
     s.bin_size_m = r.positive_length("bin_size", 3 * d);
+    s.field_scatter = r.choice("field_scatter", {"atomic", "scatter_view"}, "atomic") == "atomic"
+                          ? ScatterStrategy::atomic
+                          : ScatterStrategy::scatter_view;
     r.finish();
   }
 

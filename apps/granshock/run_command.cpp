@@ -356,6 +356,7 @@ void BowShockRun::configure_sampling() {
   g.x0 = scene_.setup.box.lo[0];
   g.y0 = scene_.setup.box.lo[1];
   g.blocks = scene_.run.blocks;
+  sampling_.strategy = scene_.field_scatter;
   if (scene_.setup.obstacle) {
     const auto& c = *scene_.setup.obstacle;
     ProfileLayout& p = sampling_.profile;
