@@ -7,10 +7,7 @@
 
 #include "hdf5_helpers.hpp"
 #include "user_error.hpp"
-
-#ifndef GRANSHOCK_IO_VERSION
-#define GRANSHOCK_IO_VERSION "unknown"
-#endif
+#include "version.hpp"
 
 namespace granshock {
 
@@ -118,7 +115,7 @@ void write_checkpoint(const fs::path& path, const SolverState& state,
   h5::write_file_atomically(path, "checkpoint", [&](hid_t file) {
     h5::write_attribute(file, "granshock_file", kFileKind);
     h5::write_attribute(file, "granshock_format_version", kFormatVersion);
-    h5::write_attribute(file, "creator_version", GRANSHOCK_IO_VERSION);
+    h5::write_attribute(file, "creator_version", GRANSHOCK_VERSION_STRING);
     write_state(file, state);
     write_extras(file, extras);
   });

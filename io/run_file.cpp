@@ -10,10 +10,7 @@
 
 #include "hdf5_helpers.hpp"
 #include "user_error.hpp"
-
-#ifndef GRANSHOCK_IO_VERSION
-#define GRANSHOCK_IO_VERSION "unknown"
-#endif
+#include "version.hpp"
 
 namespace granshock {
 
@@ -268,7 +265,7 @@ void write_layout(hid_t f, const std::string& scene_toml_as_given,
   h5::write_attribute(h5md.get(), "version", std::vector<int>{1, 1});
   Handle creator = h5::require_group(f, "/h5md/creator");
   h5::write_attribute(creator.get(), "name", "granshock");
-  h5::write_attribute(creator.get(), "version", GRANSHOCK_IO_VERSION);
+  h5::write_attribute(creator.get(), "version", GRANSHOCK_VERSION_STRING);
   Handle author = h5::require_group(f, "/h5md/author");
   h5::write_attribute(author.get(), "name", "granshock");
 
