@@ -1,3 +1,4 @@
+#include "fields_paths.hpp"
 #include "figures.hpp"
 
 #include <fcntl.h>
