@@ -2,7 +2,6 @@
 // header, errors and write speed.
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -304,21 +303,24 @@ TEST(RunFile, MovesKeepTheFileOpen) {
   EXPECT_EQ(third.dim(), 2);
 }
 
-// Writing must not slow a run down: a 100k-particle snapshot well under a second.
-TEST(RunFile, SnapshotOf100kParticlesIsFast) {
+// Large frames (100k particles, several chunks of the particle dimension) are stored
+// whole. Their write speed is measured, not asserted, by `write_sample_run --bench`
+// (timings in tests fail on a busy machine).
+TEST(RunFile, SnapshotOf100kParticlesIsStoredWhole) {
   TempDir dir;
   RunFile run = RunFile::create(dir / "run.h5", "", "", 2);
   const HostParticles p = test::random_particles(100000);
-  const int frames = 5;
-  const auto start = std::chrono::steady_clock::now();
-  for (int f = 0; f < frames; ++f) run.append_snapshot(f + 1, 0.1 * f, p);
+  for (int f = 0; f < 3; ++f) run.append_snapshot(f + 1, 0.1 * f, p);
   run.flush();
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / frames;
-  std::printf("[ info ] 100k-particle 2-D snapshot: %.1f ms, file %.1f MB for %d frames\n",
-              1e3 * seconds, static_cast<double>(std::filesystem::file_size(dir / "run.h5")) / 1e6,
-              frames);
-  EXPECT_LT(seconds, 1.0);
+  const auto frames = run.frames();
+  ASSERT_EQ(frames.size(), 3u);
+  for (const auto& frame : frames) EXPECT_EQ(frame.count, 100000);
+  EXPECT_GE(run.particle_capacity(), 100000);
+  const auto positions = run.read_array("/particles/all/position/value");
+  const long cap = run.particle_capacity();
+  // The last particle of the last frame reads back exactly.
+  EXPECT_EQ(positions[(2 * cap + 99999) * 2 + 0], p.position[99999][0]);
+  EXPECT_EQ(positions[(2 * cap + 99999) * 2 + 1], p.position[99999][1]);
 }
 
 }  // namespace
