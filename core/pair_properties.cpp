@@ -1,5 +1,6 @@
 #include "pair_properties.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace granshock {
@@ -25,6 +26,7 @@ PairProperties particle_pair(const Species& a, const Species& b, double e, doubl
   p.shear_star = 1.0 / (inv_shear(a.material) + inv_shear(b.material));
   p.radius_star = 1.0 / (1.0 / a.radius_m() + 1.0 / b.radius_m());
   p.mass_star = 1.0 / (1.0 / a.mass_kg() + 1.0 / b.mass_kg());
+  p.min_diameter = std::min(a.diameter_m, b.diameter_m);
   p.beta = damping_beta(e);
   p.restitution = e;
   p.friction = mu;
@@ -38,6 +40,7 @@ PairProperties particle_wall(const Species& s, const Material& wall, double e, d
   p.shear_star = 1.0 / (inv_shear(s.material) + inv_shear(wall));
   p.radius_star = s.radius_m();
   p.mass_star = s.mass_kg();
+  p.min_diameter = s.diameter_m;
   p.beta = damping_beta(e);
   p.restitution = e;
   p.friction = mu;

@@ -21,6 +21,7 @@ struct PairProperties {
   double beta = 0;
   double restitution = 0;
   double friction = 0;
+  double min_diameter = 0;  // the smaller particle diameter of the pair, m
 };
 
 double damping_beta(double restitution);

@@ -1,5 +1,6 @@
 #include "scene.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace granshock {
@@ -33,12 +34,17 @@ double Scene::mean_restitution() const {
   return e;
 }
 
-std::size_t Scene::capacity_estimate() const {
+double Scene::expected_particles() const {
   double disk = 0;
   for (std::size_t a = 0; a < setup.species.size(); ++a)
     disk += inflow.number_fraction[a] * M_PI * std::pow(setup.species[a].diameter_m, 2) / 4;
   const double area = setup.box.length(0) * setup.box.length(1);
-  return std::size_t(1.5 * inflow.area_fraction * area / disk) + 1024;
+  return 1.5 * inflow.area_fraction * area / disk + 1024;
+}
+
+std::size_t Scene::capacity_estimate() const {
+  // Bounded so that the conversion is defined; run_checks.cpp refuses scenes near it.
+  return std::size_t(std::min(expected_particles(), 1e15));
 }
 
 void resolve_inflow(Scene& s) {

@@ -14,6 +14,13 @@
 
 namespace granshock {
 
+// The largest upstream area fraction the inflow can insert (docs/scene_format.md, "The
+// inflow"): the batched random insertion into the strip saturates near 0.42 (measured with
+// the paper's mixture), below the jamming limit 0.547 of random sequential adsorption of
+// discs (Hinrichsen, Feder & Jossang, J. Stat. Phys. 44, 793, 1986) that bounds any such
+// method. Requests up to this value are met within a few percent (tests/scene).
+inline constexpr double kMaxInflowAreaFraction = 0.4;
+
 struct InflowSpec {
   double area_fraction = 0.1;           // phi_inf, upstream
   double speed_m_per_s = 1.0;           // U, along +y
@@ -55,6 +62,7 @@ struct Scene {
   // Particles expected in the domain: phi_inf over the area, plus a margin for the
   // dense region in front of the obstacle; the solver's initial capacity.
   std::size_t capacity_estimate() const;
+  double expected_particles() const;  // the same estimate, unrounded and unbounded
   // Mean particle mass and the restitution used in the sound speed.
   double mean_mass() const;
   double mean_restitution() const;

@@ -13,10 +13,42 @@ double hertz_collision_time(const PairProperties& p, double v) {
                   0.2);
 }
 
+double hertz_peak_overlap(const PairProperties& p, double v) {
+  return std::pow(15.0 * p.mass_star * v * v / (16.0 * p.youngs_star * std::sqrt(p.radius_star)),
+                  0.4);
+}
+
+OverlapAssessment assess_overlap(const std::vector<PairProperties>& pairs, double impact_speed) {
+  OverlapAssessment a;
+  for (const auto& p : pairs) {
+    const double ratio = hertz_peak_overlap(p, impact_speed) / p.min_diameter;
+    if (ratio > a.overlap_over_d || a.pair.empty()) {
+      a.overlap_over_d = ratio;
+      a.pair = p.name;
+    }
+  }
+  const std::string what = fmt::format(
+      "the {} contact overlaps by {:.3g} of a diameter at impact speed {:.3g} m/s (Hertz peak "
+      "overlap)",
+      a.pair, a.overlap_over_d, impact_speed);
+  if (a.overlap_over_d > kOverlapRefuse) {
+    a.verdict = TimeStepAssessment::Verdict::refuse;
+    a.message = what + fmt::format(
+                           ": past {} of a diameter the contact law has no meaning and particles "
+                           "pass through each other; use stiffer materials or slower impacts, "
+                           "or --force to run anyway",
+                           kOverlapRefuse);
+  } else if (a.overlap_over_d > kOverlapWarn) {
+    a.verdict = TimeStepAssessment::Verdict::warn;
+    a.message =
+        what + fmt::format(": past {} of a diameter the Hertz law loses accuracy", kOverlapWarn);
+  }
+  return a;
+}
+
 double stable_time_step(const PairProperties& p, double v, bool friction) {
   const double sqrt_r = std::sqrt(p.radius_star);
-  const double delta_max =
-      std::pow(15.0 * p.mass_star * v * v / (16.0 * p.youngs_star * sqrt_r), 0.4);
+  const double delta_max = hertz_peak_overlap(p, v);
   const double zeta = -std::sqrt(5.0 / 6.0) * p.beta;
   const double margin = 2.0 * (std::sqrt(1.0 + zeta * zeta) - zeta);
   const double kn = 2.0 * p.youngs_star * sqrt_r * std::sqrt(delta_max);

@@ -34,6 +34,24 @@ struct TimeStepAssessment {
   std::string message;  // empty when ok
 };
 
+// Peak overlap of an elastic Hertz impact at relative normal speed v:
+// delta_max = (15 m* v^2 / (16 Y* sqrt(R*)))^(2/5) (Johnson, Contact Mechanics, 1985,
+// eq. 11.23). The Hertz law assumes overlaps small against the radii.
+double hertz_peak_overlap(const PairProperties& p, double impact_speed);
+
+// Whether the contact law stays in its range at the fastest impact: a warning past
+// kOverlapWarn of the pair's smaller diameter, a refusal past kOverlapRefuse, where the
+// particles would nearly pass through each other (docs/contact_model.md).
+struct OverlapAssessment {
+  TimeStepAssessment::Verdict verdict = TimeStepAssessment::Verdict::ok;
+  std::string pair;           // the pair with the largest relative overlap
+  double overlap_over_d = 0;  // its peak overlap / smaller diameter
+  std::string message;        // empty when ok
+};
+inline constexpr double kOverlapWarn = 0.05;
+inline constexpr double kOverlapRefuse = 0.2;
+OverlapAssessment assess_overlap(const std::vector<PairProperties>& pairs, double impact_speed);
+
 // Compares dt with every pair the scene can form at the fastest impact speed it can
 // produce: warn past t_c/10, refuse past the stability limit.
 TimeStepAssessment assess_time_step(const std::vector<PairProperties>& pairs, double impact_speed,

@@ -18,10 +18,17 @@ struct LoadedScene {
   std::string resolved;  // every key with its value in SI units, after overrides and defaults
 };
 
+// The longest scene file load_scene_file reads (1 MiB).
+inline constexpr std::size_t kMaxSceneFileBytes = std::size_t(1) << 20;
+
 LoadedScene load_scene_file(const std::filesystem::path& path,
                             const std::vector<std::string>& overrides);
 LoadedScene parse_scene(const std::string& text, const std::vector<std::string>& overrides = {},
                         const std::string& origin = "scene");
+
+// The dotted keys whose values differ between two scene TOML texts (a key present in one
+// only counts), in sorted order; for naming what changed between a run and its resume.
+std::vector<std::string> differing_keys(const std::string& toml_a, const std::string& toml_b);
 
 // The canonical TOML of a scene (SI units); parse_scene of it gives the same scene.
 std::string scene_to_toml(const Scene& scene);

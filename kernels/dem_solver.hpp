@@ -154,6 +154,10 @@ class DemSolver final : public Solver {
   int next_id() const override { return next_id_; }
 
   int insert(const InsertionRequest& request) override;
+  // One round of insert(); public because it launches KOKKOS_LAMBDAs (nvcc).
+  int insert_round(const InsertionRequest& request, int placed, int wanted, int candidates,
+                   long first_candidate);
+  static constexpr int kInsertionRounds = 16;
   std::vector<SpeciesMoments> species_moments() const override;
   SolverState export_state() const override;
   void import_state(const SolverState& state) override;

@@ -5,24 +5,51 @@
 
 namespace granshock {
 
-// Inserts particles in a rectangle without overlaps, entirely on the device:
-//  1. draw 2N + 32 candidate positions from the counter RNG;
-//  2. reject a candidate that overlaps a particle already near the region, or any
-//     candidate with a smaller index (conservative, order-independent, so the choice is
-//     the same on every backend);
-//  3. keep the first N survivors, in candidate order, with consecutive ids.
+// Inserts particles in a rectangle without overlaps, entirely on the device, in rounds
+// (docs/scene_format.md, "The inflow"). One round:
+//  1. draw 2R + 32 candidate positions from the counter RNG (R still wanted);
+//  2. reject a candidate that overlaps a particle already near the region (including
+//     those placed by earlier rounds), or any candidate of this round with a smaller
+//     index (conservative, order-independent, so the choice is the same on every
+//     backend);
+//  3. keep the first survivors, in candidate order, with consecutive ids.
+// One round alone is a Matern type-II hard-core process, which cannot exceed an area
+// fraction of 1/4 for equal discs; further rounds fill the gaps it leaves, towards the
+// random-sequential-adsorption limit. Rounds stop when the request is met, when a round
+// places nothing, or after kInsertionRounds. The first round is all a dilute inflow
+// needs, so later rounds change nothing there.
 // Candidates use the largest diameter of the scene, so no species can overlap; none is
 // placed within one diameter of the obstacle.
 template <class Traits, class ExecSpace>
 int DemSolver<Traits, ExecSpace>::insert(const InsertionRequest& rq) {
   if (rq.count <= 0) return 0;
-  const int n_species = int(setup_.species.size());
-  if (int(rq.number_fraction.size()) != n_species)
+  if (int(rq.number_fraction.size()) != int(setup_.species.size()))
     throw std::invalid_argument("insert: one number fraction per species is required");
   if (p_.n + rq.count > p_.capacity()) grow(p_.n + rq.count + p_.capacity() / 4);
+  const int n_before = p_.n;
+  long first_candidate = 0;
+  for (int round = 0; round < kInsertionRounds && p_.n - n_before < rq.count; ++round) {
+    const int wanted = rq.count - (p_.n - n_before);
+    const int m = 2 * wanted + 32;
+    const int placed = insert_round(rq, p_.n - n_before, wanted, m, first_candidate);
+    first_candidate += m;
+    p_.n += placed;
+    if (placed == 0) break;
+  }
+  const int take = p_.n - n_before;
+  next_id_ += take;
+  if (rq.rebuild_lists) rebuild_lists();
+  return take;
+}
 
+// One round of insert(): places up to `wanted` particles after the `placed` ones of
+// earlier rounds, drawing candidates first_candidate .. first_candidate + m - 1 of the
+// event's stream. Returns how many it placed at [p_.n, p_.n + placed).
+template <class Traits, class ExecSpace>
+int DemSolver<Traits, ExecSpace>::insert_round(const InsertionRequest& rq, int placed, int wanted,
+                                               int m, long first_candidate) {
+  const int n_species = int(setup_.species.size());
   const int n = p_.n;
-  const int m = 2 * rq.count + 32;
   const Real dmax = Real(setup_.max_diameter());
   const Real x0 = Real(rq.x_range[0]), y0 = Real(rq.y_range[0]);
   const Real wx = Real(rq.x_range[1] - rq.x_range[0]), wy = Real(rq.y_range[1] - rq.y_range[0]);
@@ -46,8 +73,9 @@ int DemSolver<Traits, ExecSpace>::insert(const InsertionRequest& rq) {
   Kokkos::View<Real* [2], Mem> cand("insert_candidates", m);
   Kokkos::parallel_for(
       "insert::draw", Policy(0, m), KOKKOS_LAMBDA(const int k) {
-        cand(k, 0) = x0 + Real(rng.uniform(pos_stream, 2 * k)) * wx;
-        cand(k, 1) = y0 + Real(rng.uniform(pos_stream, 2 * k + 1)) * wy;
+        const std::uint64_t c = std::uint64_t(first_candidate + k);
+        cand(k, 0) = x0 + Real(rng.uniform(pos_stream, 2 * c)) * wx;
+        cand(k, 1) = y0 + Real(rng.uniform(pos_stream, 2 * c + 1)) * wy;
       });
   const auto cyl = cylinder_;
   Kokkos::View<int*, Mem> rank("insert_rank", m);
@@ -83,7 +111,7 @@ int DemSolver<Traits, ExecSpace>::insert(const InsertionRequest& rq) {
         running += ok ? 1 : 0;
       },
       accepted);
-  const int take = accepted < rq.count ? accepted : rq.count;
+  const int take = accepted < wanted ? accepted : wanted;
 
   Kokkos::View<double*, Mem> cumulative("insert_cumulative", n_species);
   {
@@ -95,8 +123,8 @@ int DemSolver<Traits, ExecSpace>::insert(const InsertionRequest& rq) {
   const std::uint64_t vel_stream = InsertionStreams::velocity(rq.event);
   const Real ux = Real(rq.mean_velocity[0]), uy = Real(rq.mean_velocity[1]);
   const double sigma = rq.sigma_m_per_s;
-  const long first = rq.inserted_before;
-  const int first_id = next_id_;
+  const long first = rq.inserted_before + placed;
+  const int first_id = next_id_ + placed;
   const auto v = p_.v, f = p_.f, xref = x_ref_;
   const auto species = p_.species, id = p_.id;
   const auto omega = p_.omega, torque = p_.torque;
@@ -107,12 +135,13 @@ int DemSolver<Traits, ExecSpace>::insert(const InsertionRequest& rq) {
         const int r = rank(k);
         if (r < 0 || r >= take) return;
         const int i = n + r;
+        const std::uint64_t q = std::uint64_t(placed + r);  // rank within the whole event
         for (int d = 0; d < Dim; ++d) {
           x(i, d) = d < 2 ? cand(k, d) : Real(0);
           f(i, d) = 0;
         }
-        v(i, 0) = ux + Real(sigma * rng.normal(vel_stream, 2 * r));
-        v(i, 1) = uy + Real(sigma * rng.normal(vel_stream, 2 * r + 1));
+        v(i, 0) = ux + Real(sigma * rng.normal(vel_stream, 2 * q));
+        v(i, 1) = uy + Real(sigma * rng.normal(vel_stream, 2 * q + 1));
         for (int d = 2; d < Dim; ++d) v(i, d) = 0;
         for (int d = 0; d < Dim; ++d) xref(i, d) = x(i, d);
         species(i) = species_for(cumulative, first + r);
@@ -125,9 +154,6 @@ int DemSolver<Traits, ExecSpace>::insert(const InsertionRequest& rq) {
           for (int d = 0; d < Dim; ++d) history.wall_spring(i, d) = 0;
         }
       });
-  p_.n = n + take;
-  next_id_ += take;
-  if (rq.rebuild_lists) rebuild_lists();
   return take;
 }
 

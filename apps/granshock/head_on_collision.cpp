@@ -61,6 +61,13 @@ double separation_speed(const Geometry& g, const HostParticles& p) {
   return p.velocity[1][0] - p.velocity[0][0];
 }
 
+// Whether the bodies have swapped sides: a particle beyond the cylinder's axis, or the
+// two particles in the wrong order along x.
+bool passed_through(const Geometry& g, const HostParticles& p) {
+  if (g.wall) return p.position[0][0] > 0;
+  return p.position[1][0] < p.position[0][0];
+}
+
 int paper_species(const std::string& name) {
   return name == "steel" ? 0 : 1;
 }
@@ -88,6 +95,15 @@ CollisionResult collide_species(const SystemSetup& scene, int a, int b, double s
   r.time_step = assess_time_step({props}, speed, r.dt, scene.contacts.has_friction());
   if (r.time_step.verdict == TimeStepAssessment::Verdict::refuse && !force)
     throw UserError(r.time_step.message);
+  r.overlap = assess_overlap({props}, speed);
+  if (r.overlap.verdict == TimeStepAssessment::Verdict::refuse && !force)
+    throw UserError(r.overlap.message);
+  if (20.0 * r.t_c / r.dt > kMaxCollisionSteps)
+    throw UserError(fmt::format(
+        "time step dt = {:.3g} s would take {:.3g} steps to integrate the {} collision (t_c = "
+        "{:.3g} s); collide integrates at most {:.0e}: use dt >= {:.3g} s",
+        r.dt, 20.0 * r.t_c / r.dt, r.pair, r.t_c, kMaxCollisionSteps,
+        20.0 * r.t_c / kMaxCollisionSteps));
   Geometry g = build(scene, a, b, r.dt);
 
   // Start a few steps before contact, in the zero-momentum frame for two particles.
@@ -124,6 +140,11 @@ CollisionResult collide_species(const SystemSetup& scene, int a, int b, double s
   if (t_start < 0 || t_end < 0)
     throw UserError(fmt::format("the {} collision did not complete within {} steps (dt = {:g} s)",
                                 r.pair, max_steps, r.dt));
+  if (passed_through(g, p))
+    throw UserError(fmt::format(
+        "the {} collision at {:g} m/s is past the contact law's range: the bodies passed "
+        "through each other (peak overlap {:.3g} of a diameter)",
+        r.pair, speed, r.max_overlap / (2 * g.radius_a)));
   r.t_contact = t_end - t_start;
   r.e_eff = separation_speed(g, p) / -v_before;
   return r;
@@ -136,8 +157,8 @@ CollisionResult run_head_on_collision(const CollisionOptions& o) {
     throw UserError(fmt::format("--speed {} must be a positive speed in m/s", o.speed_m_per_s));
   if (!(o.restitution > 0 && o.restitution <= 1))
     throw UserError(fmt::format("--e {} must be in (0, 1]", o.restitution));
-  if (o.dt < 0 || !std::isfinite(o.dt))
-    throw UserError(fmt::format("--dt {} must be a positive time step in s", o.dt));
+  if (o.dt && !(*o.dt > 0 && std::isfinite(*o.dt)))
+    throw UserError(fmt::format("--dt {} must be a positive time step in s", *o.dt));
 
   // The paper's materials, d = 1 mm, and an aluminium cylinder.
   SystemSetup paper;
@@ -150,7 +171,7 @@ CollisionResult run_head_on_collision(const CollisionOptions& o) {
   const std::string second = o.pair.substr(dash + 1);
   CollisionResult r = collide_species(paper, paper_species(o.pair.substr(0, dash)),
                                       second == "wall" ? -1 : paper_species(second),
-                                      o.speed_m_per_s, o.dt, o.force);
+                                      o.speed_m_per_s, o.dt.value_or(0.0), o.force);
   r.pair = o.pair;
   return r;
 }
@@ -173,6 +194,8 @@ std::string to_json(const CollisionResult& r) {
   j["dt_stable"] = r.time_step.dt_stable;
   j["variant"] = r.variant;
   if (!r.time_step.message.empty()) j["time_step_warning"] = r.time_step.message;
+  j["predicted_overlap_over_d"] = r.overlap.overlap_over_d;
+  if (!r.overlap.message.empty()) j["overlap_warning"] = r.overlap.message;
   return j.dump(2);
 }
 

@@ -4,6 +4,7 @@
 // restitution, the contact duration and the peak overlap.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,12 +16,14 @@ namespace granshock {
 struct CollisionOptions {
   std::string pair = "steel-steel";  // a-b for two particles, a-wall for the cylinder
   double speed_m_per_s = 1.0;        // relative normal approach speed
-  double dt = 0;                     // 0: t_c / 100
+  std::optional<double> dt;          // none: t_c / 100
   double restitution = 0.5;
   bool limit_force = false;
   Precision precision = Precision::dual;
   bool force = false;  // run even past the stable time step
 };
+
+inline constexpr double kMaxCollisionSteps = 1e7;
 
 struct CollisionResult {
   std::string pair;
@@ -35,11 +38,14 @@ struct CollisionResult {
   bool limit_force = false;
   std::string variant;
   TimeStepAssessment time_step;
+  OverlapAssessment overlap;  // the Hertz peak overlap predicted at this speed
 };
 
 std::vector<std::string> collision_pair_names();
-// Throws UserError for an unknown pair, a non-positive speed or dt, e outside (0, 1],
-// or a time step past the stable limit without `force`.
+// Throws UserError for an unknown pair, a non-positive speed or dt, e outside (0, 1], a
+// time step past the stable limit or an impact past the contact law's range (peak overlap
+// beyond kOverlapRefuse of a diameter) without `force`, a dt that needs more than
+// kMaxCollisionSteps steps, or particles that passed through each other.
 CollisionResult run_head_on_collision(const CollisionOptions& options);
 // The same experiment for species a against species b of any setup, or against its
 // obstacle (b = -1), with that setup's contact parameters; dt = 0 picks t_c/100.

@@ -18,6 +18,25 @@ InflowController::InflowController(const Scene& scene) : scene_(scene) {
   per_batch_ = in.area_fraction * scene.setup.box.length(0) * swept / mean_disk_area;
 }
 
+void InflowController::count_prefill() {
+  prefill_requested_ = 0;
+  prefill_events_ = 0;
+  for (const Slab& slab : prefill_slabs()) {
+    prefill_requested_ += slab.expected;
+    ++prefill_events_;
+  }
+}
+
+double InflowController::requested() const {
+  const std::uint64_t batches = events_ > prefill_events_ ? events_ - prefill_events_ : 0;
+  return prefill_requested_ + double(batches) * per_batch_;
+}
+
+bool InflowController::falls_short() const {
+  const double missing = shortfall();
+  return missing > 2.0 && missing > kShortfallWarning * requested();
+}
+
 int InflowController::insert_batch(Solver& solver, double y_lo, double y_hi, double expected,
                                    bool rebuild_lists) {
   const double wanted = expected + carry_;
@@ -34,7 +53,7 @@ int InflowController::insert_batch(Solver& solver, double y_lo, double y_hi, dou
   rq.rebuild_lists = rebuild_lists;
   const int placed = solver.insert(rq);
   inserted_ += placed;
-  carry_ = wanted - placed;
+  carry_ = std::min(wanted - placed, per_batch_);
   return placed;
 }
 
@@ -52,15 +71,25 @@ double InflowController::free_area(double y_lo, double y_hi) const {
   return area - (G(y_hi - yc) - G(y_lo - yc));
 }
 
-void InflowController::prefill(Solver& solver) {
+std::vector<InflowController::Slab> InflowController::prefill_slabs() const {
   const double strip = scene_.inflow.strip_m;
   const double length = scene_.setup.box.length(1);
   const double per_area = per_batch_ / (period_steps_ * scene_.setup.dt *
                                         scene_.inflow.speed_m_per_s * scene_.setup.box.length(0));
+  std::vector<Slab> slabs;
   for (double y = strip; y < length; y += strip) {
     const double top = std::min(y + strip, length);
+    slabs.push_back({y, top, per_area * free_area(y, top)});
+  }
+  return slabs;
+}
+
+void InflowController::prefill(Solver& solver) {
+  count_prefill();
+  const std::vector<Slab> slabs = prefill_slabs();
+  for (std::size_t k = 0; k < slabs.size(); ++k) {
     // Lists are rebuilt once, after the last slab: insertion itself needs only positions.
-    insert_batch(solver, y, top, per_area * free_area(y, top), top >= length);
+    insert_batch(solver, slabs[k].y_lo, slabs[k].y_hi, slabs[k].expected, k + 1 == slabs.size());
   }
   carry_ = 0;
 }
@@ -71,6 +100,7 @@ void InflowController::insert_if_due(Solver& solver, long step) {
 }
 
 void InflowController::restore(std::uint64_t events, long inserted, double carry) {
+  count_prefill();
   events_ = events;
   inserted_ = inserted;
   carry_ = carry;

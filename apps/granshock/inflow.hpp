@@ -5,10 +5,14 @@
 // strip: the batch before has moved one strip length downstream by then, so the batches
 // tile the flow and the density downstream of the strip is n_inf (the strip itself holds
 // the batch that is just entering). The fractional remainder, and any particle that
-// found no room, is carried to the next batch, so the mean rate is exact.
+// found no room, is carried to the next batch, so the mean rate is exact while there is
+// room. The carry is capped at one batch: a strip that stays full (a shock reaching the
+// inlet) must not make every later request larger without end. What could not be placed
+// is counted (requested, inserted, backlog, lost) and reported by the run.
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "scene.hpp"
 #include "solver.hpp"
@@ -28,6 +32,15 @@ class InflowController {
   // Inserts a batch when `step` is an insertion step.
   void insert_if_due(Solver& solver, long step);
 
+  // Particles the prefill and every inflow batch so far asked for (a pure function of
+  // the scene and events(), so resumed runs need not store it), and the shortfall.
+  double requested() const;
+  double shortfall() const { return requested() - double(inserted_); }  // backlog + lost
+  double backlog() const { return carry_; }
+  // True once the inflow falls more than kShortfallWarning short of what it requested.
+  bool falls_short() const;
+  static constexpr double kShortfallWarning = 0.03;
+
   // State carried by checkpoints.
   std::uint64_t events() const { return events_; }
   long inserted() const { return inserted_; }
@@ -41,9 +54,17 @@ class InflowController {
   // minus the disk around the obstacle that insertion keeps clear.
   double free_area(double y_lo, double y_hi) const;
 
+  struct Slab {
+    double y_lo, y_hi, expected;
+  };
+  std::vector<Slab> prefill_slabs() const;
+  void count_prefill();  // by prefill() and restore(), once the scene passed its checks
+
   const Scene& scene_;
   long period_steps_ = 1;
-  double per_batch_ = 0;      // expected particles per batch
+  double per_batch_ = 0;  // expected particles per batch
+  double prefill_requested_ = 0;
+  std::uint64_t prefill_events_ = 0;
   std::uint64_t events_ = 0;  // batches drawn so far: the RNG stream of the next one
   long inserted_ = 0;
   double carry_ = 0;

@@ -1,18 +1,30 @@
 // granshock: the command-line program (DESIGN.md section 3).
 #include <CLI/CLI.hpp>
 #include <Kokkos_Core.hpp>
+#include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <map>
+#include <optional>
 
 #include "build_info.hpp"
 #include "fields_command.hpp"
+#include "hdf5_runtime.hpp"
 #include "head_on_collision.hpp"
 #include "kokkos_runtime.hpp"
 #include "run_command.hpp"
 #include "user_error.hpp"
 
 namespace {
+
+// Messages are printed on one line, however they were built.
+std::string one_line(std::string text) {
+  for (char& c : text)
+    if (c == '\n' || c == '\r') c = ' ';
+  while (!text.empty() && text.back() == ' ') text.pop_back();
+  return text;
+}
 
 void add_collide_command(CLI::App& app, granshock::CollisionOptions& o, std::string& precision) {
   auto* cmd = app.add_subcommand("collide",
@@ -34,8 +46,11 @@ void add_collide_command(CLI::App& app, granshock::CollisionOptions& o, std::str
 
 void add_run_command(CLI::App& app, granshock::RunOptions& o) {
   auto* cmd = app.add_subcommand("run", "simulate a bow-shock scene and write its run directory");
-  cmd->add_option("scene", o.scene_file, "scene file (TOML)")->required()->check(CLI::ExistingFile);
-  cmd->add_option("--out", o.out_dir, "run directory (default: runs/<scene name>)");
+  cmd->add_option("scene", o.scene_file, "scene file (TOML)")->required();
+  cmd->add_option("--out", o.out_dir, "run directory (default: runs/<scene name>)")
+      ->check([](const std::string& dir) {
+        return dir.empty() ? std::string("the directory name is empty") : std::string();
+      });
   cmd->add_option("--set", o.overrides,
                   "override a scene key, e.g. --set inflow.mach=13.7 (repeatable)");
   cmd->add_flag("--overwrite", o.overwrite, "replace an existing run directory");
@@ -43,8 +58,15 @@ void add_run_command(CLI::App& app, granshock::RunOptions& o) {
   cmd->add_flag("--force", o.force, "run even when dt is past the stable limit");
   cmd->add_option("--stop-after-steps", o.stop_after_steps,
                   "write a checkpoint and stop after this many steps (for batch-job time limits)")
-      ->check(CLI::PositiveNumber);
+      ->check([](const std::string& steps) {
+        return std::strtol(steps.c_str(), nullptr, 10) >= 1
+                   ? std::string()
+                   : std::string("must be a positive number of steps");
+      });
   cmd->add_flag("--quiet", o.quiet, "no progress lines");
+  cmd->add_flag("--dry-run", o.dry_run,
+                "check the scene and the output directory, print the resolved scene, write "
+                "nothing");
 }
 
 void add_fields_command(CLI::App& app, std::vector<std::filesystem::path>& dirs,
@@ -72,12 +94,29 @@ int main(int argc, char** argv) {
   add_fields_command(app, field_dirs, field_out);
   auto* info = app.add_subcommand("info", "version, Kokkos backends and threads, build options");
 
+  // Writes past a file-size limit fail with EFBIG, reported like a full disk, instead of
+  // killing the process (SIGXFSZ).
+  std::signal(SIGXFSZ, SIG_IGN);
+  granshock::h5::keep_exit_free_of_hdf5();
   // Kokkos takes its own --kokkos-* arguments; CLI11 sees the rest.
-  granshock::KokkosRuntime kokkos(argc, argv);
+  std::optional<granshock::KokkosRuntime> kokkos;
+  try {
+    kokkos.emplace(argc, argv);
+  } catch (const std::exception& e) {
+    std::cerr << "granshock: error: cannot start Kokkos on this machine: " << one_line(e.what())
+              << "\n";
+    return 5;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help
+    // One line and exit code 2, like every other user error (README).
+    std::cerr << "granshock: error: " << one_line(e.what()) << " (see granshock "
+              << (app.get_subcommands().empty() ? std::string("")
+                                                : app.get_subcommands()[0]->get_name() + " ")
+              << "--help)\n";
+    return 2;
   }
   try {
     if (app.got_subcommand("run")) {
@@ -94,13 +133,19 @@ int main(int argc, char** argv) {
       const auto result = granshock::run_head_on_collision(collide);
       if (result.time_step.verdict != granshock::TimeStepAssessment::Verdict::ok)
         std::cerr << "granshock: warning: " << result.time_step.message << "\n";
+      if (result.overlap.verdict != granshock::TimeStepAssessment::Verdict::ok)
+        std::cerr << "granshock: warning: " << result.overlap.message << "\n";
       std::cout << granshock::to_json(result) << "\n";
     }
   } catch (const granshock::NumericalFailure& e) {
     std::cerr << "granshock: error: " << e.what() << "\n";
     return 4;
   } catch (const granshock::UserError& e) {
-    std::cerr << "granshock: error: " << e.what() << "\n";
+    std::cerr << "granshock: error: " << one_line(e.what()) << "\n";
+    return 2;
+  } catch (const std::bad_alloc& e) {
+    std::cerr << "granshock: error: not enough memory (" << one_line(e.what())
+              << "); make the scene smaller\n";
     return 2;
   } catch (const std::exception& e) {
     std::cerr << "granshock: internal error: " << e.what() << "\n";

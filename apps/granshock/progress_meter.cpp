@@ -26,7 +26,7 @@ long ProgressMeter::steps_per(double seconds, long fallback) const {
 }
 
 void ProgressMeter::report(long step, double time_s, long particles, long contacts,
-                           double particle_steps) {
+                           double particle_steps, const std::string& note) {
   const auto now = Clock::now();
   const double elapsed = std::chrono::duration<double>(now - start_).count();
   const double since = std::chrono::duration<double>(now - last_).count();
@@ -38,10 +38,10 @@ void ProgressMeter::report(long step, double time_s, long particles, long contac
   const int eta_s = int(std::lround(eta));
   std::fprintf(out_,
                "step %ld/%ld (%.1f%%)  t = %.4f s  particles %ld  contacts %ld  "
-               "%.3g particle-steps/s  ETA %d:%02d:%02d\n",
+               "%.3g particle-steps/s  ETA %d:%02d:%02d%s%s\n",
                step, total_steps_, 100.0 * step / std::max(1L, total_steps_), time_s, particles,
                contacts, elapsed > 0 ? particle_steps / elapsed : 0.0, eta_s / 3600,
-               eta_s / 60 % 60, eta_s % 60);
+               eta_s / 60 % 60, eta_s % 60, note.empty() ? "" : "  ", note.c_str());
   std::fflush(out_);
 }
 

@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <string>
 
 namespace granshock {
 
@@ -14,7 +15,9 @@ class ProgressMeter {
 
   bool due() const;
   // particle_steps: done since the meter started (for the rate).
-  void report(long step, double time_s, long particles, long contacts, double particle_steps);
+  // note: appended to the line when not empty (e.g. an inflow that falls short).
+  void report(long step, double time_s, long particles, long contacts, double particle_steps,
+              const std::string& note = {});
   double elapsed_s() const;
   // Steps that fit in about `seconds` of wall time at the rate seen so far.
   long steps_per(double seconds, long fallback) const;

@@ -16,6 +16,7 @@
 #include "head_on_collision.hpp"
 #include "inflow.hpp"
 #include "progress_meter.hpp"
+#include "run_checks.hpp"
 #include "run_directory.hpp"
 #include "run_file.hpp"
 #include "scene_file.hpp"
@@ -68,8 +69,14 @@ struct Schedule {
   long next_after(long step) const { return (step / every + 1) * every; }
 };
 
-Schedule every_seconds(double interval, double dt) {
-  return {std::max(1L, long(std::llround(interval / dt)))};
+// Intervals longer than the run act once, at its end: clamping them to the duration keeps
+// the step count in range (run_checks.hpp bounds duration / dt).
+Schedule every_seconds(double interval, double duration, double dt) {
+  return {std::max(1L, long(std::llround(std::min(interval, duration) / dt)))};
+}
+
+fs::path run_directory_of(const RunOptions& o, const Scene& scene) {
+  return o.out_dir.empty() ? fs::path("runs") / scene.name : o.out_dir;
 }
 
 class BowShockRun {
@@ -78,6 +85,7 @@ class BowShockRun {
       : options_(o), loaded_(std::move(loaded)), scene_(loaded_.scene), inflow_(scene_) {}
 
   int execute();
+  int advance_to_end();
 
  private:
   void start_fresh();
@@ -92,6 +100,9 @@ class BowShockRun {
   long next_sample_after(long step) const;
   void write_field_sums();
   void check_health(long step, const Diagnostics& d) const;
+  void warn_if_inflow_falls_short();
+  std::string inflow_note() const;
+  nlohmann::json inflow_summary() const;
   nlohmann::json restitution_at_dt() const;
 
   const RunOptions& options_;
@@ -110,31 +121,33 @@ class BowShockRun {
   std::vector<long> samples_;  // field samples per block
   long last_checkpoint_step_ = -1;
   std::optional<ProgressMeter> meter_;
+  std::optional<RunDirectory> run_directory_;
+  bool warned_inflow_ = false;
 };
 
 int BowShockRun::execute() {
-  dir_ = options_.out_dir.empty() ? fs::path("runs") / scene_.name : options_.out_dir;
-  const TimeStepAssessment guard = scene_.assess_time_step();
-  if (guard.verdict == TimeStepAssessment::Verdict::refuse && !options_.force)
-    throw UserError(guard.message);
+  dir_ = run_directory_of(options_, scene_);
+  const std::vector<std::string> warnings = check_scene_before_run(scene_, options_.force);
   const DirectoryMode mode = options_.resume      ? DirectoryMode::resume
                              : options_.overwrite ? DirectoryMode::overwrite
                                                   : DirectoryMode::create;
-  check_run_directory(dir_, mode);
-  if (guard.verdict != TimeStepAssessment::Verdict::ok)
-    std::cerr << "granshock: warning: " << guard.message << "\n";
+  RunDirectory::check(dir_, mode);
+  for (const std::string& w : warnings) std::cerr << "granshock: warning: " << w << "\n";
 
   total_steps_ = scene_.total_steps();
-  series_ = every_seconds(scene_.run.series_interval_s, scene_.setup.dt);
-  snapshots_ = every_seconds(scene_.run.snapshot_interval_s, scene_.setup.dt);
-  checkpoints_ = every_seconds(scene_.run.checkpoint_interval_s, scene_.setup.dt);
+  series_ = every_seconds(scene_.run.series_interval_s, scene_.run.duration_s, scene_.setup.dt);
+  snapshots_ =
+      every_seconds(scene_.run.snapshot_interval_s, scene_.run.duration_s, scene_.setup.dt);
+  checkpoints_ =
+      every_seconds(scene_.run.checkpoint_interval_s, scene_.run.duration_s, scene_.setup.dt);
   solver_ = make_solver(scene_.setup, scene_.capacity_estimate());
   configure_sampling();
 
+  // Every check is done: from here on the run owns the directory (and holds its lock).
+  run_directory_.emplace(RunDirectory::claim(dir_, mode));
   if (options_.resume) {
     resume();
   } else {
-    prepare_run_directory(dir_, mode);
     start_fresh();
   }
   first_step_ = solver_->steps_done();
@@ -142,6 +155,22 @@ int BowShockRun::execute() {
 
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
+  try {
+    return advance_to_end();
+  } catch (const UserError& e) {
+    // In the loop these are failed writes (a full disk): say what survives.
+    throw UserError(fmt::format(
+        "{}; {}", e.what(),
+        last_checkpoint_step_ >= 0
+            ? fmt::format("checkpoint.h5 (step {}) is intact: make room and continue with "
+                          "--resume",
+                          last_checkpoint_step_)
+            : std::string("no checkpoint had been written yet")));
+  }
+}
+
+// The time loop from the current step to the end, a signal or --stop-after-steps.
+int BowShockRun::advance_to_end() {
   long step = first_step_;
   while (step < total_steps_) {
     // Advance to the next event (insertion, output) or a slice of about 0.25 s of wall
@@ -157,9 +186,10 @@ int BowShockRun::execute() {
     solver_->advance(next - step);
     step = next;
     actions_at(step);
+    warn_if_inflow_falls_short();
     if (meter_->due() && !options_.quiet)
       meter_->report(step, step * scene_.setup.dt, long(solver_->size()),
-                     solver_->diagnostics().contacts, particle_steps_);
+                     solver_->diagnostics().contacts, particle_steps_, inflow_note());
     if (g_signal != 0) {
       write_checkpoint_now();
       finish(false);
@@ -192,11 +222,14 @@ void BowShockRun::start_fresh() {
 void BowShockRun::resume() {
   CheckpointExtras extras;
   const SolverState state = read_checkpoint(dir_ / "checkpoint.h5", extras);
-  if (extras.scene_resolved != loaded_.resolved)
-    throw UserError(
-        fmt::format("--resume: the scene differs from the one '{}' was run with; "
-                    "resume with the same scene file and --set options",
-                    dir_.string()));
+  if (extras.scene_resolved != loaded_.resolved) {
+    const std::vector<std::string> keys = differing_keys(extras.scene_resolved, loaded_.resolved);
+    throw UserError(fmt::format(
+        "--resume: scene key{} {} differ{} from the run in '{}'; resume with the same scene "
+        "file and --set options (docs/scene_format.md: no key may change on resume)",
+        keys.size() == 1 ? "" : "s", fmt::join(keys, ", "), keys.size() == 1 ? "s" : "",
+        dir_.string()));
+  }
   solver_->import_state(state);
   inflow_.restore(extras.rng_counter, extras.inserted, extras.insertion_carry);
   if (extras.bin_shape.size() != 3 || extras.bin_shape[2] != long(samples_.size()))
@@ -311,6 +344,7 @@ void BowShockRun::finish(bool completed) {
   const double leg_wall = meter_->elapsed_s();
   j["particles_final"] = solver_->size();
   j["inserted"] = inflow_.inserted();
+  j["inflow"] = inflow_summary();
   j["deleted"] = removed.total();
   j["deleted_outlet"] = removed.high[1];
   j["deleted_inlet"] = removed.low[1];
@@ -404,6 +438,38 @@ void BowShockRun::check_health(long step, const Diagnostics& d) const {
                   scene_.setup.dt, guard.dt_over_tc(), guard.dt_stable));
 }
 
+// docs/scene_format.md, "The inflow": a strip that cannot take what the inflow asks for
+// (area fraction near the insertion limit, a shock reaching the inlet) is reported, once,
+// as soon as the shortfall passes InflowController::kShortfallWarning.
+void BowShockRun::warn_if_inflow_falls_short() {
+  if (warned_inflow_ || !inflow_.falls_short()) return;
+  warned_inflow_ = true;
+  std::cerr << fmt::format(
+      "granshock: warning: the inflow falls short: {:.0f} of {:.0f} requested particles "
+      "({:.1f}%) found no room in the insertion strip by t = {:.4g} s; phi_inf will be below "
+      "its target {:g} (summary.json: inflow)\n",
+      inflow_.shortfall(), inflow_.requested(), 100 * inflow_.shortfall() / inflow_.requested(),
+      solver_->time(), scene_.inflow.area_fraction);
+}
+
+std::string BowShockRun::inflow_note() const {
+  if (inflow_.shortfall() < 1.0) return {};
+  return fmt::format("inflow short by {:.0f} ({:.1f}%, backlog {:.0f})", inflow_.shortfall(),
+                     100 * inflow_.shortfall() / inflow_.requested(), inflow_.backlog());
+}
+
+nlohmann::json BowShockRun::inflow_summary() const {
+  const double requested = inflow_.requested();
+  nlohmann::json j{
+      {"requested", requested},
+      {"inserted", inflow_.inserted()},
+      {"backlog", inflow_.backlog()},
+      {"lost", inflow_.shortfall() - inflow_.backlog()},
+      {"achieved_fraction", requested > 0 ? double(inflow_.inserted()) / requested : 1.0},
+      {"falls_short", inflow_.falls_short()}};
+  return j;
+}
+
 // The accumulated sums in run.h5 (layout: core/bin_layout.hpp, docs/output_format.md).
 void BowShockRun::write_field_sums() {
   const BinLayout& g = sampling_.grid;
@@ -438,9 +504,26 @@ void BowShockRun::write_field_sums() {
 
 }  // namespace
 
+RunCheck check_run(const RunOptions& o) {
+  const LoadedScene loaded = load_scene_file(o.scene_file, o.overrides);
+  RunCheck c;
+  c.warnings = check_scene_before_run(loaded.scene, o.force);
+  c.directory = run_directory_of(o, loaded.scene);
+  RunDirectory::check(c.directory, o.resume      ? DirectoryMode::resume
+                                   : o.overwrite ? DirectoryMode::overwrite
+                                                 : DirectoryMode::create);
+  c.resolved_scene = loaded.resolved;
+  return c;
+}
+
 int run_scene(const RunOptions& o) {
-  LoadedScene loaded = load_scene_file(o.scene_file, o.overrides);
-  BowShockRun run(o, std::move(loaded));
+  if (o.dry_run) {
+    const RunCheck c = check_run(o);
+    for (const std::string& w : c.warnings) std::cerr << "granshock: warning: " << w << "\n";
+    std::cout << c.resolved_scene;
+    return 0;
+  }
+  BowShockRun run(o, load_scene_file(o.scene_file, o.overrides));
   return run.execute();
 }
 

@@ -24,7 +24,18 @@ struct RunOptions {
   bool force = false;         // run past the stable time step
   long stop_after_steps = 0;  // > 0: checkpoint and stop after this many steps (batch jobs)
   bool quiet = false;         // no progress lines
+  bool dry_run = false;       // check the scene and the directory, print the resolved scene
 };
+
+// What `granshock run --dry-run` checks: the scene, the limits and guards of a run and the
+// output directory, without writing anything. Throws UserError where the run would be
+// refused; returns the resolved scene (TOML), the directory and the warnings.
+struct RunCheck {
+  std::string resolved_scene;
+  std::filesystem::path directory;
+  std::vector<std::string> warnings;
+};
+RunCheck check_run(const RunOptions& options);
 
 // Returns the process exit code: 0 done (or stopped by --stop-after-steps), 130/143
 // interrupted by SIGINT/SIGTERM after writing a checkpoint. Throws UserError for bad input.

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
 
 #include "checkpoint_file.hpp"
 #include "run_command.hpp"
@@ -25,6 +27,11 @@ RunOptions options_for(const fs::path& scene, const fs::path& out,
   o.overrides = std::move(sets);
   o.quiet = true;
   return o;
+}
+
+nlohmann::json read_summary(const fs::path& path) {
+  std::ifstream in(path);
+  return nlohmann::json::parse(in);
 }
 
 std::vector<double> series(const RunFile& f, const std::string& name) {
@@ -101,10 +108,28 @@ TEST_P(RunRefuses, WithOneMessageAndNoOutput) {
 
 INSTANTIATE_TEST_SUITE_P(
     BadInput, RunRefuses,
-    ::testing::Values(BadRun{"dt_past_stable_limit", {"time.dt=5e-6"}, "past the stable limit"},
-                      BadRun{"unknown_key", {"time.dtt=1"}, "unknown key"},
-                      BadRun{
-                          "phi_out_of_range", {"inflow.area_fraction=0.8"}, "must be in (0, 0.7)"}),
+    ::testing::Values(
+        BadRun{"dt_past_stable_limit", {"time.dt=5e-6"}, "past the stable limit"},
+        BadRun{"unknown_key", {"time.dtt=1"}, "unknown key"},
+        BadRun{"phi_out_of_range", {"inflow.area_fraction=0.8"}, "must be in (0, 0.4]"},
+        // Untrusted-input issue: counts that overflowed.
+        BadRun{
+            "duration_overflows_steps", {"time.duration=1e13"}, "5e+19 steps, more than the 1e+12"},
+        BadRun{"dt_tiny", {"time.dt=1e-30"}, "steps, more than the 1e+12"},
+        BadRun{"shorter_than_a_step",
+               {"time.duration=1e-7", "time.production_start=0"},
+               "shorter than one time step"},
+        BadRun{"snapshots_every_step",
+               {"output.snapshot_interval=1e-12"},
+               "write a particle snapshot"},
+        BadRun{
+            "huge_domain", {"domain.length=\"1e9 d\""}, "more than the 2.68e+08 one process holds"},
+        // A custom material so soft that impacts overlap by a diameter.
+        BadRun{"overlap_past_the_contact_law",
+               {"materials.soft.youngs_modulus=1000", "materials.soft.poisson_ratio=0.3",
+                "materials.soft.density=7850", "species.0.material=\"soft\"",
+                "species.1.material=\"soft\""},
+               "past 0.2 of a diameter the contact law has no meaning"}),
     [](const auto& param_info) { return std::string(param_info.param.name); });
 
 TEST(RunRefusesDirectory, UnwritableOrExisting) {
@@ -119,7 +144,10 @@ TEST(RunRefusesDirectory, UnwritableOrExisting) {
     run_scene(options_for(scene, tmp.path() / "old"));
     FAIL() << "an existing run directory was overwritten without --overwrite";
   } catch (const UserError& e) {
-    EXPECT_NE(std::string(e.what()).find("--overwrite"), std::string::npos) << e.what();
+    // Unmarked (granshock before 0.2): refused even with --overwrite
+    // (test_run_directory.cpp).
+    EXPECT_NE(std::string(e.what()).find("perhaps from a granshock before 0.2"), std::string::npos)
+        << e.what();
   }
   RunOptions resume = options_for(scene, tmp.path() / "nothing-here");
   resume.resume = true;
@@ -170,4 +198,39 @@ TEST(RunStability, ForcedUnstableStepStopsWithADiagnosis) {
     EXPECT_NE(std::string(e.what()).find("blew up"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("reduce time.dt"), std::string::npos) << e.what();
   }
+}
+
+// The data-safety issue: an inflow that cannot be met is reported, not carried forward
+// without end. A cylinder of 24 d in a 30 d channel, 4 d behind the strip: the particles
+// it stops pile up into the strip. summary.json tells requested, inserted, backlog and
+// lost, the backlog stays bounded by one batch, and stderr warns once.
+TEST(RunInflow, AStripThatStaysFullIsReportedAndItsBacklogBounded) {
+  TempDir tmp;
+  const auto scene = tmp.write("small.toml", small_scene(true));
+  RunOptions o = options_for(
+      scene, tmp.path() / "blocked",
+      {"inflow.area_fraction=0.3", "inflow.velocity=0.5", "inflow.sigma=0.05",
+       "domain.width=\"30 d\"", "domain.length=\"40 d\"", "obstacle.centre=[\"15 d\", \"16 d\"]",
+       "obstacle.diameter=\"24 d\"", "time.duration=0.04", "time.production_start=0.02"});
+  ::testing::internal::CaptureStderr();
+  ASSERT_EQ(run_scene(o), 0);
+  const std::string err = ::testing::internal::GetCapturedStderr();
+  EXPECT_NE(err.find("warning: the inflow falls short"), std::string::npos) << err;
+  const auto blocked = read_summary(tmp.path() / "blocked" / "summary.json")["inflow"];
+  std::printf("[ measured ] blocked inlet: %s\n", blocked.dump().c_str());
+  EXPECT_TRUE(blocked["falls_short"].get<bool>());
+  EXPECT_LT(blocked["achieved_fraction"].get<double>(), 0.97);
+  // Bounded: one batch of a 30 d strip at phi 0.3 is 0.3 * 30 * 2 / (pi / 4) = 23 particles.
+  EXPECT_LE(blocked["backlog"].get<double>(), 23.0);
+  EXPECT_NEAR(blocked["requested"].get<double>(),
+              blocked["inserted"].get<double>() + blocked["backlog"].get<double>() +
+                  blocked["lost"].get<double>(),
+              1e-6);
+
+  ASSERT_EQ(run_scene(options_for(scene, tmp.path() / "free",
+                                  {"time.duration=0.002", "time.production_start=0.001"})),
+            0);
+  const auto free = read_summary(tmp.path() / "free" / "summary.json")["inflow"];
+  EXPECT_FALSE(free["falls_short"].get<bool>()) << free.dump();
+  EXPECT_GT(free["achieved_fraction"].get<double>(), 0.99) << free.dump();
 }

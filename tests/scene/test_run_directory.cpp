@@ -1,0 +1,264 @@
+// The run directory belongs to the user unless granshock marked it (data-safety issue):
+// --overwrite removes only what a run writes, only where granshock's marker is; an
+// unmarked directory that is not empty is refused and left untouched; a running run
+// holds a lock; --resume follows the same rules.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <fstream>
+#include <map>
+
+#include "run_command.hpp"
+#include "run_directory.hpp"
+#include "scene_fixtures.hpp"
+#include "user_error.hpp"
+
+using namespace granshock;
+using granshock::testing::small_scene;
+using granshock::testing::TempDir;
+namespace fs = std::filesystem;
+
+namespace {
+
+// A very short run of the small scene (before its production window: no fields).
+RunOptions short_run(const fs::path& scene, const fs::path& out) {
+  RunOptions o;
+  o.scene_file = scene;
+  o.out_dir = out;
+  o.overrides = {"time.duration=0.0004", "time.production_start=0.0002"};
+  o.quiet = true;
+  return o;
+}
+
+void write(const fs::path& path, const std::string& text) {
+  fs::create_directories(path.parent_path());
+  std::ofstream(path) << text;
+}
+
+std::string read(const fs::path& path) {
+  std::ifstream in(path);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+// Every entry below `dir` (not following links) with its content, or "->target" for links.
+std::map<std::string, std::string> tree(const fs::path& dir) {
+  std::map<std::string, std::string> out;
+  for (auto it = fs::recursive_directory_iterator(dir); it != fs::recursive_directory_iterator();
+       ++it) {
+    const fs::path rel = fs::relative(it->path(), dir);
+    if (it->is_symlink())
+      out[rel.string()] = "->" + fs::read_symlink(it->path()).string();
+    else if (it->is_regular_file())
+      out[rel.string()] = read(it->path());
+    else
+      out[rel.string()] = "(dir)";
+  }
+  return out;
+}
+
+std::string refusal(const RunOptions& o) {
+  try {
+    run_scene(o);
+  } catch (const UserError& e) {
+    return e.what();
+  }
+  return "(accepted)";
+}
+
+// Runs with the current directory set to `dir` for the scope of the object.
+class InDirectory {
+ public:
+  explicit InDirectory(const fs::path& dir) : old_(fs::current_path()) { fs::current_path(dir); }
+  ~InDirectory() { fs::current_path(old_); }
+
+ private:
+  fs::path old_;
+};
+
+}  // namespace
+
+TEST(RunDirectoryRefuses, AnUnmarkedDirectoryThatIsNotEmptyAndLeavesItUntouched) {
+  TempDir tmp;
+  const auto scene = tmp.write("small.toml", small_scene(true));
+  const fs::path user = tmp.path() / "user";
+  write(user / "notes.txt", "my notes");
+  write(user / "sub" / "data.csv", "1,2,3");
+  fs::create_symlink(tmp.path() / "small.toml", user / "link.toml");
+  const auto before = tree(user);
+  for (const DirectoryMode mode :
+       {DirectoryMode::create, DirectoryMode::overwrite, DirectoryMode::resume}) {
+    RunOptions o = short_run(scene, user);
+    o.overwrite = mode == DirectoryMode::overwrite;
+    o.resume = mode == DirectoryMode::resume;
+    const std::string why = refusal(o);
+    EXPECT_NE(why.find("is not a granshock run directory"), std::string::npos) << why;
+    EXPECT_EQ(why.find('\n'), std::string::npos) << "one line";
+    EXPECT_EQ(tree(user), before) << "a refused run touched the user's directory";
+  }
+  EXPECT_EQ(read(tmp.path() / "small.toml"), small_scene(true)) << "the link's target changed";
+}
+
+TEST(RunDirectoryRefuses, TheCurrentDirectoryHoldingTheSceneFile) {
+  TempDir tmp;
+  const auto scene = tmp.write("small.toml", small_scene(true));
+  write(tmp.path() / "notes.txt", "mine");
+  const auto before = tree(tmp.path());
+  InDirectory here(tmp.path());
+  for (bool overwrite : {false, true}) {
+    RunOptions o = short_run("small.toml", ".");
+    o.overwrite = overwrite;
+    EXPECT_NE(refusal(o).find("is not a granshock run directory"), std::string::npos);
+  }
+  EXPECT_EQ(tree(tmp.path()), before);
+}
+
+TEST(RunDirectoryOverwrite, RemovesOnlyWhatARunWritesInEveryLayout) {
+  TempDir tmp;
+  const auto outside = tmp.write("outside.txt", "precious");
+  const fs::path run = tmp.path() / "run";
+  // An empty directory (here the current one) is claimed, and the scene file may live in
+  // a directory that later becomes a run directory's parent or the run directory itself.
+  fs::create_directories(run);
+  const fs::path scene = run / "scene.toml";
+  {
+    InDirectory here(run);
+    ASSERT_EQ(run_scene(short_run(tmp.write("small.toml", small_scene(true)), ".")), 0);
+  }
+  ASSERT_TRUE(fs::exists(run / kRunMarker));
+  write(scene, small_scene(true));
+  write(run / "notes.txt", "beside");
+  write(run / "sub" / "data.csv", "in a subdirectory");
+  write(run / "figures" / "mine.png", "a user's figure among granshock's");
+  fs::create_symlink(outside, run / "link-to-outside.txt");
+  fs::create_symlink(tmp.path(), run / "link-to-parent");
+  const auto user_files = [&] {
+    auto t = tree(run);
+    std::map<std::string, std::string> mine;
+    for (const char* name : {"scene.toml", "notes.txt", "sub", "sub/data.csv", "figures/mine.png",
+                             "link-to-outside.txt", "link-to-parent"})
+      mine[name] = t[name];
+    return mine;
+  };
+  const auto before = user_files();
+
+  RunOptions again = short_run(scene, run);
+  again.overwrite = true;
+  ASSERT_EQ(run_scene(again), 0);
+  EXPECT_EQ(user_files(), before);
+  EXPECT_EQ(read(outside), "precious");
+  // And the parent of the scene file as --out: the run directory's own parent is not
+  // marked, so it is refused.
+  RunOptions parent = short_run(scene, tmp.path());
+  parent.overwrite = true;
+  EXPECT_NE(refusal(parent).find("is not a granshock run directory"), std::string::npos);
+  EXPECT_EQ(read(outside), "precious");
+}
+
+TEST(RunDirectoryOverwrite, CleansAMarkedRunDirectoryCompletely) {
+  TempDir tmp;
+  const auto scene = tmp.write("small.toml", small_scene(true));
+  const fs::path run = tmp.path() / "run";
+  // A full run writes everything: fields, figures, summary.
+  RunOptions full = short_run(scene, run);
+  full.overrides = {"time.duration=0.002", "time.production_start=0.001"};
+  ASSERT_EQ(run_scene(full), 0);
+  ASSERT_TRUE(fs::exists(run / "fields.h5"));
+  // Nothing a run writes is missing from run_outputs(): otherwise --overwrite would leave
+  // stale results behind.
+  for (const auto& [name, content] : tree(run)) {
+    if (name == kRunMarker || name == "figures") continue;
+    EXPECT_NE(std::find(run_outputs().begin(), run_outputs().end(), name), run_outputs().end())
+        << name << " is written by a run but not listed in run_outputs()";
+  }
+  // A stale temporary (a killed run) and a run stopped before its production window:
+  // no file of the first run may survive.
+  write(run / "checkpoint.h5.tmp", "half a checkpoint");
+  RunOptions early = short_run(scene, run);
+  early.overwrite = true;
+  early.stop_after_steps = 100;
+  ASSERT_EQ(run_scene(early), 0);
+  for (const char* gone : {"fields.h5", "fields.xmf", "figures", "checkpoint.h5.tmp"})
+    EXPECT_FALSE(fs::exists(run / gone)) << gone << " of the previous run survived --overwrite";
+}
+
+TEST(RunDirectoryRefuses, AMarkedDirectoryWithoutOverwriteOrResume) {
+  TempDir tmp;
+  const auto scene = tmp.write("small.toml", small_scene(true));
+  ASSERT_EQ(run_scene(short_run(scene, tmp.path() / "run")), 0);
+  const std::string why = refusal(short_run(scene, tmp.path() / "run"));
+  EXPECT_NE(why.find("already holds a granshock run"), std::string::npos) << why;
+  EXPECT_NE(why.find("--overwrite"), std::string::npos) << why;
+}
+
+TEST(RunDirectoryRefuses, AnOutputNameThatIsASymbolicLink) {
+  TempDir tmp;
+  const auto scene = tmp.write("small.toml", small_scene(true));
+  const auto outside = tmp.write("outside.h5", "not to be truncated");
+  const fs::path run = tmp.path() / "run";
+  ASSERT_EQ(run_scene(short_run(scene, run)), 0);
+  fs::remove(run / "run.h5");
+  fs::create_symlink(outside, run / "run.h5");
+  RunOptions o = short_run(scene, run);
+  o.overwrite = true;
+  EXPECT_NE(refusal(o).find("is a symbolic link"), std::string::npos);
+  EXPECT_EQ(read(outside), "not to be truncated");
+}
+
+TEST(RunDirectoryRefuses, ADirectoryInUseByAnotherRun) {
+  TempDir tmp;
+  const auto scene = tmp.write("small.toml", small_scene(true));
+  const fs::path run = tmp.path() / "run";
+  ASSERT_EQ(run_scene(short_run(scene, run)), 0);
+  const auto before = tree(run);
+  {
+    // Another run holds the directory (its lock is per open file, so this process
+    // stands for a second one).
+    const RunDirectory other = RunDirectory::claim(run, DirectoryMode::resume);
+    for (bool resume : {false, true}) {
+      RunOptions o = short_run(scene, run);
+      o.overwrite = !resume;
+      o.resume = resume;
+      const std::string why = refusal(o);
+      EXPECT_NE(why.find("in use by another granshock run"), std::string::npos) << why;
+    }
+  }
+  auto after = tree(run);
+  after.erase(kRunMarker);  // the marker names the last claimant's pid
+  auto expected = before;
+  expected.erase(kRunMarker);
+  EXPECT_EQ(after, expected);
+  RunOptions o = short_run(scene, run);
+  o.overwrite = true;
+  EXPECT_EQ(run_scene(o), 0) << "the lock must be released with its holder";
+}
+
+TEST(RunDirectoryRefuses, ARunDirectoryOfAnotherFormatWithAClearMessage) {
+  TempDir tmp;
+  const auto scene = tmp.write("small.toml", small_scene(true));
+  const fs::path run = tmp.path() / "run";
+  ASSERT_EQ(run_scene(short_run(scene, run)), 0);
+  write(run / kRunMarker, "granshock run directory\nformat = 99\nversion = 9.0.0\npid = 1\n");
+  RunOptions o = short_run(scene, run);
+  o.resume = true;
+  const std::string why = refusal(o);
+  EXPECT_NE(why.find("granshock 9.0.0 in run-directory format 99"), std::string::npos) << why;
+}
+
+TEST(RunDirectoryResume, RemovesATemporaryLeftByAKilledRunAndNamesAChangedKey) {
+  TempDir tmp;
+  const auto scene = tmp.write("small.toml", small_scene(true));
+  const fs::path run = tmp.path() / "run";
+  RunOptions first = short_run(scene, run);
+  first.stop_after_steps = 1000;
+  ASSERT_EQ(run_scene(first), 0);
+  write(run / "checkpoint.h5.tmp", "left by SIGKILL");
+  RunOptions changed = short_run(scene, run);
+  changed.resume = true;
+  changed.overrides.push_back("inflow.sigma=0.2");
+  const std::string why = refusal(changed);
+  EXPECT_NE(why.find("scene key inflow.sigma differs"), std::string::npos) << why;
+  RunOptions same = short_run(scene, run);
+  same.resume = true;
+  ASSERT_EQ(run_scene(same), 0);
+  EXPECT_FALSE(fs::exists(run / "checkpoint.h5.tmp"));
+}
