@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "block_error.hpp"
 #include "iso_lines.hpp"
 #include "run_file.hpp"
 #include "scene.hpp"
@@ -56,6 +57,8 @@ std::string ma_target_reason(const FieldPhysics& phys) {
 void set_target_mach(FieldAnalysis& a, double target) {
   a.ma_target = target;
   a.ma_target_reason = std::isfinite(target) ? "" : ma_target_reason(a.physics);
+  a.inflow = check_inflow(a.upstream_downstream, a.phi_up_err, a.phi_up_err_reason,
+                          a.physics.inflow_phi, a.ma_target, a.ma_target_reason, a.options.inflow);
 }
 
 FieldAnalysis analyse_fields(const Scene& scene, BinSums grid, std::optional<BinSums> profile,
@@ -77,6 +80,17 @@ FieldAnalysis analyse_fields(const Scene& scene, BinSums grid, std::optional<Bin
   a.upstream_downstream = measure_upstream(a.fields, a.grid, phys, a.reference_row, upstream_end);
   // The threshold rule needs the measured state ahead of the shock, never a stand-in.
   a.phi_up = a.upstream_downstream.phi;
+  a.phi_up_err = kNaN;
+  if (!a.upstream_downstream.determined()) {
+    a.phi_up_err_reason = "no upstream state beyond the strip: " + a.upstream_downstream.reason;
+  } else {
+    const std::vector<double> blocks =
+        upstream_phi_by_block(a.grid, phys, a.reference_row, upstream_end);
+    a.phi_up_err = block_standard_error(blocks);
+    if (!std::isfinite(a.phi_up_err))
+      a.phi_up_err_reason = "only " + std::to_string(blocks.size()) +
+                            " blocks with samples (the block error needs 2)";
+  }
   const double y_upstream_end = a.grid.y0 + upstream_end * a.grid.dy;
 
   const NodeGrid centres{a.grid.nx,          a.grid.ny, a.grid.x_centre(0),

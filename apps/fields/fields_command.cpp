@@ -131,6 +131,11 @@ int fields_command(const std::vector<fs::path>& run_dirs, const fs::path& out,
       plot_detachment_figure(out / "detachment.json", out / "figures" / "detachment_length.png");
   }
 
+  // A short inflow is a warning about the data, printed even when the result line is not.
+  for (const Done& d : done)
+    if (!d.row.inflow_warning.empty())
+      std::cerr << "granshock: warning: " << d.run_dir.string() << ": " << d.row.inflow_warning
+                << "\n";
   if (!o.quiet) {
     for (const Done& d : done) std::cout << result_line(d) << "\n";
     if (several) std::cout << "granshock fields: comparison in " << out.string() << "\n";

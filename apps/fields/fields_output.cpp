@@ -171,11 +171,13 @@ FieldsFileContent fields_file_content(const FieldAnalysis& a) {
   const nlohmann::json summary = summary_keys(a);
   for (const auto& [key, value] : summary.items()) {
     const bool text_key = key.size() > 7 && key.compare(key.size() - 7, 7, "_reason") == 0;
-    if (value.is_number())
+    if (value.is_boolean())
+      c.attributes.push_back({"/summary", key, value.get<bool>() ? 1.0 : 0.0});
+    else if (value.is_number())
       c.attributes.push_back({"/summary", key, value.get<double>()});
     else if (value.is_string())
       c.text_attributes.push_back({"/summary", key, value.get<std::string>()});
-    else if (value.is_null() && !text_key)
+    else if (value.is_null() && !text_key && key != "inflow_warning")
       c.attributes.push_back({"/summary", key, kNaN});  // an undeterminable number
   }
   return c;
@@ -200,11 +202,18 @@ nlohmann::json summary_keys(const FieldAnalysis& a) {
   };
   const UpstreamState &inlet = a.upstream_inlet, &beyond = a.upstream_downstream;
   const Detachment& d = a.detachment;
+  const InflowCheck& in = a.inflow;
   put("ma_inf_target", a.ma_target, a.ma_target_reason);
   put("ma_inf_measured", inlet.mach, inlet.reason);
   put("ma_inf_measured_downstream", beyond.mach, beyond.reason);
   put("phi_inf_measured", inlet.phi, inlet.reason);
   put("phi_inf_measured_downstream", beyond.phi, beyond.reason);
+  put("phi_inf_measured_downstream_err", a.phi_up_err, a.phi_up_err_reason);
+  j["phi_inf_target"] = number_or_null(in.phi_target);
+  put("phi_inf_deviation", in.phi_deviation, in.phi_deviation_reason);
+  put("ma_inf_deviation", in.ma_deviation, in.ma_deviation_reason);
+  j["inflow_phi_short"] = in.phi_short;
+  j["inflow_warning"] = in.warning.empty() ? nlohmann::json() : nlohmann::json(in.warning);
   put("delta_over_D", d.delta_over_d, d.reason);
   put("delta_over_D_err", d.delta_over_d_err, d.err_reason);
   put("detachment_length_m", d.delta, d.reason);

@@ -94,6 +94,31 @@ UpstreamState measure_upstream(const BinFields& f, const BinSums& grid, const Fi
   return s;
 }
 
+std::vector<double> upstream_phi_by_block(const BinSums& grid, const FieldPhysics& phys,
+                                          int row_begin, int row_end) {
+  std::vector<double> out;
+  if (row_begin < 0 || row_end > grid.ny || row_end <= row_begin) return out;
+  const BinLayout l = grid.layout();
+  // phi = sum_a N_a pi d_a^2 / 4 / (S V), over the rows' bins: the same as the mean of the
+  // bins' phi (docs/fields.md, section 2).
+  const double bins = static_cast<double>(row_end - row_begin) * grid.nx;
+  for (int b = 0; b < grid.blocks; ++b) {
+    const double samples = grid.samples[static_cast<std::size_t>(b)];
+    if (!(samples > 0)) continue;
+    double disks = 0;
+    for (int iy = row_begin; iy < row_end; ++iy)
+      for (int ix = 0; ix < grid.nx; ++ix)
+        for (int a = 0; a < grid.n_species; ++a) {
+          const double d = phys.diameter[static_cast<std::size_t>(a)];
+          disks += grid.sums[static_cast<std::size_t>(
+                       l.offset(b, iy, ix, l.species_index(a, BinLayout::count)))] *
+                   M_PI * d * d / 4;
+        }
+    out.push_back(disks / (samples * grid.bin_area() * bins));
+  }
+  return out;
+}
+
 int first_row_beyond_strip(const BinSums& grid, double strip) {
   // Small tolerance: a strip of exactly k bins minus round-off must not skip a row.
   const double rows = (strip + grid.dy - grid.y0) / grid.dy;

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "bin_fields.hpp"
 #include "bin_sums.hpp"
@@ -34,6 +35,11 @@ struct UpstreamState {
 // upstream surface, or when fewer than half of their bins are unmasked (docs/fields.md).
 UpstreamState measure_upstream(const BinFields& fields, const BinSums& grid,
                                const FieldPhysics& physics, int row_begin, int row_end);
+
+// The mean phi of rows [row_begin, row_end) in each block that has samples, for the block
+// error of phi_inf (block_error.hpp). Empty when the rows are not all in the grid.
+std::vector<double> upstream_phi_by_block(const BinSums& grid, const FieldPhysics& physics,
+                                          int row_begin, int row_end);
 
 // The first row whose lower edge lies at least one bin beyond the insertion strip:
 // y0 + row dy >= strip + dy.

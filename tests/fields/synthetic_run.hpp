@@ -23,9 +23,10 @@
 namespace granshock::test {
 
 // A channel 60 d wide and 90 d long, the paper's mixture (steel and aluminium, d = 1 mm,
-// e = 0.5, equimolar), U = 1 m/s at Ma_inf 5.9, a cylinder of `diameter_d` d at (30 d, 60 d)
-// (none when diameter_d = 0).
-inline std::string bow_shock_scene(double diameter_d = 12, double mach = 5.9) {
+// e = 0.5, equimolar), U = 1 m/s at Ma_inf 5.9 and phi_inf = area_fraction, a cylinder of
+// `diameter_d` d at (30 d, 60 d) (none when diameter_d = 0).
+inline std::string bow_shock_scene(double diameter_d = 12, double mach = 5.9,
+                                   double area_fraction = 0.1) {
   const std::string obstacle = diameter_d > 0
                                    ? "[obstacle]\ndiameter = \"" + std::to_string(diameter_d) +
                                          " d\"\ncentre = [\"30 d\", \"60 d\"]\n"
@@ -51,7 +52,8 @@ restitution = 0.5
 width = "60 d"
 length = "90 d"
 [inflow]
-area_fraction = 0.1
+area_fraction = )" +
+         std::to_string(area_fraction) + R"(
 velocity = 1.0
 mach = )" +
          std::to_string(mach) + R"(
