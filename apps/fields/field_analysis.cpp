@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "block_error.hpp"
+#include "field_sampling_check.hpp"
 #include "iso_lines.hpp"
 #include "run_file.hpp"
 #include "scene.hpp"
@@ -16,10 +17,6 @@ namespace granshock {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-// Fewer bins across the obstacle than this and the grid column on the axis is too wide to
-// stand in for the stagnation line (docs/fields.md, section 6).
-constexpr double kMinBinsAcrossObstacle = 3;
 
 // The grid column whose centre is nearest the obstacle's axis (the domain's centre line
 // without an obstacle).
@@ -37,12 +34,12 @@ int axis_column(const BinSums& grid, const FieldPhysics& phys) {
 std::string axis_column_reason(const BinSums& grid, const FieldPhysics& phys) {
   if (!phys.obstacle) return "";
   const double across = phys.obstacle->diameter / grid.dx;
-  if (across >= kMinBinsAcrossObstacle) return "";
+  if (across >= FieldSamplingLimits::bins_across_obstacle) return "";
   char text[200];
   std::snprintf(text, sizeof text,
                 "run.h5 has no stagnation-line profile and the grid has only %.3g bins across "
                 "the obstacle (the axis column stands in for the profile with %.0f or more)",
-                across, kMinBinsAcrossObstacle);
+                across, FieldSamplingLimits::bins_across_obstacle);
   return text;
 }
 

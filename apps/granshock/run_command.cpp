@@ -12,6 +12,7 @@
 
 #include "atomic_file.hpp"
 #include "checkpoint_file.hpp"
+#include "field_sampling_check.hpp"
 #include "fields_command.hpp"
 #include "head_on_collision.hpp"
 #include "inflow.hpp"
@@ -117,6 +118,7 @@ int BowShockRun::execute() {
   const TimeStepAssessment guard = scene_.assess_time_step();
   if (guard.verdict == TimeStepAssessment::Verdict::refuse && !options_.force)
     throw UserError(guard.message);
+  validate_field_sampling(scene_);  // before any output: no hours spent on empty fields
   const DirectoryMode mode = options_.resume      ? DirectoryMode::resume
                              : options_.overwrite ? DirectoryMode::overwrite
                                                   : DirectoryMode::create;

@@ -101,10 +101,18 @@ TEST_P(RunRefuses, WithOneMessageAndNoOutput) {
 
 INSTANTIATE_TEST_SUITE_P(
     BadInput, RunRefuses,
-    ::testing::Values(BadRun{"dt_past_stable_limit", {"time.dt=5e-6"}, "past the stable limit"},
-                      BadRun{"unknown_key", {"time.dtt=1"}, "unknown key"},
-                      BadRun{
-                          "phi_out_of_range", {"inflow.area_fraction=0.8"}, "must be in (0, 0.7)"}),
+    ::testing::Values(
+        BadRun{"dt_past_stable_limit", {"time.dt=5e-6"}, "past the stable limit"},
+        BadRun{"unknown_key", {"time.dtt=1"}, "unknown key"},
+        BadRun{"phi_out_of_range", {"inflow.area_fraction=0.8"}, "must be in (0, 0.7)"},
+        // The field sampling (docs/fields.md, "Up-front checks"): refused before
+        // the run, not found empty after it.
+        BadRun{"one_field_sample", {"output.sample_every=1000000000"}, "holds 1 field samples"},
+        BadRun{"one_bin", {"numerics.bin_size=1000 d"}, "bins across the domain"},
+        BadRun{"bins_below_a_particle",
+               {"numerics.bin_size=0.001 d"},
+               "smaller than the particle diameter"},
+        BadRun{"bin_sums_beyond_memory", {"output.blocks=1000000000"}, "GiB of field sums"}),
     [](const auto& param_info) { return std::string(param_info.param.name); });
 
 TEST(RunRefusesDirectory, UnwritableOrExisting) {
@@ -161,7 +169,9 @@ TEST(RunDefaultScene, FormsADenseRegionInFrontOfTheObstacle) {
 TEST(RunStability, ForcedUnstableStepStopsWithADiagnosis) {
   TempDir tmp;
   const auto scene = tmp.write("small.toml", small_scene(true));
-  RunOptions o = options_for(scene, tmp.path() / "run", {"time.dt=3e-6"});
+  // Samples every 10 steps: at this dt the default 100 would leave the production window too
+  // few field samples, and the run would be refused before it could blow up.
+  RunOptions o = options_for(scene, tmp.path() / "run", {"time.dt=3e-6", "output.sample_every=10"});
   o.force = true;
   try {
     run_scene(o);
