@@ -9,6 +9,7 @@
 #include <hdf5.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -91,6 +92,16 @@ Scene scene_of(const std::string& toml) {
   return parse_scene(toml).scene;
 }
 
+// The figure script draws every masked bin blank, phi included (check_figure_masking.py).
+void expect_masked_bins_blank(const fs::path& fields_h5) {
+  if (std::system("/usr/bin/python3 -c 'import h5py, matplotlib' >/dev/null 2>&1") != 0)
+    return;  // no figures without them (FieldsCommand.MissingMatplotlibCostsOnlyTheFigures)
+  const std::string check = "/usr/bin/python3 " GRANSHOCK_TEST_FIELDS_DIR
+                            "/check_figure_masking.py '" +
+                            fields_h5.string() + "' " GRANSHOCK_SOURCE_DIR "/apps/fields";
+  EXPECT_EQ(std::system(check.c_str()), 0) << check;
+}
+
 // Runs `granshock fields` on one synthetic run directory and returns its stdout.
 std::string fields_on(const fs::path& run, const std::string& scene, const BinSums& grid,
                       const BinSums* profile) {
@@ -142,6 +153,7 @@ TEST(Undeterminable, EveryBinMaskedPublishesNoHeadlineNumber) {
   for (const char* png :
        {"solid_fraction.png", "temperature.png", "mach.png", "stagnation_profiles.png"})
     EXPECT_TRUE(is_png(run / "figures" / png)) << png;
+  expect_masked_bins_blank(run / "fields.h5");
 }
 
 // Defect 2: one bin of 1000 d covers the whole domain and beyond. The upstream rows beyond
@@ -344,6 +356,8 @@ TEST(Undeterminable, DetachmentTableHasEmptyCellsAndReasons) {
   EXPECT_TRUE(table[1]["delta_over_D"].is_null());
   EXPECT_TRUE(table[1]["shock_angle_deg"].is_null());
   EXPECT_TRUE(contains(table[1], "delta_over_D_reason", "unmasked"));
+  // A healthy run masks the cylinder's inside and the empty wake: blank, the rest drawn.
+  expect_masked_bins_blank(tmp.path() / "good" / "fields.h5");
   const std::string csv = read_text(out / "detachment.csv");
   const std::string masked_row = csv.substr(csv.find("masked\""));
   // run, D_over_d, ma_inf_target, then ma_inf_measured and everything measured: empty.
