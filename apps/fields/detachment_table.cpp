@@ -28,6 +28,10 @@ nlohmann::json json_number(double v) {
   return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json();
 }
 
+nlohmann::json json_text(const std::string& s) {
+  return s.empty() ? nlohmann::json() : nlohmann::json(s);
+}
+
 }  // namespace
 
 DetachmentRow detachment_row(const std::filesystem::path& run_dir, const FieldAnalysis& a,
@@ -43,22 +47,30 @@ DetachmentRow detachment_row(const std::filesystem::path& run_dir, const FieldAn
   r.delta_over_D_err = a.detachment.delta_over_d_err;
   r.phi_peak = a.phi_peak;
   r.shock_angle_deg = a.front.angle_deg;
+  r.phi_inf_deviation = a.inflow.phi_deviation;
+  r.delta_over_D_reason = a.detachment.reason;
+  r.delta_over_D_err_reason = a.detachment.err_reason;
+  r.shock_angle_deg_reason = a.front.angle_reason;
+  r.inflow_warning = a.inflow.warning;
   return r;
 }
 
 void write_detachment_table(const std::filesystem::path& out_dir,
                             const std::vector<DetachmentRow>& rows) {
   std::string csv =
-      "run,D_over_d,ma_inf_target,ma_inf_measured,ma_inf_measured_downstream,delta_over_D,delta_"
-      "over_D_err,"
-      "phi_peak,shock_angle_deg\n";
+      "run,D_over_d,ma_inf_target,ma_inf_measured,ma_inf_measured_downstream,delta_over_D,"
+      "delta_over_D_err,phi_peak,shock_angle_deg,phi_inf_deviation,delta_over_D_reason,"
+      "delta_over_D_err_reason,shock_angle_deg_reason,inflow_warning\n";
   nlohmann::json table = nlohmann::json::array();
   for (const DetachmentRow& r : rows) {
     csv += csv_text(r.run);
     for (double v :
          {r.d_over_particle, r.ma_inf_target, r.ma_inf_measured, r.ma_inf_measured_downstream,
-          r.delta_over_D, r.delta_over_D_err, r.phi_peak, r.shock_angle_deg})
+          r.delta_over_D, r.delta_over_D_err, r.phi_peak, r.shock_angle_deg, r.phi_inf_deviation})
       csv += "," + csv_number(v);
+    for (const std::string* text : {&r.delta_over_D_reason, &r.delta_over_D_err_reason,
+                                    &r.shock_angle_deg_reason, &r.inflow_warning})
+      csv += "," + (text->empty() ? std::string() : csv_text(*text));
     csv += "\n";
     table.push_back({{"run", r.run},
                      {"D_over_d", json_number(r.d_over_particle)},
@@ -68,7 +80,12 @@ void write_detachment_table(const std::filesystem::path& out_dir,
                      {"delta_over_D", json_number(r.delta_over_D)},
                      {"delta_over_D_err", json_number(r.delta_over_D_err)},
                      {"phi_peak", json_number(r.phi_peak)},
-                     {"shock_angle_deg", json_number(r.shock_angle_deg)}});
+                     {"shock_angle_deg", json_number(r.shock_angle_deg)},
+                     {"phi_inf_deviation", json_number(r.phi_inf_deviation)},
+                     {"delta_over_D_reason", json_text(r.delta_over_D_reason)},
+                     {"delta_over_D_err_reason", json_text(r.delta_over_D_err_reason)},
+                     {"shock_angle_deg_reason", json_text(r.shock_angle_deg_reason)},
+                     {"inflow_warning", json_text(r.inflow_warning)}});
   }
   write_file_atomically(out_dir / "detachment.csv", csv);
   write_file_atomically(out_dir / "detachment.json", table.dump(2) + "\n");

@@ -1,9 +1,18 @@
 #include "eos_check.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 namespace granshock {
+
+namespace {
+std::string number(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", v);
+  return text;
+}
+}  // namespace
 
 EosCheck check_equation_of_state(const BinFields& f, const EosCut& cut) {
   EosCheck c;
@@ -27,6 +36,18 @@ EosCheck check_equation_of_state(const BinFields& f, const EosCut& cut) {
   c.dilute_mean_abs = c.dilute_bins ? dilute_abs / c.dilute_bins : nan;
   c.dense_mean = c.dense_bins ? dense / c.dense_bins : nan;
   c.dense_mean_abs = c.dense_bins ? dense_abs / c.dense_bins : nan;
+  char text[160];
+  const char* pattern = "no unmasked bin with %s and at least %.0f particle samples";
+  if (!c.dilute_bins) {
+    const std::string range = "phi < " + number(cut.dilute_below);
+    std::snprintf(text, sizeof text, pattern, range.c_str(), cut.min_particle_samples);
+    c.dilute_reason = text;
+  }
+  if (!c.dense_bins) {
+    const std::string range = "phi >= " + number(cut.dense_from);
+    std::snprintf(text, sizeof text, pattern, range.c_str(), cut.min_particle_samples);
+    c.dense_reason = text;
+  }
   return c;
 }
 

@@ -4,6 +4,8 @@
 // p / p_eos - 1 over dilute bins (phi < 0.2) and over dense bins (phi >= 0.3).
 #pragma once
 
+#include <string>
+
 #include "bin_fields.hpp"
 
 namespace granshock {
@@ -20,6 +22,7 @@ struct EosCheck {
   double dilute_mean = 0, dense_mean = 0;          // mean of p/p_eos - 1 (NaN without bins)
   double dilute_mean_abs = 0, dense_mean_abs = 0;  // mean of |p/p_eos - 1|
   int dilute_bins = 0, dense_bins = 0;
+  std::string dilute_reason, dense_reason;  // why a mean is NaN (empty when it is a number)
 };
 
 EosCheck check_equation_of_state(const BinFields& fields, const EosCut& cut = {});

@@ -1,8 +1,11 @@
 #include "field_analysis.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
+#include "block_error.hpp"
+#include "field_sampling_check.hpp"
 #include "iso_lines.hpp"
 #include "run_file.hpp"
 #include "scene.hpp"
@@ -12,6 +15,8 @@
 namespace granshock {
 
 namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // The grid column whose centre is nearest the obstacle's axis (the domain's centre line
 // without an obstacle).
@@ -24,11 +29,39 @@ int axis_column(const BinSums& grid, const FieldPhysics& phys) {
   return best;
 }
 
+// Why the stand-in for a missing profile, the grid column on the axis, cannot give delta
+// (empty when it can): it must be narrow against the obstacle (docs/fields.md, section 6).
+std::string axis_column_reason(const BinSums& grid, const FieldPhysics& phys) {
+  if (!phys.obstacle) return "";
+  const double across = phys.obstacle->diameter / grid.dx;
+  if (across >= FieldSamplingLimits::bins_across_obstacle) return "";
+  char text[200];
+  std::snprintf(text, sizeof text,
+                "run.h5 has no stagnation-line profile and the grid has only %.3g bins across "
+                "the obstacle (the axis column stands in for the profile with %.0f or more)",
+                across, FieldSamplingLimits::bins_across_obstacle);
+  return text;
+}
+
+std::string ma_target_reason(const FieldPhysics& phys) {
+  return phys.inflow_sigma > 0 ? "the target Ma_inf is not a finite number"
+                               : "the scene gives no inflow.mach and its inflow has no velocity "
+                                 "fluctuation (sigma = 0): Ma_inf is infinite";
+}
+
 }  // namespace
+
+void set_target_mach(FieldAnalysis& a, double target) {
+  a.ma_target = target;
+  a.ma_target_reason = std::isfinite(target) ? "" : ma_target_reason(a.physics);
+  a.inflow = check_inflow(a.upstream_downstream, a.phi_up_err, a.phi_up_err_reason,
+                          a.physics.inflow_phi, a.ma_target, a.ma_target_reason, a.options.inflow);
+}
 
 FieldAnalysis analyse_fields(const Scene& scene, BinSums grid, std::optional<BinSums> profile,
                              const FieldAnalysisOptions& o) {
   FieldAnalysis a;
+  a.options = o;
   a.physics = field_physics_from_scene(scene);
   const FieldPhysics& phys = a.physics;
   if (static_cast<std::size_t>(grid.n_species) != phys.mass.size())
@@ -37,18 +70,31 @@ FieldAnalysis analyse_fields(const Scene& scene, BinSums grid, std::optional<Bin
   a.grid = std::move(grid);
   a.fields = compute_bin_fields(a.grid, phys, o.mask);
 
-  a.upstream_inlet = measure_upstream(a.fields, phys, 0, 2);
-  a.reference_row =
-      std::min(first_row_beyond_strip(a.grid, phys.inflow_strip), std::max(a.grid.ny - 2, 0));
-  a.upstream_downstream = measure_upstream(a.fields, phys, a.reference_row, a.reference_row + 2);
-  a.phi_up = std::isfinite(a.upstream_downstream.phi) ? a.upstream_downstream.phi
-             : std::isfinite(a.upstream_inlet.phi)    ? a.upstream_inlet.phi
-                                                      : phys.inflow_phi;
+  a.upstream_inlet = measure_upstream(a.fields, a.grid, phys, 0, 2);
+  // No clamping to the grid: rows beyond it leave the upstream state undetermined.
+  a.reference_row = first_row_beyond_strip(a.grid, phys.inflow_strip);
+  const int upstream_end = a.reference_row + 2;
+  a.upstream_downstream = measure_upstream(a.fields, a.grid, phys, a.reference_row, upstream_end);
+  // The threshold rule needs the measured state ahead of the shock, never a stand-in.
+  a.phi_up = a.upstream_downstream.phi;
+  a.phi_up_err = kNaN;
+  if (!a.upstream_downstream.determined()) {
+    a.phi_up_err_reason = "no upstream state beyond the strip: " + a.upstream_downstream.reason;
+  } else {
+    const std::vector<double> blocks =
+        upstream_phi_by_block(a.grid, phys, a.reference_row, upstream_end);
+    a.phi_up_err = block_standard_error(blocks);
+    if (!std::isfinite(a.phi_up_err))
+      a.phi_up_err_reason = "only " + std::to_string(blocks.size()) +
+                            " blocks with samples (the block error needs 2)";
+  }
+  const double y_upstream_end = a.grid.y0 + upstream_end * a.grid.dy;
 
   const NodeGrid centres{a.grid.nx,          a.grid.ny, a.grid.x_centre(0),
                          a.grid.y_centre(0), a.grid.dx, a.grid.dy};
   a.sonic_lines = iso_lines(a.fields.mach, centres, 1.0);
-  a.front = find_shock_front(a.fields, a.grid, phys, a.phi_up, a.reference_row, o.threshold);
+  a.front = find_shock_front(a.fields, a.grid, phys, a.phi_up, a.reference_row, o.threshold,
+                             y_upstream_end);
 
   if (profile) {
     if (profile->n_species != a.grid.n_species)
@@ -60,15 +106,39 @@ FieldAnalysis analyse_fields(const Scene& scene, BinSums grid, std::optional<Bin
     a.profile_from_grid = true;
   }
   a.profile_fields = compute_bin_fields(a.profile, phys, o.mask);
-  const double search_from = a.grid.y0 + a.reference_row * a.grid.dy;
-  a.detachment = measure_detachment(a.profile, phys, a.phi_up, search_from, o.threshold);
+  DetachmentSearch search;
+  search.y_begin = a.grid.y0 + a.reference_row * a.grid.dy;
+  search.y_upstream_end = y_upstream_end;
+  search.rule = o.threshold;
+  search.mask = o.mask;
+  a.detachment = measure_detachment(a.profile, phys, a.phi_up, search);
+  const std::string coarse_axis = a.profile_from_grid ? axis_column_reason(a.grid, phys) : "";
+  if (!coarse_axis.empty()) {
+    Detachment& d = a.detachment;
+    d.found = false;
+    d.y_shock = d.delta = d.delta_over_d = d.delta_err = d.delta_over_d_err = d.threshold = kNaN;
+    d.delta_blocks.assign(d.delta_blocks.size(), kNaN);
+    d.blocks_used = 0;
+    d.reason = d.err_reason = coarse_axis;
+  }
+
+  // Without a measured phi_up nothing that depends on the threshold rule is determined;
+  // say why in terms of the upstream rows.
+  if (!a.upstream_downstream.determined() && phys.obstacle) {
+    const std::string why = "no upstream phi beyond the strip: " + a.upstream_downstream.reason;
+    if (!a.detachment.found) a.detachment.reason = a.detachment.err_reason = why;
+    a.front.left.reason = a.front.right.reason = a.front.angle_reason = why;
+  }
 
   a.eos = check_equation_of_state(a.fields, o.eos);
-  a.phi_peak = std::numeric_limits<double>::quiet_NaN();
+  a.phi_peak = kNaN;
   for (std::size_t k = 0; k < a.fields.size(); ++k)
     if (!a.fields.masked[k] && (!std::isfinite(a.phi_peak) || a.fields.phi[k] > a.phi_peak))
       a.phi_peak = a.fields.phi[k];
-  a.ma_target = phys.nominal_mach(phys.mass_definition);
+  if (!std::isfinite(a.phi_peak))
+    a.phi_peak_reason = "every one of the " + std::to_string(a.fields.size()) +
+                        " bins is masked (too few particle samples)";
+  set_target_mach(a, phys.nominal_mach(phys.mass_definition));
   return a;
 }
 

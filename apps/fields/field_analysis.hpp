@@ -1,11 +1,13 @@
 // Everything `granshock fields` derives from a run's bin sums (DESIGN.md 2.3): the fields,
 // the upstream state and Ma_inf, the sonic line, the shock front and its angle, the
-// detachment length with its uncertainty and the equation-of-state check. Formulas and
-// rules: docs/fields.md.
+// detachment length with its uncertainty, the equation-of-state check and the inflow
+// against its target. A number that cannot be determined is NaN with a reason next to it.
+// Formulas and rules: docs/fields.md.
 #pragma once
 
 #include <filesystem>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "bin_fields.hpp"
@@ -14,6 +16,7 @@
 #include "eos_check.hpp"
 #include "field_physics.hpp"
 #include "front_crossing.hpp"
+#include "inflow_check.hpp"
 #include "polyline.hpp"
 #include "shock_front.hpp"
 #include "upstream_state.hpp"
@@ -26,10 +29,12 @@ struct FieldAnalysisOptions {
   MaskRule mask;
   ThresholdRule threshold;
   EosCut eos;
+  InflowTolerance inflow;
 };
 
 struct FieldAnalysis {
   FieldPhysics physics;
+  FieldAnalysisOptions options;
   BinSums grid;
   BinFields fields;
   BinSums profile;  // the stagnation-line profile (or the grid column on the axis)
@@ -38,13 +43,18 @@ struct FieldAnalysis {
   UpstreamState upstream_inlet;       // first two rows (the paper)
   UpstreamState upstream_downstream;  // two rows from one bin beyond the strip
   int reference_row = 0;  // where front searches start (= upstream_downstream.row_begin)
-  double phi_up = 0;      // upstream phi of the threshold rule
+  double phi_up = 0;      // upstream phi of the threshold rule (NaN: not measured)
+  double phi_up_err = 0;  // block standard error of phi_up (NaN with < 2 blocks)
+  std::string phi_up_err_reason;
   std::vector<Polyline> sonic_lines;  // Ma = 1 (scene's mass definition)
   ShockFront front;
   Detachment detachment;
   EosCheck eos;
-  double phi_peak = 0;   // max phi over unmasked grid bins
-  double ma_target = 0;  // the inflow's nominal Mach number (FieldPhysics::nominal_mach)
+  double phi_peak = 0;  // max phi over unmasked grid bins (NaN: all masked)
+  std::string phi_peak_reason;
+  double ma_target = 0;  // the run's target Ma_inf (set_target_mach), NaN: none
+  std::string ma_target_reason;
+  InflowCheck inflow;  // measured upstream state against the targets
 };
 
 FieldAnalysis analyse_fields(const Scene& scene, BinSums grid, std::optional<BinSums> profile,
@@ -52,5 +62,9 @@ FieldAnalysis analyse_fields(const Scene& scene, BinSums grid, std::optional<Bin
 // Reads DIR/run.h5 (its resolved scene and field sums) and analyses it.
 FieldAnalysis analyse_run_file(const std::filesystem::path& run_h5,
                                const FieldAnalysisOptions& options = {});
+
+// Replaces the target Ma_inf (analyse_fields takes the inflow's nominal one; a run's
+// summary.json may name its own) and redoes the inflow check with it.
+void set_target_mach(FieldAnalysis& analysis, double target);
 
 }  // namespace granshock

@@ -54,6 +54,23 @@ struct Done {
   DetachmentRow row;
 };
 
+// One line per run; an undeterminable number is "n/a", and delta/D and the shock angle say
+// why in brackets.
+std::string result_line(const Done& d) {
+  const DetachmentRow& r = d.row;
+  std::string line = "granshock fields: " + d.run_dir.string() + ": Ma_inf " +
+                     number(r.ma_inf_target, 3) + " (target), " + number(r.ma_inf_measured, 3) +
+                     " (measured at the inlet), " + number(r.ma_inf_measured_downstream, 3) +
+                     " (beyond the strip); delta/D = " + number(r.delta_over_D, 3);
+  if (std::isfinite(r.delta_over_D))
+    line += " +- " + number(r.delta_over_D_err, 2);
+  else
+    line += " (" + r.delta_over_D_reason + ")";
+  line += "; shock angle " + number(r.shock_angle_deg, 3) + " deg";
+  if (!std::isfinite(r.shock_angle_deg)) line += " (" + r.shock_angle_deg_reason + ")";
+  return line + "; results in " + d.dest.string();
+}
+
 }  // namespace
 
 bool run_has_field_sums(const fs::path& run_dir) {
@@ -89,10 +106,10 @@ int fields_command(const std::vector<fs::path>& run_dirs, const fs::path& out,
     const fs::path& dir = run_dirs[i];
     const fs::path dest = (!several && !out.empty()) ? out : dir;
     make_directory(dest);
-    write_fields_outputs(analyses[i], dest);
-    nlohmann::json keys = summary_keys(analyses[i]);
     const double target = target_mach(dir / "summary.json", analyses[i].ma_target);
-    keys["ma_inf_target"] = std::isfinite(target) ? nlohmann::json(target) : nlohmann::json();
+    set_target_mach(analyses[i], target);
+    write_fields_outputs(analyses[i], dest);
+    const nlohmann::json keys = summary_keys(analyses[i]);
     std::error_code ec;
     if (dest != dir && fs::exists(dir / "summary.json", ec) &&
         !fs::exists(dest / "summary.json", ec))
@@ -114,16 +131,13 @@ int fields_command(const std::vector<fs::path>& run_dirs, const fs::path& out,
       plot_detachment_figure(out / "detachment.json", out / "figures" / "detachment_length.png");
   }
 
-  if (!o.quiet) {
-    for (const Done& d : done)
-      std::cout << "granshock fields: " << d.run_dir.string() << ": Ma_inf "
-                << number(d.row.ma_inf_target, 3) << " (target), "
-                << number(d.row.ma_inf_measured, 3) << " (measured at the inlet), "
-                << number(d.row.ma_inf_measured_downstream, 3)
-                << " (beyond the strip); delta/D = " << number(d.row.delta_over_D, 3) << " +- "
-                << number(d.row.delta_over_D_err, 2) << "; shock angle "
-                << number(d.row.shock_angle_deg, 3) << " deg; results in " << d.dest.string()
+  // A short inflow is a warning about the data, printed even when the result line is not.
+  for (const Done& d : done)
+    if (!d.row.inflow_warning.empty())
+      std::cerr << "granshock: warning: " << d.run_dir.string() << ": " << d.row.inflow_warning
                 << "\n";
+  if (!o.quiet) {
+    for (const Done& d : done) std::cout << result_line(d) << "\n";
     if (several) std::cout << "granshock fields: comparison in " << out.string() << "\n";
   }
   return 0;

@@ -18,8 +18,9 @@ struct FieldsCommandOptions {
 // also writes the comparison of their detachment lengths (the paper's Fig. 6) into `out`:
 // detachment.csv, detachment.json and figures/detachment_length.png; `out` is then
 // required. The files that do not need Python are written before the figures, so that a
-// missing matplotlib costs only the PNGs. Returns 0; throws UserError for bad input (no
-// run.h5, no field sums, several DIRs without `out`, no matplotlib).
+// missing matplotlib costs only the PNGs. An inflow that misses its target phi_inf is a
+// warning on stderr (docs/fields.md, section 10), printed also when `quiet`. Returns 0; throws
+// UserError for bad input (no run.h5, no field sums, several DIRs without `out`, no matplotlib).
 int fields_command(const std::vector<std::filesystem::path>& run_dirs,
                    const std::filesystem::path& out);
 // The same, without figures or without the result line on stdout.

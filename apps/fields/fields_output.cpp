@@ -44,6 +44,7 @@ void add_upstream(FieldsFileContent& c, const std::string& group, const Upstream
   c.attributes.push_back({group, "Ma", u.mach});
   c.attributes.push_back({group, "Ma_mixture_mean", u.mach_mixture_mean});
   c.attributes.push_back({group, "Ma_paper_sum", u.mach_paper_sum});
+  if (!u.determined()) c.text_attributes.push_back({group, "reason", u.reason});
 }
 
 void add_flank(FieldsFileContent& c, const std::string& side, const FlankFit& f) {
@@ -54,6 +55,7 @@ void add_flank(FieldsFileContent& c, const std::string& side, const FlankFit& f)
   c.attributes.push_back({"/front", side + "_angle_err_deg", f.angle_err_deg});
   c.attributes.push_back({"/front", side + "_region_near", f.region_near});
   c.attributes.push_back({"/front", side + "_region_far", f.region_far});
+  if (!f.reason.empty()) c.text_attributes.push_back({"/front", side + "_reason", f.reason});
 }
 
 }  // namespace
@@ -97,6 +99,8 @@ FieldsFileContent fields_file_content(const FieldAnalysis& a) {
   c.attributes.push_back({"/front", "angle_deg", a.front.angle_deg});
   c.attributes.push_back({"/front", "phi_up", a.phi_up});
   c.attributes.push_back({"/front", "reference_row", double(a.reference_row)});
+  if (!a.front.angle_reason.empty())
+    c.text_attributes.push_back({"/front", "angle_reason", a.front.angle_reason});
 
   // The stagnation-line profile.
   const BinFields& pf = a.profile_fields;
@@ -132,6 +136,9 @@ FieldsFileContent fields_file_content(const FieldAnalysis& a) {
                                                    {"threshold", d.threshold},
                                                    {"blocks_used", double(d.blocks_used)}})
     c.attributes.push_back({"/profile", name, value});
+  if (!d.reason.empty()) c.text_attributes.push_back({"/profile", "delta_reason", d.reason});
+  if (!d.err_reason.empty())
+    c.text_attributes.push_back({"/profile", "delta_err_reason", d.err_reason});
 
   add_upstream(c, "/upstream/inlet", a.upstream_inlet);
   add_upstream(c, "/upstream/downstream", a.upstream_downstream);
@@ -163,12 +170,15 @@ FieldsFileContent fields_file_content(const FieldAnalysis& a) {
 
   const nlohmann::json summary = summary_keys(a);
   for (const auto& [key, value] : summary.items()) {
-    if (value.is_number())
+    const bool text_key = key.size() > 7 && key.compare(key.size() - 7, 7, "_reason") == 0;
+    if (value.is_boolean())
+      c.attributes.push_back({"/summary", key, value.get<bool>() ? 1.0 : 0.0});
+    else if (value.is_number())
       c.attributes.push_back({"/summary", key, value.get<double>()});
-    else if (value.is_null())
-      c.attributes.push_back({"/summary", key, kNaN});
     else if (value.is_string())
       c.text_attributes.push_back({"/summary", key, value.get<std::string>()});
+    else if (value.is_null() && !text_key && key != "inflow_warning")
+      c.attributes.push_back({"/summary", key, kNaN});  // an undeterminable number
   }
   return c;
 }
@@ -181,21 +191,39 @@ void write_fields_outputs(const FieldAnalysis& a, const std::filesystem::path& d
 
 nlohmann::json summary_keys(const FieldAnalysis& a) {
   nlohmann::json j;
-  j["ma_inf_target"] = number_or_null(a.ma_target);
-  j["ma_inf_measured"] = number_or_null(a.upstream_inlet.mach);
-  j["ma_inf_measured_downstream"] = number_or_null(a.upstream_downstream.mach);
-  j["phi_inf_measured"] = number_or_null(a.upstream_inlet.phi);
-  j["phi_inf_measured_downstream"] = number_or_null(a.upstream_downstream.phi);
-  j["delta_over_D"] = number_or_null(a.detachment.delta_over_d);
-  j["delta_over_D_err"] = number_or_null(a.detachment.delta_over_d_err);
-  j["detachment_length_m"] = number_or_null(a.detachment.delta);
-  j["detachment_blocks"] = a.detachment.blocks_used;
-  j["phi_peak"] = number_or_null(a.phi_peak);
-  j["shock_angle_deg"] = number_or_null(a.front.angle_deg);
-  j["shock_angle_deg_left"] = number_or_null(a.front.left.angle_deg);
-  j["shock_angle_deg_right"] = number_or_null(a.front.right.angle_deg);
-  j["eos_deviation_dilute"] = number_or_null(a.eos.dilute_mean);
-  j["eos_deviation_dense"] = number_or_null(a.eos.dense_mean);
+  // Every number that can be undeterminable comes with KEY_reason: null when KEY is a
+  // number, else one line saying why KEY is null (docs/fields.md).
+  auto put = [&j](const std::string& key, double value, const std::string& reason) {
+    j[key] = number_or_null(value);
+    if (std::isfinite(value))
+      j[key + "_reason"] = nullptr;
+    else
+      j[key + "_reason"] = reason.empty() ? "not a finite number" : reason;
+  };
+  const UpstreamState &inlet = a.upstream_inlet, &beyond = a.upstream_downstream;
+  const Detachment& d = a.detachment;
+  const InflowCheck& in = a.inflow;
+  put("ma_inf_target", a.ma_target, a.ma_target_reason);
+  put("ma_inf_measured", inlet.mach, inlet.reason);
+  put("ma_inf_measured_downstream", beyond.mach, beyond.reason);
+  put("phi_inf_measured", inlet.phi, inlet.reason);
+  put("phi_inf_measured_downstream", beyond.phi, beyond.reason);
+  put("phi_inf_measured_downstream_err", a.phi_up_err, a.phi_up_err_reason);
+  j["phi_inf_target"] = number_or_null(in.phi_target);
+  put("phi_inf_deviation", in.phi_deviation, in.phi_deviation_reason);
+  put("ma_inf_deviation", in.ma_deviation, in.ma_deviation_reason);
+  j["inflow_phi_short"] = in.phi_short;
+  j["inflow_warning"] = in.warning.empty() ? nlohmann::json() : nlohmann::json(in.warning);
+  put("delta_over_D", d.delta_over_d, d.reason);
+  put("delta_over_D_err", d.delta_over_d_err, d.err_reason);
+  put("detachment_length_m", d.delta, d.reason);
+  j["detachment_blocks"] = d.blocks_used;
+  put("phi_peak", a.phi_peak, a.phi_peak_reason);
+  put("shock_angle_deg", a.front.angle_deg, a.front.angle_reason);
+  put("shock_angle_deg_left", a.front.left.angle_deg, a.front.left.reason);
+  put("shock_angle_deg_right", a.front.right.angle_deg, a.front.right.reason);
+  put("eos_deviation_dilute", a.eos.dilute_mean, a.eos.dilute_reason);
+  put("eos_deviation_dense", a.eos.dense_mean, a.eos.dense_reason);
   j["eos_bins_dilute"] = a.eos.dilute_bins;
   j["eos_bins_dense"] = a.eos.dense_bins;
   j["mass_definition"] = to_string(a.physics.mass_definition);

@@ -18,8 +18,9 @@ void write_fields_outputs(const FieldAnalysis& analysis, const std::filesystem::
 
 // The summary.json keys: ma_inf_target, ma_inf_measured, ma_inf_measured_downstream,
 // phi_inf_measured, delta_over_D, delta_over_D_err, phi_peak, shock_angle_deg,
-// eos_deviation_dilute, eos_deviation_dense, mass_definition, and a few more that say
-// how they were obtained (docs/fields.md). NaN becomes null.
+// eos_deviation_dilute, eos_deviation_dense, the inflow against its target, mass_definition,
+// and a few more that say how they were obtained (docs/fields.md). NaN becomes null, with
+// KEY_reason saying why (null when KEY is a number).
 nlohmann::json summary_keys(const FieldAnalysis& analysis);
 
 }  // namespace granshock

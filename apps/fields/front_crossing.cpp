@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 namespace granshock {
@@ -13,16 +14,23 @@ FrontCrossing find_front_crossing(const std::vector<double>& phi, const std::vec
   FrontCrossing c;
   begin = std::max(begin, 0);
   end = std::min(end, static_cast<int>(phi.size()));
-  if (end - begin < 2 || !(phi_up > 0)) return c;
+  if (end - begin < 2) return c;
+  c.why = NoFront::no_upstream_phi;
+  if (!(phi_up > 0)) return c;
   for (int k = begin; k < end; ++k)
     if (std::isfinite(phi[k]) && (c.peak_index < 0 || phi[k] > c.phi_peak)) {
       c.phi_peak = phi[k];
       c.peak_index = k;
     }
-  if (c.peak_index < 0 || !(c.phi_peak >= rule.min_jump_ratio * phi_up)) return c;
+  c.why = NoFront::all_masked;
+  if (c.peak_index < 0) return c;
+  c.why = NoFront::jump_too_small;
+  if (!(c.phi_peak >= rule.min_jump_ratio * phi_up)) return c;
   c.threshold = phi_up + rule.fraction * (c.phi_peak - phi_up);
+  c.why = NoFront::masked_before_peak;
   for (int k = begin; k <= c.peak_index; ++k)
     if (!std::isfinite(phi[k])) return c;
+  c.why = NoFront::above_threshold_first;
   if (phi[begin] >= c.threshold) return c;
 
   for (int k = begin + 1; k <= c.peak_index; ++k) {
@@ -30,6 +38,7 @@ FrontCrossing find_front_crossing(const std::vector<double>& phi, const std::vec
       const double t = (c.threshold - phi[k - 1]) / (phi[k] - phi[k - 1]);
       c.y_threshold = y[k - 1] + t * (y[k] - y[k - 1]);
       c.found = true;
+      c.why = NoFront::none;
       break;
     }
   }
@@ -49,6 +58,33 @@ FrontCrossing find_front_crossing(const std::vector<double>& phi, const std::vec
   }
   c.y_max_gradient = 0.5 * (y[best] + y[best + 1]) + offset * h;
   return c;
+}
+
+std::string describe(NoFront why, const FrontCrossing& c, double phi_up,
+                     const ThresholdRule& rule) {
+  char text[200];
+  switch (why) {
+    case NoFront::none:
+      return "";
+    case NoFront::too_few_bins:
+      return "fewer than 2 bins to search";
+    case NoFront::no_upstream_phi:
+      return "no measured upstream phi";
+    case NoFront::all_masked:
+      return "every searched bin is masked (too few particle samples)";
+    case NoFront::jump_too_small:
+      std::snprintf(text, sizeof text, "the largest phi (%.3g) is below %.3g phi_up (%.3g)",
+                    c.phi_peak, rule.min_jump_ratio, rule.min_jump_ratio * phi_up);
+      return text;
+    case NoFront::masked_before_peak:
+      return "a masked bin (too few particle samples) lies between the search start and the "
+             "peak";
+    case NoFront::above_threshold_first:
+      std::snprintf(text, sizeof text,
+                    "phi is already above the threshold %.3g where the search starts", c.threshold);
+      return text;
+  }
+  return "";
 }
 
 }  // namespace granshock

@@ -3,6 +3,7 @@
 // detachment length (the stagnation-line profile). Rules and reasons: docs/fields.md.
 #pragma once
 
+#include <string>
 #include <vector>
 
 namespace granshock {
@@ -15,8 +16,20 @@ struct ThresholdRule {
   double min_jump_ratio = 1.5;
 };
 
+// Why a line has no front (docs/fields.md, "When a number cannot be determined").
+enum class NoFront {
+  none,                   // a front was found
+  too_few_bins,           // fewer than 2 bins to search
+  no_upstream_phi,        // phi_up is not a positive number
+  all_masked,             // no usable (finite) phi in the searched bins
+  jump_too_small,         // phi_peak < min_jump_ratio phi_up
+  masked_before_peak,     // a masked (NaN) bin between the start and the peak
+  above_threshold_first,  // phi already at or above the threshold where the search starts
+};
+
 struct FrontCrossing {
   bool found = false;
+  NoFront why = NoFront::too_few_bins;
   double threshold = 0;  // phi_up + fraction (phi_peak - phi_up)
   double phi_peak = 0;   // max phi over the searched bins
   int peak_index = -1;
@@ -25,14 +38,17 @@ struct FrontCrossing {
       0;  // steepest rise of phi between phi_up and the peak (parabolic refinement)
 };
 
-// phi and y: the bins of one line, y (bin centres) increasing downstream. Searches bins
-// [begin, end): the peak is the largest finite phi there; the crossing is the first bin k
-// in (begin, peak] with phi[k] >= threshold > phi[k-1], interpolated linearly; the maximum
-// gradient is that of the steepest pair (k, k+1) with begin <= k < peak, placed at the
-// pair's midpoint and refined by a parabola through its neighbours' gradients. Not found
-// when the jump is too small, when phi is already above the threshold at `begin`, or when
-// a NaN lies between `begin` and the peak.
+// phi and y: the bins of one line, y (bin centres) increasing downstream; masked bins hold
+// NaN. Searches bins [begin, end): the peak is the largest finite phi there; the crossing
+// is the first bin k in (begin, peak] with phi[k] >= threshold > phi[k-1], interpolated
+// linearly; the maximum gradient is that of the steepest pair (k, k+1) with begin <= k <
+// peak, placed at the pair's midpoint and refined by a parabola through its neighbours'
+// gradients. Not found (and `why` says which) when the jump is too small, when phi is
+// already above the threshold at `begin`, or when a NaN lies between `begin` and the peak.
 FrontCrossing find_front_crossing(const std::vector<double>& phi, const std::vector<double>& y,
                                   int begin, int end, double phi_up, const ThresholdRule& rule);
+
+// One clause saying why there is no front, e.g. "the largest phi (0.12) is below 1.5 phi_up".
+std::string describe(NoFront why, const FrontCrossing& c, double phi_up, const ThresholdRule& rule);
 
 }  // namespace granshock

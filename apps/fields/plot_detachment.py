@@ -38,20 +38,32 @@ def main():
 
     fig, ax = plt.subplots(figsize=(5.5, 4.0), constrained_layout=True)
     markers = "osD^v<>"
+    # A run whose delta/D (or D/d) could not be determined has no point; the figure says
+    # how many, and detachment.json says why (delta_over_D_reason).
+    left_out = 0
     for i, key in enumerate(sorted(groups, key=lambda k: (math.isnan(k), k))):
-        series = sorted(groups[key], key=lambda r: number(r["D_over_d"]))
+        usable = [r for r in groups[key]
+                  if math.isfinite(number(r["D_over_d"])) and math.isfinite(number(r["delta_over_D"]))]
+        left_out += len(groups[key]) - len(usable)
+        if not usable:
+            continue
+        series = sorted(usable, key=lambda r: number(r["D_over_d"]))
         x = [number(r["D_over_d"]) for r in series]
         y = [number(r["delta_over_D"]) for r in series]
         err = [number(r["delta_over_D_err"]) for r in series]
         err = [e if math.isfinite(e) else 0.0 for e in err]
         label = f"Ma$_\\infty$ = {key:g}" if math.isfinite(key) else "Ma$_\\infty$ unknown"
         ax.errorbar(x, y, yerr=err, marker=markers[i % len(markers)], capsize=3, linewidth=1.0, label=label)
+    if left_out:
+        ax.text(0.98, 0.02, f"{left_out} of {len(rows)} runs without a determinable $\\delta$/D",
+                transform=ax.transAxes, ha="right", va="bottom", fontsize=8, color="0.3")
     ax.set_ylim(bottom=0)
     ax.set_xlabel("D / d")
     ax.set_ylabel("$\\delta$ / D")
     ax.set_title("Detachment length", fontsize=10)
     ax.grid(alpha=0.3)
-    ax.legend(fontsize=8)
+    if ax.get_legend_handles_labels()[0]:
+        ax.legend(fontsize=8)
     os.makedirs(os.path.dirname(os.path.abspath(sys.argv[2])), exist_ok=True)
     fig.savefig(sys.argv[2], dpi=150)
     plt.close(fig)

@@ -11,6 +11,7 @@ numpy, h5py and matplotlib (Debian: python3-numpy python3-h5py python3-matplotli
 """
 import os
 import sys
+import textwrap
 
 import matplotlib
 
@@ -47,11 +48,14 @@ class Run:
             self.x_nodes = f["grid/x_nodes"][...] / self.d
             self.y_nodes = f["grid/y_nodes"][...] / self.d
             self.fields = {name: f["fields/" + name][...] for name in ("phi", "T_norm", "Ma", "masked")}
+            # A masked bin holds too few particle samples for any field, phi included: blank.
+            self.fields["phi"] = np.where(self.fields["masked"] != 0, np.nan, self.fields["phi"])
             self.sonic = [line / self.d for line in read_lines(f, "sonic")]
             self.front = [line / self.d for line in read_lines(f, "shock_threshold")]
             profile = f["profile"]
             self.profile = {name: profile[name][...] for name in ("y", "phi", "T_norm", "Ma")}
             self.profile["y"] = self.profile["y"] / self.d
+            self.profile["phi"] = np.where(profile["masked"][...] != 0, np.nan, self.profile["phi"])
             self.y_shock = float(profile.attrs["y_shock"]) / self.d
             self.surface = float(profile.attrs["surface"]) / self.d
             self.delta_over_d = float(profile.attrs["delta_over_D"])
@@ -59,6 +63,10 @@ class Run:
             summary = f["summary"].attrs
             self.ma_target = float(summary["ma_inf_target"])
             self.ma_measured = float(summary["ma_inf_measured"])
+            # Why delta/D could not be determined (absent when it could).
+            reason = summary.get("delta_over_D_reason", "")
+            self.delta_reason = reason.decode() if isinstance(reason, bytes) else str(reason)
+            self.all_masked = bool(np.all(self.fields["masked"] != 0))
 
     def has_obstacle(self):
         return np.isfinite(self.diameter) and self.diameter > 0
@@ -105,7 +113,11 @@ def field_figure(run, values, label, title, path, norm=None, cmap="viridis", lin
     ax.set_xlabel("x / d (crosswise)")
     ax.set_ylabel("y / d (streamwise)")
     ax.set_title(title, fontsize=10)
-    if np.isnan(values).any():
+    if run.all_masked:
+        ax.text(0.5, 0.5, "every bin is masked:\ntoo few particle samples", transform=ax.transAxes,
+                ha="center", va="center", fontsize=11, color="0.2",
+                bbox=dict(facecolor="white", edgecolor="0.5"), zorder=5)
+    elif np.isnan(values).any():
         ax.text(1.0, -0.06, "hatched: masked bins (too few particles)", transform=ax.transAxes,
                 ha="right", va="top", fontsize=7, color="0.3")
     fig.savefig(path, dpi=150)
@@ -142,11 +154,18 @@ def profile_figure(run, path):
     if axes[0].get_legend_handles_labels()[0]:
         axes[0].legend(fontsize=8)
     axes[-1].set_xlabel("y / d (along the stagnation line)")
+    if p["y"].size and not np.isfinite(p["phi"]).any():  # every bin masked: the whole profile
+        axes[-1].set_xlim(p["y"][0], max(p["y"][-1], np.nan_to_num(run.surface, nan=p["y"][-1])))
     title = run.title("Stagnation line")
     if np.isfinite(run.delta_over_d):
         title += f", $\\delta/D$ = {run.delta_over_d:.3g}"
         if np.isfinite(run.delta_over_d_err):
             title += f" $\\pm$ {run.delta_over_d_err:.2g}"
+    else:
+        title += ", $\\delta/D$ n/a"
+        if run.delta_reason:
+            axes[-1].text(0.0, -0.3, textwrap.fill("delta/D n/a: " + run.delta_reason, 100),
+                          transform=axes[-1].transAxes, fontsize=7, color="0.3", va="top")
     axes[0].set_title(title, fontsize=10)
     fig.savefig(path, dpi=150)
     plt.close(fig)

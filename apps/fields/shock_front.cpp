@@ -2,6 +2,7 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 namespace granshock {
@@ -65,7 +66,8 @@ FlankFit fit_flank(const std::vector<double>& x, const std::vector<double>& y) {
 }
 
 ShockFront find_shock_front(const BinFields& f, const BinSums& grid, const FieldPhysics& phys,
-                            double phi_up, int row_begin, const ThresholdRule& rule) {
+                            double phi_up, int row_begin, const ThresholdRule& rule,
+                            double y_upstream_end) {
   ShockFront s;
   const std::size_t nx = static_cast<std::size_t>(grid.nx);
   s.x.resize(nx);
@@ -79,11 +81,13 @@ ShockFront find_shock_front(const BinFields& f, const BinSums& grid, const Field
   for (int ix = 0; ix < grid.nx; ++ix) {
     const std::size_t i = static_cast<std::size_t>(ix);
     s.x[i] = grid.x_centre(ix);
-    for (int iy = 0; iy < grid.ny; ++iy)
-      column[static_cast<std::size_t>(iy)] = f.phi[f.index(iy, ix)];
+    for (int iy = 0; iy < grid.ny; ++iy) {
+      const std::size_t k = f.index(iy, ix);
+      column[static_cast<std::size_t>(iy)] = f.masked[k] ? kNaN : f.phi[k];
+    }
     const FrontCrossing c =
         find_front_crossing(column, y, row_begin, search_end(grid, phys, s.x[i]), phi_up, rule);
-    if (!c.found) continue;
+    if (!c.found || c.y_threshold < y_upstream_end) continue;
     s.y_threshold[i] = c.y_threshold;
     s.y_max_gradient[i] = c.y_max_gradient;
     s.phi_peak[i] = c.phi_peak;
@@ -94,7 +98,10 @@ ShockFront find_shock_front(const BinFields& f, const BinSums& grid, const Field
 
   s.left = s.right = fit_flank({}, {});
   s.angle_deg = kNaN;
-  if (!phys.obstacle) return s;
+  if (!phys.obstacle) {
+    s.left.reason = s.right.reason = s.angle_reason = "the scene has no obstacle";
+    return s;
+  }
   const double near = phys.obstacle->diameter;
   const double far = 0.5 * (phys.box_x_hi - phys.box_x_lo) - 2 * grid.dx;
   std::vector<double> xl, yl, xr, yr;
@@ -108,9 +115,18 @@ ShockFront find_shock_front(const BinFields& f, const BinSums& grid, const Field
   }
   s.left = fit_flank(xl, yl);
   s.right = fit_flank(xr, yr);
+  char region[160];
+  std::snprintf(region, sizeof region, "%.4g d <= |x - xc| <= %.4g d", near / phys.d, far / phys.d);
   for (FlankFit* fit : {&s.left, &s.right}) {
     fit->region_near = near;
     fit->region_far = far;
+    if (std::isfinite(fit->angle_deg)) continue;
+    if (far < near)
+      fit->reason = std::string("the domain is too narrow: the fit region ") + region +
+                    " (one diameter from the axis to 2 bins short of the midway line) is empty";
+    else
+      fit->reason = "only " + std::to_string(fit->points) + " columns of the fit region " + region +
+                    " have a shock front (the line fit needs 3)";
   }
   double sum = 0;
   int count = 0;
@@ -120,6 +136,10 @@ ShockFront find_shock_front(const BinFields& f, const BinSums& grid, const Field
       ++count;
     }
   s.angle_deg = count ? sum / count : kNaN;
+  if (!count)
+    s.angle_reason = s.left.reason == s.right.reason
+                         ? s.left.reason
+                         : "left flank: " + s.left.reason + "; right flank: " + s.right.reason;
   return s;
 }
 

@@ -2,18 +2,52 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 #include "kinetic_theory.hpp"
 
 namespace granshock {
 
-UpstreamState measure_upstream(const BinFields& f, const FieldPhysics& phys, int row_begin,
-                               int row_end) {
-  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+UpstreamState undetermined(UpstreamState s, std::string reason) {
+  s.phi = s.temperature = s.uy = s.sound_speed = s.mach = s.mach_mixture_mean = s.mach_paper_sum =
+      kNaN;
+  s.reason = std::move(reason);
+  return s;
+}
+
+std::string in_d(double length, const FieldPhysics& phys) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g d", length / phys.d);
+  return text;
+}
+
+}  // namespace
+
+UpstreamState measure_upstream(const BinFields& f, const BinSums& grid, const FieldPhysics& phys,
+                               int row_begin, int row_end) {
   UpstreamState s;
-  s.row_begin = std::clamp(row_begin, 0, f.ny);
-  s.row_end = std::clamp(row_end, s.row_begin, f.ny);
+  s.row_begin = std::max(row_begin, 0);
+  s.row_end = std::max(row_end, s.row_begin);
+  const std::string rows =
+      "rows " + std::to_string(s.row_begin) + "-" + std::to_string(s.row_end - 1);
+  const double top = grid.y0 + s.row_end * grid.dy;  // upper edge of the last row
+  if (s.row_end > f.ny || s.row_end == s.row_begin)
+    return undetermined(s, rows + " are not all in the grid, which has " + std::to_string(f.ny) +
+                               (f.ny == 1 ? " row of " : " rows of ") + in_d(grid.dy, phys));
+  // A bin larger than the domain holds empty space beyond it, which dilutes phi.
+  if (top > phys.box_y_hi + 1e-9 * grid.dy)
+    return undetermined(s, rows + " reach y = " + in_d(top, phys) + ", beyond the domain's end (" +
+                               in_d(phys.box_y_hi, phys) + ")");
+  if (phys.obstacle && top > phys.obstacle->yc - phys.obstacle->radius() + 1e-9 * grid.dy)
+    return undetermined(s, rows + " reach y = " + in_d(top, phys) +
+                               ", past the obstacle's upstream surface (" +
+                               in_d(phys.obstacle->yc - phys.obstacle->radius(), phys) +
+                               "): they are not upstream");
   double phi_sum = 0, weight = 0, t_sum = 0, uy_sum = 0;
   int phi_bins = 0;
   std::vector<double> species(static_cast<std::size_t>(f.n_species), 0.0);
@@ -33,11 +67,14 @@ UpstreamState measure_upstream(const BinFields& f, const FieldPhysics& phys, int
       ++s.bins;
     }
   }
-  if (s.bins == 0 || phi_bins == 0) {
-    s.phi = s.temperature = s.uy = s.sound_speed = s.mach = s.mach_mixture_mean = s.mach_paper_sum =
-        nan;
-    return s;
-  }
+  const int all_bins = (s.row_end - s.row_begin) * f.nx;
+  // Phi is averaged over every sampled bin and T over the unmasked ones weighted by their
+  // counts; with most bins masked the rows hold too few particles for a temperature.
+  if (2 * s.bins < all_bins || phi_bins == 0)
+    return undetermined(s, "only " + std::to_string(s.bins) + " of the " +
+                               std::to_string(all_bins) + " bins of " + rows +
+                               " are unmasked (at least half must be; a masked bin has too few "
+                               "particle samples)");
   s.phi = phi_sum / phi_bins;
   s.temperature = t_sum / weight;
   s.uy = uy_sum / weight;
@@ -55,6 +92,31 @@ UpstreamState measure_upstream(const BinFields& f, const FieldPhysics& phys, int
       phys.mass_definition == MassDefinition::mixture_mean ? s.mach_mixture_mean : s.mach_paper_sum;
   s.sound_speed = phys.inflow_speed / s.mach;
   return s;
+}
+
+std::vector<double> upstream_phi_by_block(const BinSums& grid, const FieldPhysics& phys,
+                                          int row_begin, int row_end) {
+  std::vector<double> out;
+  if (row_begin < 0 || row_end > grid.ny || row_end <= row_begin) return out;
+  const BinLayout l = grid.layout();
+  // phi = sum_a N_a pi d_a^2 / 4 / (S V), over the rows' bins: the same as the mean of the
+  // bins' phi (docs/fields.md, section 2).
+  const double bins = static_cast<double>(row_end - row_begin) * grid.nx;
+  for (int b = 0; b < grid.blocks; ++b) {
+    const double samples = grid.samples[static_cast<std::size_t>(b)];
+    if (!(samples > 0)) continue;
+    double disks = 0;
+    for (int iy = row_begin; iy < row_end; ++iy)
+      for (int ix = 0; ix < grid.nx; ++ix)
+        for (int a = 0; a < grid.n_species; ++a) {
+          const double d = phys.diameter[static_cast<std::size_t>(a)];
+          disks += grid.sums[static_cast<std::size_t>(
+                       l.offset(b, iy, ix, l.species_index(a, BinLayout::count)))] *
+                   M_PI * d * d / 4;
+        }
+    out.push_back(disks / (samples * grid.bin_area() * bins));
+  }
+  return out;
 }
 
 int first_row_beyond_strip(const BinSums& grid, double strip) {

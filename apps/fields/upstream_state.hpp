@@ -6,6 +6,9 @@
 // taken over the two rows that start one bin beyond the strip (DESIGN.md 2.3).
 #pragma once
 
+#include <string>
+#include <vector>
+
 #include "bin_fields.hpp"
 #include "bin_sums.hpp"
 #include "field_physics.hpp"
@@ -21,13 +24,22 @@ struct UpstreamState {
   double sound_speed = 0;          // a(T, phi) with the scene's mass definition
   double mach = 0;                 // U / a, U the inflow speed (eq. 5)
   double mach_mixture_mean = 0, mach_paper_sum = 0;
+  std::string reason;  // why the state is undeterminable (every number NaN); empty if it is not
+  bool determined() const { return reason.empty(); }
 };
 
-// Averages rows [row_begin, row_end): phi over every sampled bin, T and u_y weighted with
-// the particles counted in each unmasked bin, the number fractions of the mixture-mean mass
-// from the pooled counts. NaN values (bins = 0) when no bin of those rows is usable.
-UpstreamState measure_upstream(const BinFields& fields, const FieldPhysics& physics, int row_begin,
-                               int row_end);
+// Averages rows [row_begin, row_end) of `grid`: phi over every sampled bin, T and u_y
+// weighted with the particles counted in each unmasked bin, the number fractions of the
+// mixture-mean mass from the pooled counts. Undeterminable (every number NaN, `reason`
+// set) when a row lies outside the grid or the domain, when the rows reach the obstacle's
+// upstream surface, or when fewer than half of their bins are unmasked (docs/fields.md).
+UpstreamState measure_upstream(const BinFields& fields, const BinSums& grid,
+                               const FieldPhysics& physics, int row_begin, int row_end);
+
+// The mean phi of rows [row_begin, row_end) in each block that has samples, for the block
+// error of phi_inf (block_error.hpp). Empty when the rows are not all in the grid.
+std::vector<double> upstream_phi_by_block(const BinSums& grid, const FieldPhysics& physics,
+                                          int row_begin, int row_end);
 
 // The first row whose lower edge lies at least one bin beyond the insertion strip:
 // y0 + row dy >= strip + dy.

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "field_sampling_check.hpp"
 #include "user_error.hpp"
 
 namespace granshock {
@@ -81,6 +82,7 @@ std::vector<std::string> check_scene_before_run(const Scene& s, bool force) {
   const OverlapAssessment overlap = assess_overlap(s.setup.all_pairs(), s.fastest_impact_speed());
   if (overlap.verdict == Verdict::refuse && !force) throw UserError(overlap.message);
   if (overlap.verdict != Verdict::ok) warnings.push_back(overlap.message);
+  validate_field_sampling(s);  // before any output: no hours spent on empty fields
   return warnings;
 }
 

@@ -12,7 +12,7 @@ trap 'rm -rf "$dir"' EXIT
   ulimit -f 1500  # KiB: room for the first checkpoint, not for the run
   exec "$granshock" run "$scene" --out "$dir/run" --quiet --set time.duration=0.02 \
     --set time.production_start=0.01 --set output.snapshot_interval=0.0005 \
-    --set output.checkpoint_interval=0.002 --set 'numerics.bin_size="10 d"'
+    --set output.checkpoint_interval=0.002 --set 'numerics.bin_size="6 d"' --set output.blocks=2
 ) >"$dir/out" 2>"$dir/err"
 code=$?
 grep -v -e '^Kokkos::OpenMP::initialize WARNING' -e '^  ' "$dir/err" >"$dir/own" || true

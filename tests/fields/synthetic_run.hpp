@@ -23,9 +23,10 @@
 namespace granshock::test {
 
 // A channel 60 d wide and 90 d long, the paper's mixture (steel and aluminium, d = 1 mm,
-// e = 0.5, equimolar), U = 1 m/s at Ma_inf 5.9, a cylinder of `diameter_d` d at (30 d, 60 d)
-// (none when diameter_d = 0).
-inline std::string bow_shock_scene(double diameter_d = 12, double mach = 5.9) {
+// e = 0.5, equimolar), U = 1 m/s at Ma_inf 5.9 and phi_inf = area_fraction, a cylinder of
+// `diameter_d` d at (30 d, 60 d) (none when diameter_d = 0).
+inline std::string bow_shock_scene(double diameter_d = 12, double mach = 5.9,
+                                   double area_fraction = 0.1) {
   const std::string obstacle = diameter_d > 0
                                    ? "[obstacle]\ndiameter = \"" + std::to_string(diameter_d) +
                                          " d\"\ncentre = [\"30 d\", \"60 d\"]\n"
@@ -51,7 +52,8 @@ restitution = 0.5
 width = "60 d"
 length = "90 d"
 [inflow]
-area_fraction = 0.1
+area_fraction = )" +
+         std::to_string(area_fraction) + R"(
 velocity = 1.0
 mach = )" +
          std::to_string(mach) + R"(
@@ -172,6 +174,37 @@ inline void fill_with_front(BinSums& s, const FieldPhysics& phys, const BinState
       }
     }
   }
+}
+
+// The sums of a bow shock in front of the cylinder of bow_shock_scene(diameter_d) at
+// (30 d, 60 d): upstream phi_up at Ma 6; behind a V-shaped front (apex D/2 ahead of the
+// surface plus apex_shift, flanks at 50 deg to +y) phi 0.4 at Ma 0.5. The grid has 3 d bins
+// over the 60 d x 90 d channel, the stagnation-line profile is 3 d wide with 0.5 d bins;
+// `blocks` blocks of samples_per_block samples, block b's front shifted by a few tenths of d.
+struct BowShockSums {
+  BinSums grid, profile;
+};
+inline BowShockSums bow_shock_sums(const FieldPhysics& phys, double diameter_d, int blocks,
+                                   double samples_per_block, double phi_up = 0.1,
+                                   double apex_shift = 0) {
+  constexpr double d = 1e-3;
+  const double surface = 60 * d - 0.5 * diameter_d * d;
+  const double apex = surface - 0.5 * diameter_d * d + apex_shift;
+  const double cot_beta = 1.0 / std::tan(50.0 * M_PI / 180.0);
+  const std::vector<double> shifts{0.2 * d, -0.3 * d, 0.1 * d, -0.1 * d};
+  auto behind = [&](double x, double y, int b) {
+    return y > apex + shifts[static_cast<std::size_t>(b) % shifts.size()] +
+                   std::abs(x - 30 * d) * cot_beta;
+  };
+  const BinState pre =
+      mixture_state(phys, phi_up, temperature_for_mach(phys, phi_up, 1.0, 6.0), 0, 1.0);
+  const BinState post =
+      mixture_state(phys, 0.4, temperature_for_mach(phys, 0.4, 0.2, 0.5), 0.02, 0.2);
+  BowShockSums s{empty_sums(20, 30, blocks, 0, 0, 3 * d, 3 * d),
+                 empty_sums(1, 180, blocks, 28.5 * d, 0, 3 * d, 0.5 * d)};
+  fill_with_front(s.grid, phys, pre, post, behind, samples_per_block, 6);
+  fill_with_front(s.profile, phys, pre, post, behind, samples_per_block, 6);
+  return s;
 }
 
 // Writes run.h5 in dir with the scene and the sums, as `granshock run` stores them.

@@ -139,8 +139,8 @@ TEST(BinFields, UpstreamMachFromTheFirstRowsAndBeyondTheStrip) {
                       phys, 2000);
   const BinFields f = compute_bin_fields(s, phys);
   EXPECT_EQ(first_row_beyond_strip(s, phys.inflow_strip), 2);
-  const UpstreamState inlet = measure_upstream(f, phys, 0, 2),
-                      beyond = measure_upstream(f, phys, 2, 4);
+  const UpstreamState inlet = measure_upstream(f, s, phys, 0, 2),
+                      beyond = measure_upstream(f, s, phys, 2, 4);
   EXPECT_NEAR(inlet.phi, 0.08, 1e-12);
   EXPECT_NEAR(inlet.mach, 4.0, 1e-9);  // U = 1 m/s, not the measured 0.9
   EXPECT_NEAR(inlet.uy, 0.9, 1e-12);

@@ -129,7 +129,15 @@ INSTANTIATE_TEST_SUITE_P(
                {"materials.soft.youngs_modulus=1000", "materials.soft.poisson_ratio=0.3",
                 "materials.soft.density=7850", "species.0.material=\"soft\"",
                 "species.1.material=\"soft\""},
-               "past 0.2 of a diameter the contact law has no meaning"}),
+               "past 0.2 of a diameter the contact law has no meaning"},
+        // The field sampling (docs/fields.md, "Up-front checks"): refused before
+        // the run, not found empty after it.
+        BadRun{"one_field_sample", {"output.sample_every=1000000000"}, "holds 1 field samples"},
+        BadRun{"one_bin", {"numerics.bin_size=1000 d"}, "bins across the domain"},
+        BadRun{"bins_below_a_particle",
+               {"numerics.bin_size=0.001 d"},
+               "smaller than the particle diameter"},
+        BadRun{"blocks_beyond_limit", {"output.blocks=1000000000"}, "must be at most 10000"}),
     [](const auto& param_info) { return std::string(param_info.param.name); });
 
 TEST(RunRefusesDirectory, UnwritableOrExisting) {
@@ -189,7 +197,9 @@ TEST(RunDefaultScene, FormsADenseRegionInFrontOfTheObstacle) {
 TEST(RunStability, ForcedUnstableStepStopsWithADiagnosis) {
   TempDir tmp;
   const auto scene = tmp.write("small.toml", small_scene(true));
-  RunOptions o = options_for(scene, tmp.path() / "run", {"time.dt=3e-6"});
+  // Samples every 10 steps: at this dt the default 100 would leave the production window too
+  // few field samples, and the run would be refused before it could blow up.
+  RunOptions o = options_for(scene, tmp.path() / "run", {"time.dt=3e-6", "output.sample_every=10"});
   o.force = true;
   try {
     run_scene(o);
@@ -201,17 +211,19 @@ TEST(RunStability, ForcedUnstableStepStopsWithADiagnosis) {
 }
 
 // The data-safety issue: an inflow that cannot be met is reported, not carried forward
-// without end. A cylinder of 24 d in a 30 d channel, 4 d behind the strip: the particles
-// it stops pile up into the strip. summary.json tells requested, inserted, backlog and
+// without end. phi_inf = 0.4 (the limit) into a 30 d channel nearly closed by a cylinder
+// of 26 d, e = 0.2: the particles it stops pile up into the strip, and the narrow gaps
+// beside it cannot take the prefill. summary.json tells requested, inserted, backlog and
 // lost, the backlog stays bounded by one batch, and stderr warns once.
 TEST(RunInflow, AStripThatStaysFullIsReportedAndItsBacklogBounded) {
   TempDir tmp;
   const auto scene = tmp.write("small.toml", small_scene(true));
   RunOptions o = options_for(
       scene, tmp.path() / "blocked",
-      {"inflow.area_fraction=0.3", "inflow.velocity=0.5", "inflow.sigma=0.05",
-       "domain.width=\"30 d\"", "domain.length=\"40 d\"", "obstacle.centre=[\"15 d\", \"16 d\"]",
-       "obstacle.diameter=\"24 d\"", "time.duration=0.04", "time.production_start=0.02"});
+      {"inflow.area_fraction=0.4", "inflow.velocity=0.5", "inflow.sigma=0.05",
+       "contact.restitution=0.2", "domain.width=\"30 d\"", "domain.length=\"40 d\"",
+       "obstacle.centre=[\"15 d\", \"20 d\"]", "obstacle.diameter=\"26 d\"", "time.duration=0.04",
+       "time.production_start=0.02", "numerics.bin_size=\"1 d\""});
   ::testing::internal::CaptureStderr();
   ASSERT_EQ(run_scene(o), 0);
   const std::string err = ::testing::internal::GetCapturedStderr();
@@ -220,15 +232,17 @@ TEST(RunInflow, AStripThatStaysFullIsReportedAndItsBacklogBounded) {
   std::printf("[ measured ] blocked inlet: %s\n", blocked.dump().c_str());
   EXPECT_TRUE(blocked["falls_short"].get<bool>());
   EXPECT_LT(blocked["achieved_fraction"].get<double>(), 0.97);
-  // Bounded: one batch of a 30 d strip at phi 0.3 is 0.3 * 30 * 2 / (pi / 4) = 23 particles.
-  EXPECT_LE(blocked["backlog"].get<double>(), 23.0);
+  // Bounded: one batch of a 30 d strip at phi 0.4 is 0.4 * 30 * 2 / (pi / 4) = 30.6
+  // particles.
+  EXPECT_LE(blocked["backlog"].get<double>(), 0.4 * 30 * 2 / (M_PI / 4) * 1.001);
   EXPECT_NEAR(blocked["requested"].get<double>(),
               blocked["inserted"].get<double>() + blocked["backlog"].get<double>() +
                   blocked["lost"].get<double>(),
               1e-6);
 
-  ASSERT_EQ(run_scene(options_for(scene, tmp.path() / "free",
-                                  {"time.duration=0.002", "time.production_start=0.001"})),
+  ASSERT_EQ(run_scene(options_for(
+                scene, tmp.path() / "free",
+                {"time.duration=0.002", "time.production_start=0.001", "output.sample_every=10"})),
             0);
   const auto free = read_summary(tmp.path() / "free" / "summary.json")["inflow"];
   EXPECT_FALSE(free["falls_short"].get<bool>()) << free.dump();

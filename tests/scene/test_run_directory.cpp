@@ -25,7 +25,7 @@ RunOptions short_run(const fs::path& scene, const fs::path& out) {
   RunOptions o;
   o.scene_file = scene;
   o.out_dir = out;
-  o.overrides = {"time.duration=0.0004", "time.production_start=0.0002"};
+  o.overrides = {"time.duration=0.0004", "time.production_start=0.0002", "output.sample_every=10"};
   o.quiet = true;
   return o;
 }
@@ -160,7 +160,7 @@ TEST(RunDirectoryOverwrite, CleansAMarkedRunDirectoryCompletely) {
   const fs::path run = tmp.path() / "run";
   // A full run writes everything: fields, figures, summary.
   RunOptions full = short_run(scene, run);
-  full.overrides = {"time.duration=0.002", "time.production_start=0.001"};
+  full.overrides = {"time.duration=0.002", "time.production_start=0.001", "output.sample_every=10"};
   ASSERT_EQ(run_scene(full), 0);
   ASSERT_TRUE(fs::exists(run / "fields.h5"));
   // Nothing a run writes is missing from run_outputs(): otherwise --overwrite would leave

@@ -1,0 +1,45 @@
+#!/usr/bin/python3
+"""Digest of a granshock run directory for the bitwise reference check.
+
+Prints one JSON object: the SHA-256 of every dataset of checkpoint.h5 /state (the final
+particle state, neighbour list included) and of the field sums in run.h5, and every
+summary.json value that does not depend on the machine or the clock. Two runs of the same
+scene by two builds have equal digests exactly when their trajectories are bitwise equal.
+
+Usage: digest.py RUN_DIR
+"""
+import hashlib
+import json
+import sys
+
+import h5py
+import numpy
+
+# summary.json keys that measure the machine, not the physics.
+MACHINE_KEYS = {"wall_seconds", "particle_steps_per_second", "threads", "backend", "variant"}
+
+
+def sha(array):
+    return hashlib.sha256(numpy.ascontiguousarray(array).tobytes()).hexdigest()[:32]
+
+
+def main(run_dir):
+    digest = {"state": {}, "fields": {}, "summary": {}}
+    with h5py.File(f"{run_dir}/checkpoint.h5", "r") as f:
+        for name, item in sorted(f["state"].items()):
+            digest["state"][name] = sha(item[()])
+        for name in ("step", "next_id", "list_builds"):
+            digest["state"]["@" + name] = int(f["state"].attrs[name])
+    with h5py.File(f"{run_dir}/run.h5", "r") as f:
+        for path in ("fields/grid/sums", "fields/profile/sums"):
+            if path in f:
+                digest["fields"][path] = sha(f[path][()])
+    with open(f"{run_dir}/summary.json") as f:
+        summary = json.load(f)
+    digest["summary"] = {k: v for k, v in sorted(summary.items()) if k not in MACHINE_KEYS}
+    json.dump(digest, sys.stdout, indent=1, sort_keys=True)
+    sys.stdout.write("\n")
+
+
+if __name__ == "__main__":
+    main(sys.argv[1])
