@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The bitwise reference check: two shortened scenes (the default scene, 0.02 s, and the
 # paper's D = 50 d, Ma 5.9 case, 0.004 s) are run and their digests (digest.py: final
-# particle state, field sums, summary numbers) compared with the committed
+# particle state bitwise; field sums and summary numbers, which atomic accumulation makes
+# reproducible only to round-off, within 1e-9) compared with the committed
 # reference.json. A change that is meant to leave the physics alone (a restructuring, an
 # optimisation) must pass it unchanged; a change that alters the trajectories on purpose
 # re-records the reference with --record and says why in its commit.
@@ -37,10 +38,21 @@ if mode == "--record":
     sys.exit(0)
 before = json.load(open(reference))
 diffs = []
+# The particle state is compared bitwise (hashes, integers); floating-point numbers are
+# derived from field sums accumulated with atomic adds in a varying order, so they are
+# compared to a relative 1e-9 (digest.py).
+def close(a, b):
+    return abs(a - b) <= 1e-9 * max(abs(a), abs(b))
 def compare(path, a, b):
     if isinstance(a, dict) and isinstance(b, dict):
         for k in sorted(set(a) | set(b)):
             compare(f"{path}/{k}", a.get(k, "(missing)"), b.get(k, "(missing)"))
+    elif isinstance(a, list) and isinstance(b, list) and len(a) == len(b):
+        for k, (x, y) in enumerate(zip(a, b)):
+            compare(f"{path}[{k}]", x, y)
+    elif isinstance(a, float) and isinstance(b, float):
+        if not close(a, b):
+            diffs.append(f"{path}: reference {a!r}, now {b!r}")
     elif a != b:
         diffs.append(f"{path}: reference {json.dumps(a)[:80]}, now {json.dumps(b)[:80]}")
 compare("", before, now)
@@ -48,5 +60,5 @@ if diffs:
     print(f"{len(diffs)} differences from the bitwise reference:")
     print("\n".join(diffs[:40]))
     sys.exit(1)
-print("bitwise identical to the reference: final states, field sums and summary numbers")
+print("bitwise identical to the reference: final particle states; field sums and summary numbers within round-off")
 PY
