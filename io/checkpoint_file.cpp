@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "checkpoint_seal.hpp"
 #include "hdf5_helpers.hpp"
 #include "user_error.hpp"
 #include "version.hpp"
@@ -17,7 +18,8 @@ namespace fs = std::filesystem;
 using h5::Handle;
 
 constexpr const char* kFileKind = "checkpoint";
-constexpr int kFormatVersion = 1;
+// 2: checksum header in a 512-byte user block (io/checkpoint_seal.hpp).
+constexpr int kFormatVersion = 2;
 
 // The stored shape of a per-particle array: [rows, tail...], rows = size / prod(tail).
 // Storing the real shape (not a flat list) lets h5py users read it as particles x
@@ -112,13 +114,19 @@ void read_axes(hid_t group, const char* name, std::array<long, 3>& axes) {
 
 void write_checkpoint(const fs::path& path, const SolverState& state,
                       const CheckpointExtras& extras) {
-  h5::write_file_atomically(path, "checkpoint", [&](hid_t file) {
-    h5::write_attribute(file, "granshock_file", kFileKind);
-    h5::write_attribute(file, "granshock_format_version", kFormatVersion);
-    h5::write_attribute(file, "creator_version", GRANSHOCK_VERSION_STRING);
-    write_state(file, state);
-    write_extras(file, extras);
-  });
+  h5::AtomicWriteOptions sealed;
+  sealed.user_block = seal::kUserBlockBytes;
+  sealed.after_close = [](const fs::path& tmp) { seal::seal_file(tmp, kFormatVersion); };
+  h5::write_file_atomically(
+      path, "checkpoint",
+      [&](hid_t file) {
+        h5::write_attribute(file, "granshock_file", kFileKind);
+        h5::write_attribute(file, "granshock_format_version", kFormatVersion);
+        h5::write_attribute(file, "creator_version", GRANSHOCK_VERSION_STRING);
+        write_state(file, state);
+        write_extras(file, extras);
+      },
+      sealed);
 }
 
 SolverState read_checkpoint(const fs::path& path, CheckpointExtras& extras) {
@@ -127,6 +135,8 @@ SolverState read_checkpoint(const fs::path& path, CheckpointExtras& extras) {
   if (!fs::exists(path, ec)) {
     throw UserError("cannot read checkpoint '" + path.string() + "': no such file");
   }
+  // Before HDF5 parses anything: damaged metadata must never reach the library.
+  seal::verify_file(path, kFormatVersion);
   const hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   if (id < 0) {
     throw UserError("cannot read checkpoint '" + path.string() + "': " + h5::take_error_message());
@@ -139,10 +149,10 @@ SolverState read_checkpoint(const fs::path& path, CheckpointExtras& extras) {
       throw UserError("cannot read checkpoint '" + path.string() + "': not a granshock checkpoint");
     }
     const int version = h5::read_attribute<int>(f, "granshock_format_version");
-    if (version > kFormatVersion) {
-      throw UserError("cannot read checkpoint '" + path.string() + "': format version " +
-                      std::to_string(version) + " is newer than this granshock reads (" +
-                      std::to_string(kFormatVersion) + ")");
+    if (version != kFormatVersion) {
+      throw UserError("cannot read checkpoint '" + path.string() + "': @granshock_format_version " +
+                      std::to_string(version) + " disagrees with its header's " +
+                      std::to_string(kFormatVersion));
     }
 
     SolverState s;
