@@ -52,17 +52,29 @@ double InflowController::free_area(double y_lo, double y_hi) const {
   return area - (G(y_hi - yc) - G(y_lo - yc));
 }
 
-void InflowController::prefill(Solver& solver) {
+template <class F>
+void InflowController::for_each_prefill_slab(F&& f) const {
   const double strip = scene_.inflow.strip_m;
+  const double length = scene_.setup.box.length(1);
+  for (double y = strip; y < length; y += strip) f(y, std::min(y + strip, length));
+}
+
+void InflowController::prefill(Solver& solver) {
   const double length = scene_.setup.box.length(1);
   const double per_area = per_batch_ / (period_steps_ * scene_.setup.dt *
                                         scene_.inflow.speed_m_per_s * scene_.setup.box.length(0));
-  for (double y = strip; y < length; y += strip) {
-    const double top = std::min(y + strip, length);
+  for_each_prefill_slab([&](double y, double top) {
     // Lists are rebuilt once, after the last slab: insertion itself needs only positions.
     insert_batch(solver, y, top, per_area * free_area(y, top), top >= length);
-  }
+  });
   carry_ = 0;
+}
+
+std::uint64_t InflowController::events_by(long step) const {
+  std::uint64_t prefill = 0;
+  for_each_prefill_slab([&](double, double) { ++prefill; });
+  // insert_if_due draws one batch at step 0 and every period after.
+  return prefill + std::uint64_t(step / period_steps_) + 1;
 }
 
 void InflowController::insert_if_due(Solver& solver, long step) {

@@ -28,6 +28,10 @@ class InflowController {
   // Inserts a batch when `step` is an insertion step.
   void insert_if_due(Solver& solver, long step);
 
+  // Batches drawn by the end of `step` (the prefill's included): the RNG events a
+  // checkpoint at that step must have used.
+  std::uint64_t events_by(long step) const;
+
   // State carried by checkpoints.
   std::uint64_t events() const { return events_; }
   long inserted() const { return inserted_; }
@@ -40,6 +44,9 @@ class InflowController {
   // Area of the slab y in [y_lo, y_hi] where insertion may place particles: the slab
   // minus the disk around the obstacle that insertion keeps clear.
   double free_area(double y_lo, double y_hi) const;
+  // Calls f(y_lo, y_hi) for each slab the prefill fills, in order.
+  template <class F>
+  void for_each_prefill_slab(F&& f) const;
 
   const Scene& scene_;
   long period_steps_ = 1;

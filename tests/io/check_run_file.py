@@ -139,7 +139,7 @@ def check_checkpoint(path):
                      "insertion_carry", "wall_seconds_so_far"):
             expect(name in run.attrs, f"{path}: /run@{name}")
         expect(run.attrs["rng_counter"].dtype == np.uint64, f"{path}: rng_counter dtype")
-        expect(list(run["bin_shape"][()]) == [2, 3], f"{path}: bin_shape")
+        expect(list(run["bin_shape"][()]) == [2, 3, 1], f"{path}: bin_shape")
         expect(run["bin_sums"].shape == (6,), f"{path}: bin_sums")
         expect(text(f["scene/resolved"][()]).startswith("# resolved"), f"{path}: scene")
 

@@ -57,7 +57,7 @@ void write_sample_checkpoint(const std::filesystem::path& dir) {
   s.species = {0, 1, 0};
   s.id = {0, 1, 2};
   s.history_partner = {1, -1, 0, -1, -1, -1};
-  s.history_spring = std::vector<double>(12, 1e-6);
+  s.history_spring = {1e-6, 2e-6, 0, 0, -1e-6, -2e-6, 0, 0, 0, 0, 0, 0};  // used slots only
   s.history_wall_spring = std::vector<double>(6, 0.0);
   s.reference_position = s.position;
   s.neighbour_offsets = {0, 2, 3, 3};
@@ -70,8 +70,8 @@ void write_sample_checkpoint(const std::filesystem::path& dir) {
   e.inserted = 3;
   e.insertion_carry = 0.25;
   e.wall_seconds_so_far = 1.5;
-  e.bin_sums = {1, 2, 3, 4, 5, 6};
-  e.bin_shape = {2, 3};
+  e.bin_sums = {1, 2, 3, 4, 5, 6};  // 2 grid, 3 profile sums, samples of 1 block
+  e.bin_shape = {2, 3, 1};
   e.scene_resolved = "# resolved\nmach = 5.0\n";
   write_checkpoint(dir / "checkpoint.h5", s, e);
 }
