@@ -18,18 +18,19 @@ namespace granshock::testing {
 
 class StoppedRun {
  public:
-  // Runs `scene` with `sets` to step `stop_at` (the checkpoint to damage) and, in a
-  // second directory, without interruption to stop_at + more_steps.
+  // Runs `scene` with `sets` to step `stop_at` (the checkpoint to damage); the run
+  // without interruption to stop_at + more_steps follows when first asked for.
   StoppedRun(const std::string& scene, std::vector<std::string> sets, long stop_at, long more_steps)
-      : sets_(std::move(sets)), more_steps_(more_steps) {
+      : sets_(std::move(sets)), stop_at_(stop_at), more_steps_(more_steps) {
     scene_ = tmp_.write("scene.toml", scene);
     run_fresh(tmp_.path() / "base", stop_at);
-    run_fresh(tmp_.path() / "reference", stop_at + more_steps);
   }
 
   std::filesystem::path base() const { return tmp_.path() / "base"; }
   std::filesystem::path reference_checkpoint() const {
-    return tmp_.path() / "reference" / "checkpoint.h5";
+    const auto dir = tmp_.path() / "reference";
+    if (!std::filesystem::exists(dir)) run_fresh(dir, stop_at_ + more_steps_);
+    return dir / "checkpoint.h5";
   }
 
   // A fresh copy of the stopped run directory (resuming changes run.h5).
@@ -66,7 +67,7 @@ class StoppedRun {
   TempDir tmp_;
   std::filesystem::path scene_;
   std::vector<std::string> sets_;
-  long more_steps_;
+  long stop_at_, more_steps_;
 };
 
 inline bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {

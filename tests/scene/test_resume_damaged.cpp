@@ -25,9 +25,9 @@ namespace {
 class DamagedCheckpoint : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    // 0.4 ms (2000 steps), fields sampled from step 1000; stopped at step 1400.
+    // 0.2 ms (1000 steps), fields sampled from step 500; stopped at step 700.
     run_ = new StoppedRun(small_scene(true),
-                          {"time.duration=0.0004", "time.production_start=0.0002"}, 1400, 10);
+                          {"time.duration=0.0002", "time.production_start=0.0001"}, 700, 10);
   }
   static void TearDownTestSuite() {
     delete run_;
