@@ -116,7 +116,17 @@ int bench_checkpoint(const std::filesystem::path& dir, int n) {
   fill(s.angular_velocity, un);
   fill(s.torque, un);
   fill(s.history_spring, 16 * un);
+  // Two contacts per particle (its next two), six free slots with zero springs.
   s.history_partner.assign(8 * un, -1);
+  for (std::size_t i = 0; i < un; ++i) {
+    for (std::size_t a = 0; a < 8; ++a) {
+      if (a < 2) {
+        s.history_partner[8 * i + a] = static_cast<int>((i + a + 1) % un);
+      } else {
+        s.history_spring[16 * i + 2 * a] = s.history_spring[16 * i + 2 * a + 1] = 0;
+      }
+    }
+  }
   for (int i = 0; i < n; ++i) {
     s.species.push_back(i % 2);
     s.id.push_back(i);
