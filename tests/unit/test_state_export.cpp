@@ -25,7 +25,7 @@ SystemSetup channel() {
   return s;
 }
 
-} // namespace
+}  // namespace
 
 // Particle A leaves through the top while sliding along B, so B's row held a
 // contact history when the deletion compacted the rows; the particle inserted
@@ -42,16 +42,14 @@ TEST(StateExport, InsertedParticleReusingADeletedRowHasAnEmptyHistory) {
     start.add({0.005, 0.009999, 0}, {0.01, 1.0, 0}, 0, 0);
     start.add({0.00600001, 0.009999, 0}, {-0.01, 0, 0}, 0, 1);
     solver->set_particles(start);
-    solver->advance(
-        30); // A is outside; no rebuild (it moved 3 um, skin/2 is 0.15 mm)
+    solver->advance(30);  // A is outside; no rebuild (it moved 3 um, skin/2 is 0.15 mm)
     SolverState before = solver->export_state();
     ASSERT_EQ(before.size(), 2u);
     bool spring = false;
-    for (double xi : before.history_spring)
-      spring = spring || xi != 0;
+    for (double xi : before.history_spring) spring = spring || xi != 0;
     ASSERT_TRUE(spring) << "A and B must still slide in contact";
     EXPECT_EQ(solver->remove_escaped().high[1],
-              1); // A deleted, B compacted to row 0
+              1);  // A deleted, B compacted to row 0
 
     InsertionRequest rq;
     rq.x_range = {0, 0.01};
@@ -62,12 +60,10 @@ TEST(StateExport, InsertedParticleReusingADeletedRowHasAnEmptyHistory) {
     ASSERT_EQ(solver->insert(rq), 1);
     const SolverState after = solver->export_state();
     for (std::size_t k = 0; k < after.history_partner.size(); ++k) {
-      if (after.history_partner[k] != -1)
-        continue;
+      if (after.history_partner[k] != -1) continue;
       for (std::size_t d = 0; d < 2; ++d) {
         EXPECT_EQ(after.history_spring[2 * k + d], 0.0)
-            << "free slot " << k
-            << (precision == Precision::single ? " (single)" : " (double)");
+            << "free slot " << k << (precision == Precision::single ? " (single)" : " (double)");
       }
     }
     EXPECT_NO_THROW(check_state(after));
@@ -86,16 +82,15 @@ TEST(StateExport, DenseFrictionalGasImportsIntoAFreshSolverUnchanged) {
     SystemSetup s = paper_mixture(0.3);
     s.contacts = ContactModel::uniform(2, 0.3, 0.4);
     s.precision = precision;
-    for (Species &species : s.species)
-      species.material.youngs_modulus_pa *= 1e-4;
+    for (Species& species : s.species) species.material.youngs_modulus_pa *= 1e-4;
     s.dt = 2e-6;
     GasSpec spec;
     spec.particles = 1500;
     spec.area_fraction = 0.4;
     spec.sigma_m_per_s = 2.0;
     size_periodic_box(s, spec);
-    s.obstacle = CylinderObstacle{
-        {0.5 * s.box.length(0), 0.5 * s.box.length(1), 0}, 16e-3, aluminium()};
+    s.obstacle =
+        CylinderObstacle{{0.5 * s.box.length(0), 0.5 * s.box.length(1), 0}, 16e-3, aluminium()};
     HostParticles gas = make_homogeneous_gas(s, spec), kept;
     for (std::size_t i = 0; i < gas.size(); ++i)
       if (std::hypot(gas.position[i][0] - s.obstacle->centre[0],
@@ -106,12 +101,10 @@ TEST(StateExport, DenseFrictionalGasImportsIntoAFreshSolverUnchanged) {
     solver->advance(300);
     const SolverState state = solver->export_state();
     std::size_t partners = 0;
-    for (int p : state.history_partner)
-      partners += p >= 0;
+    for (int p : state.history_partner) partners += p >= 0;
     std::size_t on_obstacle = 0;
     for (std::size_t k = 0; k < state.history_wall_spring.size(); k += 2)
-      on_obstacle += state.history_wall_spring[k] != 0 ||
-                     state.history_wall_spring[k + 1] != 0;
+      on_obstacle += state.history_wall_spring[k] != 0 || state.history_wall_spring[k + 1] != 0;
     EXPECT_GT(2 * partners, state.size()) << "too few contacts to test much";
     EXPECT_GE(on_obstacle, 3u) << "too few obstacle contacts to test much";
     auto fresh = make_solver(s, kept.size());
