@@ -87,6 +87,9 @@ class Solver {
                                   const std::vector<double>& profile) = 0;
 
   virtual SolverState export_state() const = 0;
+  // Continues from a checkpoint's state; a state that does not fit this solver (another
+  // dimension, unknown species, a neighbour list its positions do not give, ...) is
+  // refused with InvalidCheckpoint (core/checkpoint_checks.hpp) before anything changes.
   virtual void import_state(const SolverState& state) = 0;
 
   virtual std::size_t size() const = 0;

@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "checkpoint_checks.hpp"
+#include "checkpoint_seal.hpp"
 #include "hdf5_helpers.hpp"
 #include "user_error.hpp"
 #include "version.hpp"
@@ -17,7 +19,8 @@ namespace fs = std::filesystem;
 using h5::Handle;
 
 constexpr const char* kFileKind = "checkpoint";
-constexpr int kFormatVersion = 1;
+// 2: checksum header in a 512-byte user block (io/checkpoint_seal.hpp).
+constexpr int kFormatVersion = 2;
 
 // The stored shape of a per-particle array: [rows, tail...], rows = size / prod(tail).
 // Storing the real shape (not a flat list) lets h5py users read it as particles x
@@ -97,28 +100,133 @@ void write_extras(hid_t file, const CheckpointExtras& e) {
   h5::write_string_dataset(file, "/scene/resolved", e.scene_resolved);
 }
 
-// HDF5 leaves the data in the page cache; the rename must not reach the disk before it
-// does, or a power cut could leave a checkpoint of the right name and wrong content.
+// HDF5 converts between numeric types on reading; a checkpoint holds each value in the
+// documented type only, so any other (a float where ids belong) is refused, not converted.
+void expect_type(hid_t stored, hid_t documented) {
+  const htri_t same = H5Tequal(stored, documented);
+  h5::check(same, "comparing types");
+  if (same == 0) throw h5::Hdf5Error("is not stored as the documented type");
+}
 
-void read_axes(hid_t group, const char* name, std::array<long, 3>& axes) {
-  const std::vector<long> values = h5::read_attribute_vector<long>(group, name);
-  if (values.size() != axes.size()) {
-    throw h5::Hdf5Error(std::string("attribute '") + name + "' does not have 3 values");
+// Reads one object of the checkpoint; a failure names it in full ("/state@step",
+// "/state/position"). A dataset may not claim more values than the file has bytes: an
+// edited file must not make the reader allocate without bound.
+class Reader {
+ public:
+  Reader(hid_t file, std::uintmax_t file_bytes) : file_(file), file_bytes_(file_bytes) {}
+
+  template <class T>
+  T attribute(const char* group, const char* name) const {
+    return named(group, "@", name, [&] {
+      Handle g = h5::open_group(file_, group);
+      expect_attribute_type<T>(g.get(), name);
+      return h5::read_attribute<T>(g.get(), name);
+    });
   }
-  std::copy(values.begin(), values.end(), axes.begin());
+  template <std::size_t N>
+  void axes(const char* group, const char* name, std::array<long, N>& out) const {
+    named(group, "@", name, [&] {
+      Handle g = h5::open_group(file_, group);
+      expect_attribute_type<long>(g.get(), name);
+      const std::vector<long> values = h5::read_attribute_vector<long>(g.get(), name);
+      if (values.size() != N)
+        throw h5::Hdf5Error("has " + std::to_string(values.size()) + " values, not " +
+                            std::to_string(N));
+      std::copy(values.begin(), values.end(), out.begin());
+      return 0;
+    });
+  }
+  template <class T>
+  std::vector<T> dataset(const char* group, const char* name) const {
+    return named(group, "/", name, [&] {
+      const std::string path = std::string(group) + "/" + name;
+      Handle set = h5::open_dataset(file_, path);
+      Handle type = h5::datatype(H5Dget_type(set.get()), "reading the type");
+      expect_type(type.get(), h5::TypeOf<T>::stored());
+      std::uintmax_t count = 1;
+      for (hsize_t extent : h5::shape_of(set.get())) count *= extent;
+      if (count > file_bytes_ / 4)  // every stored value takes at least 4 bytes
+        throw h5::Hdf5Error("claims " + std::to_string(count) +
+                            " values, more than the file holds");
+      return h5::read_dataset<T>(file_, path);
+    });
+  }
+
+ private:
+  template <class T>
+  static void expect_attribute_type(hid_t group, const char* name) {
+    Handle attr = h5::attribute(H5Aopen(group, name, H5P_DEFAULT), "opening the attribute");
+    Handle type = h5::datatype(H5Aget_type(attr.get()), "reading the type");
+    expect_type(type.get(), h5::TypeOf<T>::stored());
+  }
+
+  template <class F>
+  auto named(const char* group, const char* separator, const char* name, F&& read) const {
+    try {
+      return read();
+    } catch (const h5::Hdf5Error& e) {
+      throw h5::Hdf5Error(std::string(group) + separator + name + ": " + e.what());
+    }
+  }
+
+  hid_t file_;
+  std::uintmax_t file_bytes_;
+};
+
+SolverState read_state(const Reader& in) {
+  SolverState s;
+  s.dim = in.attribute<int>("/state", "dim");
+  s.step = in.attribute<long>("/state", "step");
+  s.next_id = in.attribute<int>("/state", "next_id");
+  s.history_slots = in.attribute<int>("/state", "history_slots");
+  s.position = in.dataset<double>("/state", "position");
+  s.velocity = in.dataset<double>("/state", "velocity");
+  s.force = in.dataset<double>("/state", "force");
+  s.angular_velocity = in.dataset<double>("/state", "angular_velocity");
+  s.torque = in.dataset<double>("/state", "torque");
+  s.species = in.dataset<int>("/state", "species");
+  s.id = in.dataset<int>("/state", "id");
+  s.history_partner = in.dataset<int>("/state", "history_partner");
+  s.history_spring = in.dataset<double>("/state", "history_spring");
+  s.history_wall_spring = in.dataset<double>("/state", "history_wall_spring");
+  s.reference_position = in.dataset<double>("/state", "reference_position");
+  s.neighbour_offsets = in.dataset<int>("/state", "neighbour_offsets");
+  s.neighbours = in.dataset<int>("/state", "neighbours");
+  s.list_builds = in.attribute<long>("/state", "list_builds");
+  in.axes("/state", "removed_low", s.removed_low);
+  in.axes("/state", "removed_high", s.removed_high);
+  return s;
+}
+
+void read_extras(const Reader& in, hid_t file, CheckpointExtras& e) {
+  e.rng_counter = in.attribute<std::uint64_t>("/run", "rng_counter");
+  e.inserted = in.attribute<long>("/run", "inserted");
+  e.deleted_outlet = in.attribute<long>("/run", "deleted_outlet");
+  e.deleted_inlet = in.attribute<long>("/run", "deleted_inlet");
+  e.insertion_carry = in.attribute<double>("/run", "insertion_carry");
+  e.wall_seconds_so_far = in.attribute<double>("/run", "wall_seconds_so_far");
+  e.bin_sums = in.dataset<double>("/run", "bin_sums");
+  e.bin_shape = in.dataset<long>("/run", "bin_shape");
+  e.scene_resolved = h5::read_string_dataset(file, "/scene/resolved");
 }
 
 }  // namespace
 
 void write_checkpoint(const fs::path& path, const SolverState& state,
                       const CheckpointExtras& extras) {
-  h5::write_file_atomically(path, "checkpoint", [&](hid_t file) {
-    h5::write_attribute(file, "granshock_file", kFileKind);
-    h5::write_attribute(file, "granshock_format_version", kFormatVersion);
-    h5::write_attribute(file, "creator_version", GRANSHOCK_VERSION_STRING);
-    write_state(file, state);
-    write_extras(file, extras);
-  });
+  h5::AtomicWriteOptions sealed;
+  sealed.user_block = seal::kUserBlockBytes;
+  sealed.after_close = [](const fs::path& tmp) { seal::seal_file(tmp, kFormatVersion); };
+  h5::write_file_atomically(
+      path, "checkpoint",
+      [&](hid_t file) {
+        h5::write_attribute(file, "granshock_file", kFileKind);
+        h5::write_attribute(file, "granshock_format_version", kFormatVersion);
+        h5::write_attribute(file, "creator_version", GRANSHOCK_VERSION_STRING);
+        write_state(file, state);
+        write_extras(file, extras);
+      },
+      sealed);
 }
 
 SolverState read_checkpoint(const fs::path& path, CheckpointExtras& extras) {
@@ -127,6 +235,8 @@ SolverState read_checkpoint(const fs::path& path, CheckpointExtras& extras) {
   if (!fs::exists(path, ec)) {
     throw UserError("cannot read checkpoint '" + path.string() + "': no such file");
   }
+  // Before HDF5 parses anything: damaged metadata must never reach the library.
+  seal::verify_file(path, kFormatVersion);
   const hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   if (id < 0) {
     throw UserError("cannot read checkpoint '" + path.string() + "': " + h5::take_error_message());
@@ -139,47 +249,21 @@ SolverState read_checkpoint(const fs::path& path, CheckpointExtras& extras) {
       throw UserError("cannot read checkpoint '" + path.string() + "': not a granshock checkpoint");
     }
     const int version = h5::read_attribute<int>(f, "granshock_format_version");
-    if (version > kFormatVersion) {
-      throw UserError("cannot read checkpoint '" + path.string() + "': format version " +
-                      std::to_string(version) + " is newer than this granshock reads (" +
-                      std::to_string(kFormatVersion) + ")");
+    if (version != kFormatVersion) {
+      throw UserError("cannot read checkpoint '" + path.string() + "': @granshock_format_version " +
+                      std::to_string(version) + " disagrees with its header's " +
+                      std::to_string(kFormatVersion));
     }
 
-    SolverState s;
-    Handle state = h5::open_group(f, "/state");
-    const hid_t g = state.get();
-    s.dim = h5::read_attribute<int>(g, "dim");
-    s.step = h5::read_attribute<long>(g, "step");
-    s.next_id = h5::read_attribute<int>(g, "next_id");
-    s.history_slots = h5::read_attribute<int>(g, "history_slots");
-    s.position = h5::read_dataset<double>(g, "position");
-    s.velocity = h5::read_dataset<double>(g, "velocity");
-    s.force = h5::read_dataset<double>(g, "force");
-    s.angular_velocity = h5::read_dataset<double>(g, "angular_velocity");
-    s.torque = h5::read_dataset<double>(g, "torque");
-    s.species = h5::read_dataset<int>(g, "species");
-    s.id = h5::read_dataset<int>(g, "id");
-    s.history_partner = h5::read_dataset<int>(g, "history_partner");
-    s.history_spring = h5::read_dataset<double>(g, "history_spring");
-    s.history_wall_spring = h5::read_dataset<double>(g, "history_wall_spring");
-    s.reference_position = h5::read_dataset<double>(g, "reference_position");
-    s.neighbour_offsets = h5::read_dataset<int>(g, "neighbour_offsets");
-    s.neighbours = h5::read_dataset<int>(g, "neighbours");
-    s.list_builds = h5::read_attribute<long>(g, "list_builds");
-    read_axes(g, "removed_low", s.removed_low);
-    read_axes(g, "removed_high", s.removed_high);
-
-    Handle run = h5::open_group(f, "/run");
-    const hid_t r = run.get();
-    extras.rng_counter = h5::read_attribute<std::uint64_t>(r, "rng_counter");
-    extras.inserted = h5::read_attribute<long>(r, "inserted");
-    extras.deleted_outlet = h5::read_attribute<long>(r, "deleted_outlet");
-    extras.deleted_inlet = h5::read_attribute<long>(r, "deleted_inlet");
-    extras.insertion_carry = h5::read_attribute<double>(r, "insertion_carry");
-    extras.wall_seconds_so_far = h5::read_attribute<double>(r, "wall_seconds_so_far");
-    extras.bin_sums = h5::read_dataset<double>(r, "bin_sums");
-    extras.bin_shape = h5::read_dataset<long>(r, "bin_shape");
-    extras.scene_resolved = h5::read_string_dataset(f, "/scene/resolved");
+    const Reader in(f, fs::file_size(path));
+    SolverState s = read_state(in);
+    read_extras(in, f, extras);
+    try {
+      check_state(s);
+      check_extras(extras);
+    } catch (const InvalidCheckpoint& e) {
+      throw refuse_checkpoint(path, e);
+    }
     return s;
   });
 }

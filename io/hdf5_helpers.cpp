@@ -214,11 +214,15 @@ void sync_file(const std::filesystem::path& path) {
 }  // namespace
 
 void write_file_atomically(const std::filesystem::path& path, const std::string& what,
-                           const std::function<void(hid_t file)>& write) {
+                           const std::function<void(hid_t file)>& write,
+                           const AtomicWriteOptions& options) {
   namespace fs = std::filesystem;
   silence_error_printing();
   const fs::path tmp = path.string() + ".tmp";
-  const hid_t id = H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  Handle creation = plist(H5Pcreate(H5P_FILE_CREATE), "creating file properties");
+  if (options.user_block > 0)
+    check(H5Pset_userblock(creation.get(), options.user_block), "setting the user block");
+  const hid_t id = H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, creation.get(), H5P_DEFAULT);
   if (id < 0)
     throw UserError("cannot write " + what + " '" + path.string() + "': " + take_error_message());
   Handle file(id, H5Fclose);
@@ -231,6 +235,14 @@ void write_file_atomically(const std::filesystem::path& path, const std::string&
     naming_file_in_errors(path, ("writing " + what).c_str(), [&] {
       write(file.get());
       check(file.close(), "closing");  // closing is where HDF5 writes what it buffered
+      if (options.after_close) {
+        try {
+          options.after_close(tmp);
+        } catch (const std::runtime_error& e) {
+          if (dynamic_cast<const UserError*>(&e) != nullptr) throw;
+          throw Hdf5Error(std::string("finishing the file failed: ") + e.what());
+        }
+      }
       sync_file(tmp);
     });
   } catch (...) {

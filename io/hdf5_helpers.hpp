@@ -144,11 +144,20 @@ auto naming_file_in_errors(const std::filesystem::path& path, const char* doing,
   }
 }
 
+// Options of write_file_atomically: a user block (bytes before the HDF5 superblock that
+// HDF5 leaves to the application: a power of 2, >= 512, or 0 for none) and what to do
+// with the closed file before it is synced (e.g. write a checksum into the user block).
+struct AtomicWriteOptions {
+  hsize_t user_block = 0;
+  std::function<void(const std::filesystem::path& closed_tmp)> after_close;
+};
+
 // Writes an HDF5 file so that readers never see half of it: `write` fills path.tmp,
-// which is closed (HDF5 writes its buffers there), fsync'ed and renamed over path. On
-// any failure the .tmp is removed, the previous file stays, and a UserError names
-// `what` and the path.
+// which is closed (HDF5 writes its buffers there), passed to options.after_close,
+// fsync'ed and renamed over path. On any failure the .tmp is removed, the previous file
+// stays, and a UserError names `what` and the path.
 void write_file_atomically(const std::filesystem::path& path, const std::string& what,
-                           const std::function<void(hid_t file)>& write);
+                           const std::function<void(hid_t file)>& write,
+                           const AtomicWriteOptions& options = {});
 
 }  // namespace granshock::h5

@@ -13,6 +13,7 @@
 #include "bin_accumulator.hpp"
 #include "cell_grid.hpp"
 #include "cell_sort.hpp"
+#include "checkpoint_checks.hpp"
 #include "contact_forces.hpp"
 #include "contact_history.hpp"
 #include "device_lambda.hpp"
@@ -160,6 +161,7 @@ class DemSolver final : public Solver {
   static constexpr int kInsertionRounds = 16;
   std::vector<SpeciesMoments> species_moments() const override;
   SolverState export_state() const override;
+  // Refuses (InvalidCheckpoint, nothing changed) a state that does not fit this solver.
   void import_state(const SolverState& state) override;
 
   // Wraps periodic coordinates, deletes escaped particles, sorts by cell and rebuilds
@@ -252,6 +254,9 @@ class DemSolver final : public Solver {
       throw std::logic_error("DemSolver variant does not match the scene's obstacle");
     return s;
   }
+
+  SolverFit fit() const;
+  void check_lists(const SolverState& s) const;
 
   void allocate(int capacity) {
     p_.allocate(capacity, Traits::friction);

@@ -149,8 +149,12 @@ int DemSolver<Traits, ExecSpace>::insert_round(const InsertionRequest& rq, int p
         if constexpr (Traits::friction) {
           omega(i) = 0;
           torque(i) = 0;
-          for (int s = 0; s < ContactHistory<Dim, Real, Mem>::slots; ++s)
+          // A new particle has no contacts: free slots with zero springs, as the force
+          // kernel keeps them (the row may hold a deleted particle's history).
+          for (int s = 0; s < ContactHistory<Dim, Real, Mem>::slots; ++s) {
             history.partner(i, s) = -1;
+            for (int d = 0; d < Dim; ++d) history.spring(i, Dim * s + d) = 0;
+          }
           for (int d = 0; d < Dim; ++d) history.wall_spring(i, d) = 0;
         }
       });

@@ -18,15 +18,6 @@ InflowController::InflowController(const Scene& scene) : scene_(scene) {
   per_batch_ = in.area_fraction * scene.setup.box.length(0) * swept / mean_disk_area;
 }
 
-void InflowController::count_prefill() {
-  prefill_requested_ = 0;
-  prefill_events_ = 0;
-  for (const Slab& slab : prefill_slabs()) {
-    prefill_requested_ += slab.expected;
-    ++prefill_events_;
-  }
-}
-
 double InflowController::requested() const {
   const std::uint64_t batches = events_ > prefill_events_ ? events_ - prefill_events_ : 0;
   return prefill_requested_ + double(batches) * per_batch_;
@@ -71,27 +62,41 @@ double InflowController::free_area(double y_lo, double y_hi) const {
   return area - (G(y_hi - yc) - G(y_lo - yc));
 }
 
-std::vector<InflowController::Slab> InflowController::prefill_slabs() const {
+template <class F>
+void InflowController::for_each_prefill_slab(F&& f) const {
   const double strip = scene_.inflow.strip_m;
   const double length = scene_.setup.box.length(1);
   const double per_area = per_batch_ / (period_steps_ * scene_.setup.dt *
                                         scene_.inflow.speed_m_per_s * scene_.setup.box.length(0));
-  std::vector<Slab> slabs;
   for (double y = strip; y < length; y += strip) {
     const double top = std::min(y + strip, length);
-    slabs.push_back({y, top, per_area * free_area(y, top)});
+    f(y, top, per_area * free_area(y, top), top >= length);
   }
-  return slabs;
+}
+
+void InflowController::count_prefill() {
+  prefill_requested_ = 0;
+  prefill_events_ = 0;
+  for_each_prefill_slab([&](double, double, double expected, bool) {
+    prefill_requested_ += expected;
+    ++prefill_events_;
+  });
 }
 
 void InflowController::prefill(Solver& solver) {
   count_prefill();
-  const std::vector<Slab> slabs = prefill_slabs();
-  for (std::size_t k = 0; k < slabs.size(); ++k) {
+  for_each_prefill_slab([&](double y, double top, double expected, bool last) {
     // Lists are rebuilt once, after the last slab: insertion itself needs only positions.
-    insert_batch(solver, slabs[k].y_lo, slabs[k].y_hi, slabs[k].expected, k + 1 == slabs.size());
-  }
+    insert_batch(solver, y, top, expected, last);
+  });
   carry_ = 0;
+}
+
+std::uint64_t InflowController::events_by(long step) const {
+  std::uint64_t prefill = 0;
+  for_each_prefill_slab([&](double, double, double, bool) { ++prefill; });
+  // insert_if_due draws one batch at step 0 and every period after.
+  return prefill + std::uint64_t(step / period_steps_) + 1;
 }
 
 void InflowController::insert_if_due(Solver& solver, long step) {

@@ -40,6 +40,9 @@ class InflowController {
   // True once the inflow falls more than kShortfallWarning short of what it requested.
   bool falls_short() const;
   static constexpr double kShortfallWarning = 0.03;
+  // Batches drawn by the end of `step` (the prefill's included): the RNG events a
+  // checkpoint at that step must have used.
+  std::uint64_t events_by(long step) const;
 
   // State carried by checkpoints.
   std::uint64_t events() const { return events_; }
@@ -53,11 +56,10 @@ class InflowController {
   // Area of the slab y in [y_lo, y_hi] where insertion may place particles: the slab
   // minus the disk around the obstacle that insertion keeps clear.
   double free_area(double y_lo, double y_hi) const;
-
-  struct Slab {
-    double y_lo, y_hi, expected;
-  };
-  std::vector<Slab> prefill_slabs() const;
+  // Calls f(y_lo, y_hi, expected particles, last) for each slab the prefill fills, in
+  // order.
+  template <class F>
+  void for_each_prefill_slab(F&& f) const;
   void count_prefill();  // by prefill() and restore(), once the scene passed its checks
 
   const Scene& scene_;

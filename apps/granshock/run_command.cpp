@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "atomic_file.hpp"
+#include "checkpoint_checks.hpp"
 #include "checkpoint_file.hpp"
 #include "fields_command.hpp"
 #include "head_on_collision.hpp"
@@ -97,7 +98,10 @@ class BowShockRun {
   void finish(bool completed);
   void configure_sampling();
   bool sample_due(long step) const;
+  int block_of(long step) const;
   long next_sample_after(long step) const;
+  RunFit run_fit(long step) const;
+  double inflow_energy() const;
   void write_field_sums();
   void check_health(long step, const Diagnostics& d) const;
   void warn_if_inflow_falls_short();
@@ -219,9 +223,12 @@ void BowShockRun::start_fresh() {
   actions_at(0);
 }
 
+// Everything is checked before anything changes: a refused checkpoint leaves the run
+// directory as it was.
 void BowShockRun::resume() {
+  const fs::path path = dir_ / "checkpoint.h5";
   CheckpointExtras extras;
-  const SolverState state = read_checkpoint(dir_ / "checkpoint.h5", extras);
+  const SolverState state = read_checkpoint(path, extras);
   if (extras.scene_resolved != loaded_.resolved) {
     const std::vector<std::string> keys = differing_keys(extras.scene_resolved, loaded_.resolved);
     throw UserError(fmt::format(
@@ -230,10 +237,13 @@ void BowShockRun::resume() {
         keys.size() == 1 ? "" : "s", fmt::join(keys, ", "), keys.size() == 1 ? "s" : "",
         dir_.string()));
   }
-  solver_->import_state(state);
+  try {
+    solver_->import_state(state);
+    check_run(state, extras, run_fit(state.step));
+  } catch (const InvalidCheckpoint& e) {
+    throw refuse_checkpoint(path, e);
+  }
   inflow_.restore(extras.rng_counter, extras.inserted, extras.insertion_carry);
-  if (extras.bin_shape.size() != 3 || extras.bin_shape[2] != long(samples_.size()))
-    throw UserError("--resume: the checkpoint's field sums do not match the scene");
   const auto grid_end = extras.bin_sums.begin() + extras.bin_shape[0];
   const auto profile_end = grid_end + extras.bin_shape[1];
   solver_->restore_field_sums({extras.bin_sums.begin(), grid_end}, {grid_end, profile_end});
@@ -248,9 +258,7 @@ void BowShockRun::resume() {
 void BowShockRun::actions_at(long step) {
   inflow_.insert_if_due(*solver_, step);
   if (sample_due(step)) {
-    const long span = total_steps_ - production_first_step_;
-    const int block = int(std::min<long>(
-        sampling_.grid.blocks - 1, (step - production_first_step_) * sampling_.grid.blocks / span));
+    const int block = block_of(step);
     solver_->sample_fields(block);
     ++samples_[block];
   }
@@ -410,20 +418,57 @@ bool BowShockRun::sample_due(long step) const {
          (step - production_first_step_) % scene_.run.sample_every == 0;
 }
 
+// The block of the production window a sample at `step` adds to.
+int BowShockRun::block_of(long step) const {
+  const long span = total_steps_ - production_first_step_;
+  return int(std::min<long>(sampling_.grid.blocks - 1,
+                            (step - production_first_step_) * sampling_.grid.blocks / span));
+}
+
+// What the schedule and the scene say about a checkpoint taken at `step`.
+RunFit BowShockRun::run_fit(long step) const {
+  RunFit f;
+  f.total_steps = total_steps_;
+  f.insertion_events = inflow_.events_by(step);
+  f.max_carry = inflow_.particles_per_batch() * double(step / inflow_.period_steps() + 1);
+  f.dt = scene_.setup.dt;
+  for (const Species& species : scene_.setup.species) {
+    f.mass.push_back(species.mass_kg());
+    f.inertia.push_back(species.moment_of_inertia());
+  }
+  f.max_diameter = scene_.setup.max_diameter();
+  f.inflow_energy = inflow_energy();
+  const BinLayout& g = sampling_.grid;
+  f.quantities = g.quantities();
+  f.n_species = g.n_species;
+  f.grid_sums = long(g.bins()) * g.quantities() * g.blocks;
+  f.profile_sums = long(sampling_.profile.n) * g.quantities() * g.blocks;
+  f.samples.assign(std::size_t(g.blocks), 0);
+  for (long s = production_first_step_; s <= step && s < total_steps_; s += scene_.run.sample_every)
+    ++f.samples[std::size_t(block_of(s))];
+  return f;
+}
+
 long BowShockRun::next_sample_after(long step) const {
   if (step < production_first_step_) return production_first_step_;
   const long every = scene_.run.sample_every;
   return production_first_step_ + ((step - production_first_step_) / every + 1) * every;
 }
 
+// Kinetic energy of a mean-mass particle at the inflow's mean velocity and fluctuation.
+double BowShockRun::inflow_energy() const {
+  return 0.5 * scene_.mean_mass() *
+         (scene_.inflow.speed_m_per_s * scene_.inflow.speed_m_per_s +
+          2 * scene_.inflow.sigma * scene_.inflow.sigma);
+}
+
 // DESIGN.md section 4: a run either stays correct or stops with a diagnosis. A NaN or
 // infinite state, or a mean kinetic energy per particle 100 times that of the inflow
 // (energy is only ever supplied by the inflow), means the integration has blown up,
 // almost always because dt is too large for the impacts that occur.
+// core/checkpoint_run_checks.cpp refuses to resume a state past the same limit.
 void BowShockRun::check_health(long step, const Diagnostics& d) const {
-  const double per_particle_inflow = 0.5 * scene_.mean_mass() *
-                                     (scene_.inflow.speed_m_per_s * scene_.inflow.speed_m_per_s +
-                                      2 * scene_.inflow.sigma * scene_.inflow.sigma);
+  const double per_particle_inflow = inflow_energy();
   const double per_particle =
       solver_->size() > 0 ? d.kinetic_energy / double(solver_->size()) : 0.0;
   if (d.non_finite == 0 && per_particle <= 100 * per_particle_inflow) return;

@@ -77,8 +77,50 @@ def check_run(path, dim, counts):
         expect(float(f["summary"].attrs["mach_measured"]) == 4.9, f"{path}: summary attribute")
 
 
+MASK = (1 << 64) - 1
+K1, K2, K3 = 0x9E3779B185EBCA87, 0xC2B2AE3D27D4EB4F, 0x165667B19E3779F9
+
+
+def rotl(x, r):
+    return ((x << r) | (x >> (64 - r))) & MASK
+
+
+def gshash64(data):
+    """The checkpoint hash as docs/output_format.md describes it (io/file_hash.cpp)."""
+    def round_(lane, word):
+        return rotl((lane + word * K2) & MASK, 31) * K1 & MASK
+    lanes = [(K1 + K2) & MASK, K2, 0, (-K1) & MASK]
+    full = len(data) - len(data) % 32
+    words = np.frombuffer(data[:full], dtype="<u8").tolist()
+    for at in range(0, len(words), 4):
+        lanes = [round_(lane, w) for lane, w in zip(lanes, words[at:at + 4])]
+    h = (rotl(lanes[0], 1) + rotl(lanes[1], 7) + rotl(lanes[2], 12) + rotl(lanes[3], 18)) & MASK
+    tail = data[full:] + bytes(-len(data[full:]) % 8)
+    for w in np.frombuffer(tail, dtype="<u8").tolist():
+        h = (rotl(h ^ round_(0, w), 27) * K1 + K3) & MASK
+    h ^= len(data) * K3 & MASK
+    for shift, factor in ((33, 0xFF51AFD7ED558CCD), (33, 0xC4CEB9FE1A85EC53)):
+        h = (h ^ (h >> shift)) * factor & MASK
+    return h ^ (h >> 33)
+
+
+def check_checkpoint_header(path):
+    with open(path, "rb") as f:
+        raw = f.read()
+    block, body = raw[:512], raw[512:]
+    text = block.rstrip(b"\0").decode()
+    lines = text.splitlines()
+    expect(lines[:2] == ["granshock checkpoint", "format_version 2"], f"{path}: header {lines}")
+    expect(lines[2] == f"hashed_bytes {len(body)}", f"{path}: hashed_bytes")
+    expect(lines[3] == f"hash {gshash64(body):016x}", f"{path}: hash")
+    head = text[:text.rindex("header_hash ")].encode()
+    expect(lines[4] == f"header_hash {gshash64(head):016x}", f"{path}: header_hash")
+
+
 def check_checkpoint(path):
+    check_checkpoint_header(path)
     with h5py.File(path, "r") as f:
+        expect(f.userblock_size == 512, f"{path}: user block {f.userblock_size}")
         expect(text(f.attrs["granshock_file"]) == "checkpoint", f"{path}: granshock_file")
         state = f["state"]
         for name in ("dim", "step", "next_id", "history_slots", "list_builds"):
@@ -97,7 +139,7 @@ def check_checkpoint(path):
                      "insertion_carry", "wall_seconds_so_far"):
             expect(name in run.attrs, f"{path}: /run@{name}")
         expect(run.attrs["rng_counter"].dtype == np.uint64, f"{path}: rng_counter dtype")
-        expect(list(run["bin_shape"][()]) == [2, 3], f"{path}: bin_shape")
+        expect(list(run["bin_shape"][()]) == [2, 3, 1], f"{path}: bin_shape")
         expect(run["bin_sums"].shape == (6,), f"{path}: bin_sums")
         expect(text(f["scene/resolved"][()]).startswith("# resolved"), f"{path}: scene")
 

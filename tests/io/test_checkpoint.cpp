@@ -55,7 +55,7 @@ SolverState make_state(int n, int dim, int slots, unsigned seed) {
   SolverState s;
   s.dim = dim;
   s.step = 1234567890123L;
-  s.next_id = n + 17;
+  s.next_id = 3 * n + 17;  // above every id 3 i + 1
   s.history_slots = slots;
   const std::size_t un = static_cast<std::size_t>(n);
   const std::size_t ud = static_cast<std::size_t>(dim);
@@ -90,9 +90,14 @@ SolverState make_state(int n, int dim, int slots, unsigned seed) {
       s.angular_velocity.push_back(value());
       s.torque.push_back(value());
     }
-    for (std::size_t i = 0; i < un * us; ++i)
-      s.history_partner.push_back(i % 3 == 0 ? -1 : static_cast<int>(i));
-    for (std::size_t i = 0; i < un * us * ud; ++i) s.history_spring.push_back(value());
+    // Slot a of particle p holds particle (p + a) % n, or is free (a % 3 == 0) with a
+    // zero spring, as the force kernel leaves free slots.
+    for (std::size_t i = 0; i < un * us; ++i) {
+      const std::size_t p = i / us, a = i % us;
+      const bool free = a % 3 == 0;
+      s.history_partner.push_back(free ? -1 : s.id[(p + a) % un]);
+      for (std::size_t d = 0; d < ud; ++d) s.history_spring.push_back(free ? 0.0 : value());
+    }
     for (std::size_t i = 0; i < un * ud; ++i) s.history_wall_spring.push_back(value());
   }
   return s;
@@ -106,8 +111,8 @@ CheckpointExtras make_extras() {
   e.deleted_inlet = 3;
   e.insertion_carry = 0.1 + 0.2;
   e.wall_seconds_so_far = 3600.125;
-  e.bin_sums = {1.0 / 3.0, 2.0, -0.0, 4e-300, 5, 6};
-  e.bin_shape = {2, 3};
+  e.bin_sums = {1.0 / 3.0, 2.0, -0.0, 4e-300, 5, 6};  // 2 grid, 3 profile sums, 1 block
+  e.bin_shape = {2, 3, 1};
   e.scene_resolved = "[domain]\nwidth = 0.5\n# ünïcode survives\n";
   return e;
 }
@@ -254,7 +259,7 @@ TEST(Checkpoint, StoresNaturalShapes) {
   EXPECT_EQ(read_array<int>(path, "/state/history_partner").shape, (std::vector<hsize_t>{6, 3}));
   EXPECT_EQ(read_array<double>(path, "/state/history_spring").shape,
             (std::vector<hsize_t>{6, 3, 2}));
-  EXPECT_EQ(read_array<long>(path, "/run/bin_shape").values, (std::vector<long>{2, 3}));
+  EXPECT_EQ(read_array<long>(path, "/run/bin_shape").values, (std::vector<long>{2, 3, 1}));
   EXPECT_EQ(read_array<double>(path, "/state/reference_position").shape,
             (std::vector<hsize_t>{6, 2}));
   EXPECT_EQ(read_array<int>(path, "/state/neighbour_offsets").shape, (std::vector<hsize_t>{7}));

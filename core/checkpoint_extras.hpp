@@ -1,0 +1,24 @@
+// The run loop's state that a checkpoint stores beside the solver's (SolverState).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace granshock {
+
+struct CheckpointExtras {
+  std::uint64_t rng_counter = 0;  // insertion RNG events done (counter-based RNG position)
+  long inserted = 0;              // cumulative counters since the start of the run
+  long deleted_outlet = 0;
+  long deleted_inlet = 0;
+  double insertion_carry = 0;      // fractional particles owed to the inflow
+  double wall_seconds_so_far = 0;  // wall time spent by all earlier legs of the run
+  // The field accumulators: grid sums, profile sums and samples per block, concatenated;
+  // bin_shape holds the three lengths (both empty for a run without field sums).
+  std::vector<double> bin_sums;
+  std::vector<long> bin_shape;
+  std::string scene_resolved;  // resume refuses to continue under a changed scene
+};
+
+}  // namespace granshock
