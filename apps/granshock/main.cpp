@@ -107,6 +107,14 @@ int main(int argc, char** argv) {
               << "\n";
     return 5;
   }
+  // CLI11 takes an empty value for a missing one; say what is wrong instead.
+  for (int k = 1; k < argc; ++k) {
+    const std::string arg = argv[k];
+    if (arg == "--out=" || (arg == "--out" && k + 1 < argc && argv[k + 1][0] == '\0')) {
+      std::cerr << "granshock: error: --out: the directory name is empty\n";
+      return 2;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
