@@ -48,8 +48,8 @@ void check_shapes(const SolverState& s) {
   expect_size("/state/history_partner", s.history_partner, n * slots, slot_rows);
   expect_size("/state/history_spring", s.history_spring, n * slots * dim, slot_rows);
   // The wall springs may be stored empty (docs/output_format.md); the solver decides.
-  if (!(friction && s.history_wall_spring.empty()))
-    expect_size("/state/history_wall_spring", s.history_wall_spring, friction ? n * dim : 0,
+  if (!(friction && s.history_obstacle_spring.empty()))
+    expect_size("/state/history_obstacle_spring", s.history_obstacle_spring, friction ? n * dim : 0,
                 slot_rows);
 }
 
@@ -132,7 +132,7 @@ void check_state(const SolverState& s) {
         {"/state/angular_velocity", &s.angular_velocity},
         {"/state/torque", &s.torque},
         {"/state/history_spring", &s.history_spring},
-        {"/state/history_wall_spring", &s.history_wall_spring},
+        {"/state/history_obstacle_spring", &s.history_obstacle_spring},
         {"/state/reference_position", &s.reference_position}})
     expect_finite(name, *values);
   check_neighbours(s);

@@ -45,7 +45,7 @@ struct SolverFit {
   bool delete_outside = false;
   std::vector<double> radius;  // per species
   double max_friction = 0;     // largest Coulomb coefficient of any pair
-  std::optional<CylinderObstacle> obstacle;
+  std::optional<Obstacle> obstacle;
   // Distances within this of a contact distance are not judged: the solver rounds
   // positions to its precision (a few ulps of the box's extent).
   double distance_tolerance = 0;

@@ -23,9 +23,10 @@ void check_spring_lengths(const SolverState& s, const SolverFit& fit) {
   const double d_max = 2 * largest(fit.radius);
   const double limit = 10 * (1 + fit.max_friction) * d_max;
   const std::size_t dim = std::size_t(s.dim);
-  for (const auto& [name, values] : {std::pair<const char*, const std::vector<double>*>{
-                                         "/state/history_spring", &s.history_spring},
-                                     {"/state/history_wall_spring", &s.history_wall_spring}}) {
+  for (const auto& [name, values] :
+       {std::pair<const char*, const std::vector<double>*>{"/state/history_spring",
+                                                           &s.history_spring},
+        {"/state/history_obstacle_spring", &s.history_obstacle_spring}}) {
     for (std::size_t k = 0; k + dim <= values->size(); k += dim) {
       const double length = norm(*values, k, dim);
       if (length > limit)
@@ -49,8 +50,8 @@ void check_fit(const SolverState& s, const SolverFit& fit) {
                      s.history_slots, fit.history_slots,
                      fit.history_slots > 0 ? "friction" : "no friction"));
   if (fit.history_slots > 0)
-    expect_size("/state/history_wall_spring", s.history_wall_spring, s.size() * std::size_t(s.dim),
-                "this solver keeps a wall spring per particle");
+    expect_size("/state/history_obstacle_spring", s.history_obstacle_spring,
+                s.size() * std::size_t(s.dim), "this solver keeps a wall spring per particle");
   for (int d = 0; d < 3; ++d) {
     if (d < fit.dim && fit.delete_outside && !fit.box.periodic[std::size_t(d)]) continue;
     const char* why = d >= fit.dim                       ? "the scene has no such axis"
@@ -125,10 +126,10 @@ void check_contacts(const SolverState& s, const SolverFit& fit) {
       const double reach = ri + 0.5 * fit.obstacle->diameter_m;
       on_obstacle = std::sqrt(dx * dx + dy * dy) < reach + tol;
     }
-    if (!on_obstacle && !s.history_wall_spring.empty() &&
-        norm(s.history_wall_spring, i * dim, dim) != 0)
+    if (!on_obstacle && !s.history_obstacle_spring.empty() &&
+        norm(s.history_obstacle_spring, i * dim, dim) != 0)
       fail(fmt::format("{} is not zero, but particle {} does not touch the obstacle",
-                       at("/state/history_wall_spring", i * dim), s.id[i]));
+                       at("/state/history_obstacle_spring", i * dim), s.id[i]));
     if (contacts > 0 || on_obstacle) continue;
     if (norm(s.force, i * dim, dim) != 0)
       fail(fmt::format("{} is not zero, but particle {} touches nothing",

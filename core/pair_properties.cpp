@@ -33,11 +33,11 @@ PairProperties particle_pair(const Species& a, const Species& b, double e, doubl
   return p;
 }
 
-PairProperties particle_wall(const Species& s, const Material& wall, double e, double mu) {
+PairProperties particle_obstacle(const Species& s, const Material& obstacle, double e, double mu) {
   PairProperties p;
-  p.name = s.name + "-wall";
-  p.youngs_star = 1.0 / (inv_youngs(s.material) + inv_youngs(wall));
-  p.shear_star = 1.0 / (inv_shear(s.material) + inv_shear(wall));
+  p.name = s.name + "-obstacle";
+  p.youngs_star = 1.0 / (inv_youngs(s.material) + inv_youngs(obstacle));
+  p.shear_star = 1.0 / (inv_shear(s.material) + inv_shear(obstacle));
   p.radius_star = s.radius_m();
   p.mass_star = s.mass_kg();
   p.min_diameter = s.diameter_m;
@@ -46,23 +46,5 @@ PairProperties particle_wall(const Species& s, const Material& wall, double e, d
   p.friction = mu;
   return p;
 }
-
-template <class Real>
-HertzCoefficients<Real> hertz_coefficients(const PairProperties& p, bool limit_force) {
-  const double sqrt_r = std::sqrt(p.radius_star);
-  const double damping = -2.0 * std::sqrt(5.0 / 6.0) * p.beta;
-  HertzCoefficients<Real> c;
-  c.kn_coef = Real(4.0 / 3.0 * p.youngs_star * sqrt_r);
-  c.gn_coef = Real(damping * std::sqrt(2.0 * p.youngs_star * sqrt_r * p.mass_star));
-  c.kt_coef = Real(8.0 * p.shear_star * sqrt_r);
-  c.gt_coef = Real(damping * std::sqrt(8.0 * p.shear_star * sqrt_r * p.mass_star));
-  c.friction = Real(p.friction);
-  c.normal_force_floor = limit_force ? Real(0) : -std::numeric_limits<Real>::max();
-  c.energy_coef = Real(8.0 / 15.0 * p.youngs_star * sqrt_r);
-  return c;
-}
-
-template HertzCoefficients<float> hertz_coefficients<float>(const PairProperties&, bool);
-template HertzCoefficients<double> hertz_coefficients<double>(const PairProperties&, bool);
 
 }  // namespace granshock

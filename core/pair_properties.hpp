@@ -2,10 +2,10 @@
 //   1/Y* = (1-nu_i^2)/E_i + (1-nu_j^2)/E_j
 //   1/G* = 2(2-nu_i)(1+nu_i)/E_i + 2(2-nu_j)(1+nu_j)/E_j
 //   1/R* = 1/r_i + 1/r_j,  1/m* = 1/m_i + 1/m_j,  beta = ln e / sqrt(ln^2 e + pi^2)
-// A fixed wall (the obstacle) has infinite radius and mass: R* = r_i, m* = m_i.
+// The obstacle, like a LIGGGHTS wall, has infinite radius and mass: R* = r_i, m* = m_i.
+// Each contact law (kernels/models/) turns these into its own per-pair constants.
 #pragma once
 
-#include <limits>
 #include <string>
 
 #include "material.hpp"
@@ -13,7 +13,7 @@
 namespace granshock {
 
 struct PairProperties {
-  std::string name;  // e.g. "steel-aluminium", "steel-wall"
+  std::string name;  // e.g. "steel-aluminium", "steel-obstacle"
   double youngs_star = 0;
   double shear_star = 0;
   double radius_star = 0;
@@ -27,27 +27,7 @@ struct PairProperties {
 double damping_beta(double restitution);
 PairProperties particle_pair(const Species& a, const Species& b, double restitution,
                              double friction);
-PairProperties particle_wall(const Species& p, const Material& wall, double restitution,
-                             double friction);
-
-// Per-pair constants on the device, arranged so that one contact costs two square roots:
-//   kn = 4/3 Y* sqrt(R* dn) = kn_coef sqrt(dn)      Sn = 2 Y* sqrt(R* dn)
-//   gn = -2 sqrt(5/6) beta sqrt(Sn m*) = gn_coef dn^(1/4)
-//   kt = St = 8 G* sqrt(R* dn) = kt_coef sqrt(dn)
-//   gt = -2 sqrt(5/6) beta sqrt(St m*) = gt_coef dn^(1/4)
-// The elastic energy of a Hertz contact is U = 8/15 Y* sqrt(R*) dn^(5/2).
-template <class Real>
-struct HertzCoefficients {
-  Real kn_coef;
-  Real gn_coef;
-  Real kt_coef;
-  Real gt_coef;
-  Real friction;
-  Real normal_force_floor;  // 0 with limit_force (no attraction), -max otherwise
-  Real energy_coef;
-};
-
-template <class Real>
-HertzCoefficients<Real> hertz_coefficients(const PairProperties& p, bool limit_force);
+PairProperties particle_obstacle(const Species& p, const Material& obstacle, double restitution,
+                                 double friction);
 
 }  // namespace granshock

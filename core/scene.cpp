@@ -13,11 +13,6 @@ double Scene::fastest_impact_speed() const {
   return 2.0 * (inflow.speed_m_per_s + 4.0 * inflow.sigma);
 }
 
-TimeStepAssessment Scene::assess_time_step() const {
-  return granshock::assess_time_step(setup.all_pairs(), fastest_impact_speed(), setup.dt,
-                                     setup.contacts.has_friction());
-}
-
 double Scene::mean_mass() const {
   double m = 0;
   for (std::size_t a = 0; a < setup.species.size(); ++a)

@@ -1,4 +1,4 @@
-// A bow-shock scene (DESIGN.md 2.2): the physics (SystemSetup), the inflow, and how
+// A bow-shock scene (DESIGN.md 2.2): the physics (SolverSetup), the inflow, and how
 // long to run and what to write. Parsed from TOML by io/scene_file.hpp.
 #pragma once
 
@@ -9,8 +9,7 @@
 
 #include "bin_layout.hpp"
 #include "kinetic_theory.hpp"
-#include "system_setup.hpp"
-#include "time_step_guard.hpp"
+#include "solver_setup.hpp"
 
 namespace granshock {
 
@@ -47,7 +46,7 @@ struct RunControl {
 struct Scene {
   std::string name;
   double d_m = 1e-3;  // the length unit "d" of the scene file
-  SystemSetup setup;
+  SolverSetup setup;
   InflowSpec inflow;
   RunControl run;
   MassDefinition mass_definition = MassDefinition::mixture_mean;
@@ -58,7 +57,6 @@ struct Scene {
   // The fastest relative normal impact the scene can produce: a particle at U + 4 sigma
   // meeting one that rebounded from the obstacle at up to U + 4 sigma.
   double fastest_impact_speed() const;
-  TimeStepAssessment assess_time_step() const;
   // Particles expected in the domain: phi_inf over the area, plus a margin for the
   // dense region in front of the obstacle; the solver's initial capacity.
   std::size_t capacity_estimate() const;

@@ -11,9 +11,10 @@
 #include <vector>
 
 #include "bin_layout.hpp"
+#include "communicator.hpp"
 #include "host_particles.hpp"
+#include "solver_setup.hpp"
 #include "solver_state.hpp"
-#include "system_setup.hpp"
 
 namespace granshock {
 
@@ -62,6 +63,9 @@ class Solver {
   virtual ~Solver() = default;
 
   virtual void set_particles(const HostParticles& particles) = 0;
+  // Deletes escaped particles, sorts by cell and rebuilds the neighbour list now (the time
+  // loop does it by itself whenever a particle has moved half the skin).
+  virtual void rebuild_lists() = 0;
   virtual HostParticles particles() const = 0;  // copies the owned particles to the host
   virtual void advance(long steps) = 0;
   virtual Diagnostics diagnostics() const = 0;
@@ -101,8 +105,11 @@ class Solver {
 
 enum class Backend { default_space, serial };
 
-// The one place where a scene's needs select a compiled kernel variant.
-std::unique_ptr<Solver> make_solver(const SystemSetup& setup, std::size_t capacity,
-                                    Backend backend = Backend::default_space);
+// The one place where a scene's needs select a compiled kernel variant
+// (kernels/solver/variant_table.hpp). `comm` carries the global reductions
+// (communicator.hpp); by default one process owns everything.
+std::unique_ptr<Solver> make_solver(const SolverSetup& setup, std::size_t capacity,
+                                    Backend backend = Backend::default_space,
+                                    const Communicator* comm = nullptr);
 
 }  // namespace granshock

@@ -26,9 +26,9 @@ struct SolverState {
   std::vector<int> id;                   // n
   // Contact history (friction only): slots per particle, partner ids (-1 free), springs.
   int history_slots = 0;
-  std::vector<int> history_partner;         // n * slots
-  std::vector<double> history_spring;       // n * slots * dim
-  std::vector<double> history_wall_spring;  // n * dim
+  std::vector<int> history_partner;             // n * slots
+  std::vector<double> history_spring;           // n * slots * dim
+  std::vector<double> history_obstacle_spring;  // n * dim
 
   // The Verlet list and the reference positions of the skin criterion.
   std::vector<double> reference_position;  // n * dim

@@ -20,7 +20,7 @@ using h5::Handle;
 
 constexpr const char* kFileKind = "checkpoint";
 // 2: checksum header in a 512-byte user block (io/checkpoint_seal.hpp).
-constexpr int kFormatVersion = 2;
+constexpr int kFormatVersion = kCheckpointFormat;
 
 // The stored shape of a per-particle array: [rows, tail...], rows = size / prod(tail).
 // Storing the real shape (not a flat list) lets h5py users read it as particles x
@@ -71,7 +71,7 @@ void write_state(hid_t file, const SolverState& s) {
   put("id", s.id, {});
   put("history_partner", s.history_partner, {slots});
   put("history_spring", s.history_spring, {slots, dim});
-  put("history_wall_spring", s.history_wall_spring, {dim});
+  put("history_obstacle_spring", s.history_obstacle_spring, {dim});
 
   // The neighbour list: restoring it avoids a rebuild that would change the run.
   put("reference_position", s.reference_position, {dim});
@@ -188,7 +188,7 @@ SolverState read_state(const Reader& in) {
   s.id = in.dataset<int>("/state", "id");
   s.history_partner = in.dataset<int>("/state", "history_partner");
   s.history_spring = in.dataset<double>("/state", "history_spring");
-  s.history_wall_spring = in.dataset<double>("/state", "history_wall_spring");
+  s.history_obstacle_spring = in.dataset<double>("/state", "history_obstacle_spring");
   s.reference_position = in.dataset<double>("/state", "reference_position");
   s.neighbour_offsets = in.dataset<int>("/state", "neighbour_offsets");
   s.neighbours = in.dataset<int>("/state", "neighbours");

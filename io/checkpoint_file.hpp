@@ -10,6 +10,10 @@
 
 namespace granshock {
 
+// The layout version of checkpoint.h5 this granshock writes and reads
+// (docs/output_format.md). 3: /state/history_wall_spring became history_obstacle_spring.
+inline constexpr int kCheckpointFormat = 3;
+
 // Writes path + ".tmp", closes and syncs it, then renames it over `path`. Throws
 // UserError naming the path when the directory is not writable (no .tmp is left), and
 // std::invalid_argument when a per-particle array of `state` does not divide into rows.

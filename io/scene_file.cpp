@@ -333,12 +333,16 @@ LoadedScene parse_scene(const std::string& text, const std::vector<std::string>&
     fail(key, '"' + name + '"', "unknown species");
   };
 
+  std::optional<double> characteristic_velocity;  // default: the inflow speed
   {
     TableReader r(top.table("contact"), "contact", d);
     const double e = r.number_in("restitution", 0, 1, true, false);
     const double mu = r.number_in("friction", 0, INFINITY, false, true, 0.0);
-    s.setup.contacts = ContactModel::uniform(n_species, e, mu);
-    s.setup.contacts.limit_force = r.boolean("limit_force", false);
+    s.setup.contacts = ContactSettings::uniform(n_species, e, mu);
+    s.setup.contacts.model = parse_contact_model(r.choice("model", {"hertz", "hooke"}, "hertz"));
+    s.setup.contacts.options.limit_force = r.boolean("limit_force", false);
+    if (r.has("characteristic_velocity"))
+      characteristic_velocity = r.positive("characteristic_velocity");
     if (const toml::table* pairs = r.table("pairs")) {
       for (const auto& [k, v] : *pairs) {
         const std::string name(k.str()), key = "contact.pairs." + name;
@@ -349,10 +353,10 @@ LoadedScene parse_scene(const std::string& text, const std::vector<std::string>&
         const std::string other = name.substr(dash + 1);
         TableReader pr(v.as_table(), key, d);
         if (other == "obstacle") {
-          s.setup.contacts.wall_restitution[a] =
-              pr.number_in("restitution", 0, 1, true, false, s.setup.contacts.wall_restitution[a]);
-          s.setup.contacts.wall_friction[a] =
-              pr.number_in("friction", 0, INFINITY, false, true, s.setup.contacts.wall_friction[a]);
+          s.setup.contacts.obstacle_restitution[a] = pr.number_in(
+              "restitution", 0, 1, true, false, s.setup.contacts.obstacle_restitution[a]);
+          s.setup.contacts.obstacle_friction[a] = pr.number_in(
+              "friction", 0, INFINITY, false, true, s.setup.contacts.obstacle_friction[a]);
         } else {
           const int b = species_index(key, other);
           const double pe =
@@ -371,8 +375,8 @@ LoadedScene parse_scene(const std::string& text, const std::vector<std::string>&
   {
     TableReader r(top.table("numerics"), "numerics", d);
     s.setup.precision = r.choice("precision", {"double", "single"}, "double") == "single"
-                            ? Precision::single
-                            : Precision::dual;
+                            ? Precision::single_precision
+                            : Precision::double_precision;
     s.setup.skin_m = r.length("skin", 0.3 * s.setup.max_diameter());
     if (!(s.setup.skin_m > 0))
       fail("numerics.skin", fmt::format("{} m", s.setup.skin_m), "must be > 0");
@@ -425,7 +429,7 @@ LoadedScene parse_scene(const std::string& text, const std::vector<std::string>&
 
   if (const toml::table* ot = top.table("obstacle")) {
     TableReader r(ot, "obstacle", d);
-    CylinderObstacle c;
+    Obstacle c;
     c.diameter_m = r.positive_length("diameter");
     c.material = material_named("obstacle.material", r.string("material", "aluminium"));
     c.centre = {0.5 * width, 0.5 * length, 0};
@@ -470,6 +474,8 @@ LoadedScene parse_scene(const std::string& text, const std::vector<std::string>&
   }
   top.finish();
 
+  s.setup.contacts.options.characteristic_velocity_m_per_s =
+      characteristic_velocity.value_or(s.inflow.speed_m_per_s);
   resolve_inflow(s);
   out.resolved = scene_to_toml(s);
   return out;
@@ -556,9 +562,12 @@ std::string scene_to_toml(const Scene& s) {
                                   {"diameter", sp.diameter_m},
                                   {"number_fraction", s.inflow.number_fraction[a]}});
   }
-  toml::table contact{{"restitution", s.setup.contacts.restitution[0][0]},
-                      {"friction", s.setup.contacts.friction[0][0]},
-                      {"limit_force", s.setup.contacts.limit_force}};
+  toml::table contact{
+      {"model", to_string(s.setup.contacts.model)},
+      {"restitution", s.setup.contacts.restitution[0][0]},
+      {"friction", s.setup.contacts.friction[0][0]},
+      {"limit_force", s.setup.contacts.options.limit_force},
+      {"characteristic_velocity", s.setup.contacts.options.characteristic_velocity_m_per_s}};
   toml::table pairs;
   for (std::size_t a = 0; a < s.setup.species.size(); ++a) {
     for (std::size_t b = a; b < s.setup.species.size(); ++b)
@@ -566,8 +575,8 @@ std::string scene_to_toml(const Scene& s) {
                    toml::table{{"restitution", s.setup.contacts.restitution[a][b]},
                                {"friction", s.setup.contacts.friction[a][b]}});
     pairs.insert(s.setup.species[a].name + "-obstacle",
-                 toml::table{{"restitution", s.setup.contacts.wall_restitution[a]},
-                             {"friction", s.setup.contacts.wall_friction[a]}});
+                 toml::table{{"restitution", s.setup.contacts.obstacle_restitution[a]},
+                             {"friction", s.setup.contacts.obstacle_friction[a]}});
   }
   contact.insert("pairs", pairs);
   if (s.setup.obstacle) {
@@ -597,12 +606,12 @@ std::string scene_to_toml(const Scene& s) {
                                     {"progress_interval", s.run.progress_interval_s},
                                     {"sample_every", int64_t(s.run.sample_every)},
                                     {"blocks", int64_t(s.run.blocks)}});
-  root.insert(
-      "numerics",
-      toml::table{{"precision", s.setup.precision == Precision::single ? "single" : "double"},
-                  {"skin", s.setup.skin_m},
-                  {"mass_definition", to_string(s.mass_definition)},
-                  {"bin_size", s.bin_size_m}});
+  root.insert("numerics",
+              toml::table{{"precision",
+                           s.setup.precision == Precision::single_precision ? "single" : "double"},
+                          {"skin", s.setup.skin_m},
+                          {"mass_definition", to_string(s.mass_definition)},
+                          {"bin_size", s.bin_size_m}});
   std::ostringstream os;
   os << root << "\n";
   return os.str();

@@ -1,7 +1,7 @@
 // GoogleTest entry point: Kokkos is initialised once for the whole test program.
 #include <gtest/gtest.h>
 
-#include "kokkos_runtime.hpp"
+#include "device/kokkos_runtime.hpp"
 
 int main(int argc, char** argv) {
   ::testing::InitGoogleTest(&argc, argv);

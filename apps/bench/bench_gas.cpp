@@ -116,11 +116,11 @@ std::pair<long, double> run_at_least(granshock::Solver& solver, long chunk, long
 }
 
 Row bench_one(const Options& o, double phi, int n_wanted) {
-  granshock::SystemSetup setup = granshock::paper_mixture(o.restitution);
+  granshock::SolverSetup setup = granshock::paper_mixture(o.restitution);
   setup.dt = o.dt;
   if (o.skin_d > 0) setup.skin_m = o.skin_d * setup.max_diameter();
-  setup.precision =
-      o.precision == "single" ? granshock::Precision::single : granshock::Precision::dual;
+  setup.precision = o.precision == "single" ? granshock::Precision::single_precision
+                                            : granshock::Precision::double_precision;
   granshock::GasSpec spec;
   spec.particles = n_wanted;
   spec.area_fraction = phi;
@@ -278,7 +278,7 @@ int main(int argc, char** argv) {
                                    " does not exist");
     }
     const int threads = Kokkos::DefaultExecutionSpace().concurrency();
-    granshock::SystemSetup mixture = granshock::paper_mixture(o.restitution);
+    granshock::SolverSetup mixture = granshock::paper_mixture(o.restitution);
     if (o.skin_d > 0) mixture.skin_m = o.skin_d * mixture.max_diameter();
     const double skin_d = mixture.skin() / mixture.max_diameter();
     std::printf("# granshock_bench_gas: Kokkos %s, backend %s, %d threads, %s precision\n",

@@ -9,10 +9,10 @@
 #include <optional>
 
 #include "build_info.hpp"
+#include "device/kokkos_runtime.hpp"
 #include "fields_command.hpp"
 #include "hdf5_runtime.hpp"
 #include "head_on_collision.hpp"
-#include "kokkos_runtime.hpp"
 #include "run_command.hpp"
 #include "user_error.hpp"
 
@@ -26,17 +26,23 @@ std::string one_line(std::string text) {
   return text;
 }
 
-void add_collide_command(CLI::App& app, granshock::CollisionOptions& o, std::string& precision) {
+void add_collide_command(CLI::App& app, granshock::CollisionOptions& o, std::string& precision,
+                         std::string& model) {
   auto* cmd = app.add_subcommand("collide",
                                  "head-on collision of two particles or a particle and "
                                  "the fixed cylinder; prints JSON");
   cmd->add_option("--pair", o.pair,
-                  "steel-steel | steel-aluminium | aluminium-aluminium | steel-wall | "
-                  "aluminium-wall")
+                  "steel-steel | steel-aluminium | aluminium-aluminium | steel-obstacle | "
+                  "aluminium-obstacle")
       ->required();
   cmd->add_option("--speed", o.speed_m_per_s, "relative normal impact speed (m/s)")->required();
   cmd->add_option("--dt", o.dt, "time step (s); default t_c/100");
   cmd->add_option("--e", o.restitution, "coefficient of restitution, in (0, 1]; default 0.5");
+  cmd->add_option("--model", model, "contact law: hertz (default) | hooke")
+      ->check(CLI::IsMember({"hertz", "hooke"}));
+  cmd->add_option("--characteristic-velocity", o.characteristic_velocity,
+                  "hooke: the impact speed (m/s) of equal peak overlap with Hertz; default "
+                  "--speed");
   cmd->add_flag("--limit-force", o.limit_force,
                 "clamp the normal force at zero (no attraction at the end of contact)");
   cmd->add_option("--precision", precision, "double | single")
@@ -85,8 +91,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.allow_extras(false);
   granshock::CollisionOptions collide;
-  std::string precision = "double";
-  add_collide_command(app, collide, precision);
+  std::string precision = "double", model = "hertz";
+  add_collide_command(app, collide, precision, model);
   granshock::RunOptions run;
   add_run_command(app, run);
   std::vector<std::filesystem::path> field_dirs;
@@ -136,8 +142,9 @@ int main(int argc, char** argv) {
     if (info->parsed()) {
       std::cout << granshock::build_info_json() << "\n";
     } else if (app.got_subcommand("collide")) {
-      collide.precision =
-          precision == "single" ? granshock::Precision::single : granshock::Precision::dual;
+      collide.precision = precision == "single" ? granshock::Precision::single_precision
+                                                : granshock::Precision::double_precision;
+      collide.model = granshock::parse_contact_model(model);
       const auto result = granshock::run_head_on_collision(collide);
       if (result.time_step.verdict != granshock::TimeStepAssessment::Verdict::ok)
         std::cerr << "granshock: warning: " << result.time_step.message << "\n";

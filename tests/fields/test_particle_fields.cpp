@@ -2,17 +2,16 @@
 // their statistical tolerance (DESIGN.md 2.3), through the REAL device accumulation: K
 // independent particle states are generated on the host, handed to a solver
 // (set_particles) and sampled on the device (sample_fields); the solver's sums
-// (field_sums) then go through compute_bin_fields (apps/fields) like a run's sums do.
+// (field_sums) then go through compute_bin_fields (analysis/) like a run's sums do.
 //
 // Each state: the paper's mixture (steel species 0, aluminium species 1, d = 1 mm) on a
 // square lattice of spacing a = 1.2 d in a periodic 76.8 x 50.4 mm box (64 x 42 sites,
-// 1680 steel and 1008 aluminium, species shuffled over the sites; phi = 0.545). The lattice is shifted
-// by a uniform random offset and every particle jittered uniformly inside [r, a - r] of
-// its cell, so particles never overlap (no contacts, no virial) while the expected number
-// density of each species is uniform: n_a = N_a / A exactly. The bin grid (24 x 16 bins
-// of 3 d from (2.0, 1.0) mm) does not cover the whole box, so particles outside it must not
-// be counted. Velocities: per species a Maxwellian of per-component variance
-// sigma_a^2 = T_a / m_a about a mean velocity field.
+// 1680 steel and 1008 aluminium, species shuffled over the sites; phi = 0.545). The lattice is
+// shifted by a uniform random offset and every particle jittered uniformly inside [r, a - r] of its
+// cell, so particles never overlap (no contacts, no virial) while the expected number density of
+// each species is uniform: n_a = N_a / A exactly. The bin grid (24 x 16 bins of 3 d from (2.0, 1.0)
+// mm) does not cover the whole box, so particles outside it must not be counted. Velocities: per
+// species a Maxwellian of per-component variance sigma_a^2 = T_a / m_a about a mean velocity field.
 //
 // Statistical tolerance: every comparison allows 5 standard errors (SE), with the SE
 // computed for independent particle samples (formulas next to the assertions). The
@@ -47,18 +46,22 @@ constexpr double kD = 1e-3;          // particle diameter, m
 constexpr double kLattice = 1.2e-3;  // lattice spacing a, m
 constexpr int kSitesX = 64, kSitesY = 42;
 constexpr int kSteel = 1680, kAluminium = 1008;  // number fraction 0.625 / 0.375
-constexpr double kBin = 3e-3;                  // bin side h, m
+constexpr double kBin = 3e-3;                    // bin side h, m
 constexpr int kBinsX = 24, kBinsY = 16;
 constexpr double kGridX0 = 2.0e-3, kGridY0 = 1.0e-3;
 constexpr int kBlocks = 4;
-constexpr int kSamples = 1000;  // K independent states (250 per block)
+constexpr int kSamples = 1000;    // K independent states (250 per block)
 constexpr double kTolerance = 5;  // standard errors
 
-double box_x() { return kSitesX * kLattice; }
-double box_y() { return kSitesY * kLattice; }
+double box_x() {
+  return kSitesX * kLattice;
+}
+double box_y() {
+  return kSitesY * kLattice;
+}
 
-SystemSetup mixture_setup() {
-  SystemSetup s = paper_mixture(0.5);
+SolverSetup mixture_setup() {
+  SolverSetup s = paper_mixture(0.5);
   s.box.lo = {0, 0, 0};
   s.box.hi = {box_x(), box_y(), kD};
   s.box.periodic = {true, true, false};
@@ -66,7 +69,7 @@ SystemSetup mixture_setup() {
   return s;
 }
 
-FieldPhysics physics_of(const SystemSetup& s) {
+FieldPhysics physics_of(const SolverSetup& s) {
   FieldPhysics p;
   p.dim = 2;
   for (const Species& sp : s.species) {
@@ -115,7 +118,7 @@ HostParticles random_state(std::mt19937_64& rng, std::vector<int>& species,
 
 // Samples K states through the solver and returns the sums as `granshock fields` reads them.
 BinSums accumulate(std::uint64_t seed, const std::vector<double>& sigma, const MeanVelocity& mean) {
-  const SystemSetup setup = mixture_setup();
+  const SolverSetup setup = mixture_setup();
   auto solver = make_solver(setup, kSitesX * kSitesY);
   FieldSampling sampling;
   sampling.grid.n_species = 2;
@@ -174,8 +177,9 @@ struct Deviations {
     }
   }
   void report(const char* name) const {
-    std::printf("[%s] %d comparisons, max |deviation| = %.3f SE = %.3f of the 5-SE tolerance (%s)\n",
-                name, checks, worst, worst / kTolerance, where.c_str());
+    std::printf(
+        "[%s] %d comparisons, max |deviation| = %.3f SE = %.3f of the 5-SE tolerance (%s)\n", name,
+        checks, worst, worst / kTolerance, where.c_str());
     std::printf("[%s] RMS deviation / SE:", name);
     for (const auto& [what, sum] : squares)
       std::printf(" %s %.2f", what.c_str(), std::sqrt(sum.first / sum.second));
@@ -224,7 +228,7 @@ void check_mixture_temperature(const BinFields& f, std::size_t k, const std::vec
 // Case 1: uniform flow u = (0.3, 1.0) m/s, T_steel = 2 T_aluminium.
 TEST(ParticleFields, UniformMixtureWithUnequalSpeciesTemperatures) {
   const auto start = std::chrono::steady_clock::now();
-  const SystemSetup setup = mixture_setup();
+  const SolverSetup setup = mixture_setup();
   const FieldPhysics phys = physics_of(setup);
   const std::array<double, 2> m{phys.mass[0], phys.mass[1]};
   const std::array<double, 2> u{0.3, 1.0};
@@ -234,8 +238,9 @@ TEST(ParticleFields, UniformMixtureWithUnequalSpeciesTemperatures) {
   const double area = box_x() * box_y();
   const std::vector<double> n_true{kSteel / area, kAluminium / area};
 
-  const BinSums sums =
-      accumulate(20240611, sigma, [&](double) { return std::array<double, 2>{u[0], u[1]}; });
+  const BinSums sums = accumulate(20240611, sigma, [&](double) {
+    return std::array<double, 2>{u[0], u[1]};
+  });
   const BinFields f = compute_bin_fields(sums, phys);
 
   Deviations dev;
@@ -246,9 +251,9 @@ TEST(ParticleFields, UniformMixtureWithUnequalSpeciesTemperatures) {
     // u = sum_a m_a C_a / sum_a m_a N_a; per component SE(u)^2 = sum_a m_a^2 N_a sigma_a^2
     // / (sum_a m_a N_a)^2 (independent velocities, counts as observed).
     const double mass = m[0] * na[0] + m[1] * na[1];
-    const double se_u =
-        std::sqrt(m[0] * m[0] * na[0] * sigma[0] * sigma[0] + m[1] * m[1] * na[1] * sigma[1] * sigma[1]) /
-        mass;
+    const double se_u = std::sqrt(m[0] * m[0] * na[0] * sigma[0] * sigma[0] +
+                                  m[1] * m[1] * na[1] * sigma[1] * sigma[1]) /
+                        mass;
     dev("ux", k, f.ux[k], u[0], se_u);
     dev("uy", k, f.uy[k], u[1], se_u);
     std::array<double, 2> se_t{};
@@ -281,7 +286,7 @@ TEST(ParticleFields, UniformMixtureWithUnequalSpeciesTemperatures) {
 //   T_bin = sum_a xi_a T_a,bin = T_0 + (sum_a xi_a m_a) gamma^2 h^2 / 24.
 TEST(ParticleFields, LinearShearAddsTheUnresolvedShearToTheBinTemperature) {
   const auto start = std::chrono::steady_clock::now();
-  const SystemSetup setup = mixture_setup();
+  const SolverSetup setup = mixture_setup();
   const FieldPhysics phys = physics_of(setup);
   const std::array<double, 2> m{phys.mass[0], phys.mass[1]};
   const double t0 = m[0] * 0.04;  // sigma_steel = 0.2 m/s, sigma_al = sqrt(T_0 / m_al)
@@ -293,8 +298,9 @@ TEST(ParticleFields, LinearShearAddsTheUnresolvedShearToTheBinTemperature) {
   const double area = box_x() * box_y();
   const std::vector<double> n_true{kSteel / area, kAluminium / area};
 
-  const BinSums sums = accumulate(
-      987654321, sigma, [&](double x) { return std::array<double, 2>{ux, gamma * (x - x_mid)}; });
+  const BinSums sums = accumulate(987654321, sigma, [&](double x) {
+    return std::array<double, 2>{ux, gamma * (x - x_mid)};
+  });
   const BinFields f = compute_bin_fields(sums, phys);
 
   Deviations dev;
@@ -312,10 +318,9 @@ TEST(ParticleFields, LinearShearAddsTheUnresolvedShearToTheBinTemperature) {
       const double se_ux = std::sqrt(m[0] * m[0] * na[0] * sigma[0] * sigma[0] +
                                      m[1] * m[1] * na[1] * sigma[1] * sigma[1]) /
                            mass;
-      const double se_uy =
-          std::sqrt(m[0] * m[0] * na[0] * (sigma[0] * sigma[0] + shear_var) +
-                    m[1] * m[1] * na[1] * (sigma[1] * sigma[1] + shear_var)) /
-          mass;
+      const double se_uy = std::sqrt(m[0] * m[0] * na[0] * (sigma[0] * sigma[0] + shear_var) +
+                                     m[1] * m[1] * na[1] * (sigma[1] * sigma[1] + shear_var)) /
+                           mass;
       dev("ux", k, f.ux[k], ux, se_ux);
       dev("uy", k, f.uy[k], gamma * (x_c - x_mid), se_uy);
       std::array<double, 2> t_species{}, se_t{};
@@ -345,6 +350,6 @@ TEST(ParticleFields, LinearShearAddsTheUnresolvedShearToTheBinTemperature) {
               smallest_shear_share);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::printf("[linear shear] %d samples of %d particles in %.2f s\n", kSamples,
-              kSitesX * kSitesY, seconds);
+  std::printf("[linear shear] %d samples of %d particles in %.2f s\n", kSamples, kSitesX * kSitesY,
+              seconds);
 }

@@ -98,7 +98,7 @@ void expect_masked_bins_blank(const fs::path& fields_h5) {
     return;  // no figures without them (FieldsCommand.MissingMatplotlibCostsOnlyTheFigures)
   const std::string check = "/usr/bin/python3 " GRANSHOCK_TEST_FIELDS_DIR
                             "/check_figure_masking.py '" +
-                            fields_h5.string() + "' " GRANSHOCK_SOURCE_DIR "/apps/fields";
+                            fields_h5.string() + "' " GRANSHOCK_SOURCE_DIR "/analysis";
   EXPECT_EQ(std::system(check.c_str()), 0) << check;
 }
 

@@ -110,7 +110,7 @@ def check_checkpoint_header(path):
     block, body = raw[:512], raw[512:]
     text = block.rstrip(b"\0").decode()
     lines = text.splitlines()
-    expect(lines[:2] == ["granshock checkpoint", "format_version 2"], f"{path}: header {lines}")
+    expect(lines[:2] == ["granshock checkpoint", "format_version 3"], f"{path}: header {lines}")
     expect(lines[2] == f"hashed_bytes {len(body)}", f"{path}: hashed_bytes")
     expect(lines[3] == f"hash {gshash64(body):016x}", f"{path}: hash")
     head = text[:text.rindex("header_hash ")].encode()
@@ -128,7 +128,7 @@ def check_checkpoint(path):
         shapes = {"position": (3, 2), "velocity": (3, 2), "force": (3, 2),
                   "angular_velocity": (3,), "torque": (3,), "species": (3,), "id": (3,),
                   "history_partner": (3, 2), "history_spring": (3, 2, 2),
-                  "history_wall_spring": (3, 2), "reference_position": (3, 2),
+                  "history_obstacle_spring": (3, 2), "reference_position": (3, 2),
                   "neighbour_offsets": (4,), "neighbours": (3,)}
         for name, shape in shapes.items():
             expect(state[name].shape == shape, f"{path}: /state/{name} shape {state[name].shape}")

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "checkpoint_file.hpp"
 #include "checkpoint_seal.hpp"
 
 namespace granshock::test {
@@ -22,7 +23,7 @@ inline void h5_ok(herr_t status, const std::string& what) {
 
 // Recomputes the checksum header of `file` as write_checkpoint does.
 inline void reseal(const std::filesystem::path& file) {
-  seal::seal_file(file, 2);
+  seal::seal_file(file, kCheckpointFormat);
 }
 
 // Opens `file` read-write, runs `edit`, closes it and re-seals it.

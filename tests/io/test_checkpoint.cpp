@@ -37,7 +37,7 @@ void expect_equal(const SolverState& a, const SolverState& b) {
   EXPECT_EQ(a.id, b.id);
   EXPECT_EQ(a.history_partner, b.history_partner);
   EXPECT_TRUE(same_bits(a.history_spring, b.history_spring));
-  EXPECT_TRUE(same_bits(a.history_wall_spring, b.history_wall_spring));
+  EXPECT_TRUE(same_bits(a.history_obstacle_spring, b.history_obstacle_spring));
   EXPECT_TRUE(same_bits(a.reference_position, b.reference_position));
   EXPECT_EQ(a.neighbour_offsets, b.neighbour_offsets);
   EXPECT_EQ(a.neighbours, b.neighbours);
@@ -98,7 +98,7 @@ SolverState make_state(int n, int dim, int slots, unsigned seed) {
       s.history_partner.push_back(free ? -1 : s.id[(p + a) % un]);
       for (std::size_t d = 0; d < ud; ++d) s.history_spring.push_back(free ? 0.0 : value());
     }
-    for (std::size_t i = 0; i < un * ud; ++i) s.history_wall_spring.push_back(value());
+    for (std::size_t i = 0; i < un * ud; ++i) s.history_obstacle_spring.push_back(value());
   }
   return s;
 }
@@ -166,7 +166,7 @@ TEST(Checkpoint, EmptyStateAndOptionalArraysRoundTrip) {
 
   // Friction on (slots > 0) but no wall springs yet: the empty array stays empty.
   SolverState partial = make_state<double>(5, 2, 2, 4);
-  partial.history_wall_spring.clear();
+  partial.history_obstacle_spring.clear();
   write_checkpoint(dir / "checkpoint.h5", partial, none);
   expect_equal(partial, read_checkpoint(dir / "checkpoint.h5", extras));
 }

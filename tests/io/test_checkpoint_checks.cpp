@@ -37,7 +37,7 @@ struct Sample {
     s.id = {0, 1, 2};
     s.history_partner = {1, -1, 0, -1, -1, -1};
     s.history_spring = {1e-7, 0, 0, 0, -1e-7, 0, 0, 0, 0, 0, 0, 0};
-    s.history_wall_spring = {0, 0, 0, 0, 0, 0};
+    s.history_obstacle_spring = {0, 0, 0, 0, 0, 0};
     s.neighbour_offsets = {0, 1, 2, 2};
     s.neighbours = {1, 0};
     s.list_builds = 5;
@@ -125,7 +125,7 @@ TEST(CheckpointChecks, StateOnItsOwn) {
          x.s.history_slots = 0;
          x.s.history_partner.clear();
          x.s.history_spring.clear();
-         x.s.history_wall_spring.clear();
+         x.s.history_obstacle_spring.clear();
          x.s.angular_velocity.clear();
        },
        "/state/torque"},
@@ -197,8 +197,8 @@ TEST(CheckpointChecks, StateAgainstTheSolver) {
       {"periodic deletion", [](Sample& x) { x.s.removed_high[0] = 1; }, "the axis is periodic"},
       {"no z axis", [](Sample& x) { x.s.removed_low[2] = 1; }, "no such axis"},
       {"long spring", [](Sample& x) { x.s.history_spring[0] = 1e300; }, "/state/history_spring[0]"},
-      {"wall spring off the obstacle", [](Sample& x) { x.s.history_wall_spring[4] = 1e-9; },
-       "/state/history_wall_spring[4]"},
+      {"wall spring off the obstacle", [](Sample& x) { x.s.history_obstacle_spring[4] = 1e-9; },
+       "/state/history_obstacle_spring[4]"},
       {"force without contact", [](Sample& x) { x.s.force[5] = 1.0; }, "/state/force[4]"},
       {"torque without contact", [](Sample& x) { x.s.torque[2] = 1e-9; }, "/state/torque[2]"},
       {"partner out of contact",

@@ -58,7 +58,7 @@ void write_sample_checkpoint(const std::filesystem::path& dir) {
   s.id = {0, 1, 2};
   s.history_partner = {1, -1, 0, -1, -1, -1};
   s.history_spring = {1e-6, 2e-6, 0, 0, -1e-6, -2e-6, 0, 0, 0, 0, 0, 0};  // used slots only
-  s.history_wall_spring = std::vector<double>(6, 0.0);
+  s.history_obstacle_spring = std::vector<double>(6, 0.0);
   s.reference_position = s.position;
   s.neighbour_offsets = {0, 2, 3, 3};
   s.neighbours = {1, 2, 2};
@@ -111,7 +111,7 @@ int bench_checkpoint(const std::filesystem::path& dir, int n) {
     for (double& x : v) x = value(rng);
   };
   for (auto* v :
-       {&s.position, &s.velocity, &s.force, &s.reference_position, &s.history_wall_spring})
+       {&s.position, &s.velocity, &s.force, &s.reference_position, &s.history_obstacle_spring})
     fill(*v, 2 * un);
   fill(s.angular_velocity, un);
   fill(s.torque, un);

@@ -53,8 +53,9 @@
 #include <vector>
 
 #include "homogeneous_gas.hpp"
+#include "models/hertz.hpp"
+#include "models/time_step_guard.hpp"
 #include "solver.hpp"
-#include "time_step_guard.hpp"
 
 namespace granshock {
 namespace {
@@ -62,7 +63,7 @@ namespace {
 constexpr long kCollisions = 10000;
 
 struct ElasticGas {
-  SystemSetup setup;
+  SolverSetup setup;
   HostParticles particles;
   double temperature = 0;  // 2-D granular temperature, sum m c^2 / (2 N)
   double t_c = 0;          // collision time of the stiffest pair at the fastest impact
@@ -72,7 +73,7 @@ struct ElasticGas {
 // so that the gas starts in equilibrium and kinetic theory applies from t = 0.
 ElasticGas make_elastic_gas() {
   ElasticGas gas;
-  SystemSetup& s = gas.setup;
+  SolverSetup& s = gas.setup;
   s = paper_mixture(1.0);
   for (auto& sp : s.species) sp.material.youngs_modulus_pa *= 1e-3;  // softened, see top
   GasSpec spec;
@@ -112,7 +113,7 @@ ElasticGas make_elastic_gas() {
   const double v_fast = s_fast * std::sqrt(2.0 * std::log(double(kCollisions)));
   gas.t_c = INFINITY;
   for (const auto& pair : s.all_pairs())
-    gas.t_c = std::min(gas.t_c, hertz_collision_time(pair, v_fast));
+    gas.t_c = std::min(gas.t_c, HertzModel::collision_time(pair, ContactOptions{}, v_fast));
   return gas;
 }
 
@@ -124,7 +125,7 @@ ElasticGas make_elastic_gas() {
 // 2 n sigma g sqrt(pi T / m) in 2-D (Brilliantov & Poeschel, Kinetic Theory of Granular
 // Gases, Oxford 2004).
 double enskog_collision_rate(const ElasticGas& gas) {
-  const SystemSetup& s = gas.setup;
+  const SolverSetup& s = gas.setup;
   const double area = s.box.length(0) * s.box.length(1);
   const int n_species = int(s.species.size());
   std::vector<double> number(n_species, 0);
@@ -158,7 +159,7 @@ struct ConservationRun {
 // Runs the gas at dt = t_c / steps_per_tc until kCollisions collisions have started and
 // the gas is contact-free again.
 ConservationRun run_elastic(const ElasticGas& gas, int steps_per_tc) {
-  SystemSetup setup = gas.setup;
+  SolverSetup setup = gas.setup;
   setup.dt = gas.t_c / steps_per_tc;
   const int sample_every = steps_per_tc / 5;  // t_c / 5, see the top of the file
   const auto start = std::chrono::steady_clock::now();

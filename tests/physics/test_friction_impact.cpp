@@ -14,8 +14,9 @@
 
 #include <cmath>
 
+#include "models/hertz.hpp"
+#include "models/time_step_guard.hpp"
 #include "solver.hpp"
-#include "time_step_guard.hpp"
 
 using namespace granshock;
 
@@ -23,14 +24,14 @@ namespace {
 
 constexpr double kD = 1e-3, kR = 0.5e-3, kMu = 0.3, kE = 0.5, kCylinder = 0.2;
 
-SystemSetup wall_setup(double dt) {
-  SystemSetup s;
+SolverSetup wall_setup(double dt) {
+  SolverSetup s;
   s.species = {{"steel", steel(), kD}};
-  s.contacts = ContactModel::uniform(1, kE, kMu);
-  s.contacts.limit_force = true;
+  s.contacts = ContactSettings::uniform(1, kE, kMu);
+  s.contacts.options.limit_force = true;
   s.box.lo = {-0.11, -0.11, 0};
   s.box.hi = {0.11, 0.11, kD};
-  s.obstacle = CylinderObstacle{{0, 0, 0}, kCylinder, aluminium()};
+  s.obstacle = Obstacle{ObstacleShape::cylinder, {0, 0, 0}, kCylinder, aluminium()};
   s.dt = dt;
   return s;
 }
@@ -42,9 +43,9 @@ struct Impact {
 
 // A steel sphere approaching the cylinder's -x face with velocity (vn, vt).
 Impact simulate(double vn, double vt) {
-  SystemSetup s = wall_setup(0);
-  const PairProperties wall = s.wall_pair(0);
-  s.dt = hertz_collision_time(wall, vn) / 100.0;
+  SolverSetup s = wall_setup(0);
+  const PairProperties wall = s.obstacle_pair(0);
+  s.dt = HertzModel::collision_time(wall, ContactOptions{}, vn) / 100.0;
   auto solver = make_solver(s, 1);
   HostParticles p;
   p.add({-(0.5 * kCylinder + kR + 3 * vn * s.dt), 0, 0}, {vn, vt, 0}, 0, 0);

@@ -59,8 +59,9 @@
 #include <vector>
 
 #include "homogeneous_gas.hpp"
+#include "models/hertz.hpp"
+#include "models/time_step_guard.hpp"
 #include "solver.hpp"
-#include "time_step_guard.hpp"
 
 namespace granshock {
 namespace {
@@ -122,10 +123,10 @@ GasState measure(const HostParticles& p, double mass, double box_length) {
 
 TEST(HomogeneousCooling, HaffLawMatchesKineticTheory) {
   const auto start = std::chrono::steady_clock::now();
-  SystemSetup setup;
+  SolverSetup setup;
   setup.species = {{"steel", steel(), 1e-3}};
   setup.species[0].material.youngs_modulus_pa *= 1e-3;  // softened, see the top
-  setup.contacts = ContactModel::uniform(1, kRestitution, 0.0);
+  setup.contacts = ContactSettings::uniform(1, kRestitution, 0.0);
   GasSpec spec;
   spec.particles = 529;  // a full 23 x 23 lattice
   spec.area_fraction = 0.05;
@@ -150,7 +151,7 @@ TEST(HomogeneousCooling, HaffLawMatchesKineticTheory) {
   // integration of the two-particle contact law, averaged over where in a step the
   // contact begins), which changes 1 - e^2 by < 0.1 %.
   const double v_fast = std::sqrt(2 * t0 / mass) * std::sqrt(2 * std::log(1e4));
-  setup.dt = hertz_collision_time(setup.pair(0, 0), v_fast) / 50;
+  setup.dt = HertzModel::collision_time(setup.pair(0, 0), ContactOptions{}, v_fast) / 50;
 
   auto solver = make_solver(setup, gas.size());
   solver->set_particles(gas);

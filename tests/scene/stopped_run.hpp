@@ -85,7 +85,7 @@ inline bool same_run(const std::filesystem::path& a, const std::filesystem::path
          same_bits(x.angular_velocity, y.angular_velocity) && same_bits(x.torque, y.torque) &&
          x.species == y.species && x.id == y.id && x.history_partner == y.history_partner &&
          same_bits(x.history_spring, y.history_spring) &&
-         same_bits(x.history_wall_spring, y.history_wall_spring) &&
+         same_bits(x.history_obstacle_spring, y.history_obstacle_spring) &&
          same_bits(x.reference_position, y.reference_position) &&
          x.neighbour_offsets == y.neighbour_offsets && x.neighbours == y.neighbours &&
          x.list_builds == y.list_builds && x.removed_low == y.removed_low &&

@@ -47,7 +47,7 @@ TEST(SceneFile, OverridesReplaceAndAddKeys) {
           .scene;
   EXPECT_DOUBLE_EQ(s.inflow.speed_m_per_s, 2.375);
   EXPECT_DOUBLE_EQ(s.setup.obstacle->diameter_m, 0.012);
-  EXPECT_TRUE(s.setup.contacts.limit_force);
+  EXPECT_TRUE(s.setup.contacts.options.limit_force);
 }
 
 TEST(SceneFile, TargetMachGivesSigmaThroughTheSoundSpeed) {

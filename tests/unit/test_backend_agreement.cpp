@@ -26,7 +26,7 @@ void expect_identical(const HostParticles& a, const HostParticles& b) {
   EXPECT_EQ(a.angular_velocity, b.angular_velocity);
 }
 
-void compare_backends(SystemSetup s, int steps) {
+void compare_backends(SolverSetup s, int steps) {
   if (Kokkos::DefaultExecutionSpace().concurrency() < 2)
     GTEST_SKIP() << "needs the default backend with 2 or more threads (OMP_NUM_THREADS=2)";
   GasSpec spec;
@@ -64,22 +64,22 @@ void compare_backends(SystemSetup s, int steps) {
 }  // namespace
 
 TEST(BackendAgreement, FrictionlessDouble) {
-  SystemSetup s = paper_mixture(0.5);
+  SolverSetup s = paper_mixture(0.5);
   s.dt = 5e-8;
   compare_backends(s, 3000);
 }
 
 TEST(BackendAgreement, FrictionWithObstacleDouble) {
-  SystemSetup s = paper_mixture(0.5);
-  s.contacts = ContactModel::uniform(2, 0.5, 0.4);
-  s.obstacle = CylinderObstacle{{0, 0, 0}, 10e-3, aluminium()};
+  SolverSetup s = paper_mixture(0.5);
+  s.contacts = ContactSettings::uniform(2, 0.5, 0.4);
+  s.obstacle = Obstacle{ObstacleShape::cylinder, {0, 0, 0}, 10e-3, aluminium()};
   s.dt = 3e-8;
   compare_backends(s, 3000);
 }
 
 TEST(BackendAgreement, FrictionlessSingle) {
-  SystemSetup s = paper_mixture(0.9);
-  s.precision = Precision::single;
+  SolverSetup s = paper_mixture(0.9);
+  s.precision = Precision::single_precision;
   s.dt = 5e-8;
   compare_backends(s, 3000);
 }

@@ -15,7 +15,7 @@ using namespace granshock;
 namespace {
 
 struct Fixture {
-  SystemSetup setup;
+  SolverSetup setup;
   FieldSampling sampling;
   std::unique_ptr<Solver> solver;
 };

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "counter_rng.hpp"
+#include "device/counter_rng.hpp"
 
 using granshock::CounterRng;
 

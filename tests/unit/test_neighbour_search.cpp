@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-#include "counter_rng.hpp"
+#include "device/counter_rng.hpp"
 #include "homogeneous_gas.hpp"
 #include "solver.hpp"
 
@@ -15,7 +15,7 @@ using namespace granshock;
 
 namespace {
 
-std::vector<std::pair<int, int>> brute_force_contacts(const SystemSetup& s,
+std::vector<std::pair<int, int>> brute_force_contacts(const SolverSetup& s,
                                                       const HostParticles& p) {
   std::vector<std::pair<int, int>> pairs;
   for (std::size_t i = 0; i < p.size(); ++i) {
@@ -36,10 +36,10 @@ std::vector<std::pair<int, int>> brute_force_contacts(const SystemSetup& s,
 }
 
 // Two sizes (1 mm and 2 mm) so that the cut-off differs per pair.
-SystemSetup two_size_setup(double lx, double ly, std::array<bool, 3> periodic) {
-  SystemSetup s;
+SolverSetup two_size_setup(double lx, double ly, std::array<bool, 3> periodic) {
+  SolverSetup s;
   s.species = {{"small", steel(), 1e-3}, {"large", aluminium(), 2e-3}};
-  s.contacts = ContactModel::uniform(2, 0.5, 0.0);
+  s.contacts = ContactSettings::uniform(2, 0.5, 0.0);
   s.box.lo = {0, 0, 0};
   s.box.hi = {lx, ly, 2e-3};
   s.box.periodic = periodic;
@@ -49,7 +49,7 @@ SystemSetup two_size_setup(double lx, double ly, std::array<bool, 3> periodic) {
 
 // Uniform random positions (overlaps allowed), a quarter of them within one diameter of
 // a box edge so that pairs straddle the periodic boundaries.
-HostParticles random_particles(const SystemSetup& s, int n, std::uint64_t seed) {
+HostParticles random_particles(const SolverSetup& s, int n, std::uint64_t seed) {
   const CounterRng rng{seed};
   HostParticles p;
   for (int i = 0; i < n; ++i) {
@@ -64,7 +64,7 @@ HostParticles random_particles(const SystemSetup& s, int n, std::uint64_t seed) 
   return p;
 }
 
-double area_fraction(const SystemSetup& s, const HostParticles& p) {
+double area_fraction(const SolverSetup& s, const HostParticles& p) {
   double a = 0;
   for (int sp : p.species) a += M_PI * std::pow(s.species[sp].radius_m(), 2);
   return a / (s.box.length(0) * s.box.length(1));
@@ -81,7 +81,7 @@ class NeighbourSearch : public ::testing::TestWithParam<Config> {};
 
 TEST_P(NeighbourSearch, StaticConfigurationsMatchBruteForce) {
   const Config& c = GetParam();
-  const SystemSetup s = two_size_setup(c.lx, c.ly, c.periodic);
+  const SolverSetup s = two_size_setup(c.lx, c.ly, c.periodic);
   for (std::uint64_t seed = 1; seed <= 3; ++seed) {
     const HostParticles p = random_particles(s, c.n, seed);
     auto solver = make_solver(s, p.size());
@@ -106,7 +106,7 @@ INSTANTIATE_TEST_SUITE_P(
 // rebuilt; at every check the contacts must still equal the brute-force ones.
 TEST(NeighbourSearchMoving, ListsStayCompleteBetweenRebuilds) {
   for (const double phi : {0.1, 0.5}) {
-    SystemSetup s = paper_mixture(0.5);
+    SolverSetup s = paper_mixture(0.5);
     GasSpec spec;
     spec.particles = 900;
     spec.area_fraction = phi;
@@ -133,7 +133,7 @@ TEST(NeighbourSearchMoving, ListsStayCompleteBetweenRebuilds) {
 // The homogeneous gas starts at rest: zero total momentum (a bug fixed: the mean velocity
 // was removed with equal weights, leaving the mixture's centre of mass moving).
 TEST(HomogeneousGas, TotalMomentumIsZero) {
-  SystemSetup s = paper_mixture(0.5);
+  SolverSetup s = paper_mixture(0.5);
   GasSpec spec;
   spec.particles = 1024;
   size_periodic_box(s, spec);

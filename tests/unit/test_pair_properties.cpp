@@ -5,8 +5,9 @@
 
 #include <cmath>
 
+#include "models/hertz.hpp"
+#include "models/time_step_guard.hpp"
 #include "pair_properties.hpp"
-#include "time_step_guard.hpp"
 
 using namespace granshock;
 
@@ -41,7 +42,7 @@ TEST(PairProperties, SteelAluminium) {
 }
 
 TEST(PairProperties, WallHasInfiniteMassAndRadius) {
-  const PairProperties p = particle_wall(kAluminium, aluminium(), 0.5, 0.0);
+  const PairProperties p = particle_obstacle(kAluminium, aluminium(), 0.5, 0.0);
   expect_rel(p.radius_star, 0.5e-3);  // R* = r_i
   expect_rel(p.mass_star, kAluminium.mass_kg());
   expect_rel(p.youngs_star, 38716193468.7465);
@@ -49,24 +50,30 @@ TEST(PairProperties, WallHasInfiniteMassAndRadius) {
 
 TEST(PairProperties, RestitutionOneMeansNoDamping) {
   EXPECT_EQ(damping_beta(1.0), 0.0);
-  const auto c = hertz_coefficients<double>(particle_pair(kSteel, kSteel, 1.0, 0.0), false);
+  const auto c =
+      HertzModel::coefficients<double>(particle_pair(kSteel, kSteel, 1.0, 0.0), ContactOptions{});
   EXPECT_EQ(c.gn_coef, 0.0);
   EXPECT_EQ(c.gt_coef, 0.0);
 }
 
 TEST(PairProperties, LimitForceSetsTheFloor) {
   const PairProperties p = particle_pair(kSteel, kSteel, 0.5, 0.0);
-  EXPECT_EQ(hertz_coefficients<double>(p, true).normal_force_floor, 0.0);
-  EXPECT_LT(hertz_coefficients<double>(p, false).normal_force_floor, -1e300);
+  ContactOptions limited;
+  limited.limit_force = true;
+  EXPECT_EQ(HertzModel::coefficients<double>(p, limited).normal_force_floor, 0.0);
+  EXPECT_LT(HertzModel::coefficients<double>(p, ContactOptions{}).normal_force_floor, -1e300);
 }
 
 TEST(CollisionTime, HertzFormula) {
-  // t_c = 2.87 (m*^2 / (R* Y*^2 v))^(1/5), steel-steel at 1 m/s and aluminium-wall.
-  expect_rel(hertz_collision_time(particle_pair(kSteel, kSteel, 0.5, 0), 1.0),
-             3.0076297101757045e-06);
-  expect_rel(hertz_collision_time(particle_wall(kAluminium, aluminium(), 0.5, 0), 1.0),
+  // t_c = 2.87 (m*^2 / (R* Y*^2 v))^(1/5), steel-steel at 1 m/s and aluminium-obstacle.
+  expect_rel(
+      HertzModel::collision_time(particle_pair(kSteel, kSteel, 0.5, 0), ContactOptions{}, 1.0),
+      3.0076297101757045e-06);
+  expect_rel(HertzModel::collision_time(particle_obstacle(kAluminium, aluminium(), 0.5, 0),
+                                        ContactOptions{}, 1.0),
              3.492208251901344e-06);  // Y* = 3.8716e10 Pa, m* = 1.4139e-6 kg, R* = 0.5 mm
   // t_c ~ v^(-1/5)
   const PairProperties p = particle_pair(kSteel, kAluminium, 0.5, 0);
-  expect_rel(hertz_collision_time(p, 32.0), hertz_collision_time(p, 1.0) / 2.0, 1e-12);
+  expect_rel(HertzModel::collision_time(p, ContactOptions{}, 32.0),
+             HertzModel::collision_time(p, ContactOptions{}, 1.0) / 2.0, 1e-12);
 }

@@ -14,9 +14,9 @@ using namespace granshock;
 namespace {
 
 // A frictional channel 10 mm wide (periodic) and tall (open, deleting).
-SystemSetup channel() {
-  SystemSetup s = paper_mixture(0.5);
-  s.contacts = ContactModel::uniform(2, 0.5, 0.5);
+SolverSetup channel() {
+  SolverSetup s = paper_mixture(0.5);
+  s.contacts = ContactSettings::uniform(2, 0.5, 0.5);
   s.box.lo = {0, 0, 0};
   s.box.hi = {0.01, 0.01, 1};
   s.box.periodic = {true, false, false};
@@ -32,8 +32,8 @@ SystemSetup channel() {
 // next reuses that row. Before the fix the new particle inherited B's old
 // spring in a free slot.
 TEST(StateExport, InsertedParticleReusingADeletedRowHasAnEmptyHistory) {
-  for (const Precision precision : {Precision::dual, Precision::single}) {
-    SystemSetup setup = channel();
+  for (const Precision precision : {Precision::double_precision, Precision::single_precision}) {
+    SolverSetup setup = channel();
     setup.precision = precision;
     auto solver = make_solver(setup, 4);
     // A, 1 um below the top, leaves in 10 steps; B slides past it, 10 nm to its
@@ -63,7 +63,8 @@ TEST(StateExport, InsertedParticleReusingADeletedRowHasAnEmptyHistory) {
       if (after.history_partner[k] != -1) continue;
       for (std::size_t d = 0; d < 2; ++d) {
         EXPECT_EQ(after.history_spring[2 * k + d], 0.0)
-            << "free slot " << k << (precision == Precision::single ? " (single)" : " (double)");
+            << "free slot " << k
+            << (precision == Precision::single_precision ? " (single)" : " (double)");
       }
     }
     EXPECT_NO_THROW(check_state(after));
@@ -77,10 +78,10 @@ TEST(StateExport, InsertedParticleReusingADeletedRowHasAnEmptyHistory) {
 // rebuilt and compared, contact history, forces of particles without contacts,
 // obstacle springs) and comes back out unchanged.
 TEST(StateExport, DenseFrictionalGasImportsIntoAFreshSolverUnchanged) {
-  for (const Precision precision : {Precision::dual, Precision::single}) {
-    SCOPED_TRACE(precision == Precision::single ? "single" : "double");
-    SystemSetup s = paper_mixture(0.3);
-    s.contacts = ContactModel::uniform(2, 0.3, 0.4);
+  for (const Precision precision : {Precision::double_precision, Precision::single_precision}) {
+    SCOPED_TRACE(precision == Precision::single_precision ? "single" : "double");
+    SolverSetup s = paper_mixture(0.3);
+    s.contacts = ContactSettings::uniform(2, 0.3, 0.4);
     s.precision = precision;
     for (Species& species : s.species) species.material.youngs_modulus_pa *= 1e-4;
     s.dt = 2e-6;
@@ -89,8 +90,10 @@ TEST(StateExport, DenseFrictionalGasImportsIntoAFreshSolverUnchanged) {
     spec.area_fraction = 0.4;
     spec.sigma_m_per_s = 2.0;
     size_periodic_box(s, spec);
-    s.obstacle =
-        CylinderObstacle{{0.5 * s.box.length(0), 0.5 * s.box.length(1), 0}, 16e-3, aluminium()};
+    s.obstacle = Obstacle{ObstacleShape::cylinder,
+                          {0.5 * s.box.length(0), 0.5 * s.box.length(1), 0},
+                          16e-3,
+                          aluminium()};
     HostParticles gas = make_homogeneous_gas(s, spec), kept;
     for (std::size_t i = 0; i < gas.size(); ++i)
       if (std::hypot(gas.position[i][0] - s.obstacle->centre[0],
@@ -103,8 +106,9 @@ TEST(StateExport, DenseFrictionalGasImportsIntoAFreshSolverUnchanged) {
     std::size_t partners = 0;
     for (int p : state.history_partner) partners += p >= 0;
     std::size_t on_obstacle = 0;
-    for (std::size_t k = 0; k < state.history_wall_spring.size(); k += 2)
-      on_obstacle += state.history_wall_spring[k] != 0 || state.history_wall_spring[k + 1] != 0;
+    for (std::size_t k = 0; k < state.history_obstacle_spring.size(); k += 2)
+      on_obstacle +=
+          state.history_obstacle_spring[k] != 0 || state.history_obstacle_spring[k + 1] != 0;
     EXPECT_GT(2 * partners, state.size()) << "too few contacts to test much";
     EXPECT_GE(on_obstacle, 3u) << "too few obstacle contacts to test much";
     auto fresh = make_solver(s, kept.size());

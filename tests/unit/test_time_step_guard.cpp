@@ -3,7 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "head_on_collision.hpp"
-#include "time_step_guard.hpp"
+#include "models/hertz.hpp"
+#include "models/time_step_guard.hpp"
 #include "user_error.hpp"
 
 using namespace granshock;
@@ -16,36 +17,52 @@ PairProperties steel_pair(double e = 0.5) {
 }  // namespace
 
 TEST(TimeStepGuard, VerdictsAcrossTheRange) {
-  const double tc = hertz_collision_time(steel_pair(), 1.0);
+  const double tc = HertzModel::collision_time(steel_pair(), ContactOptions{}, 1.0);
   using V = TimeStepAssessment::Verdict;
-  EXPECT_EQ(assess_time_step({steel_pair()}, 1.0, tc / 100, false).verdict, V::ok);
-  EXPECT_EQ(assess_time_step({steel_pair()}, 1.0, tc / 5, false).verdict, V::warn);
-  const auto refused = assess_time_step({steel_pair()}, 1.0, tc, false);
+  EXPECT_EQ(assess_time_step({steel_pair()}, ContactModelKind::hertz, ContactOptions{}, 1.0,
+                             tc / 100, false)
+                .verdict,
+            V::ok);
+  EXPECT_EQ(assess_time_step({steel_pair()}, ContactModelKind::hertz, ContactOptions{}, 1.0, tc / 5,
+                             false)
+                .verdict,
+            V::warn);
+  const auto refused =
+      assess_time_step({steel_pair()}, ContactModelKind::hertz, ContactOptions{}, 1.0, tc, false);
   EXPECT_EQ(refused.verdict, V::refuse);
   EXPECT_NE(refused.message.find("stable limit"), std::string::npos) << refused.message;
   EXPECT_NE(refused.message.find("t_c"), std::string::npos) << refused.message;
   EXPECT_NE(refused.message.find("--force"), std::string::npos) << refused.message;
-  EXPECT_EQ(assess_time_step({steel_pair()}, 1.0, 0.0, false).verdict, V::refuse);
-  EXPECT_EQ(assess_time_step({steel_pair()}, 1.0, -1e-7, false).verdict, V::refuse);
+  EXPECT_EQ(
+      assess_time_step({steel_pair()}, ContactModelKind::hertz, ContactOptions{}, 1.0, 0.0, false)
+          .verdict,
+      V::refuse);
+  EXPECT_EQ(
+      assess_time_step({steel_pair()}, ContactModelKind::hertz, ContactOptions{}, 1.0, -1e-7, false)
+          .verdict,
+      V::refuse);
 }
 
 TEST(TimeStepGuard, StiffestPairAndFastestSpeedDecide) {
   const Species al{"aluminium", aluminium(), 1e-3};
-  const auto a = assess_time_step({particle_pair(al, al, 0.5, 0), steel_pair()}, 2.0, 1e-8, false);
+  const auto a = assess_time_step({particle_pair(al, al, 0.5, 0), steel_pair()},
+                                  ContactModelKind::hertz, ContactOptions{}, 2.0, 1e-8, false);
   EXPECT_EQ(a.stiffest_pair, "steel-steel");
-  EXPECT_DOUBLE_EQ(a.t_c, hertz_collision_time(steel_pair(), 2.0));
+  EXPECT_DOUBLE_EQ(a.t_c, HertzModel::collision_time(steel_pair(), ContactOptions{}, 2.0));
   // A faster impact is stiffer: the stable step shrinks with speed as v^(-1/5).
-  EXPECT_LT(stable_time_step(steel_pair(), 10.0, false),
-            stable_time_step(steel_pair(), 1.0, false));
+  EXPECT_LT(stable_time_step(ContactModelKind::hertz, steel_pair(), ContactOptions{}, 10.0, false),
+            stable_time_step(ContactModelKind::hertz, steel_pair(), ContactOptions{}, 1.0, false));
   // Friction's tangential spring with the rolling mass 2/7 m* is the stiffer mode.
-  EXPECT_LT(stable_time_step(steel_pair(), 1.0, true), stable_time_step(steel_pair(), 1.0, false));
+  EXPECT_LT(stable_time_step(ContactModelKind::hertz, steel_pair(), ContactOptions{}, 1.0, true),
+            stable_time_step(ContactModelKind::hertz, steel_pair(), ContactOptions{}, 1.0, false));
 }
 
 TEST(TimeStepGuard, StableLimitIsBelowTheContactTime) {
   // The linearised peak stiffness bounds the step well below t_c: about 0.4 t_c for
   // e = 0.5 (omega_max t_c ~ 4.1, margin 2(sqrt(1+z^2)-z) ~ 1.65 with z = 0.197).
   const double ratio =
-      stable_time_step(steel_pair(), 1.0, false) / hertz_collision_time(steel_pair(), 1.0);
+      stable_time_step(ContactModelKind::hertz, steel_pair(), ContactOptions{}, 1.0, false) /
+      HertzModel::collision_time(steel_pair(), ContactOptions{}, 1.0);
   EXPECT_GT(ratio, 0.3);
   EXPECT_LT(ratio, 0.5);
 }

@@ -1,0 +1,215 @@
+#include "head_on_collision.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "solver.hpp"
+#include "user_error.hpp"
+
+namespace {
+constexpr double kDiameter = 1e-3;  // the paper's d
+}
+
+namespace granshock {
+
+namespace {
+
+const std::vector<std::string> kPairs = {"steel-steel", "steel-aluminium", "aluminium-aluminium",
+                                         "steel-obstacle", "aluminium-obstacle"};
+
+// The collision's own small world: the scene's species, contacts and precision, an open
+// box, and (for impacts on the obstacle) a cylinder of the scene's obstacle material at
+// the origin.
+struct Geometry {
+  SolverSetup setup;
+  double radius_a = 0, radius_b = 0, cylinder_radius = 0;
+  bool on_obstacle = false;
+};
+
+Geometry build(const SolverSetup& scene, int a, int b, double dt) {
+  Geometry g;
+  g.on_obstacle = b < 0;
+  g.setup.species = scene.species;
+  g.setup.contacts = scene.contacts;
+  g.setup.precision = scene.precision;
+  g.setup.dt = dt;
+  const double dmax = scene.max_diameter();
+  g.radius_a = scene.species[a].radius_m();
+  g.radius_b = g.on_obstacle ? 0 : scene.species[b].radius_m();
+  g.cylinder_radius = 5 * dmax;
+  const double half = 20 * dmax;
+  g.setup.box.lo = {-half, -half, 0};
+  g.setup.box.hi = {half, half, dmax};
+  if (g.on_obstacle) {
+    const Material material = scene.obstacle ? scene.obstacle->material : aluminium();
+    g.setup.obstacle =
+        Obstacle{ObstacleShape::cylinder, {0, 0, 0}, 2 * g.cylinder_radius, material};
+  }
+  return g;
+}
+
+// Surface-to-surface distance along x between the colliding bodies (negative = overlap).
+double gap(const Geometry& g, const HostParticles& p) {
+  if (g.on_obstacle) return std::abs(p.position[0][0]) - g.radius_a - g.cylinder_radius;
+  return std::abs(p.position[1][0] - p.position[0][0]) - g.radius_a - g.radius_b;
+}
+
+// Relative normal velocity, positive when separating.
+double separation_speed(const Geometry& g, const HostParticles& p) {
+  if (g.on_obstacle) return -p.velocity[0][0];  // particle on the -x side of the cylinder
+  return p.velocity[1][0] - p.velocity[0][0];
+}
+
+// Whether the bodies have swapped sides: a particle beyond the cylinder's axis, or the
+// two particles in the wrong order along x.
+bool passed_through(const Geometry& g, const HostParticles& p) {
+  if (g.on_obstacle) return p.position[0][0] > 0;
+  return p.position[1][0] < p.position[0][0];
+}
+
+int paper_species(const std::string& name) {
+  return name == "steel" ? 0 : 1;
+}
+
+}  // namespace
+
+std::vector<std::string> collision_pair_names() {
+  return kPairs;
+}
+
+CollisionResult collide_species(const SolverSetup& scene, int a, int b, double speed, double dt,
+                                bool force) {
+  const PairProperties props =
+      b < 0 ? particle_obstacle(
+                  scene.species[a], scene.obstacle ? scene.obstacle->material : aluminium(),
+                  scene.contacts.obstacle_restitution[a], scene.contacts.obstacle_friction[a])
+            : scene.pair(a, b);
+  CollisionResult r;
+  r.pair = props.name;
+  r.speed = speed;
+  r.e_in = props.restitution;
+  r.limit_force = scene.contacts.options.limit_force;
+  r.model = to_string(scene.contacts.model);
+  const ContactSettings& contacts = scene.contacts;
+  r.t_c = collision_time(contacts.model, props, contacts.options, speed);
+  r.dt = dt > 0 ? dt : r.t_c / 100.0;
+  r.time_step = assess_time_step({props}, contacts.model, contacts.options, speed, r.dt,
+                                 contacts.has_friction());
+  if (r.time_step.verdict == TimeStepAssessment::Verdict::refuse && !force)
+    throw UserError(r.time_step.message);
+  r.overlap = assess_overlap({props}, contacts.model, contacts.options, speed);
+  if (r.overlap.verdict == TimeStepAssessment::Verdict::refuse && !force)
+    throw UserError(r.overlap.message);
+  if (20.0 * r.t_c / r.dt > kMaxCollisionSteps)
+    throw UserError(fmt::format(
+        "time step dt = {:.3g} s would take {:.3g} steps to integrate the {} collision (t_c = "
+        "{:.3g} s); collide integrates at most {:.0e}: use dt >= {:.3g} s",
+        r.dt, 20.0 * r.t_c / r.dt, r.pair, r.t_c, kMaxCollisionSteps,
+        20.0 * r.t_c / kMaxCollisionSteps));
+  Geometry g = build(scene, a, b, r.dt);
+
+  // Start a few steps before contact, in the zero-momentum frame for two particles.
+  HostParticles start;
+  const double gap0 = 5.0 * speed * r.dt;
+  if (g.on_obstacle) {
+    start.add({-(g.cylinder_radius + g.radius_a + gap0), 0, 0}, {speed, 0, 0}, a, 0);
+  } else {
+    const double ma = scene.species[a].mass_kg(), mb = scene.species[b].mass_kg();
+    start.add({-(g.radius_a + 0.5 * gap0), 0, 0}, {speed * mb / (ma + mb), 0, 0}, a, 0);
+    start.add({g.radius_b + 0.5 * gap0, 0, 0}, {-speed * ma / (ma + mb), 0, 0}, b, 1);
+  }
+  auto solver = make_solver(g.setup, start.size());
+  solver->set_particles(start);
+  r.variant = solver->variant();
+
+  // Step until the bodies have touched and parted. Contact start and end times come
+  // from linear interpolation of the gap between the steps around each zero crossing.
+  const double v_before = separation_speed(g, start);
+  double prev_gap = gap(g, start), t_start = -1, t_end = -1;
+  const long max_steps = long(20.0 * r.t_c / r.dt) + 1000;
+  HostParticles p = start;
+  for (long step = 1; step <= max_steps && t_end < 0; ++step) {
+    solver->advance(1);
+    p = solver->particles();
+    const double now = gap(g, p);
+    r.max_overlap = std::max(r.max_overlap, -now);
+    const double t = step * r.dt;
+    if (prev_gap > 0 && now <= 0 && t_start < 0) t_start = t - r.dt * now / (now - prev_gap);
+    if (prev_gap <= 0 && now > 0 && t_start >= 0) t_end = t - r.dt * now / (now - prev_gap);
+    prev_gap = now;
+    r.steps = step;
+  }
+  if (t_start < 0 || t_end < 0)
+    throw UserError(fmt::format("the {} collision did not complete within {} steps (dt = {:g} s)",
+                                r.pair, max_steps, r.dt));
+  if (passed_through(g, p))
+    throw UserError(fmt::format(
+        "the {} collision at {:g} m/s is past the contact law's range: the bodies passed "
+        "through each other (peak overlap {:.3g} of a diameter)",
+        r.pair, speed, r.max_overlap / (2 * g.radius_a)));
+  r.t_contact = t_end - t_start;
+  r.e_eff = separation_speed(g, p) / -v_before;
+  return r;
+}
+
+CollisionResult run_head_on_collision(const CollisionOptions& o) {
+  if (std::find(kPairs.begin(), kPairs.end(), o.pair) == kPairs.end())
+    throw UserError(fmt::format("--pair '{}' is not one of {}", o.pair, fmt::join(kPairs, ", ")));
+  if (!(o.speed_m_per_s > 0) || !std::isfinite(o.speed_m_per_s))
+    throw UserError(fmt::format("--speed {} must be a positive speed in m/s", o.speed_m_per_s));
+  if (!(o.restitution > 0 && o.restitution <= 1))
+    throw UserError(fmt::format("--e {} must be in (0, 1]", o.restitution));
+  if (o.characteristic_velocity &&
+      !(*o.characteristic_velocity > 0 && std::isfinite(*o.characteristic_velocity)))
+    throw UserError(fmt::format("--characteristic-velocity {} must be a positive speed in m/s",
+                                *o.characteristic_velocity));
+  if (o.dt && !(*o.dt > 0 && std::isfinite(*o.dt)))
+    throw UserError(fmt::format("--dt {} must be a positive time step in s", *o.dt));
+
+  // The paper's materials, d = 1 mm, and an aluminium cylinder.
+  SolverSetup paper;
+  paper.species = {{"steel", steel(), kDiameter}, {"aluminium", aluminium(), kDiameter}};
+  paper.contacts = ContactSettings::uniform(2, o.restitution, 0.0);
+  paper.contacts.model = o.model;
+  paper.contacts.options.limit_force = o.limit_force;
+  paper.contacts.options.characteristic_velocity_m_per_s =
+      o.characteristic_velocity.value_or(o.speed_m_per_s);
+  paper.precision = o.precision;
+  paper.obstacle = Obstacle{ObstacleShape::cylinder, {0, 0, 0}, 10 * kDiameter, aluminium()};
+  const auto dash = o.pair.find('-');
+  const std::string second = o.pair.substr(dash + 1);
+  CollisionResult r = collide_species(paper, paper_species(o.pair.substr(0, dash)),
+                                      second == "obstacle" ? -1 : paper_species(second),
+                                      o.speed_m_per_s, o.dt.value_or(0.0), o.force);
+  r.pair = o.pair;
+  return r;
+}
+
+std::string to_json(const CollisionResult& r) {
+  nlohmann::json j;
+  j["pair"] = r.pair;
+  j["speed"] = r.speed;
+  j["dt"] = r.dt;
+  j["t_c"] = r.t_c;
+  j["dt_over_tc"] = r.dt / r.t_c;
+  j["e_in"] = r.e_in;
+  j["e_eff"] = r.e_eff;
+  j["t_contact"] = r.t_contact;
+  j["t_contact_over_tc"] = r.t_contact / r.t_c;
+  j["max_overlap"] = r.max_overlap;
+  j["max_overlap_over_d"] = r.max_overlap / kDiameter;
+  j["model"] = r.model;
+  j["limit_force"] = r.limit_force;
+  j["steps"] = r.steps;
+  j["dt_stable"] = r.time_step.dt_stable;
+  j["variant"] = r.variant;
+  if (!r.time_step.message.empty()) j["time_step_warning"] = r.time_step.message;
+  j["predicted_overlap_over_d"] = r.overlap.overlap_over_d;
+  if (!r.overlap.message.empty()) j["overlap_warning"] = r.overlap.message;
+  return j.dump(2);
+}
+
+}  // namespace granshock

@@ -1,0 +1,60 @@
+// `granshock collide`: a head-on impact of two particles, or of a particle on the fixed
+// cylinder, run through the same solver variants and kernels as a full simulation.
+// It measures what the contact law does at a given time step: the effective
+// restitution, the contact duration and the peak overlap.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "models/time_step_guard.hpp"
+#include "solver_setup.hpp"
+
+namespace granshock {
+
+struct CollisionOptions {
+  std::string pair = "steel-steel";  // a-b for two particles, a-obstacle for the cylinder
+  double speed_m_per_s = 1.0;        // relative normal approach speed
+  std::optional<double> dt;          // none: t_c / 100
+  double restitution = 0.5;
+  ContactModelKind model = ContactModelKind::hertz;
+  // hooke only: the speed of equal peak overlap with Hertz; none: the impact speed.
+  std::optional<double> characteristic_velocity;
+  bool limit_force = false;
+  Precision precision = Precision::double_precision;
+  bool force = false;  // run even past the stable time step
+};
+
+inline constexpr double kMaxCollisionSteps = 1e7;
+
+struct CollisionResult {
+  std::string pair;
+  double speed = 0;
+  double dt = 0;
+  double t_c = 0;
+  double e_in = 0;
+  double e_eff = 0;      // post/pre normal relative speed
+  double t_contact = 0;  // s, from overlap zero crossings interpolated between steps
+  double max_overlap = 0;
+  long steps = 0;
+  bool limit_force = false;
+  std::string model;
+  std::string variant;
+  TimeStepAssessment time_step;
+  OverlapAssessment overlap;  // the Hertz peak overlap predicted at this speed
+};
+
+std::vector<std::string> collision_pair_names();
+// Throws UserError for an unknown pair, a non-positive speed or dt, e outside (0, 1], a
+// time step past the stable limit or an impact past the contact law's range (peak overlap
+// beyond kOverlapRefuse of a diameter) without `force`, a dt that needs more than
+// kMaxCollisionSteps steps, or particles that passed through each other.
+CollisionResult run_head_on_collision(const CollisionOptions& options);
+// The same experiment for species a against species b of any setup, or against its
+// obstacle (b = -1), with that setup's contact parameters; dt = 0 picks t_c/100.
+CollisionResult collide_species(const SolverSetup& setup, int a, int b, double speed, double dt,
+                                bool force);
+std::string to_json(const CollisionResult& r);
+
+}  // namespace granshock

@@ -1,0 +1,40 @@
+// How a scene's particles touch: which contact law (docs/design.md, "Contact models"), its
+// options, and the restitution and friction of every pair of species and of each species
+// against the obstacle.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace granshock {
+
+// The contact laws granshock compiles; each is a type in kernels/models/ and an entry of
+// the variant table (kernels/solver/variant_table.hpp).
+enum class ContactModelKind { hertz, hooke };
+ContactModelKind parse_contact_model(const std::string& name);  // "hertz" | "hooke"
+std::string to_string(ContactModelKind model);
+
+// What a contact law takes besides the pair's materials and restitution.
+struct ContactOptions {
+  // Clamp Fn >= 0 (no attraction at the end of a contact). Off by default, as in
+  // LIGGGHTS, because only then does the law restore exactly e.
+  bool limit_force = false;
+  // The impact speed at which a `hooke` contact has the Hertz law's peak overlap
+  // (LIGGGHTS' characteristicVelocity); unused by `hertz`.
+  double characteristic_velocity_m_per_s = 1.0;
+};
+
+struct ContactSettings {
+  ContactModelKind model = ContactModelKind::hertz;
+  ContactOptions options;
+  // Indexed [species_i][species_j] (symmetric) and [species] for the obstacle.
+  std::vector<std::vector<double>> restitution;
+  std::vector<std::vector<double>> friction;
+  std::vector<double> obstacle_restitution;
+  std::vector<double> obstacle_friction;
+
+  static ContactSettings uniform(int n_species, double e, double mu);
+  bool has_friction() const;
+};
+
+}  // namespace granshock

@@ -1,0 +1,64 @@
+#include "solver_setup.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "user_error.hpp"
+
+namespace granshock {
+
+ContactModelKind parse_contact_model(const std::string& name) {
+  if (name == "hertz") return ContactModelKind::hertz;
+  if (name == "hooke") return ContactModelKind::hooke;
+  throw UserError("contact model '" + name + "' is not one of hertz, hooke");
+}
+
+std::string to_string(ContactModelKind model) {
+  return model == ContactModelKind::hertz ? "hertz" : "hooke";
+}
+
+ContactSettings ContactSettings::uniform(int n, double e, double mu) {
+  ContactSettings m;
+  m.restitution.assign(n, std::vector<double>(n, e));
+  m.friction.assign(n, std::vector<double>(n, mu));
+  m.obstacle_restitution.assign(n, e);
+  m.obstacle_friction.assign(n, mu);
+  return m;
+}
+
+bool ContactSettings::has_friction() const {
+  for (const auto& row : friction)
+    for (double mu : row)
+      if (mu > 0) return true;
+  return std::any_of(obstacle_friction.begin(), obstacle_friction.end(),
+                     [](double mu) { return mu > 0; });
+}
+
+double SolverSetup::max_diameter() const {
+  double d = 0;
+  for (const auto& s : species) d = std::max(d, s.diameter_m);
+  return d;
+}
+
+PairProperties SolverSetup::pair(int a, int b) const {
+  return particle_pair(species.at(a), species.at(b), contacts.restitution.at(a).at(b),
+                       contacts.friction.at(a).at(b));
+}
+
+PairProperties SolverSetup::obstacle_pair(int a) const {
+  if (!obstacle) throw std::logic_error("obstacle_pair: the scene has no obstacle");
+  return particle_obstacle(species.at(a), obstacle->material, contacts.obstacle_restitution.at(a),
+                           contacts.obstacle_friction.at(a));
+}
+
+std::vector<PairProperties> SolverSetup::all_pairs() const {
+  std::vector<PairProperties> pairs;
+  const int n = int(species.size());
+  for (int a = 0; a < n; ++a) {
+    for (int b = a; b < n; ++b) pairs.push_back(pair(a, b));
+    if (obstacle) pairs.push_back(obstacle_pair(a));
+  }
+  return pairs;
+}
+
+}  // namespace granshock

@@ -1,0 +1,43 @@
+// Everything a solver needs to know about a scene's physics, independent of how the scene
+// was written down: dimension, box, species, contact law and parameters, obstacle, time
+// step, precision. The variant table picks the compiled solver from it
+// (kernels/solver/variant_table.hpp).
+#pragma once
+
+#include <array>
+#include <optional>
+#include <vector>
+
+#include "contact_settings.hpp"
+#include "domain.hpp"
+#include "material.hpp"
+#include "obstacle.hpp"
+#include "pair_properties.hpp"
+
+namespace granshock {
+
+// Floating-point precision of positions, velocities and forces in the kernels.
+enum class Precision { single_precision, double_precision };
+
+struct SolverSetup {
+  int dim = 2;
+  Box box;
+  std::vector<Species> species;
+  ContactSettings contacts;
+  std::optional<Obstacle> obstacle;
+  double dt = 0;
+  double skin_m = 0;  // Verlet skin; 0 picks 0.3 of the largest diameter
+  std::array<double, 3> gravity{0, 0, 0};
+  Precision precision = Precision::double_precision;
+  // Particles beyond the box on an open axis are deleted (inflow/outflow scenes).
+  bool delete_outside = false;
+
+  double max_diameter() const;
+  double skin() const { return skin_m > 0 ? skin_m : 0.3 * max_diameter(); }
+  // Every pair the scene can form, particle-particle and particle-obstacle.
+  std::vector<PairProperties> all_pairs() const;
+  PairProperties pair(int a, int b) const;
+  PairProperties obstacle_pair(int a) const;
+};
+
+}  // namespace granshock

@@ -1,0 +1,50 @@
+// The device-side view of a Box (core/domain.hpp): minimum-image displacements and
+// periodic wrapping inside kernels. Kept apart from domain.hpp so that host-only code
+// (the scene parser) does not include Kokkos.
+#pragma once
+
+#include <Kokkos_Core.hpp>
+
+#include "device/device_math.hpp"
+#include "device/vec.hpp"
+#include "domain.hpp"
+
+namespace granshock {
+
+// Device-side view of a Box. Minimum-image displacement without a branch per axis:
+// inv_length is 0 on open axes, so the correction term vanishes there.
+template <int Dim, class Real>
+struct BoxGeometry {
+  Real lo[Dim];
+  Real length[Dim];
+  Real inv_length[Dim];  // 1/length on periodic axes, 0 on open ones
+
+  static BoxGeometry from(const Box& box) {
+    BoxGeometry g;
+    for (int d = 0; d < Dim; ++d) {
+      g.lo[d] = Real(box.lo[d]);
+      g.length[d] = Real(box.length(d));
+      g.inv_length[d] = box.periodic[d] ? Real(1.0 / box.length(d)) : Real(0);
+    }
+    return g;
+  }
+
+  KOKKOS_INLINE_FUNCTION Vec<Dim, Real> minimum_image(Vec<Dim, Real> dx) const {
+    for (int d = 0; d < Dim; ++d) dx[d] -= length[d] * dmath::rint(dx[d] * inv_length[d]);
+    return dx;
+  }
+
+  // Maps a coordinate on a periodic axis back into [lo, lo + length).
+  // Coordinates already inside are returned unchanged (bitwise), so wrapping a sorted,
+  // wrapped state again is the identity; resumed runs rely on that.
+  KOKKOS_INLINE_FUNCTION Real wrap(int d, Real x) const {
+    if (inv_length[d] == Real(0)) return x;
+    if (x >= lo[d] && x - lo[d] < length[d]) return x;
+    Real shifted = x - lo[d];
+    shifted -= length[d] * dmath::floor(shifted * inv_length[d]);
+    if (shifted >= length[d]) shifted -= length[d];  // round-off at the upper edge
+    return lo[d] + shifted;
+  }
+};
+
+}  // namespace granshock

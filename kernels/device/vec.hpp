@@ -1,0 +1,54 @@
+// Small fixed-size vector used inside kernels: Vec<Dim, Real>.
+// Dimension and precision are template parameters so that 2-D and 3-D, float and
+// double kernels come from one source.
+#pragma once
+
+#include <Kokkos_Core.hpp>
+
+#include "device/device_math.hpp"
+
+namespace granshock {
+
+template <int Dim, class Real>
+struct Vec {
+  Real c[Dim];
+
+  KOKKOS_INLINE_FUNCTION static Vec zero() {
+    Vec v;
+    for (int d = 0; d < Dim; ++d) v.c[d] = Real(0);
+    return v;
+  }
+  KOKKOS_INLINE_FUNCTION Real& operator[](int d) { return c[d]; }
+  KOKKOS_INLINE_FUNCTION const Real& operator[](int d) const { return c[d]; }
+
+  KOKKOS_INLINE_FUNCTION Vec& operator+=(const Vec& o) {
+    for (int d = 0; d < Dim; ++d) c[d] += o.c[d];
+    return *this;
+  }
+  KOKKOS_INLINE_FUNCTION Vec& operator-=(const Vec& o) {
+    for (int d = 0; d < Dim; ++d) c[d] -= o.c[d];
+    return *this;
+  }
+};
+
+template <int Dim, class Real>
+KOKKOS_INLINE_FUNCTION Vec<Dim, Real> operator+(Vec<Dim, Real> a, const Vec<Dim, Real>& b) {
+  return a += b;
+}
+template <int Dim, class Real>
+KOKKOS_INLINE_FUNCTION Vec<Dim, Real> operator-(Vec<Dim, Real> a, const Vec<Dim, Real>& b) {
+  return a -= b;
+}
+template <int Dim, class Real>
+KOKKOS_INLINE_FUNCTION Vec<Dim, Real> operator*(Real s, Vec<Dim, Real> a) {
+  for (int d = 0; d < Dim; ++d) a.c[d] *= s;
+  return a;
+}
+template <int Dim, class Real>
+KOKKOS_INLINE_FUNCTION Real dot(const Vec<Dim, Real>& a, const Vec<Dim, Real>& b) {
+  Real s = 0;
+  for (int d = 0; d < Dim; ++d) s += a.c[d] * b.c[d];
+  return s;
+}
+
+}  // namespace granshock

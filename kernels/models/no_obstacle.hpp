@@ -1,0 +1,31 @@
+// A scene without obstacle (docs/design.md, "Obstacles"): the shape that is not there.
+#pragma once
+
+#include <Kokkos_Core.hpp>
+#include <optional>
+
+#include "device/vec.hpp"
+#include "obstacle.hpp"
+
+namespace granshock {
+
+// A scene without obstacle: nothing touches, nothing is kept out, and the kernels that
+// ask compile to nothing.
+struct NoObstacle {
+  static constexpr const char* name = "no-obstacle";
+  static constexpr bool present = false;
+  static bool matches(const std::optional<Obstacle>& o) { return !o; }
+
+  template <int Dim, class Real>
+  struct Geometry {
+    static Geometry from(const std::optional<Obstacle>&) { return {}; }
+    KOKKOS_INLINE_FUNCTION bool touches(const Vec<Dim, Real>&, Real, Real&, Vec<Dim, Real>&) const {
+      return false;
+    }
+    KOKKOS_INLINE_FUNCTION bool keeps_out(Real, Real, Real) const { return false; }
+  };
+
+  static double kept_out_area(const std::optional<Obstacle>&, double, double, double) { return 0; }
+};
+
+}  // namespace granshock

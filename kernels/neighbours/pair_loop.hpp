@@ -1,0 +1,47 @@
+// The one loop over a particle's contacts (docs/design.md, "The pair loop"): for particle
+// i, each partner j in its Verlet list whose centre is closer than r_i + r_j, in list
+// order. The force kernel, the contact virial of field sampling, the elastic energy and
+// the contact count all run through it, so the contact criterion and the minimum image
+// are written once. Full lists: each touching pair is visited from both sides.
+#pragma once
+
+#include <Kokkos_Core.hpp>
+
+#include "device/box_geometry.hpp"
+#include "device/vec.hpp"
+
+namespace granshock {
+
+template <int Dim, class Real, class MemSpace>
+struct PairLoop {
+  Kokkos::View<int*, MemSpace> offsets;     // n + 1
+  Kokkos::View<int*, MemSpace> neighbours;  // partners of i: [offsets(i), offsets(i + 1))
+  Kokkos::View<Real* [Dim], MemSpace> x;
+  Kokkos::View<int*, MemSpace> species;
+  Kokkos::View<Real*, MemSpace> radius;  // per species
+  BoxGeometry<Dim, Real> box;
+
+  KOKKOS_INLINE_FUNCTION Vec<Dim, Real> position(int i) const {
+    Vec<Dim, Real> r;
+    for (int d = 0; d < Dim; ++d) r[d] = x(i, d);
+    return r;
+  }
+
+  // Calls touching(j, sj, dx, r2, rsum) for each partner j of particle i (at xi, radius
+  // ri) in contact: dx = x_i - x_j (minimum image), r2 = |dx|^2 < rsum^2, rsum = r_i + r_j.
+  template <class F>
+  KOKKOS_INLINE_FUNCTION void for_each_contact(int i, const Vec<Dim, Real>& xi, Real ri,
+                                               F&& touching) const {
+    for (int k = offsets(i); k < offsets(i + 1); ++k) {
+      const int j = neighbours(k);
+      const int sj = species(j);
+      const Real rsum = ri + radius(sj);
+      const Vec<Dim, Real> dx = box.minimum_image(xi - position(j));
+      const Real r2 = dot(dx, dx);
+      if (r2 >= rsum * rsum) continue;
+      touching(j, sj, dx, r2, rsum);
+    }
+  }
+};
+
+}  // namespace granshock

@@ -1,0 +1,104 @@
+// Full Verlet neighbour list (each pair appears for both particles) in compressed-row
+// form. A full list lets each particle sum its own force without atomics, which keeps
+// results identical for any thread count; contacts are rare in a granular gas, so the
+// doubled pair checks cost little. The list holds every partner within
+// r_i + r_j + skin and stays valid until some particle has moved more than skin/2.
+#pragma once
+
+#include <Kokkos_Core.hpp>
+#include <vector>
+
+#include "device/box_geometry.hpp"
+#include "device/vec.hpp"
+#include "neighbours/cell_grid.hpp"
+
+namespace granshock {
+
+template <int Dim, class Real, class ExecSpace>
+class VerletList {
+ public:
+  using Mem = typename ExecSpace::memory_space;
+  using Policy = Kokkos::RangePolicy<ExecSpace>;
+
+  Kokkos::View<int*, Mem> offsets;     // n + 1; neighbours of i: [offsets(i), offsets(i+1))
+  Kokkos::View<int*, Mem> neighbours;  // particle indices
+  int total = 0;
+
+  // Restores a list saved by a checkpoint.
+  void assign(const std::vector<int>& host_offsets, const std::vector<int>& host_neighbours) {
+    offsets = Kokkos::View<int*, Mem>("verlet_offsets", host_offsets.size() + 16);
+    neighbours = Kokkos::View<int*, Mem>("verlet_neighbours", host_neighbours.size() + 64);
+    auto o = Kokkos::create_mirror_view(offsets);
+    auto nb = Kokkos::create_mirror_view(neighbours);
+    for (std::size_t i = 0; i < host_offsets.size(); ++i) o(i) = host_offsets[i];
+    for (std::size_t k = 0; k < host_neighbours.size(); ++k) nb(k) = host_neighbours[k];
+    Kokkos::deep_copy(offsets, o);
+    Kokkos::deep_copy(neighbours, nb);
+    total = int(host_neighbours.size());
+  }
+
+  // Particles must be sorted by cell: cell c holds indices [cell_start(c), cell_start(c+1)).
+  template <class PositionView, class SpeciesView, class RadiusView, class StartView>
+  void build(const CellGrid<Dim, Real>& grid, const BoxGeometry<Dim, Real>& box,
+             const StartView& cell_start, const PositionView& x, const SpeciesView& species,
+             const RadiusView& radius, Real skin, int n) {
+    if (int(offsets.extent(0)) < n + 1)
+      offsets = Kokkos::View<int*, Mem>("verlet_offsets", n + n / 4 + 16);
+    auto off = offsets;
+    // Pass 1: count. Pass 2: fill. Both visit the same candidates in the same order.
+    Kokkos::parallel_for(
+        "verlet::count", Policy(0, n), KOKKOS_LAMBDA(const int i) {
+          int count = 0;
+          visit(grid, box, cell_start, x, species, radius, skin, i, [&](int) { ++count; });
+          off(i + 1) = count;
+        });
+    int sum = 0;
+    Kokkos::parallel_scan(
+        "verlet::offsets", Policy(0, n + 1),
+        KOKKOS_LAMBDA(const int i, int& running, const bool final) {
+          const int count = i == 0 ? 0 : off(i);
+          running += count;
+          if (final) off(i) = running;
+        },
+        sum);
+    total = sum;
+    if (int(neighbours.extent(0)) < total)
+      neighbours = Kokkos::View<int*, Mem>("verlet_neighbours", total + total / 4 + 64);
+    auto nb = neighbours;
+    Kokkos::parallel_for(
+        "verlet::fill", Policy(0, n), KOKKOS_LAMBDA(const int i) {
+          int k = off(i);
+          visit(grid, box, cell_start, x, species, radius, skin, i, [&](int j) { nb(k++) = j; });
+        });
+  }
+
+ private:
+  template <class PositionView, class SpeciesView, class RadiusView, class StartView, class F>
+  KOKKOS_INLINE_FUNCTION static void visit(const CellGrid<Dim, Real>& grid,
+                                           const BoxGeometry<Dim, Real>& box,
+                                           const StartView& cell_start, const PositionView& x,
+                                           const SpeciesView& species, const RadiusView& radius,
+                                           Real skin, int i, F&& action) {
+    int c[Dim];
+    Vec<Dim, Real> xi;
+    for (int d = 0; d < Dim; ++d) {
+      xi[d] = x(i, d);
+      c[d] = grid.coord(d, xi[d]);
+    }
+    const Real ri = radius(species(i));
+    for (int k = 0; k < CellGrid<Dim, Real>::neighbour_count(); ++k) {
+      const int cell = grid.neighbour(c, k);
+      if (cell < 0) continue;
+      for (int j = cell_start(cell); j < cell_start(cell + 1); ++j) {
+        if (j == i) continue;
+        Vec<Dim, Real> dx;
+        for (int d = 0; d < Dim; ++d) dx[d] = xi[d] - x(j, d);
+        dx = box.minimum_image(dx);
+        const Real cut = ri + radius(species(j)) + skin;
+        if (dot(dx, dx) < cut * cut) action(j);
+      }
+    }
+  }
+};
+
+}  // namespace granshock

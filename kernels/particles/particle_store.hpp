@@ -1,0 +1,124 @@
+// Particle storage on the device: a structure of arrays of Kokkos Views, each declared
+// once (docs/design.md, "Particles"). for_each_array() lists every per-particle array with
+// its name and the SolverState member that checkpoints it; allocation, growth,
+// permutation after a cell sort and the state's export and import all iterate that list,
+// so a new per-particle quantity is one line there and one member of SolverState.
+// Owned particles occupy [0, n); the Views have spare capacity so that particles can be
+// inserted and removed (and, with domain decomposition, ghosts appended after the owned
+// ones) without a reallocation each step. Vectors are View<Real*[Dim]>: contiguous
+// components per particle on the host (LayoutRight), one array per component on a GPU
+// (LayoutLeft), each the coalesced layout for its backend. A frictionless scene allocates
+// no rotation and no contact history (DESIGN.md section 5: model only what is needed).
+#pragma once
+
+#include <Kokkos_Core.hpp>
+#include <string>
+#include <tuple>
+#include <type_traits>
+#include <vector>
+
+#include "device/device_lambda.hpp"
+#include "particles/reorder.hpp"
+#include "solver_state.hpp"
+
+namespace granshock {
+
+// A per-particle array's name and where a checkpoint keeps it.
+template <class Host>
+struct StateArray {
+  const char* name;
+  std::vector<Host> SolverState::*member;
+};
+
+template <int Dim, class Real, class MemSpace, bool Friction>
+struct ParticleStore {
+  static constexpr bool friction = Friction;
+  // Tangential springs per particle: more than the contacts a sphere can have.
+  static constexpr int history_slots = Dim == 2 ? 8 : 16;
+
+  using VectorView = Kokkos::View<Real* [Dim], MemSpace>;
+  using ScalarView = Kokkos::View<Real*, MemSpace>;
+  using IntView = Kokkos::View<int*, MemSpace>;
+  using PartnerView = Kokkos::View<int* [history_slots], MemSpace>;
+  using SpringView = Kokkos::View<Real * [history_slots * Dim], MemSpace>;
+
+  VectorView x, v, f;
+  VectorView x_ref;  // positions at the last neighbour-list build (the skin criterion)
+  IntView species;
+  IntView id;  // global id, never reused within a run
+  // With friction: spin about z and its torque, and the tangential springs, kept per
+  // partner's global id so that they survive rebuilds and reordering without remapping.
+  // Only the thread handling particle i touches i's slots (full neighbour list).
+  ScalarView omega, torque;
+  PartnerView history_partner;  // partner global id per slot, -1 when free
+  SpringView history_spring;    // spring xi per slot
+  VectorView obstacle_spring;   // spring xi against the obstacle
+  int n = 0;                    // owned particles
+
+  // Calls visit(StateArray, view...) for every per-particle array of this variant, with
+  // that array of each of the given stores (one store: its arrays; two: pairs).
+  template <class Visit, class... Stores>
+  static void for_each_array(Visit&& visit, Stores&... stores) {
+    visit(StateArray<double>{"position", &SolverState::position}, stores.x...);
+    visit(StateArray<double>{"velocity", &SolverState::velocity}, stores.v...);
+    visit(StateArray<double>{"force", &SolverState::force}, stores.f...);
+    visit(StateArray<double>{"reference_position", &SolverState::reference_position},
+          stores.x_ref...);
+    visit(StateArray<int>{"species", &SolverState::species}, stores.species...);
+    visit(StateArray<int>{"id", &SolverState::id}, stores.id...);
+    if constexpr (Friction) {
+      visit(StateArray<double>{"angular_velocity", &SolverState::angular_velocity},
+            stores.omega...);
+      visit(StateArray<double>{"torque", &SolverState::torque}, stores.torque...);
+      visit(StateArray<int>{"history_partner", &SolverState::history_partner},
+            stores.history_partner...);
+      visit(StateArray<double>{"history_spring", &SolverState::history_spring},
+            stores.history_spring...);
+      visit(StateArray<double>{"history_obstacle_spring", &SolverState::history_obstacle_spring},
+            stores.obstacle_spring...);
+    }
+  }
+
+  int capacity() const { return int(x.extent(0)); }
+
+  void allocate(int capacity) {
+    for_each_array(
+        [&](auto array, auto& view) {
+          view = std::decay_t<decltype(view)>(std::string(array.name), capacity);
+        },
+        *this);
+    if constexpr (Friction) Kokkos::deep_copy(history_partner, -1);
+  }
+};
+
+// Copies the first n particles of every array of `from` into `to` (of larger capacity).
+template <class ExecSpace, class Store>
+void copy_particles(Store& to, const Store& from, int n) {
+  Store::for_each_array(
+      [&](auto, auto& dst, const auto& src) { copy_prefix<ExecSpace>(dst, src, n); }, to, from);
+  to.n = n;
+}
+
+// Reorders every array: new index k holds old particle order(k). Scratch buffers are
+// one per array type and swapped with the arrays (reorder.hpp), so a permutation
+// allocates nothing in steady state.
+template <class ExecSpace, class Store>
+class ParticlePermutation {
+ public:
+  template <class OrderView>
+  void apply(Store& p, const OrderView& order, int n) {
+    Store::for_each_array(
+        [&](auto, auto& view) {
+          using View = std::decay_t<decltype(view)>;
+          gather_in_place<ExecSpace>(view, std::get<View>(scratch_), order, n);
+        },
+        p);
+  }
+
+ private:
+  std::tuple<typename Store::VectorView, typename Store::ScalarView, typename Store::IntView,
+             typename Store::PartnerView, typename Store::SpringView>
+      scratch_;
+};
+
+}  // namespace granshock

@@ -1,0 +1,171 @@
+// Field sampling on the device (DESIGN.md 2.3): every sample adds, per bin and species,
+// the count and the velocity moments of the particles in it, and per bin the contact
+// virial, to the sums of the current block (layout: core/bin_layout.hpp). Two strategies
+// for the scattered additions, chosen at compile time and measured against each other
+// (apps/bench/bench_sampling.cpp): atomic adds on one array, or a Kokkos ScatterView
+// (one private copy per thread on host backends, atomics on GPUs).
+#pragma once
+
+#include <Kokkos_Core.hpp>
+#include <Kokkos_ScatterView.hpp>
+
+#include <stdexcept>
+#include <vector>
+
+#include "bin_layout.hpp"
+#include "device/device_math.hpp"
+
+namespace granshock {
+
+// Where a position falls: flat bin index of the grid, or -1 outside.
+struct GridIndex {
+  double x0, y0, inv_bin;
+  int nx, ny;
+  KOKKOS_INLINE_FUNCTION int operator()(double x, double y) const {
+    const double fx = (x - x0) * inv_bin, fy = (y - y0) * inv_bin;
+    if (fx < 0 || fy < 0) return -1;
+    const int ix = int(fx), iy = int(fy);
+    return ix < nx && iy < ny ? iy * nx + ix : -1;
+  }
+};
+struct ProfileIndex {
+  double x_lo, x_hi, y0, inv_dy;
+  int n;
+  KOKKOS_INLINE_FUNCTION int operator()(double x, double y) const {
+    if (x < x_lo || x >= x_hi || y < y0) return -1;
+    const int k = int((y - y0) * inv_dy);
+    return k < n ? k : -1;
+  }
+};
+
+// One particle's contribution: the moments of its species and its virial, added to the
+// bin it is in. `Add` is called as add(index, value).
+template <class Where, class Store, class VirialView>
+struct SampleContribution {
+  Where where;
+  Store p;
+  VirialView virial;
+  long block_offset;
+  int quantities, per_species, virial_terms;
+
+  template <class Add>
+  KOKKOS_INLINE_FUNCTION void operator()(const int i, Add& add) const {
+    const int bin = where(double(p.x(i, 0)), double(p.x(i, 1)));
+    if (bin < 0) return;
+    const long base = block_offset + long(bin) * quantities;
+    const long s = base + long(per_species) * p.species(i);
+    const double vx = p.v(i, 0), vy = p.v(i, 1);
+    add(s + 0, 1.0);
+    add(s + 1, vx);
+    add(s + 2, vy);
+    add(s + 3, vx * vx);
+    add(s + 4, vx * vy);
+    add(s + 5, vy * vy);
+    for (int k = 0; k < virial_terms; ++k) add(base + quantities - 4 + k, double(virial(i, k)));
+  }
+};
+
+template <class Sums>
+struct AtomicAdd {
+  Sums sums;
+  KOKKOS_INLINE_FUNCTION void operator()(long k, double value) const {
+    Kokkos::atomic_add(&sums(k), value);
+  }
+};
+
+template <class Contribution, class Sums>
+struct AtomicSample {
+  Contribution one;
+  Sums sums;
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
+    AtomicAdd<Sums> add{sums};
+    one(i, add);
+  }
+};
+
+template <class Access>
+struct ScatterAdd {
+  Access& access;
+  KOKKOS_INLINE_FUNCTION void operator()(long k, double value) const { access(k) += value; }
+};
+
+template <class Contribution, class Scatter>
+struct ScatterSample {
+  Contribution one;
+  Scatter scatter;
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
+    auto access = scatter.access();
+    ScatterAdd<decltype(access)> add{access};
+    one(i, add);
+  }
+};
+
+// The sums of one accumulator (grid or profile) for all blocks, on the device, and the
+// per-thread scratch a ScatterView needs (sized for one block and reused).
+template <class ExecSpace>
+class BinAccumulator {
+ public:
+  using Mem = typename ExecSpace::memory_space;
+  using Sums = Kokkos::View<double*, Mem>;
+  using Scatter =
+      Kokkos::Experimental::ScatterView<double*, typename Sums::array_layout, ExecSpace>;
+
+  BinAccumulator() = default;
+  BinAccumulator(long bins, int quantities, int blocks)
+      : bins_(bins),
+        quantities_(quantities),
+        blocks_(blocks),
+        sums_("field_sums", bins * quantities * blocks),
+        block_("field_block", bins * quantities),
+        scatter_(block_) {}
+
+  long block_size() const { return bins_ * quantities_; }
+  const Sums& sums() const { return sums_; }
+  bool empty() const { return sums_.extent(0) == 0; }
+
+  template <ScatterStrategy Strategy, class Where, class Store, class VirialView>
+  void sample(int block, const Where& where, const Store& p, const VirialView& virial) {
+    using Policy = Kokkos::RangePolicy<ExecSpace>;
+    const int virial_terms = int(virial.extent(1)) < 4 ? int(virial.extent(1)) : 4;
+    using Contribution = SampleContribution<Where, Store, VirialView>;
+    const long offset = long(block) * block_size();
+    if constexpr (Strategy == ScatterStrategy::atomic) {
+      const Contribution one{where,       p, virial, offset, quantities_, BinLayout::per_species,
+                             virial_terms};
+      Kokkos::parallel_for("fields::sample_atomic", Policy(0, p.n),
+                           AtomicSample<Contribution, Sums>{one, sums_});
+    } else {
+      const Contribution one{where,       p, virial, 0, quantities_, BinLayout::per_species,
+                             virial_terms};
+      Kokkos::deep_copy(block_, 0.0);
+      scatter_.reset_except(block_);
+      Kokkos::parallel_for("fields::sample_scatter", Policy(0, p.n),
+                           ScatterSample<Contribution, Scatter>{one, scatter_});
+      Kokkos::Experimental::contribute(block_, scatter_);
+      const auto sums = sums_, blk = block_;
+      Kokkos::parallel_for(
+          "fields::add_block", Policy(0, block_size()),
+          KOKKOS_LAMBDA(const long k) { sums(offset + k) += blk(k); });
+    }
+  }
+
+  std::vector<double> to_host() const {
+    const auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sums_);
+    return std::vector<double>(h.data(), h.data() + h.extent(0));
+  }
+  void from_host(const std::vector<double>& values) {
+    if (values.size() != sums_.extent(0))
+      throw std::runtime_error("field sums of the checkpoint do not match the scene's bins");
+    auto h = Kokkos::create_mirror_view(sums_);
+    for (std::size_t k = 0; k < values.size(); ++k) h(k) = values[k];
+    Kokkos::deep_copy(sums_, h);
+  }
+
+ private:
+  long bins_ = 0;
+  int quantities_ = 0, blocks_ = 0;
+  Sums sums_, block_;
+  Scatter scatter_;
+};
+
+}  // namespace granshock

@@ -1,0 +1,168 @@
+// The force kernel: for each particle, the sum of its contacts with the partners of the
+// pair loop and, when the scene has one, with the obstacle, by the variant's contact law
+// (docs/design.md, "The force kernel"). Friction and obstacle are compile-time: a
+// frictionless scene compiles no tangential force, history or torque; a scene without
+// obstacle no obstacle contact. Each particle writes only its own force, torque and
+// springs (full lists), so the kernel needs no atomics and its result does not depend on
+// the thread count.
+#pragma once
+
+#include <Kokkos_Core.hpp>
+
+#include "device/vec.hpp"
+#include "models/tangential_spring.hpp"
+#include "neighbours/pair_loop.hpp"
+#include "particles/particle_store.hpp"
+#include "solver/pair_table.hpp"
+
+namespace granshock {
+
+// Mode: forces (the time step) or virial (field sampling: per particle
+// W_i = sum_j 1/2 r_ij (x) F_ij, with r_ij = x_i - x_j, written to `virial`; forces, torques
+// and contact history are left untouched, so sampling cannot change the trajectory).
+enum class ForceMode { forces, virial };
+
+template <class V, class ExecSpace, ForceMode Mode = ForceMode::forces>
+struct ContactForceKernel {
+  static constexpr int Dim = V::dim;
+  using Real = typename V::real;
+  using Model = typename V::model;
+  using Mem = typename ExecSpace::memory_space;
+  using Store = ParticleStore<Dim, Real, Mem, V::friction>;
+  using Obstacle = typename V::obstacle::template Geometry<Dim, Real>;
+
+  Store p;
+  PairLoop<Dim, Real, Mem> pairs;
+  PairTable<Model, Real, Mem> table;
+  Obstacle obstacle;
+  Real dt;
+  Kokkos::View<int, Mem> history_overflow;       // set when slots run out
+  Kokkos::View<Real * [Dim * Dim], Mem> virial;  // ForceMode::virial only
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
+    const Vec<Dim, Real> xi = pairs.position(i);
+    const Vec<Dim, Real> vi = velocity(i);
+    const int si = p.species(i);
+    const Real ri = table.radius(si);
+    Vec<Dim, Real> force = Vec<Dim, Real>::zero();
+    Real torque = 0;
+    Real w[Dim * Dim] = {};
+    int used_slots = 0;  // bit s set when slot s carried a contact this step
+
+    pairs.for_each_contact(
+        i, xi, ri, [&](int j, int sj, const Vec<Dim, Real>& dx, Real r2, Real rsum) {
+          const Real r = dmath::sqrt(r2);
+          const Vec<Dim, Real> n = (Real(1) / r) * dx;
+          const Vec<Dim, Real> vrel = vi - velocity(j);
+          const auto& c = table.pair(si, sj);
+          const auto normal = Model::normal(c, rsum - r, dot(vrel, n));
+          Vec<Dim, Real> pair_force = normal.force * n;
+          if constexpr (V::friction) {
+            const int slot = Mode == ForceMode::forces ? claim_slot(i, p.id(j), used_slots)
+                                                       : find_slot(i, p.id(j));
+            const Vec<2, Real> vc =
+                contact_point_velocity(vrel, n, ri * p.omega(i) + table.radius(sj) * p.omega(j));
+            Vec<2, Real> xi_t = Vec<2, Real>::zero();
+            if (slot >= 0)
+              xi_t = {{p.history_spring(i, Dim * slot), p.history_spring(i, Dim * slot + 1)}};
+            const auto spring = Model::tangential(c, normal);
+            const Vec<2, Real> ft =
+                tangential_force(spring.kt, spring.gt, c.friction, normal.force, n, vc, dt, xi_t);
+            if constexpr (Mode == ForceMode::forces) {
+              if (slot >= 0) {
+                p.history_spring(i, Dim * slot) = xi_t[0];
+                p.history_spring(i, Dim * slot + 1) = xi_t[1];
+              }
+              torque += contact_torque(ri, n, ft);
+            }
+            pair_force += ft;
+          }
+          force += pair_force;
+          if constexpr (Mode == ForceMode::virial)
+            for (int a = 0; a < Dim; ++a)
+              for (int b = 0; b < Dim; ++b) w[a * Dim + b] += Real(0.5) * dx[a] * pair_force[b];
+        });
+    if constexpr (Mode == ForceMode::virial) {
+      for (int k = 0; k < Dim * Dim; ++k) virial(i, k) = w[k];
+      return;
+    } else {
+      if constexpr (V::friction) release_unused_slots(i, used_slots);
+      if constexpr (V::obstacle::present) obstacle_contact(i, xi, vi, si, ri, force, torque);
+      for (int d = 0; d < Dim; ++d) p.f(i, d) = force[d];
+      if constexpr (V::friction) p.torque(i) = torque;
+    }
+  }
+
+  KOKKOS_INLINE_FUNCTION Vec<Dim, Real> velocity(int i) const {
+    Vec<Dim, Real> r;
+    for (int d = 0; d < Dim; ++d) r[d] = p.v(i, d);
+    return r;
+  }
+
+  // Contact with the obstacle: its shape gives the overlap and the normal, the law the
+  // force with the obstacle coefficients (R* = r_i, m* = m_i).
+  KOKKOS_INLINE_FUNCTION void obstacle_contact(int i, const Vec<Dim, Real>& xi,
+                                               const Vec<Dim, Real>& vi, int si, Real ri,
+                                               Vec<Dim, Real>& force, Real& torque) const {
+    Real dn;
+    Vec<Dim, Real> n;
+    if (!obstacle.touches(xi, ri, dn, n)) {
+      if constexpr (V::friction)
+        for (int d = 0; d < Dim; ++d) p.obstacle_spring(i, d) = 0;
+      return;
+    }
+    const auto& c = table.obstacle(si);
+    const auto normal = Model::normal(c, dn, dot(vi, n));
+    force += normal.force * n;
+    if constexpr (V::friction) {
+      const Vec<2, Real> vc = contact_point_velocity(vi, n, ri * p.omega(i));
+      Vec<2, Real> xi_t{{p.obstacle_spring(i, 0), p.obstacle_spring(i, 1)}};
+      const auto spring = Model::tangential(c, normal);
+      const Vec<2, Real> ft =
+          tangential_force(spring.kt, spring.gt, c.friction, normal.force, n, vc, dt, xi_t);
+      p.obstacle_spring(i, 0) = xi_t[0];
+      p.obstacle_spring(i, 1) = xi_t[1];
+      force += ft;
+      torque += contact_torque(ri, n, ft);
+    }
+  }
+
+  KOKKOS_INLINE_FUNCTION int find_slot(int i, int partner) const {
+    for (int s = 0; s < Store::history_slots; ++s)
+      if (p.history_partner(i, s) == partner) return s;
+    return -1;
+  }
+
+  // The slot that holds the contact with `partner`, or a fresh zeroed one.
+  KOKKOS_INLINE_FUNCTION int claim_slot(int i, int partner, int& used) const {
+    int free_slot = -1;
+    for (int s = 0; s < Store::history_slots; ++s) {
+      const int owner = p.history_partner(i, s);
+      if (owner == partner) {
+        used |= 1 << s;
+        return s;
+      }
+      if (owner < 0 && free_slot < 0) free_slot = s;
+    }
+    if (free_slot < 0) {
+      history_overflow() = 1;
+      return -1;
+    }
+    p.history_partner(i, free_slot) = partner;
+    for (int d = 0; d < Dim; ++d) p.history_spring(i, Dim * free_slot + d) = 0;
+    used |= 1 << free_slot;
+    return free_slot;
+  }
+
+  // Contacts that ended this step lose their history (docs/contact_model.md: the spring
+  // is reset at separation).
+  KOKKOS_INLINE_FUNCTION void release_unused_slots(int i, int used) const {
+    for (int s = 0; s < Store::history_slots; ++s) {
+      if (used & (1 << s)) continue;
+      p.history_partner(i, s) = -1;
+      for (int d = 0; d < Dim; ++d) p.history_spring(i, Dim * s + d) = 0;
+    }
+  }
+};
+
+}  // namespace granshock

@@ -1,0 +1,306 @@
+// DemSolver: the DEM time loop of one compiled variant (docs/design.md, "The solver"):
+//   first half-step -> [rebuild lists if some particle moved > skin/2] -> forces ->
+//   second half-step
+// entirely in Kokkos kernels on ExecSpace. It owns the particles (particles/), the cell
+// sort and Verlet list (neighbours/), and the bin accumulators of field sampling
+// (sampling/); population control, diagnostics and state I/O are parts of their own
+// (population.hpp, diagnostics.hpp, state_io.hpp). Host copies happen only on request
+// (snapshots, diagnostics) and for the one scalar that decides a rebuild, which goes
+// through the Communicator like every other global reduction.
+#pragma once
+
+#include <Kokkos_Core.hpp>
+#include <algorithm>
+#include <stdexcept>
+
+#include "checkpoint_checks.hpp"
+#include "communicator.hpp"
+#include "neighbours/cell_grid.hpp"
+#include "neighbours/cell_sort.hpp"
+#include "neighbours/pair_loop.hpp"
+#include "neighbours/verlet_list.hpp"
+#include "particles/particle_exchange.hpp"
+#include "particles/particle_store.hpp"
+#include "particles/population.hpp"
+#include "sampling/bin_accumulator.hpp"
+#include "solver.hpp"
+#include "solver/contact_forces.hpp"
+#include "solver/diagnostics.hpp"
+#include "solver/pair_table.hpp"
+#include "solver/state_io.hpp"
+#include "solver/velocity_verlet.hpp"
+#include "user_error.hpp"
+
+namespace granshock {
+
+template <class V, class ExecSpace>
+class DemSolver final : public Solver {
+ public:
+  static constexpr int Dim = V::dim;
+  using Real = typename V::real;
+  using Model = typename V::model;
+  using Mem = typename ExecSpace::memory_space;
+  using Policy = Kokkos::RangePolicy<ExecSpace>;
+  using Store = ParticleStore<Dim, Real, Mem, V::friction>;
+  using Obstacle = typename V::obstacle::template Geometry<Dim, Real>;
+
+  DemSolver(const SolverSetup& setup, std::size_t capacity, const Communicator& comm)
+      : setup_(validated(setup)),
+        comm_(comm),
+        table_(PairTable<Model, Real, Mem>::build(setup)),
+        box_(BoxGeometry<Dim, Real>::from(setup.box)),
+        obstacle_(Obstacle::from(setup.obstacle)),
+        skin_(Real(setup.skin())),
+        grid_(CellGrid<Dim, Real>::make(setup.box, setup.max_diameter() + setup.skin())),
+        population_(setup, box_, obstacle_),
+        history_overflow_("history_overflow") {
+    integrator_.dt = Real(setup.dt);
+    for (int d = 0; d < Dim; ++d) integrator_.gravity[d] = Real(setup.gravity[d]);
+    p_.allocate(int(std::max<std::size_t>(capacity, 1)));
+  }
+
+  void set_particles(const HostParticles& hp) override {
+    const int n = int(hp.size());
+    if (n > p_.capacity()) p_.allocate(n + n / 4);
+    auto x = Kokkos::create_mirror_view(p_.x);
+    auto v = Kokkos::create_mirror_view(p_.v);
+    auto species = Kokkos::create_mirror_view(p_.species);
+    auto id = Kokkos::create_mirror_view(p_.id);
+    auto omega = Kokkos::create_mirror_view(p_.omega);
+    int next_id = 0;
+    for (int i = 0; i < n; ++i) {
+      for (int d = 0; d < Dim; ++d) {
+        x(i, d) = Real(hp.position[i][d]);
+        v(i, d) = Real(hp.velocity[i][d]);
+      }
+      if (hp.species[i] < 0 || hp.species[i] >= int(setup_.species.size()))
+        throw UserError("particle " + std::to_string(hp.id[i]) + " has unknown species " +
+                        std::to_string(hp.species[i]));
+      species(i) = hp.species[i];
+      id(i) = hp.id[i];
+      next_id = std::max(next_id, hp.id[i] + 1);
+      if constexpr (V::friction)
+        omega(i) = hp.angular_velocity.empty() ? Real(0) : Real(hp.angular_velocity[i]);
+    }
+    Kokkos::deep_copy(p_.x, x);
+    Kokkos::deep_copy(p_.v, v);
+    Kokkos::deep_copy(p_.species, species);
+    Kokkos::deep_copy(p_.id, id);
+    Kokkos::deep_copy(p_.omega, omega);
+    p_.n = n;
+    population_.restore(next_id, population_.removed());
+    Kokkos::deep_copy(p_.f, Real(0));
+    if constexpr (V::friction) {
+      Kokkos::deep_copy(p_.history_partner, -1);
+      Kokkos::deep_copy(p_.history_spring, Real(0));
+      Kokkos::deep_copy(p_.obstacle_spring, Real(0));
+    }
+    rebuild_lists();
+    compute_forces();
+  }
+
+  HostParticles particles() const override {
+    auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p_.x);
+    auto v = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p_.v);
+    auto species = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p_.species);
+    auto id = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p_.id);
+    auto omega = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p_.omega);
+    HostParticles hp;
+    for (int i = 0; i < p_.n; ++i) {
+      std::array<double, 3> xi{0, 0, 0}, vi{0, 0, 0};
+      for (int d = 0; d < Dim; ++d) {
+        xi[d] = x(i, d);
+        vi[d] = v(i, d);
+      }
+      hp.add(xi, vi, species(i), id(i));
+      if constexpr (V::friction) hp.angular_velocity.push_back(omega(i));
+    }
+    return hp;
+  }
+
+  void advance(long steps) override {
+    const Real rebuild_d2 = Real(0.25) * skin_ * skin_;  // (skin/2)^2
+    for (long s = 0; s < steps; ++s) {
+      const Real moved2 = integrator_.first_half(p_, table_);
+      if (Real(comm_.max(double(moved2))) > rebuild_d2) rebuild_lists();
+      compute_forces();
+      integrator_.second_half(p_, table_);
+      ++steps_;
+    }
+    if constexpr (V::friction) {
+      int overflow = 0;
+      Kokkos::deep_copy(overflow, history_overflow_);
+      if (comm_.any(overflow != 0))
+        throw std::runtime_error("a particle had more than " +
+                                 std::to_string(Store::history_slots) +
+                                 " simultaneous contacts: the packing is unphysically dense "
+                                 "(huge overlaps?); reduce dt or check the scene");
+    }
+  }
+
+  // Wraps periodic coordinates, hands particles between processes, deletes escaped ones,
+  // sorts by cell and rebuilds the Verlet list; x_ref remembers where particles were, for
+  // the skin criterion.
+  void rebuild_lists() override {
+    wrap_periodic();
+    p_.n = exchange_.migrate(p_);
+    population_.remove_escaped(p_, permutation_);
+    sort_.sort(grid_, p_.x, p_.id, p_.n);
+    permutation_.apply(p_, sort_.order, p_.n);
+    exchange_.append_ghosts(p_);
+    list_.build(grid_, box_, sort_.cell_start, p_.x, p_.species, table_.radius, skin_, p_.n);
+    Kokkos::deep_copy(p_.x_ref, p_.x);
+    ++builds_;
+  }
+
+  void compute_forces() {
+    ContactForceKernel<V, ExecSpace> kernel{
+        p_, pair_loop(), table_, obstacle_, Real(setup_.dt), history_overflow_, {}};
+    Kokkos::parallel_for("contact_forces", Policy(0, p_.n), kernel);
+  }
+
+  Diagnostics diagnostics() const override { return diagnostics_part().compute(comm_); }
+  std::vector<std::pair<int, int>> contact_pairs() const override {
+    return diagnostics_part().contact_pairs();
+  }
+  std::vector<SpeciesMoments> species_moments() const override {
+    return diagnostics_part().species_moments(int(setup_.species.size()), comm_);
+  }
+
+  std::size_t size() const override { return std::size_t(p_.n); }
+  long steps_done() const override { return steps_; }
+  long list_builds() const override { return builds_; }
+  double time() const override { return double(steps_) * setup_.dt; }
+  std::string variant() const override { return V::name() + "/" + ExecSpace::name(); }
+
+  int insert(const InsertionRequest& request) override {
+    const int placed = population_.insert(p_, request);
+    if (request.count > 0 && request.rebuild_lists) rebuild_lists();
+    return placed;
+  }
+  RemovalCounts remove_escaped() override {
+    rebuild_lists();
+    return population_.removed();
+  }
+  RemovalCounts removed() const override { return population_.removed(); }
+  int next_id() const override { return population_.next_id(); }
+
+  void configure_sampling(const FieldSampling& f) override {
+    sampling_ = f;
+    grid_sums_ = BinAccumulator<ExecSpace>(f.grid.bins(), f.grid.quantities(), f.grid.blocks);
+    if (f.profile.n > 0)
+      profile_sums_ = BinAccumulator<ExecSpace>(f.profile.n, f.grid.quantities(), f.grid.blocks);
+  }
+
+  void sample_fields(int block) override {
+    if (int(virial_.extent(0)) < p_.n) virial_ = decltype(virial_)("virial", p_.capacity());
+    ContactForceKernel<V, ExecSpace, ForceMode::virial> kernel{
+        p_, pair_loop(), table_, obstacle_, Real(setup_.dt), history_overflow_, virial_};
+    Kokkos::parallel_for("contact_virial", Policy(0, p_.n), kernel);
+    const BinLayout& g = sampling_.grid;
+    const GridIndex grid{g.x0, g.y0, 1.0 / g.bin_size, g.nx, g.ny};
+    const ProfileLayout& pr = sampling_.profile;
+    const ProfileIndex profile{pr.x_lo, pr.x_hi, pr.y0, 1.0 / pr.dy, pr.n};
+    if (sampling_.strategy == ScatterStrategy::atomic) {
+      grid_sums_.template sample<ScatterStrategy::atomic>(block, grid, p_, virial_);
+      if (!profile_sums_.empty())
+        profile_sums_.template sample<ScatterStrategy::atomic>(block, profile, p_, virial_);
+    } else {
+      grid_sums_.template sample<ScatterStrategy::scatter_view>(block, grid, p_, virial_);
+      if (!profile_sums_.empty())
+        profile_sums_.template sample<ScatterStrategy::scatter_view>(block, profile, p_, virial_);
+    }
+  }
+
+  std::vector<double> field_sums(bool profile) const override {
+    std::vector<double> sums = profile ? profile_sums_.to_host() : grid_sums_.to_host();
+    comm_.sum_in_place(sums);
+    return sums;
+  }
+  void restore_field_sums(const std::vector<double>& grid,
+                          const std::vector<double>& profile) override {
+    grid_sums_.from_host(grid);
+    if (!profile_sums_.empty()) profile_sums_.from_host(profile);
+  }
+
+  SolverState export_state() const override {
+    SolverState s;
+    s.dim = Dim;
+    s.step = steps_;
+    s.next_id = population_.next_id();
+    state_io::export_particles(p_, s);
+    state_io::to_host(list_.offsets, p_.n + 1, s.neighbour_offsets);
+    state_io::to_host(list_.neighbours, list_.total, s.neighbours);
+    s.list_builds = builds_;
+    s.removed_low = population_.removed().low;
+    s.removed_high = population_.removed().high;
+    return s;
+  }
+
+  // Refuses (InvalidCheckpoint, nothing changed) a state that does not fit this solver.
+  void import_state(const SolverState& s) override {
+    const SolverFit f = state_io::solver_fit<Dim, Real, Store::history_slots>(setup_, V::friction);
+    check_state(s);  // as read_checkpoint did: the checks below rely on it
+    check_fit(s, f);
+    state_io::check_lists<Dim, Real, ExecSpace>(s, grid_, box_, population_.escape_test(),
+                                                table_.radius, skin_);
+    check_contacts(s, f);
+    if (int(s.size()) > p_.capacity()) p_.allocate(int(s.size()) + int(s.size()) / 4);
+    state_io::import_particles(p_, s);
+    list_.assign(s.neighbour_offsets, s.neighbours);
+    steps_ = s.step;
+    builds_ = s.list_builds;
+    population_.restore(s.next_id, RemovalCounts{s.removed_low, s.removed_high});
+  }
+
+  // Public because it launches a KOKKOS_LAMBDA: nvcc rejects an extended lambda whose
+  // enclosing member function is private or protected.
+  void wrap_periodic() {
+    const auto box = box_;
+    const auto x = p_.x;
+    Kokkos::parallel_for(
+        "wrap_periodic", Policy(0, p_.n), KOKKOS_LAMBDA(const int i) {
+          for (int d = 0; d < Dim; ++d) x(i, d) = box.wrap(d, x(i, d));
+        });
+  }
+
+ private:
+  static const SolverSetup& validated(const SolverSetup& s) {
+    if (s.species.empty()) throw UserError("a scene needs at least one species");
+    if (!(s.max_diameter() > 0)) throw UserError("particle diameters must be > 0");
+    if (!V::matches(s)) throw std::logic_error("DemSolver variant does not match the scene");
+    return s;
+  }
+
+  PairLoop<Dim, Real, Mem> pair_loop() const {
+    return {list_.offsets, list_.neighbours, p_.x, p_.species, table_.radius, box_};
+  }
+  SolverDiagnostics<V, ExecSpace> diagnostics_part() const {
+    return {p_, pair_loop(), table_, obstacle_};
+  }
+
+  SolverSetup setup_;
+  const Communicator& comm_;
+  PairTable<Model, Real, Mem> table_;
+  BoxGeometry<Dim, Real> box_;
+  Obstacle obstacle_;
+  Real skin_;
+  CellGrid<Dim, Real> grid_;
+  VelocityVerlet<V, ExecSpace> integrator_;
+
+  Store p_;
+  ParticlePopulation<V, ExecSpace> population_;
+  ParticlePermutation<ExecSpace, Store> permutation_;
+  SingleProcessExchange<Store> exchange_;
+  CellSort<Dim, Real, ExecSpace> sort_;
+  VerletList<Dim, Real, ExecSpace> list_;
+  Kokkos::View<int, Mem> history_overflow_;
+
+  FieldSampling sampling_;
+  BinAccumulator<ExecSpace> grid_sums_, profile_sums_;
+  Kokkos::View<Real * [Dim * Dim], Mem> virial_;
+  long steps_ = 0;
+  long builds_ = 0;
+};
+
+}  // namespace granshock

@@ -1,0 +1,52 @@
+// Per-species and per-pair constants on the device, built once from a SolverSetup: radii,
+// inverse masses and moments of inertia, and the contact law's coefficients for every pair
+// of species and for every species against the obstacle (Model::coefficients).
+#pragma once
+
+#include <Kokkos_Core.hpp>
+
+#include "solver_setup.hpp"
+
+namespace granshock {
+
+template <class Model, class Real, class MemSpace>
+struct PairTable {
+  using Coefficients = typename Model::template Coefficients<Real>;
+
+  Kokkos::View<Real*, MemSpace> radius;
+  Kokkos::View<Real*, MemSpace> inv_mass;
+  Kokkos::View<Real*, MemSpace> inv_inertia;
+  Kokkos::View<Coefficients**, MemSpace> pair;     // [species_i][species_j]
+  Kokkos::View<Coefficients*, MemSpace> obstacle;  // [species] against the obstacle
+
+  static PairTable build(const SolverSetup& s) {
+    const int n = int(s.species.size());
+    PairTable t;
+    t.radius = decltype(t.radius)("radius", n);
+    t.inv_mass = decltype(t.inv_mass)("inv_mass", n);
+    t.inv_inertia = decltype(t.inv_inertia)("inv_inertia", n);
+    t.pair = decltype(t.pair)("pair_coefficients", n, n);
+    t.obstacle = decltype(t.obstacle)("obstacle_coefficients", n);
+    auto radius = Kokkos::create_mirror_view(t.radius);
+    auto inv_mass = Kokkos::create_mirror_view(t.inv_mass);
+    auto inv_inertia = Kokkos::create_mirror_view(t.inv_inertia);
+    auto pair = Kokkos::create_mirror_view(t.pair);
+    auto obstacle = Kokkos::create_mirror_view(t.obstacle);
+    const ContactOptions& o = s.contacts.options;
+    for (int a = 0; a < n; ++a) {
+      radius(a) = Real(s.species[a].radius_m());
+      inv_mass(a) = Real(1.0 / s.species[a].mass_kg());
+      inv_inertia(a) = Real(1.0 / s.species[a].moment_of_inertia());
+      for (int b = 0; b < n; ++b) pair(a, b) = Model::template coefficients<Real>(s.pair(a, b), o);
+      if (s.obstacle) obstacle(a) = Model::template coefficients<Real>(s.obstacle_pair(a), o);
+    }
+    Kokkos::deep_copy(t.radius, radius);
+    Kokkos::deep_copy(t.inv_mass, inv_mass);
+    Kokkos::deep_copy(t.inv_inertia, inv_inertia);
+    Kokkos::deep_copy(t.pair, pair);
+    Kokkos::deep_copy(t.obstacle, obstacle);
+    return t;
+  }
+};
+
+}  // namespace granshock

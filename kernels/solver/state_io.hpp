@@ -1,0 +1,179 @@
+// A solver's state to and from the host (checkpoints; docs/output_format.md): the particle
+// arrays through the store's one list (ParticleStore::for_each_array), and what only the
+// solver's own arithmetic can check about a state read back: that its reference positions
+// are where a rebuild leaves them, that no particle has moved far enough since to force a
+// rebuild, and that the particle order and neighbour list are exactly what sorting and
+// building from those positions give (core/checkpoint_checks.hpp has the rest).
+#pragma once
+
+#include <fmt/format.h>
+
+#include <Kokkos_Core.hpp>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include "checkpoint_checks.hpp"
+#include "device/box_geometry.hpp"
+#include "neighbours/cell_grid.hpp"
+#include "neighbours/cell_sort.hpp"
+#include "neighbours/verlet_list.hpp"
+#include "particles/particle_store.hpp"
+#include "particles/population_kernels.hpp"
+#include "solver_setup.hpp"
+#include "solver_state.hpp"
+
+namespace granshock {
+
+namespace state_io {
+
+// The first n rows of a device View as a flat host vector (row-major).
+template <class View, class T>
+void to_host(const View& view, int n, std::vector<T>& out) {
+  const auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), view);
+  const int width = View::rank == 1 ? 1 : int(view.extent(1));
+  out.resize(std::size_t(n) * width);
+  for (int i = 0; i < n; ++i) {
+    if constexpr (View::rank == 1) {
+      out[i] = T(h(i));
+    } else {
+      for (int c = 0; c < width; ++c) out[std::size_t(i) * width + c] = T(h(i, c));
+    }
+  }
+}
+
+template <class View, class T>
+void from_host(const View& view, int n, const std::vector<T>& in, const char* what) {
+  const int width = View::rank == 1 ? 1 : int(view.extent(1));
+  if (in.size() != std::size_t(n) * width)
+    throw std::runtime_error(std::string("checkpoint field '") + what + "' has the wrong size");
+  auto h = Kokkos::create_mirror_view(view);
+  for (int i = 0; i < n; ++i) {
+    if constexpr (View::rank == 1) {
+      h(i) = typename View::value_type(in[i]);
+    } else {
+      for (int c = 0; c < width; ++c)
+        h(i, c) = typename View::value_type(in[std::size_t(i) * width + c]);
+    }
+  }
+  Kokkos::deep_copy(view, h);
+}
+
+// Every per-particle array of the store into the state, and back.
+template <class Store>
+void export_particles(const Store& p, SolverState& s) {
+  Store::for_each_array([&](auto array, const auto& view) { to_host(view, p.n, s.*array.member); },
+                        p);
+  s.history_slots = Store::friction ? Store::history_slots : 0;
+}
+template <class Store>
+void import_particles(Store& p, const SolverState& s) {
+  const int n = int(s.size());
+  Store::for_each_array(
+      [&](auto array, auto& view) { from_host(view, n, s.*array.member, array.name); }, p);
+  p.n = n;
+}
+
+// Refuses (InvalidCheckpoint) a state whose lists this solver would not have built.
+template <int Dim, class Real, class ExecSpace, class RadiusView>
+void check_lists(const SolverState& s, const CellGrid<Dim, Real>& grid,
+                 const BoxGeometry<Dim, Real>& box, const EscapeTest<Dim, Real>& escape,
+                 const RadiusView& radius, Real skin) {
+  using Mem = typename ExecSpace::memory_space;
+  const int n = int(s.size());
+  auto fail = [](const std::string& what) { throw InvalidCheckpoint(what); };
+  if constexpr (!std::is_same_v<Real, double>) {
+    for (const auto* values :
+         {&s.position, &s.velocity, &s.force, &s.angular_velocity, &s.torque, &s.history_spring,
+          &s.history_obstacle_spring, &s.reference_position})
+      for (double v : *values)
+        if (double(Real(v)) != v)
+          fail(fmt::format("/state: {} is not a value of this single-precision solver", v));
+  }
+  const Real rebuild_d2 = Real(0.25) * skin * skin;  // as in DemSolver::advance
+  Kokkos::View<Real* [Dim], Mem> xr("check_x_ref", std::max(n, 1));
+  Kokkos::View<int*, Mem> species("check_species", std::max(n, 1)), id("check_id", std::max(n, 1));
+  auto h_xr = Kokkos::create_mirror_view(xr);
+  auto h_species = Kokkos::create_mirror_view(species);
+  auto h_id = Kokkos::create_mirror_view(id);
+  for (int i = 0; i < n; ++i) {
+    Real d2 = 0;
+    for (int d = 0; d < Dim; ++d) {
+      const std::size_t k = std::size_t(i) * Dim + d;
+      const Real ref = Real(s.reference_position[k]);
+      const bool wrapped = box.wrap(d, ref) == ref;
+      const bool kept = !escape.check[d] || (ref >= escape.lo[d] && ref < escape.hi[d]);
+      if (!wrapped || !kept)
+        fail(
+            fmt::format("/state/reference_position[{}] = {} is outside the box on axis {}, "
+                        "where a rebuild leaves none",
+                        k, double(ref), d));
+      h_xr(i, d) = ref;
+      const Real moved = Real(s.position[k]) - ref;
+      d2 += moved * moved;
+    }
+    if (d2 > rebuild_d2)
+      fail(
+          fmt::format("/state/position[{}]: particle {} is more than half the skin from its "
+                      "reference position; the solver would have rebuilt its lists",
+                      std::size_t(i) * Dim, s.id[std::size_t(i)]));
+    h_species(i) = s.species[std::size_t(i)];
+    h_id(i) = s.id[std::size_t(i)];
+  }
+  if (n == 0) return;
+  Kokkos::deep_copy(xr, h_xr);
+  Kokkos::deep_copy(species, h_species);
+  Kokkos::deep_copy(id, h_id);
+  CellSort<Dim, Real, ExecSpace> sort;
+  sort.sort(grid, xr, id, n);
+  const auto order = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sort.order);
+  for (int k = 0; k < n; ++k)
+    if (order(k) != k)
+      fail(
+          fmt::format("/state/id: particle {} at row {} is out of the cell order of "
+                      "/state/reference_position",
+                      s.id[std::size_t(k)], k));
+  VerletList<Dim, Real, ExecSpace> list;
+  list.build(grid, box, sort.cell_start, xr, species, radius, skin, n);
+  const auto offsets = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), list.offsets);
+  const auto neighbours = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), list.neighbours);
+  for (int i = 0; i <= n; ++i)
+    if (offsets(i) != s.neighbour_offsets[std::size_t(i)])
+      fail(
+          fmt::format("/state/neighbour_offsets[{}] = {}, but the list built from "
+                      "/state/reference_position gives {}",
+                      i, s.neighbour_offsets[std::size_t(i)], offsets(i)));
+  for (int k = 0; k < list.total; ++k)
+    if (neighbours(k) != s.neighbours[std::size_t(k)])
+      fail(
+          fmt::format("/state/neighbours[{}] = {}, but the list built from "
+                      "/state/reference_position gives {}",
+                      k, s.neighbours[std::size_t(k)], neighbours(k)));
+}
+
+// What a solver of this variant expects of a state (core/checkpoint_checks.hpp).
+template <int Dim, class Real, int HistorySlots>
+SolverFit solver_fit(const SolverSetup& setup, bool friction) {
+  SolverFit f;
+  f.dim = Dim;
+  f.history_slots = friction ? HistorySlots : 0;
+  f.box = setup.box;
+  f.delete_outside = setup.delete_outside;
+  for (const Species& species : setup.species) f.radius.push_back(species.radius_m());
+  for (const auto& row : setup.contacts.friction)
+    for (double mu : row) f.max_friction = std::max(f.max_friction, mu);
+  for (double mu : setup.contacts.obstacle_friction) f.max_friction = std::max(f.max_friction, mu);
+  f.obstacle = setup.obstacle;
+  double extent = 0;
+  for (int d = 0; d < Dim; ++d)
+    extent = std::max({extent, std::abs(setup.box.lo[d]), std::abs(setup.box.hi[d])});
+  f.distance_tolerance = 16 * double(std::numeric_limits<Real>::epsilon()) * extent;
+  return f;
+}
+
+}  // namespace state_io
+
+}  // namespace granshock

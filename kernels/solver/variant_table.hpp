@@ -1,0 +1,55 @@
+// The variant table (docs/design.md, "The variant table"): every combination of dimension,
+// contact law, friction and obstacle shape that granshock compiles, for each precision and
+// backend. The lists below are the whole table; make_solver_variant walks their product,
+// skips the combinations a Variant does not compile (Variant::compiled), and builds the
+// DemSolver whose Variant matches the scene. Adding a contact law or an obstacle shape is
+// one entry in a list here (and one in kernels/models/models.hpp); adding a backend is one
+// file variants_<backend>_<precision>.cpp and a line in solver_dispatch.cpp.
+#pragma once
+
+#include <memory>
+
+#include "communicator.hpp"
+#include "models/models.hpp"
+#include "solver.hpp"
+#include "solver/variant.hpp"
+
+namespace granshock {
+
+template <class... T>
+struct TypeList {};
+template <int... D>
+struct DimList {};
+
+using CompiledDimensions = DimList<2>;  // quasi-2-D; 3-D needs 3-D insertion and sampling
+using CompiledModels = TypeList<HertzModel, HookeModel>;
+using CompiledObstacles = TypeList<NoObstacle, CylinderShape>;
+
+// Calls f(Variant{}) for every compiled variant of precision Real.
+template <class Real, class F, int... Dims, class... Models, class... Obstacles>
+void for_each_variant(F&& f, DimList<Dims...>, TypeList<Models...>, TypeList<Obstacles...>) {
+  auto with_dim = [&](auto dim) {
+    auto with_model = [&](auto model) {
+      auto with_obstacle = [&](auto obstacle) {
+        using M = decltype(model);
+        using O = decltype(obstacle);
+        constexpr int D = decltype(dim)::value;
+        using Frictionless = Variant<D, Real, M, false, O>;
+        using Frictional = Variant<D, Real, M, true, O>;
+        if constexpr (Frictionless::compiled) f(Frictionless{});
+        if constexpr (Frictional::compiled) f(Frictional{});
+      };
+      (with_obstacle(Obstacles{}), ...);
+    };
+    (with_model(Models{}), ...);
+  };
+  (with_dim(std::integral_constant<int, Dims>{}), ...);
+}
+
+// The solver of the compiled variant that matches the scene, for one precision and backend
+// (instantiated in variants_<backend>_<precision>.cpp, which compile in parallel).
+template <class Real, class ExecSpace>
+std::unique_ptr<Solver> make_solver_variant(const SolverSetup& setup, std::size_t capacity,
+                                            const Communicator& comm);
+
+}  // namespace granshock

@@ -1,0 +1,28 @@
+// The definition of make_solver_variant; included only by the variants_*.cpp files.
+#include "solver/dem_solver.hpp"
+#include "solver/variant_table.hpp"
+#include "user_error.hpp"
+
+namespace granshock {
+
+template <class Real, class ExecSpace>
+std::unique_ptr<Solver> make_solver_variant(const SolverSetup& setup, std::size_t capacity,
+                                            const Communicator& comm) {
+  std::unique_ptr<Solver> solver;
+  for_each_variant<Real>(
+      [&](auto variant) {
+        using V = decltype(variant);
+        if (!solver && V::matches(setup))
+          solver = std::make_unique<DemSolver<V, ExecSpace>>(setup, capacity, comm);
+      },
+      CompiledDimensions{}, CompiledModels{}, CompiledObstacles{});
+  if (!solver)
+    throw UserError(
+        "no compiled solver variant for this scene (dim = " + std::to_string(setup.dim) +
+        ", contact model " + to_string(setup.contacts.model) +
+        (setup.contacts.has_friction() ? ", friction" : ", no friction") +
+        "); docs/design.md lists the variants");
+  return solver;
+}
+
+}  // namespace granshock

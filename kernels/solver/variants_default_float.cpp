@@ -1,0 +1,6 @@
+#include "solver/variants.inl"
+
+namespace granshock {
+template std::unique_ptr<Solver> make_solver_variant<float, Kokkos::DefaultExecutionSpace>(
+    const SolverSetup&, std::size_t, const Communicator&);
+}  // namespace granshock

@@ -1,0 +1,10 @@
+#include "device/backends.hpp"
+#if GRANSHOCK_SEPARATE_SERIAL
+#include "solver/variants.inl"
+
+namespace granshock {
+template std::unique_ptr<Solver> make_solver_variant<float, Kokkos::Serial>(const SolverSetup&,
+                                                                            std::size_t,
+                                                                            const Communicator&);
+}  // namespace granshock
+#endif

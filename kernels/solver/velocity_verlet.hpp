@@ -1,0 +1,77 @@
+// Velocity-Verlet integration (as LIGGGHTS fix nve/sphere), split in its two halves:
+//   first half:  v += dt/2 (f/m + g);  x += dt v;  (w += dt/2 tau/I with friction)
+//   second half: v += dt/2 (f/m + g);              (w += dt/2 tau/I with friction)
+// Forces between the halves see positions at t + dt and velocities at t + dt/2.
+#pragma once
+
+#include <Kokkos_Core.hpp>
+
+#include "device/device_lambda.hpp"
+#include "device/vec.hpp"
+#include "particles/particle_store.hpp"
+#include "solver/pair_table.hpp"
+
+namespace granshock {
+
+template <class V, class ExecSpace>
+struct VelocityVerlet {
+  static constexpr int Dim = V::dim;
+  using Real = typename V::real;
+  using Mem = typename ExecSpace::memory_space;
+  using Policy = Kokkos::RangePolicy<ExecSpace>;
+  using Store = ParticleStore<Dim, Real, Mem, V::friction>;
+  using Table = PairTable<typename V::model, Real, Mem>;
+
+  Real dt;
+  Vec<Dim, Real> gravity;
+
+  // First half step. Returns the largest squared displacement from x_ref, the positions
+  // at the last neighbour-list build, which decides whether the list is still valid
+  // (a process-local maximum: the solver reduces it over processes).
+  Real first_half(const Store& p, const Table& table) const {
+    const Real half = Real(0.5) * dt, step = dt;
+    const auto g = gravity;
+    const auto x = p.x, v = p.v, f = p.f, x_ref = p.x_ref;
+    const auto omega = p.omega, torque = p.torque;
+    const auto species = p.species;
+    const auto inv_mass = table.inv_mass, inv_inertia = table.inv_inertia;
+    Real max_d2 = 0;
+    Kokkos::parallel_reduce(
+        "verlet::first_half", Policy(0, p.n),
+        KOKKOS_LAMBDA(const int i, Real& worst) {
+          capture_before_if_constexpr(omega, torque, inv_inertia);
+          const int s = species(i);
+          const Real im = inv_mass(s);
+          Real d2 = 0;
+          for (int d = 0; d < Dim; ++d) {
+            v(i, d) += half * (f(i, d) * im + g[d]);
+            x(i, d) += step * v(i, d);
+            const Real moved = x(i, d) - x_ref(i, d);
+            d2 += moved * moved;
+          }
+          if constexpr (V::friction) omega(i) += half * torque(i) * inv_inertia(s);
+          if (d2 > worst) worst = d2;
+        },
+        Kokkos::Max<Real>(max_d2));
+    return max_d2;
+  }
+
+  void second_half(const Store& p, const Table& table) const {
+    const Real half = Real(0.5) * dt;
+    const auto g = gravity;
+    const auto v = p.v, f = p.f;
+    const auto omega = p.omega, torque = p.torque;
+    const auto species = p.species;
+    const auto inv_mass = table.inv_mass, inv_inertia = table.inv_inertia;
+    Kokkos::parallel_for(
+        "verlet::second_half", Policy(0, p.n), KOKKOS_LAMBDA(const int i) {
+          capture_before_if_constexpr(omega, torque, inv_inertia);
+          const int s = species(i);
+          const Real im = inv_mass(s);
+          for (int d = 0; d < Dim; ++d) v(i, d) += half * (f(i, d) * im + g[d]);
+          if constexpr (V::friction) omega(i) += half * torque(i) * inv_inertia(s);
+        });
+  }
+};
+
+}  // namespace granshock
