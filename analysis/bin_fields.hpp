@@ -1,4 +1,4 @@
-// Per-bin fields from the accumulated sums (DESIGN.md 2.3; the paper's eqs. 3-8). With S
+// Per-bin fields from the accumulated sums (docs/fields.md; the paper's eqs. 3-8). With S
 // the samples, V the bin area and, per species a, N_a = sum of counts, C_a = sum of
 // velocities and K_a = sum of c (x) c over all samples:
 //   n_a = N_a / (S V),  varrho_a = m_a n_a,  phi = sum_a n_a pi d_a^2 / 4

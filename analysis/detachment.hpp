@@ -1,4 +1,4 @@
-// The detachment (stand-off) length delta on the stagnation line (DESIGN.md 2.3; the
+// The detachment (stand-off) length delta on the stagnation line (docs/fields.md; the
 // paper's Fig. 1 and Fig. 6): the distance from the shock front, found on the fine
 // stagnation-line profile with the threshold rule of front_crossing.hpp, to the cylinder's
 // upstream surface y_c - R. Its statistical uncertainty comes from block averages: delta is

@@ -6,6 +6,7 @@
 
 #include "block_error.hpp"
 #include "field_sampling_check.hpp"
+#include "field_sums_file.hpp"
 #include "iso_lines.hpp"
 #include "run_file.hpp"
 #include "scene.hpp"

@@ -1,4 +1,4 @@
-// Everything `granshock fields` derives from a run's bin sums (DESIGN.md 2.3): the fields,
+// Everything `granshock fields` derives from a run's bin sums (docs/fields.md): the fields,
 // the upstream state and Ma_inf, the sonic line, the shock front and its angle, the
 // detachment length with its uncertainty, the equation-of-state check and the inflow
 // against its target. A number that cannot be determined is NaN with a reason next to it.

@@ -1,6 +1,6 @@
-// What the field analysis needs to know about a run's scene (DESIGN.md 2.2-2.3): the
-// species' masses and diameters, the restitution and mass definition of the sound speed,
-// the inflow, the domain and the obstacle. Built from the resolved scene in run.h5.
+// What the field analysis needs to know about a run's scene (docs/design.md, "The bow-shock scene";
+// docs/fields.md): the species' masses and diameters, the restitution and mass definition of the
+// sound speed, the inflow, the domain and the obstacle. Built from the resolved scene in run.h5.
 #pragma once
 
 #include <optional>
@@ -22,7 +22,7 @@ struct FieldPhysics {
   MassDefinition mass_definition = MassDefinition::mixture_mean;
   double d = 1e-3;  // the scene's length unit, m
 
-  // Inflow (DESIGN.md 2.2).
+  // Inflow (docs/design.md, "The bow-shock scene").
   double inflow_speed = 0;     // U, m/s along +y
   double inflow_phi = 0.1;     // phi_inf asked for
   double inflow_sigma = 0;     // velocity fluctuation per component, m/s

@@ -9,6 +9,7 @@
 #include "bin_sums.hpp"
 #include "detachment_table.hpp"
 #include "field_analysis.hpp"
+#include "field_sums_file.hpp"
 #include "fields_output.hpp"
 #include "figures.hpp"
 #include "run_file.hpp"

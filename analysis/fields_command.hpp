@@ -1,5 +1,5 @@
-// `granshock fields DIR... [--out DIR]` (DESIGN.md section 3): recompute the fields,
-// derived quantities, figures and summary keys from each DIR/run.h5.
+// `granshock fields DIR... [--out DIR]` (docs/design.md, "The command-line contract"): recompute
+// the fields, derived quantities, figures and summary keys from each DIR/run.h5.
 #pragma once
 
 #include <filesystem>

@@ -1,5 +1,5 @@
 // Where phi rises through the shock along one line of bins, searched from upstream
-// (DESIGN.md 2.3): the rule shared by the shock front (one bin column at a time) and the
+// (docs/fields.md): the rule shared by the shock front (one bin column at a time) and the
 // detachment length (the stagnation-line profile). Rules and reasons: docs/fields.md.
 #pragma once
 

@@ -1,5 +1,5 @@
 // Iso-lines of a field sampled on the nodes of a regular grid, by marching squares: the
-// sonic line Ma = 1 (DESIGN.md 2.3) is iso_lines(Ma, ..., 1) on the bin centres.
+// sonic line Ma = 1 (docs/fields.md) is iso_lines(Ma, ..., 1) on the bin centres.
 #pragma once
 
 #include <vector>

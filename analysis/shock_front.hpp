@@ -1,4 +1,4 @@
-// The bow-shock front on the bin grid (DESIGN.md 2.3): for each bin column the position
+// The bow-shock front on the bin grid (docs/fields.md): for each bin column the position
 // where phi rises through the threshold (front_crossing.hpp) and the position of the
 // steepest rise, searched from the reference row beyond the insertion strip towards the
 // obstacle; both as polylines; and the far-field shock angle on each flank.

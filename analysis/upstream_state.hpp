@@ -3,7 +3,7 @@
 // bins from the inlet", and Ma_inf = U_inf / a_inf (eq. 5) with U_inf the inflow speed.
 // The first bin row overlaps the insertion strip, where particles appear with the inflow's
 // fluctuation and the area fraction builds up batch by batch, so the same average is also
-// taken over the two rows that start one bin beyond the strip (DESIGN.md 2.3).
+// taken over the two rows that start one bin beyond the strip (docs/fields.md).
 #pragma once
 
 #include <string>

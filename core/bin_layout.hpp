@@ -1,4 +1,4 @@
-// The layout of the field accumulators (DESIGN.md 2.3), shared by the device kernels that
+// The layout of the field accumulators (docs/fields.md), shared by the device kernels that
 // fill them during a run and the analysis that turns them into fields.
 //
 // Per bin and per species a, every sample adds

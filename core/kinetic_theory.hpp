@@ -1,4 +1,4 @@
-// Kinetic-theory relations of the paper's section 2 (DESIGN.md 2.3) for a granular gas
+// Kinetic-theory relations of the paper's section 2 (docs/fields.md) for a granular gas
 // of dimension Dim with area (2-D) or volume fraction phi and restitution e:
 //   g(phi) = (16 - 7 phi) / (16 (1 - phi)^2)                (Henderson 1975, 2-D disks)
 //   F(phi) = 1 + (Dim - 1)(1 + e) phi g(phi)

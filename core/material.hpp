@@ -1,4 +1,4 @@
-// Materials and particle species (DESIGN.md section 2). SI units throughout.
+// Materials and particle species (docs/design.md, "Particles and materials"). SI units throughout.
 #pragma once
 
 #include <string>

@@ -1,4 +1,4 @@
-// Effective properties of a contact pair (DESIGN.md section 2.1, LIGGGHTS `hertz`):
+// Effective properties of a contact pair (docs/design.md, "Contact models"; LIGGGHTS `hertz`):
 //   1/Y* = (1-nu_i^2)/E_i + (1-nu_j^2)/E_j
 //   1/G* = 2(2-nu_i)(1+nu_i)/E_i + 2(2-nu_j)(1+nu_j)/E_j
 //   1/R* = 1/r_i + 1/r_j,  1/m* = 1/m_i + 1/m_j,  beta = ln e / sqrt(ln^2 e + pi^2)

@@ -1,5 +1,5 @@
-// A bow-shock scene (DESIGN.md 2.2): the physics (SolverSetup), the inflow, and how
-// long to run and what to write. Parsed from TOML by io/scene_file.hpp.
+// A bow-shock scene (docs/design.md, "The bow-shock scene"): the physics (SolverSetup), the inflow,
+// and how long to run and what to write. Parsed from TOML by io/scene_file.hpp.
 #pragma once
 
 #include <cstdint>
@@ -66,7 +66,7 @@ struct Scene {
   double mean_restitution() const;
 };
 
-// Computes inflow.sigma from the given sigma or from target_mach (DESIGN.md 2.3).
+// Computes inflow.sigma from the given sigma or from target_mach (docs/fields.md).
 void resolve_inflow(Scene& scene);
 
 }  // namespace granshock

@@ -82,7 +82,7 @@ class Solver {
   virtual RemovalCounts removed() const = 0;
   virtual int next_id() const = 0;
 
-  // Field sampling (DESIGN.md 2.3): configure once, then add samples to a block.
+  // Field sampling (docs/fields.md): configure once, then add samples to a block.
   virtual void configure_sampling(const FieldSampling& sampling) = 0;
   virtual void sample_fields(int block) = 0;
   // The sums as host arrays ([blocks][ny][nx][q] and [blocks][n][q]), and their restore.

@@ -8,7 +8,7 @@ struct TimeSeriesRow {
   double time = 0;            // s
   long particles = 0;         // present in the domain
   double kinetic_energy = 0;  // J (translational + rotational)
-  double temperature = 0;     // mixture granular temperature, J (DESIGN.md 2.3, whole domain)
+  double temperature = 0;     // mixture granular temperature, J (docs/fields.md, whole domain)
   long contacts = 0;
   long inserted = 0;        // cumulative since the start of the run
   long deleted_outlet = 0;  // cumulative, through y > L

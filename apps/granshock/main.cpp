@@ -1,4 +1,4 @@
-// granshock: the command-line program (DESIGN.md section 3).
+// granshock: the command-line program (docs/design.md, "The command-line contract").
 #include <CLI/CLI.hpp>
 #include <Kokkos_Core.hpp>
 #include <csignal>

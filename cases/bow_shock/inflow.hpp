@@ -1,5 +1,5 @@
-// The inflow of a bow-shock scene (DESIGN.md 2.2): particles enter through the strip
-// y in [0, strip] at the upstream state (phi_inf, U, sigma, number fractions).
+// The inflow of a bow-shock scene (docs/design.md, "The bow-shock scene"): particles enter through
+// the strip y in [0, strip] at the upstream state (phi_inf, U, sigma, number fractions).
 //
 // Every strip/U seconds a batch of n_inf W strip particles is placed uniformly in the
 // strip: the batch before has moved one strip length downstream by then, so the batches

@@ -1,19 +1,17 @@
 // `granshock run SCENE.toml`: simulates a bow-shock scene and writes its run directory
-// (DESIGN.md section 3): run.h5 (+ run.xmf), checkpoint.h5 and summary.json.
+// (docs/design.md, "The command-line contract"): run.h5 (+ run.xmf), checkpoint.h5 and
+// summary.json.
 #pragma once
 
 #include <filesystem>
 #include <stdexcept>
 #include <string>
+
 #include <vector>
+#include "run_observables.hpp"  // NumericalFailure
+#include "scene.hpp"
 
 namespace granshock {
-
-// A run that blew up numerically (NaN state, exploding energy): exit code 4.
-class NumericalFailure : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 struct RunOptions {
   std::filesystem::path scene_file;
@@ -36,6 +34,9 @@ struct RunCheck {
   std::vector<std::string> warnings;
 };
 RunCheck check_run(const RunOptions& options);
+
+// The run directory: --out, or runs/<scene name>.
+std::filesystem::path run_directory_of(const RunOptions& options, const Scene& scene);
 
 // Returns the process exit code: 0 done (or stopped by --stop-after-steps), 130/143
 // interrupted by SIGINT/SIGTERM after writing a checkpoint. Throws UserError for bad input.

@@ -8,7 +8,7 @@
 // ones) without a reallocation each step. Vectors are View<Real*[Dim]>: contiguous
 // components per particle on the host (LayoutRight), one array per component on a GPU
 // (LayoutLeft), each the coalesced layout for its backend. A frictionless scene allocates
-// no rotation and no contact history (DESIGN.md section 5: model only what is needed).
+// no rotation and no contact history (docs/design.md, "The variant table").
 #pragma once
 
 #include <Kokkos_Core.hpp>

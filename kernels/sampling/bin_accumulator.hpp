@@ -1,4 +1,4 @@
-// Field sampling on the device (DESIGN.md 2.3): every sample adds, per bin and species,
+// Field sampling on the device (docs/fields.md): every sample adds, per bin and species,
 // the count and the velocity moments of the particles in it, and per bin the contact
 // virial, to the sums of the current block (layout: core/bin_layout.hpp). Two strategies
 // for the scattered additions, chosen at compile time and measured against each other

@@ -1,4 +1,4 @@
-// Field computation from synthetic sums (DESIGN.md 2.3): a uniform flow whose per-species
+// Field computation from synthetic sums (docs/fields.md): a uniform flow whose per-species
 // Maxwellian moments are known exactly gives n_a, u, T_a, T and phi exactly; a state that
 // satisfies the equation of state gives no EOS deviation; sparse bins are masked.
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 // Synthetic particle states with known fields give n_a, u, T_a, T, phi in every bin within
-// their statistical tolerance (DESIGN.md 2.3), through the REAL device accumulation: K
+// their statistical tolerance (docs/fields.md), through the REAL device accumulation: K
 // independent particle states are generated on the host, handed to a solver
 // (set_particles) and sampled on the device (sample_fields); the solver's sums
 // (field_sums) then go through compute_bin_fields (analysis/) like a run's sums do.

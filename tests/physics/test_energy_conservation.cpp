@@ -2,16 +2,16 @@
 // with the Hertz contact law must conserve kinetic + elastic energy over 10^4 collisions,
 // and the error must shrink faster than first order in dt.
 //
-// Scene: the paper's steel/aluminium mixture (DESIGN.md section 2), equimolar, 256
-// particles in a periodic box at area fraction 0.1, both Young's moduli scaled down
+// Scene: the paper's steel/aluminium mixture (docs/design.md, "Particles and materials"),
+// equimolar, 256 particles in a periodic box at area fraction 0.1, both Young's moduli scaled down
 // 1000x. Softening lengthens every contact by 1000^(2/5) = 16x and so makes the test 16x
 // cheaper; the largest overlap (at the fastest impact, aluminium-aluminium) is then
 // about 9 % of d, typical ones 3 %: still a dilute gas of short binary contacts.
 //
 // Time step. The stiffest pair is the one with the shortest Hertz collision time
-// t_c = 2.87 (m*^2 / (R* Y*^2 v))^(1/5) (DESIGN.md 2.1) at the fastest impact speed. In an
-// equilibrium gas the normal impact speed w of colliding pairs i-j has the flux-weighted
-// (Rayleigh) distribution P(w > x) = exp(-x^2 / (2 s^2)), s^2 = T/m_i + T/m_j (2-D
+// t_c = 2.87 (m*^2 / (R* Y*^2 v))^(1/5) (docs/design.md, "Contact models") at the fastest impact
+// speed. In an equilibrium gas the normal impact speed w of colliding pairs i-j has the
+// flux-weighted (Rayleigh) distribution P(w > x) = exp(-x^2 / (2 s^2)), s^2 = T/m_i + T/m_j (2-D
 // granular temperature T, equal for both species here). The speed exceeded by one
 // impact in 10^4, x = s sqrt(2 ln 10^4) = 4.29 s, for the lightest pair
 // (aluminium-aluminium, largest s) is taken as "the fastest impact" of the run, and
@@ -121,7 +121,7 @@ ElasticGas make_elastic_gas() {
 // disks of equal diameter sigma at temperature T: pairs i-j collide at
 //   n_i n_j (2 sigma) g(phi) <|v_ij|>,  <|v_ij|> = sqrt(pi T / (2 mu_ij)),
 // halved for i = j, with g(phi) = (16 - 7 phi) / (16 (1 - phi)^2) (Henderson 1975, as
-// in DESIGN.md 2.3). For one species this is the familiar per-particle frequency
+// in docs/fields.md). For one species this is the familiar per-particle frequency
 // 2 n sigma g sqrt(pi T / m) in 2-D (Brilliantov & Poeschel, Kinetic Theory of Granular
 // Gases, Oxford 2004).
 double enskog_collision_rate(const ElasticGas& gas) {

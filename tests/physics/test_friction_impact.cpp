@@ -72,7 +72,7 @@ Impact simulate(double vn, double vt) {
 //   m x'' = -Fn,  Fn = max(0, 4/3 Y* sqrt(R*) x^(3/2) + gn x'),
 //   u' = -(1/m + r^2/I) Ft,  xi' = u,  spring -kt xi held at |kt xi| <= mu Fn,
 //   Ft = -kt xi - gt u capped at mu Fn, with kt = 8 G* sqrt(R* x) and gn, gt from beta
-//   (DESIGN.md 2.1; the spring cap as in LIGGGHTS' tangential history model).
+//   (docs/design.md, "Contact models"; the spring cap as in LIGGGHTS' tangential history model).
 double reference_tangential_impulse(double vn, double vt) {
   const double m = 7850.0 * M_PI * kD * kD * kD / 6.0;
   const double inv_y = (1 - 0.303 * 0.303) / 210e9 + (1 - 0.33 * 0.33) / 69e9;

@@ -17,7 +17,8 @@ using namespace granshock;
 namespace {
 
 // The pair's effective constants, computed here from the paper's material data
-// (DESIGN.md 2.1) so that the reference shares nothing with the solver but the formulas.
+// (docs/design.md, "Contact models") so that the reference shares nothing with the solver but the
+// formulas.
 struct Reference {
   double youngs_star, radius_star, mass_star;
 };
@@ -42,7 +43,8 @@ struct ContactOutcome {
 
 // Integrates m* x'' = -F(x, x') for the overlap x with x(0) = 0, x'(0) = v, where
 // F = 4/3 Y* sqrt(R*) x^(3/2) + 2 sqrt(5/6) |beta| sqrt(2 Y* sqrt(R* x) m*) x'
-// (the hertz law of DESIGN.md 2.1 written for the overlap), until x returns to 0.
+// (the hertz law of docs/design.md, "Contact models" written for the overlap), until x returns to
+// 0.
 ContactOutcome integrate_contact(const Reference& p, double e, double v, bool limit_force) {
   const double beta = std::log(e) / std::sqrt(std::log(e) * std::log(e) + M_PI * M_PI);
   const auto accel = [&](double x, double xdot) {

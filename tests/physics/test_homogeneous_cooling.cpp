@@ -14,7 +14,7 @@
 //       dT/dt = -(1 - e^2) n sigma g(phi) sqrt(pi / m) T^(3/2),
 //     whose solution is Haff's law T(t) = T0 / (1 + t / tau)^2 with
 //       1 / tau = (1 - e^2) n sigma g(phi) sqrt(pi T0 / m) / 2,
-//     g(phi) = (16 - 7 phi) / (16 (1 - phi)^2) (Henderson 1975, as in DESIGN.md 2.3).
+//     g(phi) = (16 - 7 phi) / (16 (1 - phi)^2) (Henderson 1975, as in docs/fields.md).
 //   Equivalently T^(-1/2) = T0^(-1/2) + s t with the T0-independent slope
 //       s = (1 - e^2) n sigma g(phi) sqrt(pi / m) / 2,
 //   so the test fits a straight line to T^(-1/2)(t) and reports tau = 1 / (s sqrt(T0)).
@@ -144,10 +144,10 @@ TEST(HomogeneousCooling, HaffLawMatchesKineticTheory) {
   const GasState initial = measure(gas, mass, length);
   const double t0 = initial.temperature;
 
-  // Time step: t_c / 50 (DESIGN.md's safe step) at the impact speed exceeded by one
-  // collision in 10^4 at the initial temperature (the flux-weighted normal speed w has
-  // P(w > x) = exp(-x^2 / (2 s^2)), s^2 = 2 T / m); the gas only cools from there. At
-  // this step the Verlet-integrated contact restores e = 0.9 to within 1e-4 (a direct
+  // Time step: t_c / 50 (well inside the guard's t_c/10 warning, docs/contact_model.md) at the
+  // impact speed exceeded by one collision in 10^4 at the initial temperature (the flux-weighted
+  // normal speed w has P(w > x) = exp(-x^2 / (2 s^2)), s^2 = 2 T / m); the gas only cools from
+  // there. At this step the Verlet-integrated contact restores e = 0.9 to within 1e-4 (a direct
   // integration of the two-particle contact law, averaged over where in a step the
   // contact begins), which changes 1 - e^2 by < 0.1 %.
   const double v_fast = std::sqrt(2 * t0 / mass) * std::sqrt(2 * std::log(1e4));

@@ -192,7 +192,7 @@ TEST(RunDefaultScene, FormsADenseRegionInFrontOfTheObstacle) {
   EXPECT_GE(phi, 0.2);
 }
 
-// DESIGN.md section 4: past the stable limit (forced), the run does not produce garbage
+// docs/design.md, "Stability": past the stable limit (forced), the run does not produce garbage
 // silently: it stops with a diagnosis naming dt and t_c.
 TEST(RunStability, ForcedUnstableStepStopsWithADiagnosis) {
   TempDir tmp;

@@ -1,6 +1,6 @@
 // Effective pair properties and collision times against hand calculations from the
-// formulas of DESIGN.md 2.1 with the paper's materials (numbers computed separately,
-// to 6+ significant digits; tolerances are relative 1e-9 unless stated).
+// formulas of docs/design.md, "Contact models" with the paper's materials (numbers computed
+// separately, to 6+ significant digits; tolerances are relative 1e-9 unless stated).
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,9 +1,7 @@
-#include "bin_sums.hpp"
+#include "field_sums_file.hpp"
 
 #include <cmath>
 #include <limits>
-#include <numeric>
-#include <stdexcept>
 #include <string>
 
 #include "run_file.hpp"
@@ -11,82 +9,31 @@
 
 namespace granshock {
 
-BinLayout BinSums::layout() const {
-  BinLayout l;
-  l.n_species = n_species;
-  l.nx = nx;
-  l.ny = ny;
-  l.x0 = x0;
-  l.y0 = y0;
-  l.bin_size = dx;
-  l.blocks = blocks;
-  return l;
-}
-
-double BinSums::total_samples() const {
-  return std::accumulate(samples.begin(), samples.end(), 0.0);
-}
-
-double BinSums::pooled(int iy, int ix, int q) const {
-  const BinLayout l = layout();
-  double s = 0;
-  for (int b = 0; b < blocks; ++b) s += sums[static_cast<std::size_t>(l.offset(b, iy, ix, q))];
-  return s;
-}
-
-BinSums BinSums::block(int b) const {
-  if (b < 0 || b >= blocks)
-    throw std::invalid_argument("BinSums::block: no block " + std::to_string(b));
-  BinSums out = *this;
-  out.blocks = 1;
-  const std::size_t per_block =
-      static_cast<std::size_t>(bins()) * static_cast<std::size_t>(quantities());
-  out.sums.assign(sums.begin() + static_cast<long>(per_block * static_cast<std::size_t>(b)),
-                  sums.begin() + static_cast<long>(per_block * static_cast<std::size_t>(b + 1)));
-  out.samples = {samples[static_cast<std::size_t>(b)]};
-  return out;
-}
-
-BinSums BinSums::pooled_blocks() const {
-  BinSums out = *this;
-  out.blocks = 1;
-  const std::size_t per_block =
-      static_cast<std::size_t>(bins()) * static_cast<std::size_t>(quantities());
-  out.sums.assign(per_block, 0.0);
-  for (int b = 0; b < blocks; ++b)
-    for (std::size_t k = 0; k < per_block; ++k)
-      out.sums[k] += sums[per_block * static_cast<std::size_t>(b) + k];
-  out.samples = {total_samples()};
-  return out;
-}
-
-BinSums BinSums::column(int ix) const {
-  if (ix < 0 || ix >= nx)
-    throw std::invalid_argument("BinSums::column: no column " + std::to_string(ix));
-  BinSums out = *this;
-  out.nx = 1;
-  out.x0 = x0 + ix * dx;
-  out.sums.clear();
-  const BinLayout l = layout();
-  for (int b = 0; b < blocks; ++b)
-    for (int iy = 0; iy < ny; ++iy)
-      for (int q = 0; q < quantities(); ++q)
-        out.sums.push_back(sums[static_cast<std::size_t>(l.offset(b, iy, ix, q))]);
-  return out;
-}
-
-void BinSums::check_consistent() const {
-  if (n_species < 1 || nx < 1 || ny < 1 || blocks < 1)
-    throw std::invalid_argument("BinSums: species, bins and blocks must be positive");
-  if (!(dx > 0) || !(dy > 0)) throw std::invalid_argument("BinSums: bin sides must be positive");
-  const std::size_t expected = static_cast<std::size_t>(blocks) * static_cast<std::size_t>(bins()) *
-                               static_cast<std::size_t>(quantities());
-  if (sums.size() != expected)
-    throw std::invalid_argument("BinSums: " + std::to_string(sums.size()) + " sums, expected " +
-                                std::to_string(expected));
-  if (samples.size() != static_cast<std::size_t>(blocks))
-    throw std::invalid_argument("BinSums: " + std::to_string(samples.size()) +
-                                " sample counts for " + std::to_string(blocks) + " blocks");
+void write_field_sums(RunFile& f, const FieldSumsRecord& r) {
+  const BinLayout& g = r.sampling.grid;
+  const std::vector<double> samples(r.samples.begin(), r.samples.end());
+  f.write_array("/fields/grid/sums", r.grid_sums, {g.blocks, g.ny, g.nx, g.quantities()});
+  f.write_array("/fields/grid/samples", samples, {g.blocks});
+  f.write_attribute("/fields/grid", "nx", long(g.nx));
+  f.write_attribute("/fields/grid", "ny", long(g.ny));
+  f.write_attribute("/fields/grid", "blocks", long(g.blocks));
+  f.write_attribute("/fields/grid", "n_species", long(g.n_species));
+  f.write_attribute("/fields/grid", "x0", g.x0);
+  f.write_attribute("/fields/grid", "y0", g.y0);
+  f.write_attribute("/fields/grid", "bin_size", g.bin_size);
+  f.write_attribute("/fields/grid", "production_start", r.production_start);
+  f.write_attribute("/fields/grid", "production_end", r.production_end);
+  f.write_attribute("/fields/grid", "sample_every", r.sample_every);
+  const ProfileLayout& p = r.sampling.profile;
+  if (p.n > 0) {
+    f.write_array("/fields/profile/sums", r.profile_sums, {g.blocks, p.n, g.quantities()});
+    f.write_array("/fields/profile/samples", samples, {g.blocks});
+    f.write_attribute("/fields/profile", "n", long(p.n));
+    f.write_attribute("/fields/profile", "x_lo", p.x_lo);
+    f.write_attribute("/fields/profile", "x_hi", p.x_hi);
+    f.write_attribute("/fields/profile", "y0", p.y0);
+    f.write_attribute("/fields/profile", "dy", p.dy);
+  }
 }
 
 namespace {

@@ -1,5 +1,6 @@
-// The field accumulators of a run as `granshock run` stores them in run.h5 (DESIGN.md 2.3,
-// layout of each bin's quantities in core/bin_layout.hpp): per block, bin and quantity a
+// The field accumulators of a run as `granshock run` stores them in run.h5 (docs/fields.md;
+// layout of each bin's quantities in core/bin_layout.hpp; the file's reader and writer are
+// io/field_sums_file.hpp): per block, bin and quantity a
 // SUM over all samples of that block, and the number of samples of each block. Two sets
 // exist: the coarse grid over the whole domain (/fields/grid) and the finer stagnation-line
 // profile (/fields/profile), a strip x in [x_lo, x_hi] cut along y into bins of dy.
@@ -10,8 +11,6 @@
 #include "bin_layout.hpp"
 
 namespace granshock {
-
-class RunFile;
 
 struct BinSums {
   int n_species = 2;
@@ -45,12 +44,5 @@ struct BinSums {
   // Throws std::invalid_argument when sizes and shape disagree.
   void check_consistent() const;
 };
-
-// Read from run.h5. Throw UserError naming the file and the object when the sums are
-// missing (a run without a production window) or have an inconsistent shape.
-BinSums read_grid_sums(const RunFile& run);
-BinSums read_profile_sums(const RunFile& run);
-// Whether run.h5 holds a stagnation-line profile.
-bool has_profile_sums(const RunFile& run);
 
 }  // namespace granshock

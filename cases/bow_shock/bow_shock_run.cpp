@@ -1,0 +1,269 @@
+#include "bow_shock_run.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <csignal>
+#include <iostream>
+
+#include "atomic_file.hpp"
+#include "checkpoint_checks.hpp"
+#include "checkpoint_file.hpp"
+#include "field_sums_file.hpp"
+#include "fields_command.hpp"
+#include "run_checks.hpp"
+#include "run_observables.hpp"
+#include "run_state.hpp"
+#include "run_summary.hpp"
+#include "user_error.hpp"
+#include "xdmf_writer.hpp"
+
+namespace granshock {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+volatile std::sig_atomic_t g_signal = 0;
+extern "C" void on_signal(int sig) {
+  g_signal = sig;
+}
+
+// Intervals longer than the run act once, at its end: clamping them to the duration keeps
+// the step count in range (run_checks.hpp bounds duration / dt).
+long every_seconds(double interval, double duration, double dt) {
+  return std::max(1L, long(std::llround(std::min(interval, duration) / dt)));
+}
+
+}  // namespace
+
+BowShockRun::BowShockRun(const RunOptions& o, LoadedScene loaded)
+    : options_(o),
+      loaded_(std::move(loaded)),
+      scene_(loaded_.scene),
+      inflow_(scene_),
+      sampling_(scene_) {}
+
+int BowShockRun::execute() {
+  dir_ = run_directory_of(options_, scene_);
+  const std::vector<std::string> warnings = check_scene_before_run(scene_, options_.force);
+  const DirectoryMode mode = options_.resume      ? DirectoryMode::resume
+                             : options_.overwrite ? DirectoryMode::overwrite
+                                                  : DirectoryMode::create;
+  RunDirectory::check(dir_, mode);
+  for (const std::string& w : warnings) std::cerr << "granshock: warning: " << w << "\n";
+
+  total_steps_ = scene_.total_steps();
+  series_.every =
+      every_seconds(scene_.run.series_interval_s, scene_.run.duration_s, scene_.setup.dt);
+  snapshots_.every =
+      every_seconds(scene_.run.snapshot_interval_s, scene_.run.duration_s, scene_.setup.dt);
+  checkpoints_.every =
+      every_seconds(scene_.run.checkpoint_interval_s, scene_.run.duration_s, scene_.setup.dt);
+  solver_ = make_solver(scene_.setup, scene_.capacity_estimate());
+  solver_->configure_sampling(sampling_.layout());
+  samples_.assign(std::size_t(sampling_.blocks()), 0);
+
+  // Every check is done: from here on the run owns the directory (and holds its lock).
+  run_directory_.emplace(RunDirectory::claim(dir_, mode));
+  if (options_.resume) {
+    resume();
+  } else {
+    start_fresh();
+  }
+  first_step_ = solver_->steps_done();
+  meter_.emplace(first_step_, total_steps_, scene_.run.progress_interval_s);
+
+  std::signal(SIGINT, on_signal);
+  std::signal(SIGTERM, on_signal);
+  try {
+    return advance_to_end();
+  } catch (const UserError& e) {
+    // In the loop these are failed writes (a full disk): say what survives.
+    throw UserError(fmt::format(
+        "{}; {}", e.what(),
+        last_checkpoint_step_ >= 0
+            ? fmt::format("checkpoint.h5 (step {}) is intact: make room and continue with "
+                          "--resume",
+                          last_checkpoint_step_)
+            : std::string("no checkpoint had been written yet")));
+  }
+}
+
+// The time loop from the current step to the end, a signal or --stop-after-steps.
+int BowShockRun::advance_to_end() {
+  long step = first_step_;
+  while (step < total_steps_) {
+    // Advance to the next event (insertion, output) or a slice of about 0.25 s of wall
+    // time, so that progress and signals are answered promptly.
+    long next = std::min(total_steps_, step + meter_->steps_per(0.25, 50));
+    next = std::min(next, (step / inflow_.period_steps() + 1) * inflow_.period_steps());
+    for (const Schedule* s : {&series_, &snapshots_, &checkpoints_})
+      next = std::min(next, s->next_after(step));
+    next = std::min(next, sampling_.next_after(step));
+    if (options_.stop_after_steps > 0)
+      next = std::min(next, first_step_ + options_.stop_after_steps);
+    particle_steps_ += double(solver_->size()) * double(next - step);
+    solver_->advance(next - step);
+    step = next;
+    actions_at(step);
+    warn_if_inflow_falls_short();
+    if (meter_->due() && !options_.quiet)
+      meter_->report(step, step * scene_.setup.dt, long(solver_->size()),
+                     solver_->diagnostics().contacts, particle_steps_, inflow_note());
+    if (g_signal != 0) {
+      write_checkpoint_now();
+      finish(false);
+      std::cerr << fmt::format(
+          "granshock: interrupted at step {}; checkpoint written, continue with --resume\n", step);
+      return 128 + int(g_signal);
+    }
+    if (options_.stop_after_steps > 0 && step >= first_step_ + options_.stop_after_steps &&
+        step < total_steps_) {
+      write_checkpoint_now();
+      finish(false);
+      std::cerr << fmt::format(
+          "granshock: stopped after {} steps at step {}; continue with --resume\n",
+          options_.stop_after_steps, step);
+      return 0;
+    }
+  }
+  finish(true);
+  return 0;
+}
+
+void BowShockRun::start_fresh() {
+  run_file_.emplace(
+      RunFile::create(dir_ / "run.h5", loaded_.as_given, loaded_.resolved, scene_.setup.dim));
+  solver_->set_particles(HostParticles{});
+  inflow_.prefill(*solver_);
+  actions_at(0);
+}
+
+// Everything is checked before anything changes: a refused checkpoint leaves the run
+// directory as it was.
+void BowShockRun::resume() {
+  const fs::path path = dir_ / "checkpoint.h5";
+  CheckpointExtras extras;
+  const SolverState state = read_checkpoint(path, extras);
+  if (extras.scene_resolved != loaded_.resolved) {
+    const std::vector<std::string> keys = differing_keys(extras.scene_resolved, loaded_.resolved);
+    throw UserError(fmt::format(
+        "--resume: scene key{} {} differ{} from the run in '{}'; resume with the same scene "
+        "file and --set options (docs/scene_format.md: no key may change on resume)",
+        keys.size() == 1 ? "" : "s", fmt::join(keys, ", "), keys.size() == 1 ? "s" : "",
+        dir_.string()));
+  }
+  try {
+    solver_->import_state(state);
+    check_run(state, extras, run_fit(scene_, inflow_, sampling_, state.step));
+  } catch (const InvalidCheckpoint& e) {
+    throw refuse_checkpoint(path, e);
+  }
+  restore_run_state(extras, *solver_, inflow_, samples_);
+  wall_before_ = extras.wall_seconds_so_far;
+  last_checkpoint_step_ = state.step;
+  run_file_.emplace(RunFile::open_for_resume(dir_ / "run.h5", state.step));
+}
+
+// Everything that happens at a step boundary, in a fixed order (a checkpoint at step s
+// is taken after the insertion and outputs of step s, and a resumed run starts after them).
+void BowShockRun::actions_at(long step) {
+  inflow_.insert_if_due(*solver_, step);
+  if (sampling_.due(step)) {
+    const int block = sampling_.block_of(step);
+    solver_->sample_fields(block);
+    ++samples_[block];
+  }
+  if (series_.due(step) || step == total_steps_) write_series_row(step);
+  if (snapshots_.due(step) || step == total_steps_) write_snapshot(step);
+  if (checkpoints_.due(step) || step == total_steps_) write_checkpoint_now();
+}
+
+void BowShockRun::write_series_row(long step) {
+  const Diagnostics d = solver_->diagnostics();
+  const RemovalCounts removed = solver_->removed();
+  TimeSeriesRow row;
+  row.step = step;
+  row.time = step * scene_.setup.dt;
+  row.particles = long(solver_->size());
+  row.kinetic_energy = d.kinetic_energy + d.rotational_energy;
+  row.temperature = mixture_temperature(scene_, solver_->species_moments());
+  row.contacts = d.contacts;
+  check_health(scene_, step, d, solver_->size());
+  row.inserted = inflow_.inserted();
+  row.deleted_outlet = removed.high[1];
+  row.deleted_inlet = removed.low[1];
+  run_file_->append_time_series(row);
+}
+
+void BowShockRun::write_snapshot(long step) {
+  run_file_->append_snapshot(step, step * scene_.setup.dt, solver_->particles());
+  write_particles_xdmf(dir_ / "run.xmf", "run.h5", run_file_->frames(), run_file_->dim(),
+                       run_file_->particle_capacity());
+}
+
+void BowShockRun::write_checkpoint_now() {
+  const long step = solver_->steps_done();
+  if (step == last_checkpoint_step_) return;
+  const double wall = wall_before_ + (meter_ ? meter_->elapsed_s() : 0.0);
+  const CheckpointExtras extras =
+      pack_run_state(loaded_.resolved, *solver_, inflow_, samples_, wall);
+  run_file_->flush();
+  write_checkpoint(dir_ / "checkpoint.h5", solver_->export_state(), extras);
+  last_checkpoint_step_ = step;
+}
+
+void BowShockRun::finish(bool completed) {
+  FieldSumsRecord sums;
+  sums.sampling = sampling_.layout();
+  sums.grid_sums = solver_->field_sums(false);
+  if (sums.sampling.profile.n > 0) sums.profile_sums = solver_->field_sums(true);
+  sums.samples = samples_;
+  sums.production_start = scene_.run.production_start_s;
+  sums.production_end = scene_.run.duration_s;
+  sums.sample_every = scene_.run.sample_every;
+  write_field_sums(*run_file_, sums);
+  run_file_->flush();
+  const double wall = wall_before_ + meter_->elapsed_s();
+  const long steps = solver_->steps_done();
+  const nlohmann::json j = run_summary(scene_, *solver_, inflow_, completed,
+                                       {wall, meter_->elapsed_s(), particle_steps_});
+  write_file_atomically(dir_ / "summary.json", j.dump(2) + "\n");
+  if (completed && run_file_) {
+    // The field analysis reads run.h5, which must be closed first.
+    run_file_.reset();
+    if (run_has_field_sums(dir_))
+      fields_command({dir_}, {}, FieldsCommandOptions{true, options_.quiet});
+  }
+  if (completed && !options_.quiet)
+    std::cout << fmt::format(
+        "granshock: {} done: {} steps, {:.4g} s simulated in {:.1f} s wall, {:.3g} "
+        "particle-steps/s, "
+        "{} particles at the end; results in {}\n",
+        scene_.name, steps, steps * scene_.setup.dt, wall,
+        j["particle_steps_per_second"].get<double>(), solver_->size(), dir_.string());
+}
+
+// docs/scene_format.md, "The inflow": a strip that cannot take what the inflow asks for
+// (area fraction near the insertion limit, a shock reaching the inlet) is reported, once,
+// as soon as the shortfall passes InflowController::kShortfallWarning.
+void BowShockRun::warn_if_inflow_falls_short() {
+  if (warned_inflow_ || !inflow_.falls_short()) return;
+  warned_inflow_ = true;
+  std::cerr << fmt::format(
+      "granshock: warning: the inflow falls short: {:.0f} of {:.0f} requested particles "
+      "({:.1f}%) found no room in the insertion strip by t = {:.4g} s; phi_inf will be below "
+      "its target {:g} (summary.json: inflow)\n",
+      inflow_.shortfall(), inflow_.requested(), 100 * inflow_.shortfall() / inflow_.requested(),
+      solver_->time(), scene_.inflow.area_fraction);
+}
+
+std::string BowShockRun::inflow_note() const {
+  if (inflow_.shortfall() < 1.0) return {};
+  return fmt::format("inflow short by {:.0f} ({:.1f}%, backlog {:.0f})", inflow_.shortfall(),
+                     100 * inflow_.shortfall() / inflow_.requested(), inflow_.backlog());
+}
+
+}  // namespace granshock

@@ -1,0 +1,68 @@
+// One bow-shock run (docs/design.md, "The bow-shock case"): the scene's checks, the run
+// directory, the solver, the inflow and the field sampling, driven step by step to the
+// end, a signal or --stop-after-steps, with the outputs of docs/output_format.md at their
+// intervals (time series, snapshots, checkpoints) and the summary and field analysis at
+// the end.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "inflow.hpp"
+#include "progress_meter.hpp"
+#include "run_command.hpp"
+#include "run_directory.hpp"
+#include "run_file.hpp"
+#include "sampling_plan.hpp"
+#include "scene_file.hpp"
+#include "solver.hpp"
+
+namespace granshock {
+
+class BowShockRun {
+ public:
+  BowShockRun(const RunOptions& options, LoadedScene loaded);
+  // The process exit code (run_command.hpp).
+  int execute();
+
+ private:
+  struct Schedule {
+    long every;
+    bool due(long step) const { return every > 0 && step % every == 0; }
+    long next_after(long step) const { return (step / every + 1) * every; }
+  };
+
+  int advance_to_end();
+  void start_fresh();
+  void resume();
+  void actions_at(long step);
+  void write_series_row(long step);
+  void write_snapshot(long step);
+  void write_checkpoint_now();
+  void finish(bool completed);
+  void warn_if_inflow_falls_short();
+  std::string inflow_note() const;
+
+  const RunOptions& options_;
+  LoadedScene loaded_;
+  const Scene& scene_;
+  std::filesystem::path dir_;
+  InflowController inflow_;
+  SamplingPlan sampling_;
+  std::unique_ptr<Solver> solver_;
+  std::optional<RunFile> run_file_;
+  Schedule series_{1}, snapshots_{1}, checkpoints_{1};
+  long total_steps_ = 0, first_step_ = 0;
+  double wall_before_ = 0;     // wall seconds of earlier legs (resumed runs)
+  double particle_steps_ = 0;  // particle-steps of this leg
+  std::vector<long> samples_;  // field samples per block
+  long last_checkpoint_step_ = -1;
+  std::optional<ProgressMeter> meter_;
+  std::optional<RunDirectory> run_directory_;
+  bool warned_inflow_ = false;
+};
+
+}  // namespace granshock

@@ -1,0 +1,78 @@
+#include "run_summary.hpp"
+
+#include <Kokkos_Core.hpp>
+#include <utility>
+
+#include "head_on_collision.hpp"
+#include "run_checks.hpp"
+
+namespace granshock {
+
+nlohmann::json inflow_summary(const InflowController& inflow) {
+  const double requested = inflow.requested();
+  return {{"requested", requested},
+          {"inserted", inflow.inserted()},
+          {"backlog", inflow.backlog()},
+          {"lost", inflow.shortfall() - inflow.backlog()},
+          {"achieved_fraction", requested > 0 ? double(inflow.inserted()) / requested : 1.0},
+          {"falls_short", inflow.falls_short()}};
+}
+
+nlohmann::json effective_restitution_table(const Scene& s) {
+  nlohmann::json out = nlohmann::json::object();
+  const int n = int(s.setup.species.size());
+  for (int a = 0; a < n; ++a) {
+    for (int b = s.setup.obstacle ? -1 : a; b < n; ++b) {
+      if (b >= 0 && b < a) continue;
+      nlohmann::json entry;
+      for (const auto& [label, speed] :
+           {std::pair<const char*, double>{"at_inflow_speed", s.inflow.speed_m_per_s},
+            {"at_fastest_impact", s.fastest_impact_speed()}}) {
+        const CollisionResult r = collide_species(s.setup, a, b, speed, s.setup.dt, true);
+        entry[label] = {{"speed", speed}, {"e_eff", r.e_eff}, {"dt_over_tc", r.dt / r.t_c}};
+        entry["e_in"] = r.e_in;
+        out[r.pair] = entry;
+      }
+    }
+  }
+  return out;
+}
+
+nlohmann::json run_summary(const Scene& s, const Solver& solver, const InflowController& inflow,
+                           bool completed, const RunTimes& times) {
+  const long steps = solver.steps_done();
+  const RemovalCounts removed = solver.removed();
+  const TimeStepAssessment guard = assess_time_step(s);
+  nlohmann::json j;
+  j["scene"] = s.name;
+  j["completed"] = completed;
+  j["steps"] = steps;
+  j["simulated_time"] = steps * s.setup.dt;
+  j["wall_seconds"] = times.wall_seconds;
+  j["particles_final"] = solver.size();
+  j["inserted"] = inflow.inserted();
+  j["inflow"] = inflow_summary(inflow);
+  j["deleted"] = removed.total();
+  j["deleted_outlet"] = removed.high[1];
+  j["deleted_inlet"] = removed.low[1];
+  j["dt"] = s.setup.dt;
+  j["t_c"] = guard.t_c;
+  j["dt_over_tc"] = guard.dt_over_tc();
+  j["impact_speed_for_t_c"] = guard.impact_speed;
+  j["stiffest_pair"] = guard.stiffest_pair;
+  j["contact_model"] = to_string(s.setup.contacts.model);
+  j["inflow_sigma"] = s.inflow.sigma;
+  j["ma_inf_target"] =
+      s.inflow.target_mach ? nlohmann::json(*s.inflow.target_mach) : nlohmann::json();
+  j["variant"] = solver.variant();
+  j["backend"] = Kokkos::DefaultExecutionSpace::name();
+  j["threads"] = Kokkos::DefaultExecutionSpace().concurrency();
+  j["list_builds"] = solver.list_builds();
+  // The rate of this leg only (earlier legs of a resumed run are in wall_seconds).
+  j["particle_steps_per_second"] =
+      times.leg_seconds > 0 ? times.particle_steps / times.leg_seconds : 0.0;
+  j["effective_restitution_at_dt"] = effective_restitution_table(s);
+  return j;
+}
+
+}  // namespace granshock

@@ -1,0 +1,31 @@
+// summary.json of a bow-shock run (docs/output_format.md, "summary.json"): counts, times
+// and speeds, the time step against the contact, the inflow's account, and the effective
+// restitution every pair gets at the run's dt. The field analysis adds its own keys.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "inflow.hpp"
+#include "scene.hpp"
+#include "solver.hpp"
+
+namespace granshock {
+
+struct RunTimes {
+  double wall_seconds = 0;    // all legs of the run (resumed runs)
+  double leg_seconds = 0;     // this leg alone
+  double particle_steps = 0;  // this leg's
+};
+
+nlohmann::json run_summary(const Scene& scene, const Solver& solver, const InflowController& inflow,
+                           bool completed, const RunTimes& times);
+
+// The inflow's account: requested, inserted, backlog, lost (docs/scene_format.md).
+nlohmann::json inflow_summary(const InflowController& inflow);
+
+// The price of the run's time step on the contact law: e_eff of every pair, measured with
+// the same kernels at the run's dt, at the mean inflow speed and at the fastest impact
+// speed the time-step guard assumes.
+nlohmann::json effective_restitution_table(const Scene& scene);
+
+}  // namespace granshock

@@ -1,0 +1,32 @@
+// Field sampling of a bow-shock run (docs/fields.md, "Sampling"): where the bins are
+// (square bins over the domain and, with an obstacle, the fine stagnation-line strip),
+// when samples are taken (every output.sample_every steps of the production window) and
+// which block of the window each sample adds to.
+#pragma once
+
+#include <vector>
+
+#include "bin_layout.hpp"
+#include "scene.hpp"
+
+namespace granshock {
+
+class SamplingPlan {
+ public:
+  explicit SamplingPlan(const Scene& scene);
+
+  const FieldSampling& layout() const { return layout_; }
+  int blocks() const { return layout_.grid.blocks; }
+  long first_step() const { return first_step_; }
+  bool due(long step) const;
+  long next_after(long step) const;  // the next sampled step after `step`
+  int block_of(long step) const;     // the block a sample at `step` adds to
+  // Samples per block taken by the end of `step` (what a checkpoint there must hold).
+  std::vector<long> samples_by(long step) const;
+
+ private:
+  FieldSampling layout_;
+  long first_step_ = 0, total_steps_ = 0, every_ = 1;
+};
+
+}  // namespace granshock
