@@ -52,11 +52,18 @@ std::string ma_target_reason(const FieldPhysics& phys) {
 
 }  // namespace
 
-void set_target_mach(FieldAnalysis& a, double target) {
+void set_target_mach(FieldAnalysis& a, double target, bool at_inlet) {
   a.ma_target = target;
   a.ma_target_reason = std::isfinite(target) ? "" : ma_target_reason(a.physics);
   a.inflow = check_inflow(a.upstream_downstream, a.phi_up_err, a.phi_up_err_reason,
                           a.physics.inflow_phi, a.ma_target, a.ma_target_reason, a.options.inflow);
+  a.inflow.ma_rows = at_inlet ? "inlet" : "beyond_strip";
+  if (!at_inlet || !std::isfinite(target) || !(target > 0)) return;
+  a.inflow.ma_measured = a.upstream_inlet.mach;
+  a.inflow.ma_deviation = a.upstream_inlet.mach / target - 1;
+  a.inflow.ma_deviation_reason = a.upstream_inlet.determined()
+                                     ? ""
+                                     : "no upstream state at the inlet: " + a.upstream_inlet.reason;
 }
 
 FieldAnalysis analyse_fields(const Scene& scene, BinSums grid, std::optional<BinSums> profile,

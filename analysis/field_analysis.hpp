@@ -64,7 +64,9 @@ FieldAnalysis analyse_run_file(const std::filesystem::path& run_h5,
                                const FieldAnalysisOptions& options = {});
 
 // Replaces the target Ma_inf (analyse_fields takes the inflow's nominal one; a run's
-// summary.json may name its own) and redoes the inflow check with it.
-void set_target_mach(FieldAnalysis& analysis, double target);
+// summary.json may name its own) and redoes the inflow check with it. `at_inlet`: the
+// target is meant over the two inlet rows (inflow.mach_at = "inlet_bins"), so the Mach
+// deviation compares those rows; otherwise the rows beyond the strip (docs/fields.md).
+void set_target_mach(FieldAnalysis& analysis, double target, bool at_inlet = false);
 
 }  // namespace granshock

@@ -22,18 +22,24 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The run's own target Mach number (summary.json of `granshock run`), else the inflow's
-// nominal one.
-double target_mach(const fs::path& summary, double nominal) {
+struct RunTarget {
+  double mach;
+  bool at_inlet;  // inflow.mach_at = "inlet_bins"
+};
+
+// The run's own target Mach number and where it is meant (summary.json of `granshock run`),
+// else the inflow's nominal one, meant for the inserted state.
+RunTarget target_mach(const fs::path& summary, double nominal) {
   std::error_code ec;
-  if (!fs::exists(summary, ec)) return nominal;
+  if (!fs::exists(summary, ec)) return {nominal, false};
   std::ifstream in(summary);
   std::stringstream text;
   text << in.rdbuf();
   const nlohmann::json j = nlohmann::json::parse(text.str(), nullptr, false);
-  if (j.is_object() && j.contains("ma_inf_target") && j["ma_inf_target"].is_number())
-    return j["ma_inf_target"].get<double>();
-  return nominal;
+  if (!j.is_object() || !j.contains("ma_inf_target") || !j["ma_inf_target"].is_number())
+    return {nominal, false};
+  const bool at_inlet = j.contains("inflow_mach_at") && j["inflow_mach_at"] == "inlet_bins";
+  return {j["ma_inf_target"].get<double>(), at_inlet};
 }
 
 void make_directory(const fs::path& dir) {
@@ -107,8 +113,8 @@ int fields_command(const std::vector<fs::path>& run_dirs, const fs::path& out,
     const fs::path& dir = run_dirs[i];
     const fs::path dest = (!several && !out.empty()) ? out : dir;
     make_directory(dest);
-    const double target = target_mach(dir / "summary.json", analyses[i].ma_target);
-    set_target_mach(analyses[i], target);
+    const RunTarget target = target_mach(dir / "summary.json", analyses[i].ma_target);
+    set_target_mach(analyses[i], target.mach, target.at_inlet);
     write_fields_outputs(analyses[i], dest);
     const nlohmann::json keys = summary_keys(analyses[i]);
     std::error_code ec;
@@ -116,7 +122,7 @@ int fields_command(const std::vector<fs::path>& run_dirs, const fs::path& out,
         !fs::exists(dest / "summary.json", ec))
       fs::copy_file(dir / "summary.json", dest / "summary.json", ec);
     merge_summary_json(dest / "summary.json", keys);
-    done.push_back({dir, dest, detachment_row(dir, analyses[i], target)});
+    done.push_back({dir, dest, detachment_row(dir, analyses[i], target.mach)});
   }
   if (several) {
     make_directory(out);

@@ -212,6 +212,7 @@ nlohmann::json summary_keys(const FieldAnalysis& a) {
   j["phi_inf_target"] = number_or_null(in.phi_target);
   put("phi_inf_deviation", in.phi_deviation, in.phi_deviation_reason);
   put("ma_inf_deviation", in.ma_deviation, in.ma_deviation_reason);
+  j["ma_inf_deviation_rows"] = in.ma_rows;
   j["inflow_phi_short"] = in.phi_short;
   j["inflow_warning"] = in.warning.empty() ? nlohmann::json() : nlohmann::json(in.warning);
   put("delta_over_D", d.delta_over_d, d.reason);

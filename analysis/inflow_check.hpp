@@ -24,9 +24,10 @@ struct InflowCheck {
   double phi_target = 0, phi_measured = 0, phi_err = 0;  // phi_err: block standard error
   double phi_deviation = 0;                              // phi_measured / phi_target - 1
   double ma_target = 0, ma_measured = 0;
-  double ma_deviation = 0;  // ma_measured / ma_target - 1
-  bool phi_short = false;   // phi_deviation < -phi_shortfall
-  std::string warning;      // one line when phi_short, else empty
+  double ma_deviation = 0;               // ma_measured / ma_target - 1
+  std::string ma_rows = "beyond_strip";  // where ma_measured is taken: "beyond_strip" | "inlet"
+  bool phi_short = false;                // phi_deviation < -phi_shortfall
+  std::string warning;                   // one line when phi_short, else empty
   // Why a number is NaN (empty when it is a number).
   std::string phi_deviation_reason, phi_err_reason, ma_deviation_reason;
 };

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace granshock {
 
@@ -40,6 +41,16 @@ double Scene::expected_particles() const {
 std::size_t Scene::capacity_estimate() const {
   // Bounded so that the conversion is defined; run_checks.cpp refuses scenes near it.
   return std::size_t(std::min(expected_particles(), 1e15));
+}
+
+MachReference parse_mach_reference(const std::string& name) {
+  if (name == "inserted") return MachReference::inserted;
+  if (name == "inlet_bins") return MachReference::inlet_bins;
+  throw std::invalid_argument("unknown inflow.mach_at: " + name);
+}
+
+std::string to_string(MachReference m) {
+  return m == MachReference::inserted ? "inserted" : "inlet_bins";
 }
 
 void resolve_inflow(Scene& s) {

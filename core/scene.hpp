@@ -20,11 +20,19 @@ namespace granshock {
 // method. Requests up to this value are met within a few percent (tests/scene).
 inline constexpr double kMaxInflowAreaFraction = 0.4;
 
+// Where inflow.mach is meant (docs/fields.md, "Three upstream Mach numbers"): the Mach
+// number of the inserted state (sigma from kinetic theory), or the one measured over the
+// first two bin rows, as the paper measures Ma_inf (sigma calibrated before the run).
+enum class MachReference { inserted, inlet_bins };
+MachReference parse_mach_reference(const std::string& name);  // "inserted" | "inlet_bins"
+std::string to_string(MachReference m);
+
 struct InflowSpec {
   double area_fraction = 0.1;           // phi_inf, upstream
   double speed_m_per_s = 1.0;           // U, along +y
   std::optional<double> sigma_m_per_s;  // velocity fluctuation per component, or
   std::optional<double> target_mach;    // the upstream Mach number it should give
+  MachReference mach_at = MachReference::inserted;
   double strip_m = 2e-3;                // insertion strip y in [0, strip]
   std::vector<double> number_fraction;  // per species, sums to 1
 

@@ -420,6 +420,11 @@ LoadedScene parse_scene(const std::string& text, const std::vector<std::string>&
            "give exactly one: sigma (m/s) or mach");
     if (r.has("sigma")) s.inflow.sigma_m_per_s = r.number_in("sigma", 0, INFINITY, false, true);
     if (r.has("mach")) s.inflow.target_mach = r.positive("mach");
+    s.inflow.mach_at =
+        parse_mach_reference(r.choice("mach_at", {"inserted", "inlet_bins"}, "inserted"));
+    if (s.inflow.mach_at == MachReference::inlet_bins && !s.inflow.target_mach)
+      fail("inflow.mach_at", "\"inlet_bins\"",
+           "needs inflow.mach, the Mach number to calibrate sigma for");
     s.inflow.strip_m = r.length("strip", 2 * d);
     if (s.inflow.strip_m < s.setup.max_diameter() || s.inflow.strip_m >= length)
       fail("inflow.strip", fmt::format("{} m", s.inflow.strip_m),

@@ -47,11 +47,14 @@ BowShockRun::BowShockRun(const RunOptions& o, LoadedScene loaded)
 
 int BowShockRun::execute() {
   dir_ = run_directory_of(options_, scene_);
-  const std::vector<std::string> warnings = check_scene_before_run(scene_, options_.force);
+  check_scene_before_run(scene_, options_.force);  // refusals first; warnings below
   const DirectoryMode mode = options_.resume      ? DirectoryMode::resume
                              : options_.overwrite ? DirectoryMode::overwrite
                                                   : DirectoryMode::create;
   RunDirectory::check(dir_, mode);
+  calibrate_inflow();
+  // Again with the calibrated sigma (the fastest impact, so the time-step guard, depend on it).
+  const std::vector<std::string> warnings = check_scene_before_run(scene_, options_.force);
   for (const std::string& w : warnings) std::cerr << "granshock: warning: " << w << "\n";
 
   total_steps_ = scene_.total_steps();
@@ -89,6 +92,34 @@ int BowShockRun::execute() {
                           last_checkpoint_step_)
             : std::string("no checkpoint had been written yet")));
   }
+}
+
+// inflow.mach_at = "inlet_bins" (docs/fields.md, "Three upstream Mach numbers"): sigma is
+// calibrated in the inlet channel before anything is written. The calibration is a pure
+// function of the scene, so a resumed run computes the same sigma; the resolved scene (in
+// run.h5 and the checkpoint) carries it.
+void BowShockRun::calibrate_inflow() {
+  if (scene_.inflow.mach_at != MachReference::inlet_bins) return;
+  if (!options_.quiet)
+    std::cerr << fmt::format(
+        "granshock: calibrating sigma so that Ma over the two inlet bin rows is {:g} "
+        "(inflow.mach_at = \"inlet_bins\")\n",
+        *scene_.inflow.target_mach);
+  calibration_ = calibrate_inlet_mach(scene_);
+  loaded_.scene.inflow.sigma = calibration_->sigma;
+  loaded_.resolved = scene_to_toml(loaded_.scene);
+  const InletMach& last = calibration_->chosen();
+  if (!calibration_->converged)
+    std::cerr << fmt::format(
+        "granshock: warning: the inflow calibration did not converge in {} runs: sigma = {:.4g} "
+        "m/s gives Ma = {:.3f} at the inlet rows against the target {:g}\n",
+        calibration_->iterations.size(), calibration_->sigma, last.mach, calibration_->target);
+  else if (!options_.quiet)
+    std::cerr << fmt::format(
+        "granshock: sigma = {:.4g} m/s (inserted convention: {:.4g}): Ma = {:.3f} +- {:.3f} at "
+        "the inlet rows after {} channel run{}\n",
+        calibration_->sigma, calibration_->sigma_inserted, last.mach, last.mach_err,
+        calibration_->iterations.size(), calibration_->iterations.size() == 1 ? "" : "s");
 }
 
 // The time loop from the current step to the end, a signal or --stop-after-steps.
@@ -228,8 +259,9 @@ void BowShockRun::finish(bool completed) {
   run_file_->flush();
   const double wall = wall_before_ + meter_->elapsed_s();
   const long steps = solver_->steps_done();
-  const nlohmann::json j = run_summary(scene_, *solver_, inflow_, completed,
-                                       {wall, meter_->elapsed_s(), particle_steps_});
+  const nlohmann::json j =
+      run_summary(scene_, *solver_, inflow_, calibration_ ? &*calibration_ : nullptr, completed,
+                  {wall, meter_->elapsed_s(), particle_steps_});
   write_file_atomically(dir_ / "summary.json", j.dump(2) + "\n");
   if (completed && run_file_) {
     // The field analysis reads run.h5, which must be closed first.

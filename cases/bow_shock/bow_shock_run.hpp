@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "inflow.hpp"
+#include "inlet_calibration.hpp"
 #include "progress_meter.hpp"
 #include "run_command.hpp"
 #include "run_directory.hpp"
@@ -36,6 +37,7 @@ class BowShockRun {
   };
 
   int advance_to_end();
+  void calibrate_inflow();
   void start_fresh();
   void resume();
   void actions_at(long step);
@@ -63,6 +65,7 @@ class BowShockRun {
   std::optional<ProgressMeter> meter_;
   std::optional<RunDirectory> run_directory_;
   bool warned_inflow_ = false;
+  std::optional<InletCalibration> calibration_;
 };
 
 }  // namespace granshock

@@ -22,6 +22,7 @@ RunCheck check_run(const RunOptions& o) {
                                    : o.overwrite ? DirectoryMode::overwrite
                                                  : DirectoryMode::create);
   c.resolved_scene = loaded.resolved;
+  c.calibrates_inflow = loaded.scene.inflow.mach_at == MachReference::inlet_bins;
   return c;
 }
 
@@ -29,6 +30,9 @@ int run_scene(const RunOptions& o) {
   if (o.dry_run) {
     const RunCheck c = check_run(o);
     for (const std::string& w : c.warnings) std::cerr << "granshock: warning: " << w << "\n";
+    if (c.calibrates_inflow)
+      std::cerr << "granshock: note: inflow.mach_at = \"inlet_bins\": the run calibrates sigma "
+                   "before it starts; the sigma below is the first guess\n";
     std::cout << c.resolved_scene;
     return 0;
   }

@@ -32,6 +32,7 @@ struct RunCheck {
   std::string resolved_scene;
   std::filesystem::path directory;
   std::vector<std::string> warnings;
+  bool calibrates_inflow = false;  // inflow.mach_at = "inlet_bins"
 };
 RunCheck check_run(const RunOptions& options);
 

@@ -38,8 +38,25 @@ nlohmann::json effective_restitution_table(const Scene& s) {
   return out;
 }
 
+nlohmann::json calibration_summary(const InletCalibration& c) {
+  nlohmann::json iterations = nlohmann::json::array();
+  for (const InletMach& m : c.iterations)
+    iterations.push_back({{"sigma", m.sigma},
+                          {"mach", m.mach},
+                          {"mach_err", m.mach_err},
+                          {"mach_mixture_mean", m.mach_mixture_mean},
+                          {"mach_paper_sum", m.mach_paper_sum},
+                          {"phi", m.phi},
+                          {"simulated_seconds", m.simulated_s}});
+  return {
+      {"mach_at", "inlet_bins"}, {"target", c.target},       {"sigma_inserted", c.sigma_inserted},
+      {"sigma", c.sigma},        {"converged", c.converged}, {"tolerance", c.tolerance},
+      {"iterations", iterations}};
+}
+
 nlohmann::json run_summary(const Scene& s, const Solver& solver, const InflowController& inflow,
-                           bool completed, const RunTimes& times) {
+                           const InletCalibration* calibration, bool completed,
+                           const RunTimes& times) {
   const long steps = solver.steps_done();
   const RemovalCounts removed = solver.removed();
   const TimeStepAssessment guard = assess_time_step(s);
@@ -62,6 +79,8 @@ nlohmann::json run_summary(const Scene& s, const Solver& solver, const InflowCon
   j["stiffest_pair"] = guard.stiffest_pair;
   j["contact_model"] = to_string(s.setup.contacts.model);
   j["inflow_sigma"] = s.inflow.sigma;
+  j["inflow_mach_at"] = to_string(s.inflow.mach_at);
+  j["inflow_calibration"] = calibration ? calibration_summary(*calibration) : nlohmann::json();
   j["ma_inf_target"] =
       s.inflow.target_mach ? nlohmann::json(*s.inflow.target_mach) : nlohmann::json();
   j["variant"] = solver.variant();

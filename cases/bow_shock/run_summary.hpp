@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "inflow.hpp"
+#include "inlet_calibration.hpp"
 #include "scene.hpp"
 #include "solver.hpp"
 
@@ -17,8 +18,13 @@ struct RunTimes {
   double particle_steps = 0;  // this leg's
 };
 
+// `calibration`: the inflow's sigma calibration (inflow.mach_at = "inlet_bins"), or null.
 nlohmann::json run_summary(const Scene& scene, const Solver& solver, const InflowController& inflow,
-                           bool completed, const RunTimes& times);
+                           const InletCalibration* calibration, bool completed,
+                           const RunTimes& times);
+
+// How sigma was calibrated: target, first guess, every iterate, the sigma chosen.
+nlohmann::json calibration_summary(const InletCalibration& calibration);
 
 // The inflow's account: requested, inserted, backlog, lost (docs/scene_format.md).
 nlohmann::json inflow_summary(const InflowController& inflow);

@@ -25,9 +25,12 @@ run() {  # name, scene, overrides...
 }
 
 run default "$scenes/default.toml" time.duration=0.02 time.production_start=0.01
-run paper_d50_u1000 "$scenes/paper/d50_u1000.toml" time.duration=0.004 \
-  time.production_start=0.002 output.sample_every=20 output.snapshot_interval=0.002 \
-  output.series_interval=0.0005 output.checkpoint_interval=0.002
+# The paper case keeps the inflow it was recorded with (the inserted Mach convention; the
+# scene now calibrates sigma at the inlet rows, docs/fields.md), so the check stays short.
+run paper_d50_u1000 "$scenes/paper/d50_u1000.toml" inflow.mach_at=inserted \
+  numerics.mass_definition=mixture_mean time.duration=0.004 time.production_start=0.002 \
+  output.sample_every=20 output.snapshot_interval=0.002 output.series_interval=0.0005 \
+  output.checkpoint_interval=0.002
 /usr/bin/python3 - "$work" "$here/reference.json" "${2:-}" <<'PY'
 import json, sys
 work, reference, mode = sys.argv[1], sys.argv[2], sys.argv[3]
