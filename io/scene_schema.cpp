@@ -1,0 +1,733 @@
+// The scene schema: one table of keys per TOML table of a scene file (docs/scene_format.md,
+// "Keys"). Each key is declared here once, with its reader (type, default, limits, the
+// message of a refusal) and its writer (the resolved scene). read_scene and write_scene
+// walk the same tables; scene_keys() lists them for the test that docs/scene_format.md
+// documents exactly these keys (tests/scene/test_scene_schema.cpp).
+#include "scene_schema.hpp"
+
+#include <fmt/format.h>
+
+#include <cctype>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <tuple>
+#include <utility>
+
+#include "scene_file.hpp"
+#include "table_reader.hpp"
+
+namespace granshock {
+namespace scene_toml {
+
+namespace {
+
+// More blocks than this only divide the production window into noise (and memory).
+constexpr long kMaxBlocks = 10000;
+
+// A scene name names the run directory runs/<name>: it must be a plain file name.
+bool is_safe_name(const std::string& name) {
+  if (name.empty() || name.size() > 64 || name[0] == '.' || name[0] == '-') return false;
+  for (char c : name)
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '-'))
+      return false;
+  return true;
+}
+
+std::string scatter_name(ScatterStrategy s) {
+  return s == ScatterStrategy::atomic ? "atomic" : "scatter_view";
+}
+
+// What the keys of a table are read into: the scene being built and, inside an item table
+// (materials.NAME, [[species]], contact.pairs."a-b"), the item.
+struct Reading {
+  explicit Reading(Scene& scene) : s(scene) {}
+  Scene& s;
+  std::map<std::string, Material> materials = {{"steel", steel()}, {"aluminium", aluminium()}};
+  std::optional<double> characteristic_velocity;  // default: the inflow speed
+  Material material;
+  Species species;
+  double number_fraction = 0;
+  int pair_a = 0, pair_b = -1;  // pair_b < 0: "a-obstacle"
+  Obstacle obstacle;
+};
+
+// What the keys of a table are written from: the resolved scene and, in an item table,
+// the item.
+struct Writing {
+  const Scene& s;
+  const Material* material = nullptr;
+  std::size_t species = 0;
+  int pair_a = 0, pair_b = -1;  // pair_b < 0: "a-obstacle"
+};
+
+using Read = void (*)(TableReader& r, Reading& st, const std::string& k);
+using Write = void (*)(const Writing& w, toml::table& t, const std::string& k);
+
+struct Key {
+  const char* name;
+  const char* type;  // the type column of docs/scene_format.md; null: a table of item tables
+  Read read;
+  Write write;
+};
+
+struct Table {
+  // The TOML table; for item tables, as docs/scene_format.md writes it ("materials.NAME",
+  // "[[species]]", "contact.pairs.\"a-b\"").
+  const char* name;
+  const Key* keys;
+  std::size_t size;
+  void (*after)(Reading& st);  // checks across the table's keys, once all are read; or null
+
+  const Key* begin() const { return keys; }
+  const Key* end() const { return keys + size; }
+};
+
+template <std::size_t N>
+constexpr Table table(const char* name, const Key (&keys)[N], void (*after)(Reading&) = nullptr) {
+  return {name, keys, N, after};
+}
+
+// Reads the keys of `t` in their order, then its checks across keys, then refuses the keys
+// nobody asked for.
+void read_keys(TableReader& r, Reading& st, const Table& t) {
+  for (const Key& k : t) k.read(r, st, k.name);
+  if (t.after) t.after(st);
+  r.finish();
+}
+
+void read_table(TableReader& top, Reading& st, const Table& t) {
+  TableReader r(top.table(t.name), t.name, st.s.d_m);
+  read_keys(r, st, t);
+}
+
+toml::table write_keys(const Writing& w, const Table& t) {
+  toml::table out;
+  for (const Key& k : t) k.write(w, out, k.name);
+  return out;
+}
+
+const Material& material_named(Reading& st, const std::string& key, const std::string& name) {
+  const auto it = st.materials.find(name);
+  if (it == st.materials.end()) {
+    std::vector<std::string> names;
+    for (const auto& [n, m] : st.materials) names.push_back(n);
+    fail(key, '"' + name + '"',
+         fmt::format("unknown material (defined: {})", fmt::join(names, ", ")));
+  }
+  return it->second;
+}
+
+int find_species(const Reading& st, const std::string& name) {
+  const auto& species = st.s.setup.species;
+  for (std::size_t a = 0; a < species.size(); ++a)
+    if (species[a].name == name) return int(a);
+  return -1;
+}
+
+int species_index(const Reading& st, const std::string& key, const std::string& name) {
+  const int a = find_species(st, name);
+  if (a < 0) fail(key, '"' + name + '"', "unknown species");
+  return a;
+}
+
+// ---- [units] -----------------------------------------------------------------------------
+
+const Key kUnitsKeys[] = {
+    {"d", "number (m)",
+     [](TableReader& r, Reading& st, const std::string& k) { st.s.d_m = r.positive(k, 1e-3); },
+     [](const Writing& w, toml::table& t, const std::string& k) { t.insert(k, w.s.d_m); }},
+};
+const Table kUnits = table("units", kUnitsKeys);
+
+// ---- [scene] -----------------------------------------------------------------------------
+
+const Key kSceneKeys[] = {
+    {"name", "string",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       st.s.name = r.string(k, "unnamed");
+       if (!is_safe_name(st.s.name))
+         fail(r.key(k), '"' + st.s.name + '"',
+              "must be 1 to 64 characters of A-Z a-z 0-9 . _ -, not starting with '.' or '-' "
+              "(it names the run directory runs/<name>)");
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) { t.insert(k, w.s.name); }},
+    {"dim", "integer",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       const long dim = r.integer_at_least(k, 2, 2);
+       if (dim != 2)
+         fail(r.key(k), std::to_string(dim), "only quasi-2-D scenes (dim = 2) are supported");
+       st.s.setup.dim = 2;
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) { t.insert(k, w.s.setup.dim); }},
+    {"seed", "integer",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       st.s.run.seed = std::uint64_t(r.integer_at_least(k, 0, 1));
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) {
+       t.insert(k, std::int64_t(w.s.run.seed));
+     }},
+};
+const Table kScene = table("scene", kSceneKeys);
+
+// ---- [materials.NAME] --------------------------------------------------------------------
+
+const Key kMaterialKeys[] = {
+    {"youngs_modulus", "number (Pa)",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       st.material.youngs_modulus_pa = r.positive(k);
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) {
+       t.insert(k, w.material->youngs_modulus_pa);
+     }},
+    {"poisson_ratio", "number",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       st.material.poisson_ratio = r.number_in(k, -1.0, 0.5, true, true);
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) {
+       t.insert(k, w.material->poisson_ratio);
+     }},
+    {"density", "number (kg/m3)",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       st.material.density_kg_m3 = r.positive(k);
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) {
+       t.insert(k, w.material->density_kg_m3);
+     }},
+};
+const Table kMaterial = table("materials.NAME", kMaterialKeys);
+
+// Materials defined in the scene join the built-in steel and aluminium (or replace them).
+void read_materials(TableReader& top, Reading& st) {
+  const toml::table* mt = top.table("materials");
+  if (!mt) return;
+  for (const auto& [key, value] : *mt) {
+    const std::string name(key.str());
+    if (!value.is_table()) fail("materials." + name, show(value), "must be a table");
+    TableReader r(value.as_table(), "materials." + name, st.s.d_m);
+    st.material = Material{};
+    read_keys(r, st, kMaterial);
+    st.material.name = name;
+    st.materials[name] = st.material;
+  }
+}
+
+// ---- [[species]] -------------------------------------------------------------------------
+
+const Key kSpeciesKeys[] = {
+    {"name", "string",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       st.species.name = r.string(k);
+       for (const auto& other : st.s.setup.species)
+         if (other.name == st.species.name)
+           fail(r.key(k), '"' + st.species.name + '"', "species names must be unique");
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) {
+       t.insert(k, w.s.setup.species[w.species].name);
+     }},
+    {"material", "string",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       st.species.material = material_named(st, r.key(k), r.string(k));
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) {
+       t.insert(k, w.s.setup.species[w.species].material.name);
+     }},
+    {"diameter", "length",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       st.species.diameter_m = r.positive_length(k);
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) {
+       t.insert(k, w.s.setup.species[w.species].diameter_m);
+     }},
+    {"number_fraction", "number",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       st.number_fraction = r.number_in(k, 0, 1, true, false);
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) {
+       t.insert(k, w.s.inflow.number_fraction[w.species]);
+     }},
+};
+const Table kSpecies = table("[[species]]", kSpeciesKeys);
+
+void read_species(TableReader& top, Reading& st) {
+  const toml::node* sp = top.node("species");
+  if (!sp || !sp->is_array_of_tables() || sp->as_array()->empty())
+    fail("species", sp ? show(*sp) : "(missing)", "needs one or more [[species]] tables");
+  double fraction_sum = 0;
+  int index = 0;
+  for (const auto& item : *sp->as_array()) {
+    TableReader r(item.as_table(), fmt::format("species.{}", index++), st.s.d_m);
+    st.species = Species{};
+    for (const Key& k : kSpecies) k.read(r, st, k.name);
+    fraction_sum += st.number_fraction;
+    st.s.inflow.number_fraction.push_back(st.number_fraction);
+    st.s.setup.species.push_back(st.species);
+    r.finish();
+  }
+  if (std::abs(fraction_sum - 1.0) > 1e-9)
+    fail("species.*.number_fraction", fmt::format("sum {}", fraction_sum),
+         "the number fractions must add up to 1");
+}
+
+// ---- [contact.pairs."a-b"] ---------------------------------------------------------------
+
+const Key kPairKeys[] = {
+    {"restitution", "number",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       ContactSettings& c = st.s.setup.contacts;
+       const int a = st.pair_a, b = st.pair_b;
+       if (b < 0) {
+         c.obstacle_restitution[a] = r.number_in(k, 0, 1, true, false, c.obstacle_restitution[a]);
+       } else {
+         const double e = r.number_in(k, 0, 1, true, false, c.restitution[a][b]);
+         c.restitution[a][b] = c.restitution[b][a] = e;
+       }
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) {
+       const ContactSettings& c = w.s.setup.contacts;
+       t.insert(
+           k, w.pair_b < 0 ? c.obstacle_restitution[w.pair_a] : c.restitution[w.pair_a][w.pair_b]);
+     }},
+    {"friction", "number",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       ContactSettings& c = st.s.setup.contacts;
+       const int a = st.pair_a, b = st.pair_b;
+       if (b < 0) {
+         c.obstacle_friction[a] = r.number_in(k, 0, INFINITY, false, true, c.obstacle_friction[a]);
+       } else {
+         const double mu = r.number_in(k, 0, INFINITY, false, true, c.friction[a][b]);
+         c.friction[a][b] = c.friction[b][a] = mu;
+       }
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) {
+       const ContactSettings& c = w.s.setup.contacts;
+       t.insert(k, w.pair_b < 0 ? c.obstacle_friction[w.pair_a] : c.friction[w.pair_a][w.pair_b]);
+     }},
+};
+const Table kPair = table("contact.pairs.\"a-b\"", kPairKeys);
+
+// The species a, b of a pair named "a-b" (b = -1 for "a-obstacle"). Species names may
+// hold '-' (the resolved scene names every pair), so each dash is tried in turn; when
+// none splits the name into known names, the part the first dash leaves unknown is named.
+std::pair<int, int> pair_named(const Reading& st, const std::string& path,
+                               const std::string& name) {
+  for (auto dash = name.find('-'); dash != std::string::npos; dash = name.find('-', dash + 1)) {
+    const std::string other = name.substr(dash + 1);
+    const int a = find_species(st, name.substr(0, dash));
+    const int b = other == "obstacle" ? -1 : find_species(st, other);
+    if (a >= 0 && (b >= 0 || other == "obstacle")) return {a, b};
+  }
+  const auto dash = name.find('-');
+  const int a = species_index(st, path, name.substr(0, dash));
+  const std::string other = name.substr(dash + 1);
+  return {a, other == "obstacle" ? -1 : species_index(st, path, other)};
+}
+
+// contact.pairs: one table per pair of species "a-b" and per species against the obstacle
+// "a-obstacle", each overriding contact.restitution and contact.friction.
+void read_pairs(TableReader& r, Reading& st, const std::string& k) {
+  const toml::table* pairs = r.table(k);
+  if (!pairs) return;
+  for (const auto& [key, value] : *pairs) {
+    const std::string name(key.str()), path = r.key(k) + "." + name;
+    const auto dash = name.find('-');
+    if (dash == std::string::npos || !value.is_table())
+      fail(path, show(value), "must be a table named \"a-b\" or \"a-obstacle\" for species a, b");
+    std::tie(st.pair_a, st.pair_b) = pair_named(st, path, name);
+    TableReader pr(value.as_table(), path, st.s.d_m);
+    read_keys(pr, st, kPair);
+  }
+}
+
+void write_pairs(const Writing& w, toml::table& t, const std::string& k) {
+  const std::vector<Species>& species = w.s.setup.species;
+  toml::table pairs;
+  Writing p = w;
+  for (std::size_t a = 0; a < species.size(); ++a) {
+    p.pair_a = int(a);
+    for (std::size_t b = a; b < species.size(); ++b) {
+      p.pair_b = int(b);
+      pairs.insert(species[a].name + "-" + species[b].name, write_keys(p, kPair));
+    }
+    p.pair_b = -1;
+    pairs.insert(species[a].name + "-obstacle", write_keys(p, kPair));
+  }
+  t.insert(k, pairs);
+}
+
+// ---- [contact] ---------------------------------------------------------------------------
+
+const Key kContactKeys[] = {
+    {"restitution", "number",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       const double e = r.number_in(k, 0, 1, true, false);
+       st.s.setup.contacts = ContactSettings::uniform(int(st.s.setup.species.size()), e, 0.0);
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) {
+       t.insert(k, w.s.setup.contacts.restitution[0][0]);
+     }},
+    {"friction", "number",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       const double mu = r.number_in(k, 0, INFINITY, false, true, 0.0);
+       ContactSettings& c = st.s.setup.contacts;
+       for (auto& row : c.friction) row.assign(row.size(), mu);
+       c.obstacle_friction.assign(c.obstacle_friction.size(), mu);
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) {
+       t.insert(k, w.s.setup.contacts.friction[0][0]);
+     }},
+    {"model", "string",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       st.s.setup.contacts.model = parse_contact_model(r.choice(k, {"hertz", "hooke"}, "hertz"));
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) {
+       t.insert(k, to_string(w.s.setup.contacts.model));
+     }},
+    {"limit_force", "bool",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       st.s.setup.contacts.options.limit_force = r.boolean(k, false);
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) {
+       t.insert(k, w.s.setup.contacts.options.limit_force);
+     }},
+    // Its default, the inflow speed, is known once [inflow] is read (read_scene).
+    {"characteristic_velocity", "number (m/s)",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       if (r.has(k)) st.characteristic_velocity = r.positive(k);
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) {
+       t.insert(k, w.s.setup.contacts.options.characteristic_velocity_m_per_s);
+     }},
+    {"pairs", nullptr, read_pairs, write_pairs},
+};
+const Table kContact = table("contact", kContactKeys);
+
+// ---- [numerics] --------------------------------------------------------------------------
+
+const Key kNumericsKeys[] = {
+    {"precision", "string",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       st.s.setup.precision = r.choice(k, {"double", "single"}, "double") == "single"
+                                  ? Precision::single_precision
+                                  : Precision::double_precision;
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) {
+       t.insert(k, w.s.setup.precision == Precision::single_precision ? "single" : "double");
+     }},
+    {"skin", "length",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       st.s.setup.skin_m = r.length(k, 0.3 * st.s.setup.max_diameter());
+       if (!(st.s.setup.skin_m > 0))
+         fail(r.key(k), fmt::format("{} m", st.s.setup.skin_m), "must be > 0");
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) { t.insert(k, w.s.setup.skin_m); }},
+    {"mass_definition", "string",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       st.s.mass_definition =
+           parse_mass_definition(r.choice(k, {"mixture_mean", "paper_sum"}, "mixture_mean"));
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) {
+       t.insert(k, to_string(w.s.mass_definition));
+     }},
+    {"bin_size", "length",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       st.s.bin_size_m = r.positive_length(k, 3 * st.s.d_m);
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) { t.insert(k, w.s.bin_size_m); }},
+    {"field_scatter", "string",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       st.s.field_scatter = r.choice(k, {"atomic", "scatter_view"}, "atomic") == "atomic"
+                                ? ScatterStrategy::atomic
+                                : ScatterStrategy::scatter_view;
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) {
+       t.insert(k, scatter_name(w.s.field_scatter));
+     }},
+};
+const Table kNumerics = table("numerics", kNumericsKeys);
+
+// ---- [domain] ----------------------------------------------------------------------------
+
+const Key kDomainKeys[] = {
+    {"width", "length",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       st.s.setup.box.hi[0] = r.positive_length(k);
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) {
+       t.insert(k, w.s.setup.box.hi[0]);
+     }},
+    {"length", "length",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       st.s.setup.box.hi[1] = r.positive_length(k);
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) {
+       t.insert(k, w.s.setup.box.hi[1]);
+     }},
+};
+// Periodic across (x), open along the flow (y), one diameter thick (z).
+void after_domain(Reading& st) {
+  SolverSetup& setup = st.s.setup;
+  const double width = setup.box.hi[0], range = setup.max_diameter() + setup.skin_m;
+  if (width < 3 * range)
+    fail("domain.width", fmt::format("{} m", width),
+         fmt::format("must be at least 3 interaction ranges ({} m)", 3 * range));
+  setup.box.lo = {0, 0, 0};
+  setup.box.hi[2] = setup.max_diameter();
+  setup.box.periodic = {true, false, false};
+  setup.delete_outside = true;
+}
+const Table kDomain = table("domain", kDomainKeys, after_domain);
+
+// ---- [inflow] ----------------------------------------------------------------------------
+
+const Key kInflowKeys[] = {
+    {"area_fraction", "number",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       const double phi = st.s.inflow.area_fraction = r.positive(k);
+       if (phi > kMaxInflowAreaFraction)
+         fail(r.key(k), fmt::format("{}", phi),
+              fmt::format("must be in (0, {}]: random insertion in the strip reaches about 0.42 "
+                          "(measured; random sequential adsorption of discs jams at 0.547, "
+                          "Hinrichsen, Feder & Jossang 1986), so more cannot be met "
+                          "(docs/scene_format.md)",
+                          kMaxInflowAreaFraction));
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) {
+       t.insert(k, w.s.inflow.area_fraction);
+     }},
+    {"velocity", "number (m/s)",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       st.s.inflow.speed_m_per_s = r.positive(k);
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) {
+       t.insert(k, w.s.inflow.speed_m_per_s);
+     }},
+    // Written back as the sigma used, also when the scene gave a Mach number.
+    {"sigma", "number (m/s)",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       if (r.has(k) == r.has("mach"))
+         fail("inflow.sigma / inflow.mach", "(both or neither)",
+              "give exactly one: sigma (m/s) or mach");
+       if (r.has(k)) st.s.inflow.sigma_m_per_s = r.number_in(k, 0, INFINITY, false, true);
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) { t.insert(k, w.s.inflow.sigma); }},
+    // Resolved into inflow.sigma (resolve_inflow), which carries it into the resolved scene.
+    {"mach", "number",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       if (r.has(k)) st.s.inflow.target_mach = r.positive(k);
+     },
+     [](const Writing&, toml::table&, const std::string&) {}},
+    // Where the Mach number is meant (docs/fields.md, "Three upstream Mach numbers"). Like
+    // mach, it says how sigma is found; the resolved scene carries the sigma found.
+    {"mach_at", "string",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       st.s.inflow.mach_at =
+           parse_mach_reference(r.choice(k, {"inserted", "inlet_bins"}, "inserted"));
+       if (st.s.inflow.mach_at == MachReference::inlet_bins && !st.s.inflow.target_mach)
+         fail(r.key(k), "\"inlet_bins\"",
+              "needs inflow.mach, the Mach number to calibrate sigma for");
+     },
+     [](const Writing&, toml::table&, const std::string&) {}},
+    {"strip", "length",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       const double strip = st.s.inflow.strip_m = r.length(k, 2 * st.s.d_m);
+       if (strip < st.s.setup.max_diameter() || strip >= st.s.setup.box.hi[1])
+         fail(r.key(k), fmt::format("{} m", strip),
+              "must be at least one diameter and shorter than the domain");
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) {
+       t.insert(k, w.s.inflow.strip_m);
+     }},
+};
+const Table kInflow = table("inflow", kInflowKeys);
+
+// ---- [obstacle] --------------------------------------------------------------------------
+
+const Key kObstacleKeys[] = {
+    {"diameter", "length",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       st.obstacle.diameter_m = r.positive_length(k);
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) {
+       t.insert(k, w.s.setup.obstacle->diameter_m);
+     }},
+    {"material", "string",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       st.obstacle.material = material_named(st, r.key(k), r.string(k, "aluminium"));
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) {
+       t.insert(k, w.s.setup.obstacle->material.name);
+     }},
+    {"centre", "[length, length]",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       const Box& box = st.s.setup.box;
+       st.obstacle.centre = {0.5 * box.hi[0], 0.5 * box.hi[1], 0};
+       if (const toml::node* n = r.node(k)) {
+         const toml::array* a = n->as_array();
+         if (!a || a->size() != 2) fail(r.key(k), show(*n), "must be [x, y] (two lengths)");
+         st.obstacle.centre[0] = r.length_of(*a->get(0), r.key(k) + "[0]");
+         st.obstacle.centre[1] = r.length_of(*a->get(1), r.key(k) + "[1]");
+       }
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) {
+       const auto& c = w.s.setup.obstacle->centre;
+       t.insert(k, toml::array{c[0], c[1]});
+     }},
+};
+void after_obstacle(Reading& st) {
+  const Obstacle& c = st.obstacle;
+  const double radius = 0.5 * c.diameter_m, width = st.s.setup.box.hi[0];
+  const double length = st.s.setup.box.hi[1];
+  if (c.centre[0] - radius < 0 || c.centre[0] + radius > width ||
+      c.centre[1] - radius < st.s.inflow.strip_m + st.s.setup.max_diameter() ||
+      c.centre[1] + radius > length)
+    fail("obstacle",
+         fmt::format("centre ({}, {}) m, diameter {} m", c.centre[0], c.centre[1], c.diameter_m),
+         "the cylinder must lie inside the domain, downstream of the insertion strip");
+  st.s.setup.obstacle = c;
+}
+const Table kObstacle = table("obstacle", kObstacleKeys, after_obstacle);
+
+// ---- [time] ------------------------------------------------------------------------------
+
+const Key kTimeKeys[] = {
+    {"dt", "number (s)",
+     [](TableReader& r, Reading& st, const std::string& k) { st.s.setup.dt = r.positive(k); },
+     [](const Writing& w, toml::table& t, const std::string& k) { t.insert(k, w.s.setup.dt); }},
+    {"duration", "number (s)",
+     [](TableReader& r, Reading& st, const std::string& k) { st.s.run.duration_s = r.positive(k); },
+     [](const Writing& w, toml::table& t, const std::string& k) {
+       t.insert(k, w.s.run.duration_s);
+     }},
+    {"production_start", "number (s)",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       const double duration = st.s.run.duration_s;
+       st.s.run.production_start_s = r.number_in(k, 0, duration, false, true, 0.5 * duration);
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) {
+       t.insert(k, w.s.run.production_start_s);
+     }},
+};
+const Table kTime = table("time", kTimeKeys);
+
+// ---- [output] ----------------------------------------------------------------------------
+
+const Key kOutputKeys[] = {
+    {"snapshot_interval", "number (s)",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       st.s.run.snapshot_interval_s = r.positive(k, st.s.run.duration_s / 10);
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) {
+       t.insert(k, w.s.run.snapshot_interval_s);
+     }},
+    {"series_interval", "number (s)",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       st.s.run.series_interval_s = r.positive(k, st.s.run.duration_s / 200);
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) {
+       t.insert(k, w.s.run.series_interval_s);
+     }},
+    {"checkpoint_interval", "number (s)",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       st.s.run.checkpoint_interval_s = r.positive(k, st.s.run.duration_s / 5);
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) {
+       t.insert(k, w.s.run.checkpoint_interval_s);
+     }},
+    {"progress_interval", "number (s)",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       st.s.run.progress_interval_s = r.positive(k, 2.0);
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) {
+       t.insert(k, w.s.run.progress_interval_s);
+     }},
+    {"sample_every", "integer",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       st.s.run.sample_every = r.integer_at_least(k, 1, 100);
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) {
+       t.insert(k, std::int64_t(w.s.run.sample_every));
+     }},
+    {"blocks", "integer",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       const long blocks = r.integer_at_least(k, 2, 10);
+       if (blocks > kMaxBlocks)
+         fail(r.key(k), std::to_string(blocks),
+              fmt::format("must be at most {} (each block keeps its own bin sums)", kMaxBlocks));
+       st.s.run.blocks = int(blocks);
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) {
+       t.insert(k, std::int64_t(w.s.run.blocks));
+     }},
+};
+const Table kOutput = table("output", kOutputKeys);
+
+// Every table, in the order of docs/scene_format.md ("Keys").
+const Table* const kTables[] = {&kScene,  &kUnits,    &kMaterial, &kSpecies, &kContact, &kPair,
+                                &kDomain, &kObstacle, &kInflow,   &kTime,    &kOutput,  &kNumerics};
+
+}  // namespace
+
+Scene read_scene(const toml::table& root) {
+  Scene s;
+  Reading st(s);
+  TableReader top(&root, "", 1.0);
+  read_table(top, st, kUnits);  // first: lengths elsewhere may be written in d
+  read_table(top, st, kScene);
+  read_materials(top, st);
+  read_species(top, st);
+  read_table(top, st, kContact);
+  read_table(top, st, kNumerics);
+  read_table(top, st, kDomain);
+  read_table(top, st, kInflow);
+  if (const toml::table* obstacle = top.table(kObstacle.name)) {
+    TableReader r(obstacle, kObstacle.name, s.d_m);
+    read_keys(r, st, kObstacle);
+  }
+  read_table(top, st, kTime);
+  read_table(top, st, kOutput);
+  top.finish();
+  s.setup.contacts.options.characteristic_velocity_m_per_s =
+      st.characteristic_velocity.value_or(s.inflow.speed_m_per_s);
+  return s;
+}
+
+toml::table write_scene(const Scene& s) {
+  const Writing w{s};
+  toml::table root;
+  for (const Table* t :
+       {&kScene, &kUnits, &kContact, &kNumerics, &kDomain, &kInflow, &kTime, &kOutput})
+    root.insert(t->name, write_keys(w, *t));
+  toml::table materials;
+  toml::array species;
+  for (std::size_t a = 0; a < s.setup.species.size(); ++a) {
+    Writing item = w;
+    item.species = a;
+    item.material = &s.setup.species[a].material;
+    materials.insert_or_assign(item.material->name, write_keys(item, kMaterial));
+    species.push_back(write_keys(item, kSpecies));
+  }
+  if (s.setup.obstacle) {
+    Writing item = w;
+    item.material = &s.setup.obstacle->material;
+    materials.insert_or_assign(item.material->name, write_keys(item, kMaterial));
+    root.insert(kObstacle.name, write_keys(w, kObstacle));
+  }
+  root.insert("materials", materials);
+  root.insert("species", species);
+  return root;
+}
+
+}  // namespace scene_toml
+
+std::vector<SceneKey> scene_keys() {
+  std::vector<SceneKey> keys;
+  for (const scene_toml::Table* t : scene_toml::kTables) {
+    const std::string prefix = std::string(t->name) + (t->name[0] == '[' ? " " : ".");
+    for (const scene_toml::Key& k : *t)
+      if (k.type) keys.push_back({prefix + k.name, k.type});
+  }
+  return keys;
+}
+
+}  // namespace granshock

@@ -1,0 +1,174 @@
+#include "table_reader.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <sstream>
+
+#include "user_error.hpp"
+
+namespace granshock::scene_toml {
+
+namespace {
+
+// Keys and values echoed in messages are cut to this length: one line, however long the
+// input (a --set value may be megabytes).
+constexpr std::size_t kEchoLength = 80;
+
+std::string fmt_bound(double b) {
+  return std::isinf(b) ? (b > 0 ? "inf" : "-inf") : fmt::format("{}", b);
+}
+
+}  // namespace
+
+std::string clip(const std::string& text) {
+  std::string out = text.size() <= kEchoLength ? text : text.substr(0, kEchoLength) + "...";
+  for (char& c : out)
+    if (c == '\n' || c == '\r') c = ' ';
+  return out;
+}
+
+void fail(const std::string& key, const std::string& value, const std::string& what) {
+  throw UserError(fmt::format("scene key '{}' = {}: {}", clip(key), clip(value), what));
+}
+
+std::string show(const toml::node& n) {
+  std::ostringstream os;
+  if (auto s = n.as_string())
+    os << '"' << s->get() << '"';
+  else if (n.is_table())
+    os << "(a table)";
+  else if (n.is_array())
+    os << "(an array)";
+  else
+    n.visit([&](auto&& v) { os << v; });
+  return os.str();
+}
+
+TableReader::TableReader(const toml::table* table, std::string path, double d_m)
+    : table_(table), path_(std::move(path)), d_m_(d_m) {}
+
+std::string TableReader::key(const std::string& name) const {
+  return path_.empty() ? name : path_ + "." + name;
+}
+
+bool TableReader::has(const std::string& name) {
+  known_.insert(name);
+  return table_ && table_->contains(name);
+}
+
+const toml::node* TableReader::node(const std::string& name) {
+  known_.insert(name);
+  return table_ ? table_->get(name) : nullptr;
+}
+
+double TableReader::number(const std::string& name, std::optional<double> fallback) {
+  const toml::node* n = node(name);
+  if (!n) {
+    if (!fallback) fail(key(name), "(missing)", "this key is required (a number)");
+    return *fallback;
+  }
+  const auto v = n->value<double>();
+  if (!v || n->is_boolean()) fail(key(name), show(*n), "must be a number");
+  if (!std::isfinite(*v)) fail(key(name), show(*n), "must be finite");
+  return *v;
+}
+
+double TableReader::number_in(const std::string& name, double lo, double hi, bool lo_open,
+                              bool hi_open, std::optional<double> fallback) {
+  const double v = number(name, fallback);
+  const bool ok = (lo_open ? v > lo : v >= lo) && (hi_open ? v < hi : v <= hi);
+  if (!ok)
+    fail(key(name), fmt::format("{}", v),
+         fmt::format("must be in {}{}, {}{}", lo_open ? "(" : "[", fmt_bound(lo), fmt_bound(hi),
+                     hi_open ? ")" : "]"));
+  return v;
+}
+
+double TableReader::positive(const std::string& name, std::optional<double> fallback) {
+  const double v = number(name, fallback);
+  if (!(v > 0)) fail(key(name), fmt::format("{}", v), "must be > 0");
+  return v;
+}
+
+long TableReader::integer_at_least(const std::string& name, long lo, long fallback) {
+  const toml::node* n = node(name);
+  if (!n) return fallback;
+  const auto v = n->value<int64_t>();
+  if (!n->is_integer() || !v) fail(key(name), show(*n), "must be an integer");
+  if (*v < lo) fail(key(name), show(*n), fmt::format("must be >= {}", lo));
+  return long(*v);
+}
+
+bool TableReader::boolean(const std::string& name, bool fallback) {
+  const toml::node* n = node(name);
+  if (!n) return fallback;
+  if (!n->is_boolean()) fail(key(name), show(*n), "must be true or false");
+  return *n->value<bool>();
+}
+
+std::string TableReader::string(const std::string& name, std::optional<std::string> fallback) {
+  const toml::node* n = node(name);
+  if (!n) {
+    if (!fallback) fail(key(name), "(missing)", "this key is required (a string)");
+    return *fallback;
+  }
+  if (!n->is_string()) fail(key(name), show(*n), "must be a string");
+  return *n->value<std::string>();
+}
+
+std::string TableReader::choice(const std::string& name, const std::vector<std::string>& options,
+                                const std::string& fallback) {
+  const std::string v = string(name, fallback);
+  for (const auto& o : options)
+    if (o == v) return v;
+  fail(key(name), '"' + v + '"', fmt::format("must be one of {}", fmt::join(options, ", ")));
+}
+
+double TableReader::length(const std::string& name, std::optional<double> fallback) {
+  const toml::node* n = node(name);
+  if (!n) {
+    if (!fallback) fail(key(name), "(missing)", "this key is required (a length)");
+    return *fallback;
+  }
+  return length_of(*n, key(name));
+}
+
+double TableReader::length_of(const toml::node& n, const std::string& k) const {
+  if (auto v = n.value<double>(); v && !n.is_string() && !n.is_boolean()) return *v;
+  if (n.is_string()) {
+    std::istringstream in(*n.value<std::string>());
+    double value = 0;
+    std::string unit, rest;
+    if (in >> value >> unit && !(in >> rest) && std::isfinite(value)) {
+      if (unit == "d") return value * d_m_;
+      if (unit == "m") return value;
+    }
+  }
+  fail(k, show(n), "must be a length: a number in metres, or \"N d\" or \"N m\"");
+}
+
+double TableReader::positive_length(const std::string& name, std::optional<double> fallback) {
+  const double v = length(name, fallback);
+  if (!(v > 0)) fail(key(name), fmt::format("{} m", v), "must be > 0");
+  return v;
+}
+
+const toml::table* TableReader::table(const std::string& name) {
+  const toml::node* n = node(name);
+  if (!n) return nullptr;
+  if (!n->is_table()) fail(key(name), show(*n), "must be a table");
+  return n->as_table();
+}
+
+void TableReader::finish() const {
+  if (!table_) return;
+  for (const auto& [k, v] : *table_) {
+    const std::string name(k.str());
+    if (!known_.count(name))
+      fail(key(name), show(v),
+           fmt::format("unknown key (accepted here: {})", fmt::join(known_, ", ")));
+  }
+}
+
+}  // namespace granshock::scene_toml
