@@ -1,12 +1,16 @@
-// The LIGGGHTS `hooke` contact law (docs/design.md, "Contact models"; docs/contact_model.md):
-// a linear spring-dashpot whose constant stiffness gives, at the characteristic impact
-// speed V, the same peak overlap as the Hertz law:
+// The LIGGGHTS `hooke` contact law (docs/design.md, "Contact models"; docs/contact_model.md,
+// "Linear spring-dashpot"; LIGGGHTS documentation, "gran model hooke"): a linear
+// spring-dashpot whose constant stiffness gives, at the characteristic impact speed V, the
+// same peak overlap as the Hertz law (Johnson, Contact Mechanics, 1985, eq. 11.23):
 //   kn = 16/15 sqrt(R*) Y* (15 m* V^2 / (16 sqrt(R*) Y*))^(1/5),   kt = kn,
 //   gn = sqrt(4 m* kn / (1 + (pi / ln e)^2)) = 2 |beta| sqrt(m* kn),  gt = gn,
 //   Fn = kn dn - gn vn.
 // For a linear oscillator the closed forms hold at every impact speed: the contact lasts
 // t_c = pi / omega_d with omega_d = sqrt(kn/m* - (gn / 2m*)^2), and the rebound speed is
-// exactly e times the impact speed (tests/physics/test_hooke_contact.cpp).
+// exactly e times the impact speed (tests/physics/test_hooke_contact.cpp). Unlike Hertz's,
+// the dashpot force jumps to gn |vn| when a contact starts; with the half-step velocity the
+// dashpot sees, that makes velocity Verlet first order in dt for this law (e off by 0.7 %
+// at dt = t_c/100 for e = 0.5).
 #pragma once
 
 #include <Kokkos_Core.hpp>

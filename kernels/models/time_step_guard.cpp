@@ -23,8 +23,10 @@ double peak_overlap(ContactModelKind model, const PairProperties& p, const Conta
 double stable_time_step(ContactModelKind model, const PairProperties& p, const ContactOptions& o,
                         double v, bool friction) {
   return with_contact_model(model, [&](auto law) {
+    // omega dt <= sqrt(2 + zeta^2) - zeta: a contact resolved in one step gains no energy
+    // (time_step_guard.hpp).
     const double zeta = law.damping_ratio(p);
-    const double margin = 2.0 * (std::sqrt(1.0 + zeta * zeta) - zeta);
+    const double margin = std::sqrt(2.0 + zeta * zeta) - zeta;
     double omega = std::sqrt(law.peak_normal_stiffness(p, o, v) / p.mass_star);
     if (friction)
       omega = std::max(

@@ -17,11 +17,20 @@ double collision_time(ContactModelKind model, const PairProperties& p, const Con
                       double impact_speed);
 double peak_overlap(ContactModelKind model, const PairProperties& p, const ContactOptions& o,
                     double impact_speed);
-// Largest stable velocity-Verlet step for the stiffest moment of an impact at speed v: the
-// law linearised at its peak overlap has stiffness k and damping ratio zeta, and central
-// differences are stable for omega dt < 2 (sqrt(1 + zeta^2) - zeta) (Belytschko, Liu &
-// Moran, Nonlinear Finite Elements, 2000, eq. 6.2.28). With friction the tangential spring
-// acting on the rolling mass 2/7 m* is stiffer and sets the limit.
+// Largest velocity-Verlet step for the stiffest moment of an impact at speed v. The law
+// linearised at its peak overlap has stiffness k (omega = sqrt(k / m*)) and damping ratio
+// zeta. A step that resolves the contact in a single force evaluation, in the worst phase
+// (overlap v dt at approach speed v), kicks the pair by dt (k v dt + 2 zeta omega m* v) / m*:
+// it rebounds at ((omega dt)^2 + 2 zeta omega dt - 1) v, faster than it came (energy
+// created), once omega dt > sqrt(2 + zeta^2) - zeta. That is the limit used here. The
+// stability limit of a sustained damped oscillation, omega dt < 2 (sqrt(1 + zeta^2) - zeta)
+// (Belytschko, Liu & Moran, Nonlinear Finite Elements, 2000, eq. 6.2.28), is about sqrt(2)
+// larger and does not bound an impact: there a single collision already returned up to
+// 2.9 times its impact speed (docs/contact_model.md, "Time step";
+// tests/physics/test_time_step_limit.cpp). For Hertz the linearisation overestimates the
+// kick (below the peak overlap the secant stiffness and the damping are smaller), so the
+// limit is conservative. With friction the tangential spring acting on the rolling mass
+// 2/7 m* is stiffer and sets the limit.
 double stable_time_step(ContactModelKind model, const PairProperties& p, const ContactOptions& o,
                         double impact_speed, bool friction);
 

@@ -9,63 +9,18 @@
 //    (spring with history, damping, Coulomb cap) written here, within 2 %.
 //  - Both: the cumulative tangential impulse never exceeds mu x the cumulative normal
 //    impulse, and the spin-up obeys I dw = r J_t.
-// The cylinder is 0.2 m across, so its surface is flat to 1e-4 rad over the contact.
+// The set-up and the solver run are in oblique_impact.hpp (shared with the hooke test).
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "models/hertz.hpp"
-#include "models/time_step_guard.hpp"
+#include "physics/oblique_impact.hpp"
 #include "solver.hpp"
 
 using namespace granshock;
+using namespace granshock::test;
 
 namespace {
-
-constexpr double kD = 1e-3, kR = 0.5e-3, kMu = 0.3, kE = 0.5, kCylinder = 0.2;
-
-SolverSetup wall_setup(double dt) {
-  SolverSetup s;
-  s.species = {{"steel", steel(), kD}};
-  s.contacts = ContactSettings::uniform(1, kE, kMu);
-  s.contacts.options.limit_force = true;
-  s.box.lo = {-0.11, -0.11, 0};
-  s.box.hi = {0.11, 0.11, kD};
-  s.obstacle = Obstacle{ObstacleShape::cylinder, {0, 0, 0}, kCylinder, aluminium()};
-  s.dt = dt;
-  return s;
-}
-
-struct Impact {
-  double jn, jt, spin;          // impulses on the particle (normal = -x, tangential = -y), final w
-  double worst_coulomb_excess;  // max over steps of (J_t - mu J_n) / J_n at the end
-};
-
-// A steel sphere approaching the cylinder's -x face with velocity (vn, vt).
-Impact simulate(double vn, double vt) {
-  SolverSetup s = wall_setup(0);
-  const PairProperties wall = s.obstacle_pair(0);
-  s.dt = HertzModel::collision_time(wall, ContactOptions{}, vn) / 100.0;
-  auto solver = make_solver(s, 1);
-  HostParticles p;
-  p.add({-(0.5 * kCylinder + kR + 3 * vn * s.dt), 0, 0}, {vn, vt, 0}, 0, 0);
-  solver->set_particles(p);
-  const double m = s.species[0].mass_kg();
-  Impact out{0, 0, 0, -1};
-  std::vector<std::pair<double, double>> history;
-  for (int step = 0; step < 2000; ++step) {
-    solver->advance(1);
-    const HostParticles q = solver->particles();
-    const double jn = m * (vn - q.velocity[0][0]);
-    const double jt = m * (vt - q.velocity[0][1]);
-    history.emplace_back(jn, jt);
-    out = {jn, jt, q.angular_velocity[0], -1};
-    if (q.position[0][0] < p.position[0][0]) break;  // rebounded past its start
-  }
-  for (const auto& [jn, jt] : history)
-    out.worst_coulomb_excess = std::max(out.worst_coulomb_excess, (jt - kMu * jn) / out.jn);
-  return out;
-}
 
 // Independent reference: RK4 on the overlap x and the contact-point slip velocity u
 // of a sphere on a flat wall,
@@ -133,7 +88,7 @@ double reference_tangential_impulse(double vn, double vt) {
 }  // namespace
 
 TEST(FrictionImpact, SlidingTangentialImpulseIsMuTimesNormal) {
-  const Impact r = simulate(1.0, 4.0);
+  const Impact r = simulate_oblique_impact(ContactModelKind::hertz, 1.0, 4.0);
   ASSERT_GT(r.jn, 0);
   EXPECT_NEAR(r.jt / r.jn, kMu, 0.005 * kMu);
   EXPECT_LT(r.worst_coulomb_excess, 1e-9);
@@ -143,7 +98,7 @@ TEST(FrictionImpact, SlidingTangentialImpulseIsMuTimesNormal) {
 }
 
 TEST(FrictionImpact, StickingStaysBelowTheCoulombLimit) {
-  const Impact r = simulate(1.0, 0.2);
+  const Impact r = simulate_oblique_impact(ContactModelKind::hertz, 1.0, 0.2);
   const double ref = reference_tangential_impulse(1.0, 0.2);
   ASSERT_GT(r.jn, 0);
   EXPECT_LT(r.jt / r.jn, 0.9 * kMu) << "a sticking impact must not reach gross sliding";

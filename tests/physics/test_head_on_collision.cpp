@@ -11,42 +11,18 @@
 #include <tuple>
 
 #include "head_on_collision.hpp"
+#include "physics/contact_reference.hpp"
 
 using namespace granshock;
+using namespace granshock::test;
 
 namespace {
 
-// The pair's effective constants, computed here from the paper's material data
-// (docs/design.md, "Contact models") so that the reference shares nothing with the solver but the
-// formulas.
-struct Reference {
-  double youngs_star, radius_star, mass_star;
-};
-
-Reference reference_for(const std::string& pair) {
-  const double d = 1e-3, r = 0.5e-3;
-  const double m_steel = 7850.0 * M_PI * d * d * d / 6.0;
-  const double m_al = m_steel / 2.907;
-  const double inv_y_steel = (1 - 0.303 * 0.303) / 210e9;
-  const double inv_y_al = (1 - 0.33 * 0.33) / 69e9;
-  if (pair == "steel-steel") return {1 / (2 * inv_y_steel), r / 2, m_steel / 2};
-  if (pair == "steel-aluminium")
-    return {1 / (inv_y_steel + inv_y_al), r / 2, m_steel * m_al / (m_steel + m_al)};
-  if (pair == "aluminium-aluminium") return {1 / (2 * inv_y_al), r / 2, m_al / 2};
-  if (pair == "steel-obstacle") return {1 / (inv_y_steel + inv_y_al), r, m_steel};  // Al cylinder
-  return {1 / (2 * inv_y_al), r, m_al};  // aluminium-obstacle
-}
-
-struct ContactOutcome {
-  double restitution, duration;
-};
-
 // Integrates m* x'' = -F(x, x') for the overlap x with x(0) = 0, x'(0) = v, where
 // F = 4/3 Y* sqrt(R*) x^(3/2) + 2 sqrt(5/6) |beta| sqrt(2 Y* sqrt(R* x) m*) x'
-// (the hertz law of docs/design.md, "Contact models" written for the overlap), until x returns to
-// 0.
-ContactOutcome integrate_contact(const Reference& p, double e, double v, bool limit_force) {
-  const double beta = std::log(e) / std::sqrt(std::log(e) * std::log(e) + M_PI * M_PI);
+// (the hertz law of docs/contact_model.md written for the overlap), until x returns to 0.
+ContactOutcome integrate_contact(const PairReference& p, double e, double v, bool limit_force) {
+  const double beta = reference_beta(e);
   const auto accel = [&](double x, double xdot) {
     if (x <= 0) return 0.0;
     const double stiffness = 4.0 / 3.0 * p.youngs_star * std::sqrt(p.radius_star * x);
@@ -60,22 +36,7 @@ ContactOutcome integrate_contact(const Reference& p, double e, double v, bool li
   const double tc = 2.87 * std::pow(p.mass_star * p.mass_star /
                                         (p.radius_star * p.youngs_star * p.youngs_star * v),
                                     0.2);
-  const double h = tc / 20000.0;
-  double x = 0, xd = v, t = 0;
-  while (true) {
-    const double k1x = xd, k1v = accel(x, xd);
-    const double k2x = xd + 0.5 * h * k1v, k2v = accel(x + 0.5 * h * k1x, xd + 0.5 * h * k1v);
-    const double k3x = xd + 0.5 * h * k2v, k3v = accel(x + 0.5 * h * k2x, xd + 0.5 * h * k2v);
-    const double k4x = xd + h * k3v, k4v = accel(x + h * k3x, xd + h * k3v);
-    const double x_new = x + h / 6 * (k1x + 2 * k2x + 2 * k3x + k4x);
-    const double v_new = xd + h / 6 * (k1v + 2 * k2v + 2 * k3v + k4v);
-    if (x_new <= 0 && t > 0) {
-      return {-v_new / v, t + h * x / (x - x_new)};  // interpolate the zero crossing
-    }
-    x = x_new;
-    xd = v_new;
-    t += h;
-  }
+  return integrate_overlap(accel, v, tc / 20000.0);
 }
 
 using Case = std::tuple<std::string, double, double>;  // pair, speed (m/s), e

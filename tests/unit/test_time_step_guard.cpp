@@ -2,8 +2,11 @@
 // past the stable limit with a message naming t_c and a safe dt, and --force overrides.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "head_on_collision.hpp"
 #include "models/hertz.hpp"
+#include "models/hooke.hpp"
 #include "models/time_step_guard.hpp"
 #include "user_error.hpp"
 
@@ -58,20 +61,39 @@ TEST(TimeStepGuard, StiffestPairAndFastestSpeedDecide) {
 }
 
 TEST(TimeStepGuard, StableLimitIsBelowTheContactTime) {
-  // The linearised peak stiffness bounds the step well below t_c: about 0.4 t_c for
-  // e = 0.5 (omega_max t_c ~ 4.1, margin 2(sqrt(1+z^2)-z) ~ 1.65 with z = 0.197).
+  // The linearised peak stiffness bounds the step well below t_c: 0.305 t_c for e = 0.5
+  // (omega_max t_c = 4.03, margin sqrt(2 + z^2) - z = 1.231 with z = 0.197).
   const double ratio =
       stable_time_step(ContactModelKind::hertz, steel_pair(), ContactOptions{}, 1.0, false) /
       HertzModel::collision_time(steel_pair(), ContactOptions{}, 1.0);
-  EXPECT_GT(ratio, 0.3);
-  EXPECT_LT(ratio, 0.5);
+  EXPECT_GT(ratio, 0.29);
+  EXPECT_LT(ratio, 0.32);
+}
+
+TEST(TimeStepGuard, HookeLimitDependsOnTheCharacteristicVelocityOnly) {
+  // kn is fixed by V, so neither t_c nor the stable step depends on the impact speed, and
+  // omega0 dt_stable = sqrt(2 + beta^2) - |beta| (zeta = |beta| for hooke).
+  ContactOptions o;
+  o.characteristic_velocity_m_per_s = 2.0;
+  const PairProperties p = steel_pair();
+  const double dt = stable_time_step(ContactModelKind::hooke, p, o, 1.0, false);
+  EXPECT_DOUBLE_EQ(dt, stable_time_step(ContactModelKind::hooke, p, o, 30.0, false));
+  EXPECT_DOUBLE_EQ(collision_time(ContactModelKind::hooke, p, o, 1.0),
+                   collision_time(ContactModelKind::hooke, p, o, 30.0));
+  const double omega0 = std::sqrt(HookeModel::stiffness(p, o) / p.mass_star);
+  const double b = std::abs(p.beta);
+  EXPECT_NEAR(omega0 * dt, std::sqrt(2.0 + b * b) - b, 1e-12);
+  // A stiffer law at a larger V: kn ~ V^(2/5), so dt_stable ~ V^(-1/5).
+  ContactOptions fast = o;
+  fast.characteristic_velocity_m_per_s = 64.0;
+  EXPECT_NEAR(stable_time_step(ContactModelKind::hooke, p, fast, 1.0, false), dt / 2.0, 1e-12 * dt);
 }
 
 TEST(TimeStepGuard, CollideRefusesAnUnstableStepUnlessForced) {
   CollisionOptions o;
   o.pair = "steel-steel";
   o.speed_m_per_s = 1.0;
-  o.dt = 2e-6;  // t_c = 3.0e-6 s, stable limit 1.2e-6 s at 1 m/s
+  o.dt = 2e-6;  // t_c = 3.0e-6 s, stable limit 0.92e-6 s at 1 m/s
   try {
     run_head_on_collision(o);
     FAIL() << "dt past the stable limit was accepted";
