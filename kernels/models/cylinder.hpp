@@ -34,10 +34,13 @@ struct CylinderShape {
       return g;
     }
 
+    // Forced inline, like every per-pair or per-particle function of the force kernel:
+    // GCC 12 outlined this one, and the call (its arguments passed through the stack) took
+    // a quarter of a step of the default scene (perf; docs/benchmarks.md).
     // A particle of radius r at x touches the surface when its distance from the axis is
     // below r + R: then dn = r + R - |x - x_c| and n is the radial unit vector.
-    KOKKOS_INLINE_FUNCTION bool touches(const Vec<Dim, Real>& x, Real r, Real& dn,
-                                        Vec<Dim, Real>& n) const {
+    KOKKOS_FORCEINLINE_FUNCTION bool touches(const Vec<Dim, Real>& x, Real r, Real& dn,
+                                             Vec<Dim, Real>& n) const {
       Vec<Dim, Real> dx = x - centre;
       if constexpr (Dim == 3) dx[2] = 0;
       const Real r2 = dot(dx, dx);
@@ -50,7 +53,7 @@ struct CylinderShape {
     }
 
     // Insertion places no centre within `clearance` of the surface.
-    KOKKOS_INLINE_FUNCTION bool keeps_out(Real x0, Real x1, Real clearance) const {
+    KOKKOS_FORCEINLINE_FUNCTION bool keeps_out(Real x0, Real x1, Real clearance) const {
       const Real cx = x0 - centre[0], cy = x1 - centre[1];
       const Real reach = radius + clearance;
       return cx * cx + cy * cy < reach * reach;

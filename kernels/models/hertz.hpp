@@ -55,7 +55,7 @@ struct HertzModel {
   }
 
   template <class Real>
-  KOKKOS_INLINE_FUNCTION static Normal<Real> normal(const Coefficients<Real>& c, Real dn, Real vn) {
+  KOKKOS_FORCEINLINE_FUNCTION static Normal<Real> normal(const Coefficients<Real>& c, Real dn, Real vn) {
     const Real sqrt_dn = dmath::sqrt(dn);
     const Real kn = c.kn_coef * sqrt_dn;
     const Real gn = c.gn_coef * dmath::sqrt(sqrt_dn);
@@ -63,14 +63,14 @@ struct HertzModel {
   }
 
   template <class Real>
-  KOKKOS_INLINE_FUNCTION static Spring<Real> tangential(const Coefficients<Real>& c,
+  KOKKOS_FORCEINLINE_FUNCTION static Spring<Real> tangential(const Coefficients<Real>& c,
                                                         const Normal<Real>& normal) {
     return {c.kt_coef * normal.sqrt_dn, c.gt_coef * dmath::sqrt(normal.sqrt_dn)};
   }
 
   // Elastic energy of one contact at overlap dn, J.
   template <class Real>
-  KOKKOS_INLINE_FUNCTION static double elastic_energy(const Coefficients<Real>& c, double dn) {
+  KOKKOS_FORCEINLINE_FUNCTION static double elastic_energy(const Coefficients<Real>& c, double dn) {
     return double(c.energy_coef) * dn * dn * dmath::sqrt(dn);
   }
 

@@ -63,18 +63,18 @@ struct HookeModel {
   }
 
   template <class Real>
-  KOKKOS_INLINE_FUNCTION static Normal<Real> normal(const Coefficients<Real>& c, Real dn, Real vn) {
+  KOKKOS_FORCEINLINE_FUNCTION static Normal<Real> normal(const Coefficients<Real>& c, Real dn, Real vn) {
     return {dmath::max(c.kn * dn - c.gn * vn, c.normal_force_floor)};
   }
 
   template <class Real>
-  KOKKOS_INLINE_FUNCTION static Spring<Real> tangential(const Coefficients<Real>& c,
+  KOKKOS_FORCEINLINE_FUNCTION static Spring<Real> tangential(const Coefficients<Real>& c,
                                                         const Normal<Real>&) {
     return {c.kt, c.gt};
   }
 
   template <class Real>
-  KOKKOS_INLINE_FUNCTION static double elastic_energy(const Coefficients<Real>& c, double dn) {
+  KOKKOS_FORCEINLINE_FUNCTION static double elastic_energy(const Coefficients<Real>& c, double dn) {
     return 0.5 * double(c.kn) * dn * dn;
   }
 

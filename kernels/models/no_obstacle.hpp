@@ -19,10 +19,10 @@ struct NoObstacle {
   template <int Dim, class Real>
   struct Geometry {
     static Geometry from(const std::optional<Obstacle>&) { return {}; }
-    KOKKOS_INLINE_FUNCTION bool touches(const Vec<Dim, Real>&, Real, Real&, Vec<Dim, Real>&) const {
+    KOKKOS_FORCEINLINE_FUNCTION bool touches(const Vec<Dim, Real>&, Real, Real&, Vec<Dim, Real>&) const {
       return false;
     }
-    KOKKOS_INLINE_FUNCTION bool keeps_out(Real, Real, Real) const { return false; }
+    KOKKOS_FORCEINLINE_FUNCTION bool keeps_out(Real, Real, Real) const { return false; }
   };
 
   static double kept_out_area(const std::optional<Obstacle>&, double, double, double) { return 0; }

@@ -21,7 +21,7 @@ namespace granshock {
 // vc is the relative velocity of the contact points, n the unit normal towards this
 // particle, `normal_force` the signed normal force; returns Ft and updates xi.
 template <class Real>
-KOKKOS_INLINE_FUNCTION Vec<2, Real> tangential_force(Real kt, Real gt, Real friction,
+KOKKOS_FORCEINLINE_FUNCTION Vec<2, Real> tangential_force(Real kt, Real gt, Real friction,
                                                      Real normal_force, const Vec<2, Real>& n,
                                                      const Vec<2, Real>& vc, Real dt,
                                                      Vec<2, Real>& xi) {
@@ -46,7 +46,7 @@ KOKKOS_INLINE_FUNCTION Vec<2, Real> tangential_force(Real kt, Real gt, Real fric
 // Velocity of this particle's contact point relative to the partner's, in 2-D, for
 // spins about z: v_rel - (r_i w_i + r_j w_j) (z x n), with z x n = (-n_y, n_x).
 template <class Real>
-KOKKOS_INLINE_FUNCTION Vec<2, Real> contact_point_velocity(const Vec<2, Real>& vrel,
+KOKKOS_FORCEINLINE_FUNCTION Vec<2, Real> contact_point_velocity(const Vec<2, Real>& vrel,
                                                            const Vec<2, Real>& n, Real spin_sum) {
   Vec<2, Real> vc;
   vc[0] = vrel[0] + spin_sum * n[1];
@@ -56,7 +56,7 @@ KOKKOS_INLINE_FUNCTION Vec<2, Real> contact_point_velocity(const Vec<2, Real>& v
 
 // z-torque on this particle from a force ft applied at its contact point -r_i n.
 template <class Real>
-KOKKOS_INLINE_FUNCTION Real contact_torque(Real radius, const Vec<2, Real>& n,
+KOKKOS_FORCEINLINE_FUNCTION Real contact_torque(Real radius, const Vec<2, Real>& n,
                                            const Vec<2, Real>& ft) {
   return -radius * (n[0] * ft[1] - n[1] * ft[0]);
 }

@@ -21,7 +21,7 @@ struct PairLoop {
   Kokkos::View<Real*, MemSpace> radius;  // per species
   BoxGeometry<Dim, Real> box;
 
-  KOKKOS_INLINE_FUNCTION Vec<Dim, Real> position(int i) const {
+  KOKKOS_FORCEINLINE_FUNCTION Vec<Dim, Real> position(int i) const {
     Vec<Dim, Real> r;
     for (int d = 0; d < Dim; ++d) r[d] = x(i, d);
     return r;
@@ -30,8 +30,8 @@ struct PairLoop {
   // Calls touching(j, sj, dx, r2, rsum) for each partner j of particle i (at xi, radius
   // ri) in contact: dx = x_i - x_j (minimum image), r2 = |dx|^2 < rsum^2, rsum = r_i + r_j.
   template <class F>
-  KOKKOS_INLINE_FUNCTION void for_each_contact(int i, const Vec<Dim, Real>& xi, Real ri,
-                                               F&& touching) const {
+  KOKKOS_FORCEINLINE_FUNCTION void for_each_contact(int i, const Vec<Dim, Real>& xi, Real ri,
+                                                    F&& touching) const {
     for (int k = offsets(i); k < offsets(i + 1); ++k) {
       const int j = neighbours(k);
       const int sj = species(j);

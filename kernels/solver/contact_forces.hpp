@@ -93,7 +93,7 @@ struct ContactForceKernel {
     }
   }
 
-  KOKKOS_INLINE_FUNCTION Vec<Dim, Real> velocity(int i) const {
+  KOKKOS_FORCEINLINE_FUNCTION Vec<Dim, Real> velocity(int i) const {
     Vec<Dim, Real> r;
     for (int d = 0; d < Dim; ++d) r[d] = p.v(i, d);
     return r;
@@ -101,9 +101,9 @@ struct ContactForceKernel {
 
   // Contact with the obstacle: its shape gives the overlap and the normal, the law the
   // force with the obstacle coefficients (R* = r_i, m* = m_i).
-  KOKKOS_INLINE_FUNCTION void obstacle_contact(int i, const Vec<Dim, Real>& xi,
-                                               const Vec<Dim, Real>& vi, int si, Real ri,
-                                               Vec<Dim, Real>& force, Real& torque) const {
+  KOKKOS_FORCEINLINE_FUNCTION void obstacle_contact(int i, const Vec<Dim, Real>& xi,
+                                                    const Vec<Dim, Real>& vi, int si, Real ri,
+                                                    Vec<Dim, Real>& force, Real& torque) const {
     Real dn;
     Vec<Dim, Real> n;
     if (!obstacle.touches(xi, ri, dn, n)) {
@@ -127,14 +127,14 @@ struct ContactForceKernel {
     }
   }
 
-  KOKKOS_INLINE_FUNCTION int find_slot(int i, int partner) const {
+  KOKKOS_FORCEINLINE_FUNCTION int find_slot(int i, int partner) const {
     for (int s = 0; s < Store::history_slots; ++s)
       if (p.history_partner(i, s) == partner) return s;
     return -1;
   }
 
   // The slot that holds the contact with `partner`, or a fresh zeroed one.
-  KOKKOS_INLINE_FUNCTION int claim_slot(int i, int partner, int& used) const {
+  KOKKOS_FORCEINLINE_FUNCTION int claim_slot(int i, int partner, int& used) const {
     int free_slot = -1;
     for (int s = 0; s < Store::history_slots; ++s) {
       const int owner = p.history_partner(i, s);
@@ -156,7 +156,7 @@ struct ContactForceKernel {
 
   // Contacts that ended this step lose their history (docs/contact_model.md: the spring
   // is reset at separation).
-  KOKKOS_INLINE_FUNCTION void release_unused_slots(int i, int used) const {
+  KOKKOS_FORCEINLINE_FUNCTION void release_unused_slots(int i, int used) const {
     for (int s = 0; s < Store::history_slots; ++s) {
       if (used & (1 << s)) continue;
       p.history_partner(i, s) = -1;

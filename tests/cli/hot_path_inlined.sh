@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# The helpers the force kernel calls per particle or per pair (the obstacle's contact
+# test, the contact law, the pair loop, the tangential spring, the kernel's own helpers)
+# must be inlined into it: GCC once outlined the cylinder's `touches`, and the call cost a
+# quarter of a step of the default scene (docs/benchmarks.md, "Inlining"). They are
+# KOKKOS_FORCEINLINE_FUNCTION; this test fails when an out-of-line copy of one of them
+# appears in the program. Usage: hot_path_inlined.sh GRANSHOCK
+set -euo pipefail
+program=$1
+pattern='::touches\(|::keeps_out\(|Model::normal<|Model::tangential<|::for_each_contact<|'
+pattern+='ContactForceKernel<.*>::(velocity|obstacle_contact|claim_slot|find_slot|release_unused_slots)\(|'
+pattern+='tangential_force<|contact_point_velocity<|contact_torque<'
+outlined=$(nm -C "$program" | grep -E ' [tTwW] ' | grep -E "$pattern" || true)
+if [[ -n $outlined ]]; then
+  echo "out-of-line copies of force-kernel helpers (they must be inlined):" >&2
+  echo "$outlined" | cut -c1-240 >&2
+  exit 1
+fi
+count=$(nm -C "$program" | grep -cE ' [tTwW] .*ContactForceKernel<.*>::operator\(\)' || true)
+[[ $count -gt 0 ]] || { echo "no force kernel found in $program: is it the granshock program?" >&2; exit 1; }
+echo "force kernels: $count, outlined helpers: none"
