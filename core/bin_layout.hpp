@@ -35,8 +35,8 @@ struct BinLayout {
   }
 };
 
-// How sampled values are scattered into bins on the device (measured in
-// apps/bench/bench_sampling.cpp): atomic adds, or a Kokkos ScatterView.
+// How sampled values are scattered into bins on the device: atomic adds, or a ScatterView
+// (measured against each other in docs/fields.md, "Cost of sampling").
 enum class ScatterStrategy { atomic, scatter_view };
 
 // The finer stagnation-line profile: a strip x in [x_lo, x_hi] cut along y into n bins

@@ -106,7 +106,7 @@ void check_field_sums(const CheckpointExtras& e, const RunFit& fit) {
   const double m_max = largest(fit.mass);
   const double force = 4 * std::sqrt(2 * budget * m_max) / fit.dt;
   // W = sum over contacts of r_ij (x) F_ij / 2, |r_ij| <= d_max, and fewer than 16
-  // contacts (the 3-D history slots, kernels/contact_history.hpp).
+  // contacts (the 3-D history slots, kernels/particles/particle_store.hpp).
   limits.virial = 0.5 * fit.max_diameter * 16 * force;
   check_accumulator(e.bin_sums, 0, std::size_t(fit.grid_sums), fit, limits);
   check_accumulator(e.bin_sums, std::size_t(fit.grid_sums), std::size_t(fit.profile_sums), fit,

@@ -30,9 +30,10 @@ int run_scene(const RunOptions& o) {
   if (o.dry_run) {
     const RunCheck c = check_run(o);
     for (const std::string& w : c.warnings) std::cerr << "granshock: warning: " << w << "\n";
+    // A TOML comment, so that the output stays a scene file.
     if (c.calibrates_inflow)
-      std::cerr << "granshock: note: inflow.mach_at = \"inlet_bins\": the run calibrates sigma "
-                   "before it starts; the sigma below is the first guess\n";
+      std::cout << "# inflow.mach_at = \"inlet_bins\": the run calibrates sigma before it "
+                   "starts; the sigma below is its first guess\n";
     std::cout << c.resolved_scene;
     return 0;
   }

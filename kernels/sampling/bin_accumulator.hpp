@@ -2,7 +2,7 @@
 // the count and the velocity moments of the particles in it, and per bin the contact
 // virial, to the sums of the current block (layout: core/bin_layout.hpp). Two strategies
 // for the scattered additions, chosen at compile time and measured against each other
-// (apps/bench/bench_sampling.cpp): atomic adds on one array, or a Kokkos ScatterView
+// (docs/fields.md, "Cost of sampling"): atomic adds on one array, or a Kokkos ScatterView
 // (one private copy per thread on host backends, atomics on GPUs).
 #pragma once
 
