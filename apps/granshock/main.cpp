@@ -7,6 +7,8 @@
 #include <iostream>
 #include <map>
 #include <optional>
+#include <string>
+#include <string_view>
 
 #include "build_info.hpp"
 #include "device/kokkos_runtime.hpp"
@@ -104,7 +106,14 @@ int main(int argc, char** argv) {
   // killing the process (SIGXFSZ).
   std::signal(SIGXFSZ, SIG_IGN);
   granshock::h5::keep_exit_free_of_hdf5();
-  // Kokkos takes its own --kokkos-* arguments; CLI11 sees the rest.
+  // Kokkos takes its own --kokkos-* arguments; CLI11 sees the rest. Kokkos also answers a
+  // plain --help with its own option list, so the help flags are hidden from it under a
+  // stand-in and given back, in place, to CLI11.
+  static char help_stand_in[] = "--granshock-help";
+  static char help[] = "--help";
+  for (int k = 1; k < argc; ++k)
+    if (std::string_view(argv[k]) == "--help" || std::string_view(argv[k]) == "-h")
+      argv[k] = help_stand_in;
   std::optional<granshock::KokkosRuntime> kokkos;
   try {
     kokkos.emplace(argc, argv);
@@ -113,6 +122,8 @@ int main(int argc, char** argv) {
               << "\n";
     return 5;
   }
+  for (int k = 1; k < argc; ++k)
+    if (argv[k] == help_stand_in) argv[k] = help;
   // CLI11 takes an empty value for a missing one; say what is wrong instead.
   for (int k = 1; k < argc; ++k) {
     const std::string arg = argv[k];
