@@ -47,14 +47,13 @@ BowShockRun::BowShockRun(const RunOptions& o, LoadedScene loaded)
 
 int BowShockRun::execute() {
   dir_ = run_directory_of(options_, scene_);
-  check_scene_before_run(scene_, options_.force);  // refusals first; warnings below
+  std::vector<std::string> warnings = check_scene_before_run(scene_, options_.force);
   const DirectoryMode mode = options_.resume      ? DirectoryMode::resume
                              : options_.overwrite ? DirectoryMode::overwrite
                                                   : DirectoryMode::create;
   RunDirectory::check(dir_, mode);
-  calibrate_inflow();
-  // Again with the calibrated sigma (the fastest impact, so the time-step guard, depend on it).
-  const std::vector<std::string> warnings = check_scene_before_run(scene_, options_.force);
+  // Again with a calibrated sigma: the fastest impact, so the time-step guard, depend on it.
+  if (calibrate_inflow()) warnings = check_scene_before_run(scene_, options_.force);
   for (const std::string& w : warnings) std::cerr << "granshock: warning: " << w << "\n";
 
   total_steps_ = scene_.total_steps();
@@ -98,8 +97,8 @@ int BowShockRun::execute() {
 // calibrated in the inlet channel before anything is written. The calibration is a pure
 // function of the scene, so a resumed run computes the same sigma; the resolved scene (in
 // run.h5 and the checkpoint) carries it.
-void BowShockRun::calibrate_inflow() {
-  if (scene_.inflow.mach_at != MachReference::inlet_bins) return;
+bool BowShockRun::calibrate_inflow() {
+  if (scene_.inflow.mach_at != MachReference::inlet_bins) return false;
   if (!options_.quiet)
     std::cerr << fmt::format(
         "granshock: calibrating sigma so that Ma over the two inlet bin rows is {:g} "
@@ -120,6 +119,7 @@ void BowShockRun::calibrate_inflow() {
         "the inlet rows after {} channel run{}\n",
         calibration_->sigma, calibration_->sigma_inserted, last.mach, last.mach_err,
         calibration_->iterations.size(), calibration_->iterations.size() == 1 ? "" : "s");
+  return true;
 }
 
 // The time loop from the current step to the end, a signal or --stop-after-steps.

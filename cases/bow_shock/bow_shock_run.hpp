@@ -37,7 +37,7 @@ class BowShockRun {
   };
 
   int advance_to_end();
-  void calibrate_inflow();
+  bool calibrate_inflow();  // true when it changed sigma (inflow.mach_at = "inlet_bins")
   void start_fresh();
   void resume();
   void actions_at(long step);
