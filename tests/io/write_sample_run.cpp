@@ -171,7 +171,9 @@ int main(int argc, char** argv) {
     if (argc == 4 && std::string(argv[1]) == "--bench-checkpoint") {
       return bench_checkpoint(argv[2], std::atoi(argv[3]));
     }
-    if (argc != 2) {
+    // An option-like DIR is a mistyped flag, not a directory to create (a stray
+    // `write_sample_run --help` once wrote its files into ./--help).
+    if (argc != 2 || argv[1][0] == '-') {
       std::fprintf(stderr, "usage: %s DIR | --bench DIR N DIM | --bench-checkpoint DIR N\n",
                    argv[0]);
       return 2;
