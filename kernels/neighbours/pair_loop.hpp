@@ -20,6 +20,7 @@ struct PairLoop {
   Kokkos::View<int*, MemSpace> species;
   Kokkos::View<Real*, MemSpace> radius;  // per species
   BoxGeometry<Dim, Real> box;
+  Real max_radius;  // of all species: partners beyond ri + max_radius are not looked up
 
   KOKKOS_FORCEINLINE_FUNCTION Vec<Dim, Real> position(int i) const {
     Vec<Dim, Real> r;
@@ -32,12 +33,17 @@ struct PairLoop {
   template <class F>
   KOKKOS_FORCEINLINE_FUNCTION void for_each_contact(int i, const Vec<Dim, Real>& xi, Real ri,
                                                     F&& touching) const {
+    // Most list partners are not touching: they are rejected on the distance alone,
+    // before the two dependent loads of their radius (species, then radius).
+    const Real reach = ri + max_radius;
+    const Real reach2 = reach * reach;
     for (int k = offsets(i); k < offsets(i + 1); ++k) {
       const int j = neighbours(k);
+      const Vec<Dim, Real> dx = box.nearby_image(xi - position(j));
+      const Real r2 = dot(dx, dx);
+      if (r2 >= reach2) continue;
       const int sj = species(j);
       const Real rsum = ri + radius(sj);
-      const Vec<Dim, Real> dx = box.minimum_image(xi - position(j));
-      const Real r2 = dot(dx, dx);
       if (r2 >= rsum * rsum) continue;
       touching(j, sj, dx, r2, rsum);
     }

@@ -42,13 +42,45 @@ struct ContactForceKernel {
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
     const Vec<Dim, Real> xi = pairs.position(i);
     const Vec<Dim, Real> vi = velocity(i);
+    if constexpr (Mode == ForceMode::virial) {
+      Real w[Dim * Dim] = {};
+      Vec<Dim, Real> force = Vec<Dim, Real>::zero();
+      Real torque = 0;
+      int used_slots = 0;
+      sum_contacts(i, xi, vi, force, torque, used_slots, w);
+      for (int k = 0; k < Dim * Dim; ++k) virial(i, k) = w[k];
+    } else {
+      Vec<Dim, Real> force;
+      Real torque;
+      total(i, xi, vi, force, torque);
+      for (int d = 0; d < Dim; ++d) p.f(i, d) = force[d];
+      if constexpr (V::friction) p.torque(i) = torque;
+    }
+  }
+
+  // The force and torque on particle i at xi with velocity vi (ForceMode::forces): its
+  // contacts, their springs (updated) and the obstacle. The fused step (fused_step.hpp)
+  // calls it directly and keeps the result in registers.
+  KOKKOS_FORCEINLINE_FUNCTION void total(int i, const Vec<Dim, Real>& xi, const Vec<Dim, Real>& vi,
+                                         Vec<Dim, Real>& force, Real& torque) const {
+    force = Vec<Dim, Real>::zero();
+    torque = 0;
+    int used_slots = 0;  // bit s set when slot s carried a contact this step
+    sum_contacts(i, xi, vi, force, torque, used_slots, nullptr);
+    if constexpr (V::friction) release_unused_slots(i, used_slots);
+    if constexpr (V::obstacle::present) {
+      const int si = p.species(i);
+      obstacle_contact(i, xi, vi, si, table.radius(si), force, torque);
+    }
+  }
+
+  // Sums the pair forces of i's contacts into force (and torque; w, the virial, in
+  // ForceMode::virial).
+  KOKKOS_FORCEINLINE_FUNCTION void sum_contacts(int i, const Vec<Dim, Real>& xi,
+                                                const Vec<Dim, Real>& vi, Vec<Dim, Real>& force,
+                                                Real& torque, int& used_slots, Real* w) const {
     const int si = p.species(i);
     const Real ri = table.radius(si);
-    Vec<Dim, Real> force = Vec<Dim, Real>::zero();
-    Real torque = 0;
-    Real w[Dim * Dim] = {};
-    int used_slots = 0;  // bit s set when slot s carried a contact this step
-
     pairs.for_each_contact(
         i, xi, ri, [&](int j, int sj, const Vec<Dim, Real>& dx, Real r2, Real rsum) {
           const Real r = dmath::sqrt(r2);
@@ -82,15 +114,6 @@ struct ContactForceKernel {
             for (int a = 0; a < Dim; ++a)
               for (int b = 0; b < Dim; ++b) w[a * Dim + b] += Real(0.5) * dx[a] * pair_force[b];
         });
-    if constexpr (Mode == ForceMode::virial) {
-      for (int k = 0; k < Dim * Dim; ++k) virial(i, k) = w[k];
-      return;
-    } else {
-      if constexpr (V::friction) release_unused_slots(i, used_slots);
-      if constexpr (V::obstacle::present) obstacle_contact(i, xi, vi, si, ri, force, torque);
-      for (int d = 0; d < Dim; ++d) p.f(i, d) = force[d];
-      if constexpr (V::friction) p.torque(i) = torque;
-    }
   }
 
   KOKKOS_FORCEINLINE_FUNCTION Vec<Dim, Real> velocity(int i) const {

@@ -1,0 +1,64 @@
+#!/usr/bin/env bash
+# granshock's gas benchmark side by side with a hand-written reference step (an OpenMP
+# program outside this repository that advances the same 2-D steel/aluminium gas and
+# prints "RESULT <variant> ... median <rate> ps/s"; docs/benchmarks.md). The two run in
+# alternation, REPEATS times per case, so that both see the same machine; the script
+# prints the medians and the ratio granshock / reference per case.
+#
+# Usage: compare_reference.sh REFERENCE.cpp|REFERENCE_BINARY [BUILD_DIR]
+# Environment: REPEATS (default 5), THREADS (default 2), SECONDS_PER_RUN (default 2),
+#   CASES (default "0.1:32000 0.5:32000 0.1:2000000 0.5:2000000", phi:N),
+#   VARIANT (the reference's variant, default vl_1p), SIGMA (default 0.15 m/s, the
+#   reference's initial velocity spread), SKIN (granshock's skin in d; default: its own).
+set -euo pipefail
+reference=$1
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+build=${2:-$here/../../build}
+repeats=${REPEATS:-5}
+threads=${THREADS:-2}
+seconds=${SECONDS_PER_RUN:-2}
+cases=${CASES:-"0.1:32000 0.5:32000 0.1:2000000 0.5:2000000"}
+variant=${VARIANT:-vl_1p}
+sigma=${SIGMA:-0.15}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+if [[ $reference == *.cpp ]]; then
+  g++ -O3 -march=native -fopenmp -std=c++17 -o "$work/reference" "$reference"
+  reference=$work/reference
+fi
+bench=$build/apps/bench/granshock_bench_gas
+[[ -x $bench ]] || { echo "no $bench: build granshock first" >&2; exit 2; }
+export OMP_NUM_THREADS=$threads OMP_PROC_BIND=close OMP_PLACES=cores SOL_CACHE=$work
+
+reference_rate() {  # phi n -> particle-steps/s (one run)
+  "$reference" bench "$variant" "$1" "$2" "$seconds" 1 2>/dev/null |
+    awk '/^RESULT/ { for (k = 1; k <= NF; ++k) if ($k == "median") print $(k + 1) }'
+}
+
+granshock_rate() {  # phi n -> particle-steps/s (one repeat)
+  local skin=()
+  [[ -n ${SKIN:-} ]] && skin=(--skin "$SKIN")
+  "$bench" --phi "$1" --particles "$2" --sigma "$sigma" --repeats 1 --min-seconds "$seconds" \
+    "${skin[@]}" --json "$work/g.json" >/dev/null 2>&1
+  /usr/bin/python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['results'][0]['median'])" \
+    "$work/g.json"
+}
+
+median() { tr ' ' '\n' | grep -v '^$' | sort -g | awk '{ a[NR] = $1 } END { print a[int((NR + 1) / 2)] }'; }
+
+echo "| phi | N | $variant p-steps/s | granshock p-steps/s | ratio |"
+echo "|---|---|---|---|---|"
+for c in $cases; do
+  phi=${c%%:*} n=${c##*:}
+  ref_rates="" gs_rates=""
+  for ((r = 1; r <= repeats; ++r)); do
+    ref_rates+=" $(reference_rate "$phi" "$n")"
+    gs_rates+=" $(granshock_rate "$phi" "$n")"
+  done
+  ref=$(echo "$ref_rates" | median) gs=$(echo "$gs_rates" | median)
+  printf '| %s | %s | %.3g | %.3g | %.2f |\n' "$phi" "$n" "$ref" "$gs" \
+    "$(awk -v a="$gs" -v b="$ref" 'BEGIN { print a / b }')"
+done
+echo "($repeats alternating repeats of ${seconds} s, $threads threads; reference variant $variant;" \
+  "sigma $sigma m/s)"

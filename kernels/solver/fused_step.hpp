@@ -1,0 +1,67 @@
+// The fused step: one pass per time step instead of three (docs/design.md, "The solver").
+// Velocity Verlet split into half steps (velocity_verlet.hpp) runs, between two list
+// checks, forces -> second half of step n -> first half of step n+1; the fused kernel does
+// the three for each particle in one pass, with the force kept in registers:
+//   f_i  = F(x^{n+1}, v^{n+1/2})                       (contact_forces.hpp, total())
+//   v_i' = v_i + dt/2 (f_i/m_i + g);  v_i'' = v_i' + dt/2 (f_i/m_i + g);  x_i' = x_i + dt v_i''
+// Each partner's position and velocity are read while other threads move theirs, so the
+// new positions, velocities (and spins) go to second buffers that the solver swaps in
+// afterwards. The arithmetic, operation for operation, is that of the separate halves, so
+// the trajectory is bitwise the same (tests/reference/check_bitwise.sh). The pass also
+// returns the largest squared displacement since the last list build, like first_half().
+// The forces are not stored: advance() ends with the unfused forces and second half, so
+// a caller always finds f, v and x of the same step.
+#pragma once
+
+#include <Kokkos_Core.hpp>
+
+#include "solver/contact_forces.hpp"
+
+namespace granshock {
+
+template <class V, class ExecSpace>
+struct FusedStepKernel {
+  static constexpr int Dim = V::dim;
+  using Real = typename V::real;
+  using Mem = typename ExecSpace::memory_space;
+  using VectorView = Kokkos::View<Real* [Dim], Mem>;
+  using ScalarView = Kokkos::View<Real*, Mem>;
+
+  ContactForceKernel<V, ExecSpace> forces;  // reads the current x, v (and spin)
+  VectorView x_next, v_next;
+  ScalarView omega_next;  // with friction
+  Vec<Dim, Real> gravity;
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int i, Real& worst) const {
+    const auto& p = forces.p;
+    const Vec<Dim, Real> xi = forces.pairs.position(i);
+    const Vec<Dim, Real> vi = forces.velocity(i);
+    Vec<Dim, Real> f;
+    Real torque;
+    forces.total(i, xi, vi, f, torque);
+    const int s = p.species(i);
+    const Real im = forces.table.inv_mass(s);
+    const Real half = Real(0.5) * forces.dt, step = forces.dt;
+    Real d2 = 0;
+    for (int d = 0; d < Dim; ++d) {
+      Real v = vi[d];
+      v += half * (f[d] * im + gravity[d]);  // second half of this step
+      v += half * (f[d] * im + gravity[d]);  // first half of the next
+      const Real x = xi[d] + step * v;
+      v_next(i, d) = v;
+      x_next(i, d) = x;
+      const Real moved = x - p.x_ref(i, d);
+      d2 += moved * moved;
+    }
+    if constexpr (V::friction) {
+      const Real ii = forces.table.inv_inertia(s);
+      Real w = p.omega(i);
+      w += half * torque * ii;
+      w += half * torque * ii;
+      omega_next(i) = w;
+    }
+    if (d2 > worst) worst = d2;
+  }
+};
+
+}  // namespace granshock
