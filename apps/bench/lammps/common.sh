@@ -1,0 +1,51 @@
+# Shared by the scripts in apps/bench/lammps (sourced, not run).
+
+# Prints the LAMMPS binary: $LMP if set, else the first of lmp (Debian's name),
+# lmp_mpi, lmp_serial on PATH. Fails when there is none.
+find_lmp() {
+  if [[ -n "${LMP:-}" ]]; then
+    command -v "$LMP"
+    return
+  fi
+  local name
+  for name in lmp lmp_mpi lmp_serial; do
+    if command -v "$name"; then return 0; fi
+  done
+  echo "no LAMMPS binary (lmp, lmp_mpi or lmp_serial) on PATH: run" \
+    "apps/bench/lammps/install_lammps.sh, or set LMP" >&2
+  return 1
+}
+
+# Prints the version line of a LAMMPS binary, e.g. "29 Sep 2021 - Update 2".
+lmp_version() {
+  "$1" -h </dev/null | sed -n 's/^Large-scale Atomic\/Molecular Massively Parallel Simulator - //p'
+}
+
+# Prints the granshock binary: $GRANSHOCK, else <repo>/build/apps/granshock/granshock.
+find_granshock() {
+  local root
+  root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../../.." && pwd)
+  local bin=${GRANSHOCK:-$root/build/apps/granshock/granshock}
+  if [[ ! -x $bin ]]; then
+    echo "no granshock binary at $bin: build the repository (cmake --build build) or set" \
+      "GRANSHOCK" >&2
+    return 1
+  fi
+  echo "$bin"
+}
+
+# mpirun for RANKS processes of one thread each. Open MPI refuses root without
+# --allow-run-as-root and more ranks than cores without --oversubscribe.
+lammps_mpirun() {
+  local ranks=$1
+  shift
+  OMP_NUM_THREADS=1 mpirun --allow-run-as-root --oversubscribe -np "$ranks" "$@"
+}
+
+# Particle-steps per second from a LAMMPS log: atoms x steps / seconds of the last
+# "Loop time of T on P procs for S steps with N atoms" line.
+loop_rate() {
+  awk '/^Loop time of/ { t = $4; s = $9; n = $12 } END {
+    if (t == "") { print "no Loop time line" > "/dev/stderr"; exit 1 }
+    printf "%.4g\n", n * s / t }' "$1"
+}
