@@ -16,7 +16,7 @@
 # bench_bow_shock.sh). The LAMMPS cylinder has diameter 10 d like collide's.
 #
 # Usage: check_contact_law.sh [SPEED] [E]   (defaults 1 m/s, 0.5)
-# Environment: GRANSHOCK (granshock binary), LMP (LAMMPS binary), TOL (largest relative
+# Environment: GRANSHOCK (granshock binary), LMP (LAMMPS binary), NICE (default 10), TOL (largest relative
 #   difference accepted, default 1e-3). Measured at 0.1, 1 and 5 m/s, e = 0.5 and 0.9: the
 #   particle pairs agree to 1e-15 and the wall impacts to 1.5e-6 (the rounding of where the
 #   contact starts within a step); a wrong factor moves e_eff by percents (the untranslated
@@ -40,10 +40,10 @@ echo "speed $speed m/s, e = $e, tsuji e' = $("$here/contact_law.py" tsuji "$e")"
 
 fail=0
 for pair in steel-steel steel-aluminium steel-obstacle aluminium-obstacle; do
-  nice -n 10 "$granshock" collide --pair "$pair" --speed "$speed" --e "$e" > "$work/$pair.json"
+  run_nice "$granshock" collide --pair "$pair" --speed "$speed" --e "$e" > "$work/$pair.json"
   # LAMMPS input and data file with collide's dt and start.
   /usr/bin/python3 "$here/collision.py" input "$work/$pair.json" "$work/$pair"
-  if ! (cd "$work" && nice -n 10 "$lmp" -in "$pair.in" -log "$pair.log" -screen none); then
+  if ! (cd "$work" && run_nice "$lmp" -in "$pair.in" -log "$pair.log" -screen none); then
     tail -5 "$work/$pair.log" >&2
     exit 1
   fi

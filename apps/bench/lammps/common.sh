@@ -34,18 +34,25 @@ find_granshock() {
   echo "$bin"
 }
 
-# mpirun for RANKS processes of one thread each. Open MPI refuses root without
+# Heavy commands run at niceness $NICE (default 10): these machines are often shared,
+# and on an idle machine the niceness changes nothing.
+run_nice() {
+  nice -n "${NICE:-10}" "$@"
+}
+
+# mpirun for RANKS processes of one thread each, niced. Open MPI refuses root without
 # --allow-run-as-root and more ranks than cores without --oversubscribe.
 lammps_mpirun() {
   local ranks=$1
   shift
-  OMP_NUM_THREADS=1 mpirun --allow-run-as-root --oversubscribe -np "$ranks" "$@"
+  OMP_NUM_THREADS=1 run_nice mpirun --allow-run-as-root --oversubscribe -np "$ranks" "$@"
 }
 
-# Particle-steps per second from a LAMMPS log: atoms x steps / seconds of the last
-# "Loop time of T on P procs for S steps with N atoms" line.
+# Particle-steps per second from a LAMMPS log: ATOMS (default: the atoms at the end) x
+# steps / seconds of the last "Loop time of T on P procs for S steps with N atoms" line.
 loop_rate() {
-  awk '/^Loop time of/ { t = $4; s = $9; n = $12 } END {
+  awk -v atoms="${2:-}" '/^Loop time of/ { t = $4; s = $9; n = $12 } END {
     if (t == "") { print "no Loop time line" > "/dev/stderr"; exit 1 }
+    if (atoms != "") n = atoms
     printf "%.4g\n", n * s / t }' "$1"
 }

@@ -21,8 +21,8 @@ if [[ $(id -u) -ne 0 ]]; then
 fi
 export DEBIAN_FRONTEND=noninteractive
 apt-get update
-# openmpi-bin brings mpirun; the lammps package pulls in the MPI library itself.
-apt-get install -y lammps openmpi-bin
+# lammps depends on libopenmpi3 and mpi-default-bin (Open MPI's mpirun).
+apt-get install -y lammps
 lmp=$(find_lmp)
 echo "installed: $lmp ($(lmp_version "$lmp"))"
 # The scripts need the GRANULAR package (pair_style granular, fix wall/gran/region).
