@@ -48,8 +48,9 @@ if [[ ! -f $state/summary.json ]]; then
   [[ -z ${STATE:-} ]] || { echo "no finished granshock run in $state" >&2; exit 1; }
   echo "making the start state: granshock run scenes/default.toml to t = 0.1 s in $state" >&2
   mkdir -p "$(dirname "$state")"
-  run_nice "$(find_granshock)" run "$root/scenes/default.toml" --out "$state" --overwrite \
-    --quiet --set time.duration=0.1 --set time.production_start=0.05 >&2
+  OMP_WAIT_POLICY=passive OMP_PROC_BIND=false \
+    run_nice "$(find_granshock)" run "$root/scenes/default.toml" --out "$state" --overwrite \
+      --quiet --set time.duration=0.1 --set time.production_start=0.05 >&2
 fi
 "$here/bow_data.py" "$state" "$work/bow.data" > "$work/scene.lmp"
 "$here/contact_law.py" pairs 0.5 > "$work/pairs.lmp"
@@ -88,4 +89,5 @@ read -r n0 n1 < <(awk '/^Step/ { getline a; getline b; split(a, x); split(b, y)
 echo "particles $n0 -> $n1 (left the box: $((n0 - n1)))" >&2
 awk '/^INFLOW_MISSED/ { printf "granshock would have inserted about %.0f\n", $2 }' "$work/bow.log" >&2
 grep -E '^Loop time|CPU use|^Neighbor list builds' "$work/bow.log" >&2
+warn_if_disturbed "$work/bow.log"
 loop_rate "$work/bow.log" "$(((n0 + n1) / 2))"

@@ -54,4 +54,5 @@ EOF
 echo "LAMMPS $(lmp_version "$lmp"), $ranks rank(s), phi $phi, sigma $sigma m/s, $steps steps" >&2
 (cd "$work" && lammps_mpirun "$ranks" "$lmp" -in gas.in -log gas.log -screen none)
 grep -E '^Loop time|CPU use|^Neighbor list builds' "$work/gas.log" >&2
+warn_if_disturbed "$work/gas.log"
 loop_rate "$work/gas.log"

@@ -18,9 +18,11 @@
 # Usage: check_contact_law.sh [SPEED] [E]   (defaults 1 m/s, 0.5)
 # Environment: GRANSHOCK (granshock binary), LMP (LAMMPS binary), NICE (default 10), TOL (largest relative
 #   difference accepted, default 1e-3). Measured at 0.1, 1 and 5 m/s, e = 0.5 and 0.9: the
-#   particle pairs agree to 1e-15 and the wall impacts to 1.5e-6 (the rounding of where the
-#   contact starts within a step); a wrong factor moves e_eff by percents (the untranslated
-#   tsuji input e' = e = 0.5 gives e_eff = 0.617 instead of 0.501).
+#   particle pairs agree to 1e-15 and the wall impacts to 1.5e-6 (collide's gap of 5 v dt
+#   closes exactly on a step, and the two codes' different formulas for the distance to
+#   the cylinder round that first overlap to either side of zero); a wrong factor moves
+#   e_eff by percents (the untranslated tsuji input e' = e = 0.5 gives e_eff = 0.617
+#   instead of 0.501).
 # Exit status 1 when any difference exceeds TOL.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)

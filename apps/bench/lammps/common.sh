@@ -1,4 +1,5 @@
-# Shared by the scripts in apps/bench/lammps (sourced, not run).
+# shellcheck shell=bash
+# Shared by the scripts in apps/bench (sourced, not run).
 
 # Prints the LAMMPS binary: $LMP if set, else the first of lmp (Debian's name),
 # lmp_mpi, lmp_serial on PATH. Fails when there is none.
@@ -55,4 +56,12 @@ loop_rate() {
     if (t == "") { print "no Loop time line" > "/dev/stderr"; exit 1 }
     if (atoms != "") n = atoms
     printf "%.4g\n", n * s / t }' "$1"
+}
+
+# Warns on stderr when a LAMMPS run got less than 90 % of its cores ("CPU use" line):
+# other processes competed for them and the rate measures the machine's load.
+warn_if_disturbed() {
+  awk '/% CPU use with/ { u = $1 + 0; if (u < 90)
+    printf "warning: LAMMPS got %s CPU use: the machine was busy, the rate is not valid\n", \
+      $1 > "/dev/stderr" }' "$1"
 }

@@ -94,7 +94,7 @@ def tsuji_input(e):
 def pair_coeffs(e):
     """LAMMPS pair_style granular coefficients for types 1 (steel) and 2 (aluminium)."""
     ep = tsuji_input(e)
-    tail = f"tangential linear_nohistory 0 0 damping tsuji"
+    tail = "tangential linear_nohistory 0 0 damping tsuji"
     lines = []
     for i, a in enumerate(TYPES, 1):
         for j, b in enumerate(TYPES, 1):
@@ -135,17 +135,15 @@ def main():
     m = sub.add_parser("mass", help="print the mass of a d = 1 mm sphere of a material")
     m.add_argument("material", choices=TYPES)
     a = p.parse_args()
-    header = (f"# granshock's hertz law (LIGGGHTS), e = {getattr(a, 'e', 0)}: tsuji e' = "
-              f"{tsuji_input(a.e) if a.what != 'mass' else 0:.10f}, alpha = sqrt(5)|beta| "
-              f"(apps/bench/lammps/contact_law.py)")
-    if a.what == "tsuji":
-        print(f"{tsuji_input(a.e):.17g}")
-    elif a.what == "pairs":
-        print("\n".join([header] + pair_coeffs(a.e)))
-    elif a.what == "walls":
-        print("\n".join([header] + wall_fixes(a.e, a.region)))
-    else:
+    if a.what == "mass":
         print(f"{mass(a.material):.17g}")
+    elif a.what == "tsuji":
+        print(f"{tsuji_input(a.e):.17g}")
+    else:
+        print(f"# granshock's hertz law (LIGGGHTS), e = {a.e}: tsuji input e' = "
+              f"{tsuji_input(a.e):.10f}, alpha = sqrt(5)|beta| = "
+              f"{math.sqrt(5) * abs(beta(a.e)):.10f} (apps/bench/lammps/contact_law.py)")
+        print("\n".join(pair_coeffs(a.e) if a.what == "pairs" else wall_fixes(a.e, a.region)))
 
 
 if __name__ == "__main__":
