@@ -6,15 +6,17 @@
 # particle-steps per second of the timed run (atoms x steps / "Loop time"), which
 # excludes LAMMPS' setup (reading the data file, the first neighbour list).
 #
-# Usage: bench_gas.sh PHI N STEPS RANKS     e.g. bench_gas.sh 0.1 32000 2000 2
-#   N is rounded to a full square lattice as in granshock (32000 -> 32041).
+# Usage: bench_gas.sh PHI N STEPS RANKS     e.g. bench_gas.sh 0.1 32000 5000 1
+#   N is rounded to a full square lattice as in granshock (32000 -> 32041). At sigma
+#   0.15 m/s the list is rebuilt about every 450 steps: STEPS >= 5000 times ten builds
+#   (2-4 s for N = 32000 on one core).
 # Environment: SIGMA (velocity standard deviation per component, default 0.15 m/s;
 #   granshock_bench_gas's default is --sigma 1.0, pass the same to both), LMP, NICE
 #   (niceness, default 10), KEEP (a folder to keep the input, data file and log in).
 # Output: progress on stderr, the particle-steps/s alone on the last line of stdout.
 #
-# LAMMPS runs RANKS MPI processes of one thread each (the package is built without
-# OpenMP styles in use here); compare with granshock at the same number of cores.
+# LAMMPS runs RANKS MPI processes of one thread each (Debian's build has no OPENMP
+# package, so MPI is its only parallelism); compare with granshock at as many threads.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 source "$here/common.sh"
