@@ -1,6 +1,6 @@
 // DemSolver: the DEM time loop of one compiled variant (docs/design.md, "The solver"):
 //   first half-step -> [rebuild lists if some particle moved > skin/2] -> forces ->
-//   second half-step
+//   second half-step, with the last three and the next first half fused into one pass
 // entirely in Kokkos kernels on ExecSpace. It owns the particles (particles/), the cell
 // sort and Verlet list (neighbours/), and the bin accumulators of field sampling
 // (sampling/); population control, diagnostics and state I/O are parts of their own
@@ -26,6 +26,7 @@
 #include "solver.hpp"
 #include "solver/contact_forces.hpp"
 #include "solver/diagnostics.hpp"
+#include "solver/fused_step.hpp"
 #include "solver/pair_table.hpp"
 #include "solver/state_io.hpp"
 #include "solver/velocity_verlet.hpp"
@@ -118,13 +119,22 @@ class DemSolver final : public Solver {
     return hp;
   }
 
+  // Velocity Verlet, steps times. Inside the loop the second half of step n, the first
+  // half of n+1 and the forces between them are one fused pass (fused_step.hpp); the
+  // first step starts with the first half and the last ends with forces and the second
+  // half, so between calls x, v and f belong to the same step, as with separate halves.
   void advance(long steps) override {
+    if (steps <= 0) return;
     const Real rebuild_d2 = Real(0.25) * skin_ * skin_;  // (skin/2)^2
+    Real moved2 = integrator_.first_half(p_, table_);
     for (long s = 0; s < steps; ++s) {
-      const Real moved2 = integrator_.first_half(p_, table_);
       if (Real(comm_.max(double(moved2))) > rebuild_d2) rebuild_lists();
-      compute_forces();
-      integrator_.second_half(p_, table_);
+      if (s + 1 < steps) {
+        moved2 = fused_step();
+      } else {
+        compute_forces();
+        integrator_.second_half(p_, table_);
+      }
       ++steps_;
     }
     if constexpr (V::friction) {
@@ -157,6 +167,28 @@ class DemSolver final : public Solver {
     ContactForceKernel<V, ExecSpace> kernel{
         p_, pair_loop(), table_, obstacle_, Real(setup_.dt), history_overflow_, {}};
     Kokkos::parallel_for("contact_forces", Policy(0, p_.n), kernel);
+  }
+
+  // Forces at the current positions, then the end of this step and the start of the next
+  // in one pass; returns the largest squared displacement since the last list build.
+  Real fused_step() {
+    if (int(x_next_.extent(0)) < p_.capacity()) {
+      x_next_ = decltype(x_next_)("x_next", p_.capacity());
+      v_next_ = decltype(v_next_)("v_next", p_.capacity());
+      if constexpr (V::friction) omega_next_ = decltype(omega_next_)("omega_next", p_.capacity());
+    }
+    const FusedStepKernel<V, ExecSpace> kernel{
+        {p_, pair_loop(), table_, obstacle_, Real(setup_.dt), history_overflow_, {}},
+        x_next_,
+        v_next_,
+        omega_next_,
+        integrator_.gravity};
+    Real moved2 = 0;
+    Kokkos::parallel_reduce("fused_step", Policy(0, p_.n), kernel, Kokkos::Max<Real>(moved2));
+    std::swap(p_.x, x_next_);
+    std::swap(p_.v, v_next_);
+    if constexpr (V::friction) std::swap(p_.omega, omega_next_);
+    return moved2;
   }
 
   Diagnostics diagnostics() const override { return diagnostics_part().compute(comm_); }
@@ -273,8 +305,10 @@ class DemSolver final : public Solver {
   }
 
   PairLoop<Dim, Real, Mem> pair_loop() const {
-    return {list_.offsets, list_.neighbours, p_.x, p_.species, table_.radius, box_};
+    return {list_.offsets, list_.neighbours, p_.x, p_.species, table_.radius, box_, max_radius()};
   }
+  // Not smaller than any species' radius in the table (the same double, then rounded).
+  Real max_radius() const { return Real(0.5 * setup_.max_diameter()); }
   SolverDiagnostics<V, ExecSpace> diagnostics_part() const {
     return {p_, pair_loop(), table_, obstacle_};
   }
@@ -299,6 +333,8 @@ class DemSolver final : public Solver {
   FieldSampling sampling_;
   BinAccumulator<ExecSpace> grid_sums_, profile_sums_;
   Kokkos::View<Real * [Dim * Dim], Mem> virial_;
+  typename Store::VectorView x_next_, v_next_;  // the fused step's second buffers
+  typename Store::ScalarView omega_next_;
   long steps_ = 0;
   long builds_ = 0;
 };
