@@ -32,7 +32,7 @@ struct FusedStepKernel {
   ScalarView omega_next;  // with friction
   Vec<Dim, Real> gravity;
 
-  KOKKOS_INLINE_FUNCTION void operator()(const int i, Real& worst) const {
+  KOKKOS_FORCEINLINE_FUNCTION void operator()(const int i, Real& worst) const {
     const auto& p = forces.p;
     const Vec<Dim, Real> xi = forces.pairs.position(i);
     const Vec<Dim, Real> vi = forces.velocity(i);
