@@ -44,6 +44,16 @@ endif()
 if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
   target_compile_options(granshock_fp INTERFACE $<$<COMPILE_LANGUAGE:CXX>:-fno-tree-loop-vectorize>)
 endif()
+# GRANSHOCK_NATIVE: with -ffp-contract=off above, the instructions change but not the
+# arithmetic, so a native build gives bitwise the results of a portable one
+# (tests/reference/check_bitwise.sh passes with either).
+if(GRANSHOCK_NATIVE AND NOT GRANSHOCK_NVCC AND CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
+  include(CheckCXXCompilerFlag)
+  check_cxx_compiler_flag(-march=native GRANSHOCK_HAS_MARCH_NATIVE)
+  if(GRANSHOCK_HAS_MARCH_NATIVE)
+    target_compile_options(granshock_fp INTERFACE $<$<COMPILE_LANGUAGE:CXX>:-march=native>)
+  endif()
+endif()
 if(GRANSHOCK_NVCC)
   target_compile_options(granshock_fp INTERFACE $<$<COMPILE_LANGUAGE:CXX>:--fmad=false>)
 endif()

@@ -35,9 +35,13 @@ struct BinLayout {
   }
 };
 
-// How sampled values are scattered into bins on the device: atomic adds, or a ScatterView
-// (measured against each other in docs/fields.md, "Cost of sampling").
-enum class ScatterStrategy { atomic, scatter_view };
+// How sampled values are scattered into bins on the device (measured against each other
+// in docs/fields.md, "Cost of sampling"): atomic adds, a ScatterView, or rows of bins
+// owned by threads (each thread scans every particle and adds those in its rows, without
+// atomics and in particle order, so the sums are bitwise the same for any thread count;
+// for host backends, where threads are few). automatic: rows on a host backend with at
+// most 16 threads, atomic otherwise.
+enum class ScatterStrategy { automatic, atomic, scatter_view, rows };
 
 // The finer stagnation-line profile: a strip x in [x_lo, x_hi] cut along y into n bins
 // of dy from y0, with the same quantities per bin.
@@ -50,7 +54,7 @@ struct ProfileLayout {
 struct FieldSampling {
   BinLayout grid;
   ProfileLayout profile;  // n = 0: none
-  ScatterStrategy strategy = ScatterStrategy::atomic;
+  ScatterStrategy strategy = ScatterStrategy::automatic;
 };
 
 }  // namespace granshock

@@ -59,7 +59,7 @@ struct Scene {
   RunControl run;
   MassDefinition mass_definition = MassDefinition::mixture_mean;
   double bin_size_m = 3e-3;
-  ScatterStrategy field_scatter = ScatterStrategy::atomic;
+  ScatterStrategy field_scatter = ScatterStrategy::automatic;
 
   long total_steps() const;
   // The fastest relative normal impact the scene can produce: a particle at U + 4 sigma

@@ -34,8 +34,10 @@ bool is_safe_name(const std::string& name) {
   return true;
 }
 
+const char* const kScatterNames[] = {"auto", "atomic", "scatter_view", "rows"};
+
 std::string scatter_name(ScatterStrategy s) {
-  return s == ScatterStrategy::atomic ? "atomic" : "scatter_view";
+  return kScatterNames[int(s)];
 }
 
 // What the keys of a table are read into: the scene being built and, inside an item table
@@ -436,9 +438,9 @@ const Key kNumericsKeys[] = {
      [](const Writing& w, toml::table& t, const std::string& k) { t.insert(k, w.s.bin_size_m); }},
     {"field_scatter", "string",
      [](TableReader& r, Reading& st, const std::string& k) {
-       st.s.field_scatter = r.choice(k, {"atomic", "scatter_view"}, "atomic") == "atomic"
-                                ? ScatterStrategy::atomic
-                                : ScatterStrategy::scatter_view;
+       const std::string name = r.choice(k, {"auto", "atomic", "scatter_view", "rows"}, "auto");
+       for (int s = 0; s < 4; ++s)
+         if (name == kScatterNames[s]) st.s.field_scatter = ScatterStrategy(s);
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, scatter_name(w.s.field_scatter));

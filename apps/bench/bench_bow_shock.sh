@@ -28,9 +28,13 @@ granshock=$(find_granshock)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 out=${KEEP:-$work/run}
-# Passive waiting and no pinning: on a shared machine spinning OpenMP threads that lose
-# their core stall every barrier (compare_builds.sh does the same).
-export OMP_NUM_THREADS=${THREADS:-2} OMP_PROC_BIND=false OMP_WAIT_POLICY=passive
+# OpenMP threads wait for the next parallel region by spinning (OMP_WAIT_POLICY=active,
+# the default for short waits): granshock launches one region per step, and with
+# passive waiting (a sleep and a wake-up per region) the default scene ran at half the
+# rate (docs/benchmarks.md). Set OMP_WAIT_POLICY=passive on a machine shared with other
+# work, where a spinning thread that loses its core stalls every barrier.
+export OMP_NUM_THREADS=${THREADS:-2} OMP_PROC_BIND=${OMP_PROC_BIND:-false} \
+  OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-active}
 
 dt=$(/usr/bin/python3 -c 'import sys, tomllib; print(repr(tomllib.load(open(sys.argv[1], "rb"))["time"]["dt"]))' "$scene")
 times=(--set "time.duration=$(/usr/bin/python3 -c "print(repr(($warmup + $steps) * $dt))")"

@@ -10,6 +10,7 @@
 // Threads: OMP_NUM_THREADS or --kokkos-threads=N (Kokkos 3.4 removes its own
 // --kokkos-* arguments before the benchmark's options are parsed).
 #include <sys/resource.h>
+#include <unistd.h>
 #include <CLI/CLI.hpp>
 #include <Kokkos_Core.hpp>
 #include <algorithm>
@@ -66,6 +67,11 @@ struct Row {
   double median = 0, min = 0, max = 0;
   double builds_per_1000_steps = 0;
   double contacts_per_particle = 0;
+  // Resident memory the solver added, from before make_solver to the end of the warm-up
+  // (every array allocated and touched), per particle; and what the process gained over
+  // the timed repeats (a leak or a growing list would show here).
+  double solver_bytes_per_particle = 0;
+  double timed_growth_bytes = 0;
 };
 
 double median_of(std::vector<double> v) {
@@ -88,6 +94,14 @@ std::string cpu_model() {
 std::string kokkos_version() {
   return std::to_string(KOKKOS_VERSION / 10000) + "." + std::to_string(KOKKOS_VERSION / 100 % 100) +
          "." + std::to_string(KOKKOS_VERSION % 100);
+}
+
+// The process's resident set (Linux /proc/self/statm), in bytes; 0 where unreadable.
+double resident_bytes() {
+  std::ifstream statm("/proc/self/statm");
+  double size_pages = 0, resident_pages = 0;
+  if (!(statm >> size_pages >> resident_pages)) return 0;
+  return resident_pages * double(sysconf(_SC_PAGESIZE));
 }
 
 double process_cpu_seconds() {
@@ -127,6 +141,7 @@ Row bench_one(const Options& o, double phi, int n_wanted) {
   spec.sigma_m_per_s = o.sigma;
   granshock::size_periodic_box(setup, spec);
   const granshock::HostParticles gas = granshock::make_homogeneous_gas(setup, spec);
+  const double resident_before = resident_bytes();
   auto solver = granshock::make_solver(setup, gas.size());
   solver->set_particles(gas);
 
@@ -154,6 +169,8 @@ Row bench_one(const Options& o, double phi, int n_wanted) {
     }
     row.warmup_seconds = timer.seconds();
   }
+  const double resident_warm = resident_bytes();
+  row.solver_bytes_per_particle = (resident_warm - resident_before) / double(row.particles);
   const double steps_per_second = double(row.warmup_steps) / row.warmup_seconds;
   const long planned = std::max(1L, long(std::ceil(o.min_seconds * steps_per_second)));
   const long chunk = std::max(1L, planned / 10);
@@ -184,20 +201,22 @@ Row bench_one(const Options& o, double phi, int n_wanted) {
   row.builds_per_1000_steps =
       1000.0 * double(solver->list_builds() - builds_before) / double(timed_steps);
   row.contacts_per_particle = double(solver->diagnostics().contacts) / double(row.particles);
+  row.timed_growth_bytes = resident_bytes() - resident_warm;
   return row;
 }
 
 void print_table_header() {
   std::printf(
       "| phi | N | threads | variant | median p-steps/s | min | max | "
-      "builds/1000 steps | contacts/particle |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|\n");
+      "builds/1000 steps | contacts/particle | bytes/particle | growth (kB) |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
 }
 
 void print_row(const Row& r) {
-  std::printf("| %.3g | %d | %d | %s | %.3e | %.3e | %.3e | %.2f | %.4f |\n", r.phi, r.particles,
-              r.threads, r.variant.c_str(), r.median, r.min, r.max, r.builds_per_1000_steps,
-              r.contacts_per_particle);
+  std::printf("| %.3g | %d | %d | %s | %.3e | %.3e | %.3e | %.2f | %.4f | %.0f | %.0f |\n", r.phi,
+              r.particles, r.threads, r.variant.c_str(), r.median, r.min, r.max,
+              r.builds_per_1000_steps, r.contacts_per_particle, r.solver_bytes_per_particle,
+              r.timed_growth_bytes / 1024);
   std::fflush(stdout);
 }
 
@@ -207,6 +226,8 @@ nlohmann::json to_json(const Row& r) {
           {"threads", r.threads},
           {"variant", r.variant},
           {"box_length_m", r.box_length_m},
+          {"solver_bytes_per_particle", r.solver_bytes_per_particle},
+          {"timed_growth_bytes", r.timed_growth_bytes},
           {"warmup_steps", r.warmup_steps},
           {"warmup_seconds", r.warmup_seconds},
           {"steps", r.steps},

@@ -17,7 +17,13 @@ n=${N:-32000}
 duration=${SCENE_DURATION:-0.05}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-export OMP_NUM_THREADS=$threads OMP_PROC_BIND=false OMP_WAIT_POLICY=passive
+# OpenMP threads wait for the next parallel region by spinning (OMP_WAIT_POLICY=active,
+# the default for short waits): granshock launches one region per step, and with
+# passive waiting (a sleep and a wake-up per region) the default scene ran at half the
+# rate (docs/benchmarks.md). Set OMP_WAIT_POLICY=passive on a machine shared with other
+# work, where a spinning thread that loses its core stalls every barrier.
+export OMP_NUM_THREADS=$threads OMP_PROC_BIND=${OMP_PROC_BIND:-false} \
+  OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-active}
 
 gas() {  # build phi -> particle-steps/s
   "$1/apps/bench/granshock_bench_gas" --particles "$n" --phi "$2" --repeats 1 \

@@ -118,8 +118,8 @@ echo "# load average after: $(loadavg); total $((SECONDS - start)) s" >&2
   echo "Median of $repeats repeats (each >= $min_seconds s; >= $min_seconds_2m s for N = 2M)," \
     "$precision precision, $header."
   echo
-  echo "| phi | N | threads | variant | median p-steps/s | min | max | builds/1000 steps | contacts/particle |"
-  echo "|---|---|---|---|---|---|---|---|---|"
+  echo "| phi | N | threads | variant | median p-steps/s | min | max | builds/1000 steps | contacts/particle | bytes/particle | growth (kB) |"
+  echo "|---|---|---|---|---|---|---|---|---|---|---|"
   # Sort by phi, then N, then threads.
   sort -t'|' -k2,2g -k3,3n -k4,4n "$rows"
   echo

@@ -21,19 +21,22 @@ namespace granshock {
 struct GridIndex {
   double x0, y0, inv_bin;
   int nx, ny;
-  KOKKOS_INLINE_FUNCTION int operator()(double x, double y) const {
+  // The bin, and its row in `row`.
+  KOKKOS_INLINE_FUNCTION int operator()(double x, double y, int& row) const {
     const double fx = (x - x0) * inv_bin, fy = (y - y0) * inv_bin;
     if (fx < 0 || fy < 0) return -1;
     const int ix = int(fx), iy = int(fy);
+    row = iy;
     return ix < nx && iy < ny ? iy * nx + ix : -1;
   }
 };
 struct ProfileIndex {
   double x_lo, x_hi, y0, inv_dy;
   int n;
-  KOKKOS_INLINE_FUNCTION int operator()(double x, double y) const {
+  KOKKOS_INLINE_FUNCTION int operator()(double x, double y, int& row) const {
     if (x < x_lo || x >= x_hi || y < y0) return -1;
     const int k = int((y - y0) * inv_dy);
+    row = k;
     return k < n ? k : -1;
   }
 };
@@ -50,8 +53,15 @@ struct SampleContribution {
 
   template <class Add>
   KOKKOS_INLINE_FUNCTION void operator()(const int i, Add& add) const {
-    const int bin = where(double(p.x(i, 0)), double(p.x(i, 1)));
-    if (bin < 0) return;
+    add_if(i, add, 0, 0);
+  }
+
+  // Adds particle i only when its bin's row r has r & owner_mask == owner (mask 0: any).
+  template <class Add>
+  KOKKOS_FORCEINLINE_FUNCTION void add_if(const int i, Add& add, int owner, int owner_mask) const {
+    int row = 0;
+    const int bin = where(double(p.x(i, 0)), double(p.x(i, 1)), row);
+    if (bin < 0 || (row & owner_mask) != owner) return;
     const long base = block_offset + long(bin) * quantities;
     const long s = base + long(per_species) * p.species(i);
     const double vx = p.v(i, 0), vy = p.v(i, 1);
@@ -80,6 +90,25 @@ struct AtomicSample {
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
     AtomicAdd<Sums> add{sums};
     one(i, add);
+  }
+};
+
+template <class Sums>
+struct PlainAdd {
+  Sums sums;
+  KOKKOS_INLINE_FUNCTION void operator()(long k, double value) const { sums(k) += value; }
+};
+
+// Thread t of `owners` (a power of two) scans every particle and adds those in its rows
+// (ScatterStrategy::rows).
+template <class Contribution, class Sums>
+struct RowOwnerSample {
+  Contribution one;
+  Sums sums;
+  int n, owners;
+  KOKKOS_INLINE_FUNCTION void operator()(const int t) const {
+    PlainAdd<Sums> add{sums};
+    for (int i = 0; i < n; ++i) one.add_if(i, add, t, owners - 1);
   }
 };
 
@@ -134,6 +163,12 @@ class BinAccumulator {
                              virial_terms};
       Kokkos::parallel_for("fields::sample_atomic", Policy(0, p.n),
                            AtomicSample<Contribution, Sums>{one, sums_});
+    } else if constexpr (Strategy == ScatterStrategy::rows) {
+      const Contribution one{where,       p, virial, offset, quantities_, BinLayout::per_species,
+                             virial_terms};
+      const int owners = row_owners();
+      Kokkos::parallel_for("fields::sample_rows", Policy(0, owners),
+                           RowOwnerSample<Contribution, Sums>{one, sums_, p.n, owners});
     } else {
       const Contribution one{where,       p, virial, 0, quantities_, BinLayout::per_species,
                              virial_terms};
@@ -147,6 +182,21 @@ class BinAccumulator {
           "fields::add_block", Policy(0, block_size()),
           KOKKOS_LAMBDA(const long k) { sums(offset + k) += blk(k); });
     }
+  }
+
+  // Threads that own rows: the largest power of two not above the backend's threads,
+  // capped at 16 (each scans every particle; a mask picks a row's owner, no division).
+  // ScatterStrategy::automatic takes rows only on host backends.
+  static int row_owners() {
+    int owners = 1;
+    while (owners * 2 <= ExecSpace().concurrency() && owners < 16) owners *= 2;
+    return owners;
+  }
+  static ScatterStrategy resolve(ScatterStrategy s) {
+    if (s != ScatterStrategy::automatic) return s;
+    constexpr bool host = Kokkos::SpaceAccessibility<Kokkos::HostSpace, Mem>::accessible;
+    return host && ExecSpace().concurrency() <= 16 ? ScatterStrategy::rows
+                                                   : ScatterStrategy::atomic;
   }
 
   std::vector<double> to_host() const {

@@ -233,15 +233,23 @@ class DemSolver final : public Solver {
     const GridIndex grid{g.x0, g.y0, 1.0 / g.bin_size, g.nx, g.ny};
     const ProfileLayout& pr = sampling_.profile;
     const ProfileIndex profile{pr.x_lo, pr.x_hi, pr.y0, 1.0 / pr.dy, pr.n};
-    if (sampling_.strategy == ScatterStrategy::atomic) {
-      grid_sums_.template sample<ScatterStrategy::atomic>(block, grid, p_, virial_);
-      if (!profile_sums_.empty())
-        profile_sums_.template sample<ScatterStrategy::atomic>(block, profile, p_, virial_);
-    } else {
-      grid_sums_.template sample<ScatterStrategy::scatter_view>(block, grid, p_, virial_);
-      if (!profile_sums_.empty())
-        profile_sums_.template sample<ScatterStrategy::scatter_view>(block, profile, p_, virial_);
+    switch (BinAccumulator<ExecSpace>::resolve(sampling_.strategy)) {
+      case ScatterStrategy::atomic:
+        sample_with<ScatterStrategy::atomic>(block, grid, profile);
+        break;
+      case ScatterStrategy::scatter_view:
+        sample_with<ScatterStrategy::scatter_view>(block, grid, profile);
+        break;
+      default:
+        sample_with<ScatterStrategy::rows>(block, grid, profile);
     }
+  }
+
+  template <ScatterStrategy Strategy>
+  void sample_with(int block, const GridIndex& grid, const ProfileIndex& profile) {
+    grid_sums_.template sample<Strategy>(block, grid, p_, virial_);
+    if (!profile_sums_.empty())
+      profile_sums_.template sample<Strategy>(block, profile, p_, virial_);
   }
 
   std::vector<double> field_sums(bool profile) const override {
