@@ -1,9 +1,10 @@
 // Field sampling on the device (docs/fields.md): every sample adds, per bin and species,
 // the count and the velocity moments of the particles in it, and per bin the contact
-// virial, to the sums of the current block (layout: core/bin_layout.hpp). Two strategies
-// for the scattered additions, chosen at compile time and measured against each other
-// (docs/fields.md, "Cost of sampling"): atomic adds on one array, or a Kokkos ScatterView
-// (one private copy per thread on host backends, atomics on GPUs).
+// virial, to the sums of the current block (layout: core/bin_layout.hpp). Strategies for
+// the scattered additions, measured against each other (docs/fields.md, "Cost of
+// sampling"): atomic adds on one array, or a Kokkos ScatterView (one private copy per
+// thread on host backends, atomics on GPUs), both here; or row owners, which compute the
+// virial in the same pass (solver/row_owner_sampling.hpp).
 #pragma once
 
 #include <Kokkos_Core.hpp>
@@ -62,6 +63,13 @@ struct SampleContribution {
     int row = 0;
     const int bin = where(double(p.x(i, 0)), double(p.x(i, 1)), row);
     if (bin < 0 || (row & owner_mask) != owner) return;
+    add_to_bin(bin, i, add, [&](int k) { return virial(i, k); });
+  }
+
+  // Particle i's moments, and its virial terms virial_of(k), added to bin `bin`.
+  template <class Add, class VirialOf>
+  KOKKOS_FORCEINLINE_FUNCTION void add_to_bin(int bin, int i, Add& add,
+                                              const VirialOf& virial_of) const {
     const long base = block_offset + long(bin) * quantities;
     const long s = base + long(per_species) * p.species(i);
     const double vx = p.v(i, 0), vy = p.v(i, 1);
@@ -71,7 +79,7 @@ struct SampleContribution {
     add(s + 3, vx * vx);
     add(s + 4, vx * vy);
     add(s + 5, vy * vy);
-    for (int k = 0; k < virial_terms; ++k) add(base + quantities - 4 + k, double(virial(i, k)));
+    for (int k = 0; k < virial_terms; ++k) add(base + quantities - 4 + k, double(virial_of(k)));
   }
 };
 
@@ -97,19 +105,6 @@ template <class Sums>
 struct PlainAdd {
   Sums sums;
   KOKKOS_INLINE_FUNCTION void operator()(long k, double value) const { sums(k) += value; }
-};
-
-// Thread t of `owners` (a power of two) scans every particle and adds those in its rows
-// (ScatterStrategy::rows).
-template <class Contribution, class Sums>
-struct RowOwnerSample {
-  Contribution one;
-  Sums sums;
-  int n, owners;
-  KOKKOS_INLINE_FUNCTION void operator()(const int t) const {
-    PlainAdd<Sums> add{sums};
-    for (int i = 0; i < n; ++i) one.add_if(i, add, t, owners - 1);
-  }
 };
 
 template <class Access>
@@ -157,18 +152,14 @@ class BinAccumulator {
     using Policy = Kokkos::RangePolicy<ExecSpace>;
     const int virial_terms = int(virial.extent(1)) < 4 ? int(virial.extent(1)) : 4;
     using Contribution = SampleContribution<Where, Store, VirialView>;
+    static_assert(Strategy == ScatterStrategy::atomic || Strategy == ScatterStrategy::scatter_view,
+                  "row owners sample through solver/row_owner_sampling.hpp");
     const long offset = long(block) * block_size();
     if constexpr (Strategy == ScatterStrategy::atomic) {
       const Contribution one{where,       p, virial, offset, quantities_, BinLayout::per_species,
                              virial_terms};
       Kokkos::parallel_for("fields::sample_atomic", Policy(0, p.n),
                            AtomicSample<Contribution, Sums>{one, sums_});
-    } else if constexpr (Strategy == ScatterStrategy::rows) {
-      const Contribution one{where,       p, virial, offset, quantities_, BinLayout::per_species,
-                             virial_terms};
-      const int owners = row_owners();
-      Kokkos::parallel_for("fields::sample_rows", Policy(0, owners),
-                           RowOwnerSample<Contribution, Sums>{one, sums_, p.n, owners});
     } else {
       const Contribution one{where,       p, virial, 0, quantities_, BinLayout::per_species,
                              virial_terms};
@@ -184,9 +175,10 @@ class BinAccumulator {
     }
   }
 
-  // Threads that own rows: the largest power of two not above the backend's threads,
-  // capped at 16 (each scans every particle; a mask picks a row's owner, no division).
-  // ScatterStrategy::automatic takes rows only on host backends.
+  // Threads that own rows (ScatterStrategy::rows, solver/row_owner_sampling.hpp): the
+  // largest power of two not above the backend's threads, capped at 16 (each scans every
+  // particle; a mask picks a row's owner, no division). ScatterStrategy::automatic takes
+  // rows only on host backends.
   static int row_owners() {
     int owners = 1;
     while (owners * 2 <= ExecSpace().concurrency() && owners < 16) owners *= 2;

@@ -28,6 +28,7 @@
 #include "solver/diagnostics.hpp"
 #include "solver/fused_step.hpp"
 #include "solver/pair_table.hpp"
+#include "solver/row_owner_sampling.hpp"
 #include "solver/state_io.hpp"
 #include "solver/velocity_verlet.hpp"
 #include "user_error.hpp"
@@ -225,23 +226,20 @@ class DemSolver final : public Solver {
   }
 
   void sample_fields(int block) override {
-    if (int(virial_.extent(0)) < p_.n) virial_ = decltype(virial_)("virial", p_.capacity());
-    ContactForceKernel<V, ExecSpace, ForceMode::virial> kernel{
-        p_, pair_loop(), table_, obstacle_, Real(setup_.dt), history_overflow_, virial_};
-    Kokkos::parallel_for("contact_virial", Policy(0, p_.n), kernel);
     const BinLayout& g = sampling_.grid;
     const GridIndex grid{g.x0, g.y0, 1.0 / g.bin_size, g.nx, g.ny};
     const ProfileLayout& pr = sampling_.profile;
     const ProfileIndex profile{pr.x_lo, pr.x_hi, pr.y0, 1.0 / pr.dy, pr.n};
-    switch (BinAccumulator<ExecSpace>::resolve(sampling_.strategy)) {
-      case ScatterStrategy::atomic:
-        sample_with<ScatterStrategy::atomic>(block, grid, profile);
-        break;
-      case ScatterStrategy::scatter_view:
-        sample_with<ScatterStrategy::scatter_view>(block, grid, profile);
-        break;
-      default:
-        sample_with<ScatterStrategy::rows>(block, grid, profile);
+    const ScatterStrategy strategy = BinAccumulator<ExecSpace>::resolve(sampling_.strategy);
+    if (strategy == ScatterStrategy::rows) return sample_by_row_owners(block, grid, profile);
+    if (int(virial_.extent(0)) < p_.n) virial_ = decltype(virial_)("virial", p_.capacity());
+    ContactForceKernel<V, ExecSpace, ForceMode::virial> kernel{
+        p_, pair_loop(), table_, obstacle_, Real(setup_.dt), history_overflow_, virial_};
+    Kokkos::parallel_for("contact_virial", Policy(0, p_.n), kernel);
+    if (strategy == ScatterStrategy::atomic) {
+      sample_with<ScatterStrategy::atomic>(block, grid, profile);
+    } else {
+      sample_with<ScatterStrategy::scatter_view>(block, grid, profile);
     }
   }
 
@@ -250,6 +248,32 @@ class DemSolver final : public Solver {
     grid_sums_.template sample<Strategy>(block, grid, p_, virial_);
     if (!profile_sums_.empty())
       profile_sums_.template sample<Strategy>(block, profile, p_, virial_);
+  }
+
+  // Grid and profile in one pass, the virial computed on the way (row_owner_sampling.hpp).
+  void sample_by_row_owners(int block, const GridIndex& grid, const ProfileIndex& profile) {
+    using Virial = decltype(virial_);
+    using GridPart = SampleContribution<GridIndex, Store, Virial>;
+    using ProfilePart = SampleContribution<ProfileIndex, Store, Virial>;
+    const int quantities = sampling_.grid.quantities();
+    const int virial_terms = Dim * Dim < 4 ? Dim * Dim : 4;
+    const GridPart grid_part{
+        grid,        p_, {}, block * grid_sums_.block_size(), quantities, BinLayout::per_species,
+        virial_terms};
+    const ProfilePart profile_part{
+        profile,     p_, {}, block * profile_sums_.block_size(), quantities, BinLayout::per_species,
+        virial_terms};
+    const int owners = BinAccumulator<ExecSpace>::row_owners();
+    const RowOwnerSamplePass<V, ExecSpace, GridPart, ProfilePart> pass{
+        {p_, pair_loop(), table_, obstacle_, Real(setup_.dt), history_overflow_, {}},
+        grid_part,
+        profile_part,
+        grid_sums_.sums(),
+        profile_sums_.sums(),
+        !profile_sums_.empty(),
+        p_.n,
+        owners - 1};
+    Kokkos::parallel_for("fields::sample_rows", Policy(0, owners), pass);
   }
 
   std::vector<double> field_sums(bool profile) const override {
