@@ -24,10 +24,13 @@
 namespace granshock {
 
 // A per-particle array's name and where a checkpoint keeps it.
+// (The member pointer has a type alias: nvcc rewrote the plain declarator with
+// parentheses, and g++ warned about them in the CUDA build.)
 template <class Host>
 struct StateArray {
+  using Member = std::vector<Host> SolverState::*;
   const char* name;
-  std::vector<Host> SolverState::*member;
+  Member member;
 };
 
 template <int Dim, class Real, class MemSpace, bool Friction>
