@@ -54,15 +54,9 @@ struct SampleContribution {
 
   template <class Add>
   KOKKOS_INLINE_FUNCTION void operator()(const int i, Add& add) const {
-    add_if(i, add, 0, 0);
-  }
-
-  // Adds particle i only when its bin's row r has r & owner_mask == owner (mask 0: any).
-  template <class Add>
-  KOKKOS_FORCEINLINE_FUNCTION void add_if(const int i, Add& add, int owner, int owner_mask) const {
     int row = 0;
     const int bin = where(double(p.x(i, 0)), double(p.x(i, 1)), row);
-    if (bin < 0 || (row & owner_mask) != owner) return;
+    if (bin < 0) return;
     add_to_bin(bin, i, add, [&](int k) { return virial(i, k); });
   }
 

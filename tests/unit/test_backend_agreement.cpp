@@ -91,20 +91,29 @@ void compare_fused_with_separate_halves(SolverSetup s, int steps) {
   expect_identical(fused->particles(), separate->particles());
 }
 
-}  // namespace
-
-TEST(BackendAgreement, FrictionlessDouble) {
+// The scenes both comparisons run: frictionless, and friction with the cylinder.
+SolverSetup frictionless() {
   SolverSetup s = paper_mixture(0.5);
   s.dt = 5e-8;
-  compare_backends(s, 3000);
+  return s;
 }
 
-TEST(BackendAgreement, FrictionWithObstacleDouble) {
+SolverSetup friction_with_obstacle() {
   SolverSetup s = paper_mixture(0.5);
   s.contacts = ContactSettings::uniform(2, 0.5, 0.4);
   s.obstacle = Obstacle{ObstacleShape::cylinder, {0, 0, 0}, 10e-3, aluminium()};
   s.dt = 3e-8;
-  compare_backends(s, 3000);
+  return s;
+}
+
+}  // namespace
+
+TEST(BackendAgreement, FrictionlessDouble) {
+  compare_backends(frictionless(), 3000);
+}
+
+TEST(BackendAgreement, FrictionWithObstacleDouble) {
+  compare_backends(friction_with_obstacle(), 3000);
 }
 
 TEST(BackendAgreement, FrictionlessSingle) {
@@ -115,15 +124,9 @@ TEST(BackendAgreement, FrictionlessSingle) {
 }
 
 TEST(FusedStep, MatchesSeparateHalvesFrictionless) {
-  SolverSetup s = paper_mixture(0.5);
-  s.dt = 5e-8;
-  compare_fused_with_separate_halves(s, 2000);
+  compare_fused_with_separate_halves(frictionless(), 2000);
 }
 
 TEST(FusedStep, MatchesSeparateHalvesWithFrictionAndObstacle) {
-  SolverSetup s = paper_mixture(0.5);
-  s.contacts = ContactSettings::uniform(2, 0.5, 0.4);
-  s.obstacle = Obstacle{ObstacleShape::cylinder, {0, 0, 0}, 10e-3, aluminium()};
-  s.dt = 3e-8;
-  compare_fused_with_separate_halves(s, 2000);
+  compare_fused_with_separate_halves(friction_with_obstacle(), 2000);
 }
