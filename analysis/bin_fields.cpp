@@ -61,7 +61,6 @@ BinFields compute_bin_fields(const BinSums& sums, const FieldPhysics& phys, cons
     throw std::invalid_argument("compute_bin_fields: sums for " + std::to_string(sums.n_species) +
                                 " species, scene has " + std::to_string(phys.mass.size()));
   const double samples = sums.total_samples();
-  const double area = sums.bin_area();
   const double dim = phys.dim;
   const double m_av = phys.m_av();
   const double u_inf = phys.inflow_speed;
@@ -69,6 +68,7 @@ BinFields compute_bin_fields(const BinSums& sums, const FieldPhysics& phys, cons
   const std::size_t ns = static_cast<std::size_t>(sums.n_species);
 
   for (int iy = 0; iy < sums.ny; ++iy) {
+    const double area = sums.bin_area(iy);
     for (int ix = 0; ix < sums.nx; ++ix) {
       const std::size_t k = f.index(iy, ix);
       if (!(samples > 0)) continue;  // never sampled: everything NaN, masked

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <random>
 
 #include "block_error.hpp"
 
@@ -10,6 +11,8 @@ namespace granshock {
 
 namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr std::size_t kDefinitions = kFrontDefinitions.size();
+using Fronts = std::array<FrontFix, kDefinitions>;
 
 std::string in_d(double length, const FieldPhysics& phys) {
   char text[32];
@@ -17,98 +20,185 @@ std::string in_d(double length, const FieldPhysics& phys) {
   return text;
 }
 
-// The shock on one profile (pooled or one block); masked bins hold no phi. A front found
-// within the rows that measured phi_up does not count (why = none, found = false).
-FrontCrossing crossing(const BinSums& profile, const FieldPhysics& phys, double phi_up, int begin,
-                       int end, const DetachmentSearch& search) {
-  const BinFields f = compute_bin_fields(profile, phys, search.mask);
-  std::vector<double> y(static_cast<std::size_t>(profile.ny)), phi = f.phi;
-  for (int k = 0; k < profile.ny; ++k) y[static_cast<std::size_t>(k)] = profile.y_centre(k);
-  for (std::size_t k = 0; k < phi.size(); ++k)
-    if (f.masked[k]) phi[k] = kNaN;
-  FrontCrossing c = find_front_crossing(phi, y, begin, end, phi_up, search.rule);
-  if (c.found && c.y_threshold < search.y_upstream_end) c.found = false;
-  return c;
+// The fronts on one profile (pooled, one block, merged blocks or a resample) by every
+// definition. A front within the rows that measured the upstream state does not count.
+Fronts fronts_on(const BinSums& profile, const FieldPhysics& phys, const UpstreamValues& upstream,
+                 int begin, int end, const DetachmentSearch& search) {
+  const StagnationLine line = stagnation_line(profile, phys, search.mask);
+  Fronts fronts;
+  for (std::size_t k = 0; k < kDefinitions; ++k) {
+    FrontFix f = locate_front(kFrontDefinitions[k], line, begin, end, upstream, search.rule);
+    if (f.found && f.y < search.y_upstream_end) {
+      f.found = false;
+      f.why = "the front on the stagnation line (y = " + in_d(f.y, phys) +
+              ") lies within the grid rows that measure the upstream state (below y = " +
+              in_d(search.y_upstream_end, phys) + ")";
+    }
+    fronts[k] = f;
+  }
+  return fronts;
 }
 
-// Why the crossing c of a profile gives no delta.
-std::string no_front_reason(const FrontCrossing& c, const FieldPhysics& phys, double phi_up,
-                            const DetachmentSearch& search) {
-  if (c.why == NoFront::none)
-    return "the front on the stagnation line (y = " + in_d(c.y_threshold, phys) +
-           ") lies within the grid rows that measure phi_up (below y = " +
-           in_d(search.y_upstream_end, phys) + ")";
-  return describe(c.why, c, phi_up, search.rule);
+// The sample standard deviation of the finite values (NaN with fewer than 2).
+double spread(const std::vector<double>& values) {
+  const double se = block_standard_error(values);
+  return se * std::sqrt(static_cast<double>(values.size()));
 }
+
+// The standard error of the per-group deltas (groups: single blocks or merged pairs), and
+// the reason when fewer than 2 groups show a front.
+struct GroupError {
+  double error = kNaN;
+  std::vector<double> deltas;  // per group, NaN where no front
+  int used = 0;
+  std::string first_failure;
+};
 }  // namespace
+
+const Detachment& of(const Detachments& all, FrontDefinition definition) {
+  for (const Detachment& d : all)
+    if (d.definition == definition) return d;
+  return all.front();
+}
+
+Detachments measure_detachments(const BinSums& profile, const FieldPhysics& phys,
+                                const UpstreamValues& upstream, const DetachmentSearch& search) {
+  Detachments out;
+  for (std::size_t k = 0; k < kDefinitions; ++k) {
+    Detachment& d = out[k];
+    d.definition = kFrontDefinitions[k];
+    d.y_shock = d.surface = d.delta = d.delta_over_d = d.delta_err = d.delta_over_d_err = kNaN;
+    d.err_blocks = d.err_merged_pairs = d.err_bootstrap = kNaN;
+    d.peak = d.threshold = kNaN;
+  }
+  if (!phys.obstacle) {
+    for (Detachment& d : out) d.reason = d.err_reason = "the scene has no obstacle";
+    return out;
+  }
+  const double diameter = phys.obstacle->diameter;
+  const double surface = phys.obstacle->yc - phys.obstacle->radius();
+  int begin = 0, end = 0;
+  while (begin < profile.ny && profile.y_centre(begin) < search.y_begin) ++begin;
+  while (end < profile.ny && profile.y_centre(end) < surface) ++end;
+
+  const Fronts pooled = fronts_on(profile.pooled_blocks(), phys, upstream, begin, end, search);
+  for (std::size_t k = 0; k < kDefinitions; ++k) {
+    Detachment& d = out[k];
+    const FrontFix& f = pooled[k];
+    d.surface = surface;
+    d.peak = f.peak;
+    d.threshold = f.found ? f.threshold : kNaN;
+    d.found = f.found;
+    if (f.found) {
+      d.y_shock = f.y;
+      d.delta = surface - f.y;
+      d.delta_over_d = d.delta / diameter;
+    } else if (end - begin < 2) {
+      d.reason = "the stagnation-line profile holds " + std::to_string(std::max(end - begin, 0)) +
+                 " bins between the search start (y = " + in_d(search.y_begin, phys) +
+                 ") and the surface (y = " + in_d(surface, phys) + "); a front needs 2";
+    } else {
+      d.reason = "no shock front on the stagnation line: " + f.why;
+    }
+  }
+
+  // Groups of `size` neighbouring blocks, each group with samples: their deltas and the
+  // standard error of their mean.
+  auto group_errors = [&](int size) {
+    std::array<GroupError, kDefinitions> g;
+    for (int b = 0; b + size <= profile.blocks; b += size) {
+      const BinSums group = profile.block_range(b, b + size);
+      if (!(group.total_samples() > 0)) continue;  // blocks the run never reached
+      const Fronts f = fronts_on(group.pooled_blocks(), phys, upstream, begin, end, search);
+      for (std::size_t k = 0; k < kDefinitions; ++k) {
+        g[k].deltas.push_back(f[k].found ? surface - f[k].y : kNaN);
+        if (!f[k].found && g[k].first_failure.empty())
+          g[k].first_failure =
+              (size == 1 ? "block " : "blocks from ") + std::to_string(b) + ": " + f[k].why;
+      }
+    }
+    for (GroupError& e : g) {
+      std::vector<double> finite;
+      for (double v : e.deltas)
+        if (std::isfinite(v)) finite.push_back(v);
+      e.used = static_cast<int>(finite.size());
+      e.error = block_standard_error(finite);
+    }
+    return g;
+  };
+  const std::array<GroupError, kDefinitions> single = group_errors(1), pairs = group_errors(2);
+
+  // Bootstrap: the blocks with samples drawn with replacement, pooled, searched again. The
+  // seed is fixed so that an analysis is reproducible.
+  std::vector<int> sampled;
+  for (int b = 0; b < profile.blocks; ++b)
+    if (profile.samples[static_cast<std::size_t>(b)] > 0) sampled.push_back(b);
+  std::array<std::vector<double>, kDefinitions> resampled;
+  const int resamples = sampled.size() >= 2 ? search.bootstrap_resamples : 0;
+  std::mt19937_64 rng(20261123);
+  std::uniform_int_distribution<std::size_t> pick(0, sampled.empty() ? 0 : sampled.size() - 1);
+  for (int r = 0; r < resamples; ++r) {
+    std::vector<int> weights(static_cast<std::size_t>(profile.blocks), 0);
+    for (std::size_t i = 0; i < sampled.size(); ++i)
+      ++weights[static_cast<std::size_t>(sampled[pick(rng)])];
+    const Fronts f =
+        fronts_on(profile.weighted_blocks(weights), phys, upstream, begin, end, search);
+    for (std::size_t k = 0; k < kDefinitions; ++k)
+      if (f[k].found) resampled[k].push_back(surface - f[k].y);
+  }
+
+  for (std::size_t k = 0; k < kDefinitions; ++k) {
+    Detachment& d = out[k];
+    d.delta_blocks = single[k].deltas;
+    d.blocks_used = single[k].used;
+    d.err_blocks = single[k].error;
+    d.err_merged_pairs = pairs[k].error;
+    d.bootstrap_resamples = resamples;
+    d.bootstrap_found = static_cast<int>(resampled[k].size());
+    // A bootstrap in which a front is often missing says the front is not resolved in
+    // the data: its spread would describe only the lucky resamples.
+    if (resamples > 0 && 10 * d.bootstrap_found >= 9 * resamples)
+      d.err_bootstrap = spread(resampled[k]);
+    if (!d.found) {
+      d.err_reason = "delta/D itself is undeterminable";
+      continue;
+    }
+    // The blocks' own spread, from merged pairs where there are two (so that correlated
+    // neighbours raise it), raised to the bootstrap's where that is larger.
+    const double from_blocks =
+        std::isfinite(d.err_merged_pairs) ? d.err_merged_pairs : d.err_blocks;
+    if (!std::isfinite(from_blocks)) {
+      d.err_reason = "only " + std::to_string(d.blocks_used) + " of the " +
+                     std::to_string(d.delta_blocks.size()) +
+                     " blocks with samples show a front on the stagnation line (the error needs 2)";
+      if (!single[k].first_failure.empty()) d.err_reason += "; " + single[k].first_failure;
+      continue;
+    }
+    d.delta_err =
+        std::isfinite(d.err_bootstrap) ? std::max(from_blocks, d.err_bootstrap) : from_blocks;
+    // The steepest rise sits on a pair's midpoint unless the parabola refines it: on
+    // coarse rows every resample can give the same midpoint, a spread of zero that says
+    // nothing. Its error is at least that of a position known to one row, dy / sqrt(12).
+    if (d.definition == FrontDefinition::density_max_gradient)
+      d.delta_err = std::max(d.delta_err, profile.dy / std::sqrt(12.0));
+    d.delta_over_d_err = d.delta_err / diameter;
+  }
+  return out;
+}
+
+Detachment measure_detachment(const BinSums& profile, const FieldPhysics& phys,
+                              const UpstreamValues& upstream, const DetachmentSearch& search,
+                              FrontDefinition definition) {
+  return of(measure_detachments(profile, phys, upstream, search), definition);
+}
 
 Detachment measure_detachment(const BinSums& profile, const FieldPhysics& phys, double phi_up,
                               double y_search_begin, const ThresholdRule& rule) {
   DetachmentSearch search;
   search.y_begin = y_search_begin;
   search.rule = rule;
-  return measure_detachment(profile, phys, phi_up, search);
-}
-
-Detachment measure_detachment(const BinSums& profile, const FieldPhysics& phys, double phi_up,
-                              const DetachmentSearch& search) {
-  Detachment d;
-  d.y_shock = d.surface = d.delta = d.delta_over_d = d.delta_err = d.delta_over_d_err = kNaN;
-  d.phi_peak = d.threshold = kNaN;
-  if (!phys.obstacle) {
-    d.reason = d.err_reason = "the scene has no obstacle";
-    return d;
-  }
-  const double diameter = phys.obstacle->diameter;
-  d.surface = phys.obstacle->yc - phys.obstacle->radius();
-  int begin = 0, end = 0;
-  while (begin < profile.ny && profile.y_centre(begin) < search.y_begin) ++begin;
-  while (end < profile.ny && profile.y_centre(end) < d.surface) ++end;
-
-  const FrontCrossing pooled = crossing(profile.pooled_blocks(), phys, phi_up, begin, end, search);
-  d.phi_peak = pooled.peak_index >= 0 ? pooled.phi_peak : kNaN;
-  d.threshold = pooled.found ? pooled.threshold : kNaN;
-  d.found = pooled.found;
-  if (d.found) {
-    d.y_shock = pooled.y_threshold;
-    d.delta = d.surface - d.y_shock;
-    d.delta_over_d = d.delta / diameter;
-  } else if (pooled.why == NoFront::too_few_bins) {
-    d.reason = "the stagnation-line profile holds " + std::to_string(std::max(end - begin, 0)) +
-               " bins between the search start (y = " + in_d(search.y_begin, phys) +
-               ") and the surface (y = " + in_d(d.surface, phys) + "); the threshold rule needs 2";
-  } else {
-    d.reason =
-        "no shock front on the stagnation line: " + no_front_reason(pooled, phys, phi_up, search);
-  }
-
-  std::vector<double> finite;
-  std::string first_failure;
-  for (int b = 0; b < profile.blocks; ++b) {
-    if (!(profile.samples[static_cast<std::size_t>(b)] > 0))
-      continue;  // a block the run never reached
-    const FrontCrossing c = crossing(profile.block(b), phys, phi_up, begin, end, search);
-    const double delta = c.found ? d.surface - c.y_threshold : kNaN;
-    d.delta_blocks.push_back(delta);
-    if (std::isfinite(delta))
-      finite.push_back(delta);
-    else if (first_failure.empty())
-      first_failure =
-          "block " + std::to_string(b) + ": " + no_front_reason(c, phys, phi_up, search);
-  }
-  d.blocks_used = static_cast<int>(finite.size());
-  if (!d.found) {
-    d.err_reason = "delta/D itself is undeterminable";
-  } else if (d.blocks_used < 2) {
-    d.err_reason = "only " + std::to_string(d.blocks_used) + " of the " +
-                   std::to_string(d.delta_blocks.size()) +
-                   " blocks with samples show a front on the stagnation line (the error needs 2)";
-    if (!first_failure.empty()) d.err_reason += "; " + first_failure;
-  } else {
-    d.delta_err = block_standard_error(finite);
-    d.delta_over_d_err = d.delta_err / diameter;
-  }
-  return d;
+  return measure_detachment(profile, phys, {phi_up, kNaN}, search,
+                            FrontDefinition::density_threshold);
 }
 
 }  // namespace granshock

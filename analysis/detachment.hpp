@@ -1,13 +1,18 @@
-// The detachment (stand-off) length delta on the stagnation line (docs/fields.md; the
-// paper's Fig. 1 and Fig. 6): the distance from the shock front, found on the fine
-// stagnation-line profile with the threshold rule of front_crossing.hpp, to the cylinder's
-// upstream surface y_c - R. Its statistical uncertainty comes from block averages: delta is
-// found again in each block's profile alone, and the standard error of the mean over the
-// blocks, s_B / sqrt(B), is reported (B blocks with samples, s_B their sample standard
-// deviation). When a number cannot be determined it is NaN and a reason says why
-// (docs/fields.md, "When a number cannot be determined").
+// The detachment (stand-off) length delta on the stagnation line (docs/fields.md, section
+// 6; the paper's Fig. 1 and Fig. 6): the distance from the shock front to the cylinder's
+// upstream surface y_c - R, found on one strip of the stagnation-line profile by one of
+// four definitions of "the front" (stagnation_line.hpp): the half-rise of the temperature
+// (the primary one), the density half-way threshold, the steepest density rise and the
+// sonic point. Its statistical uncertainty comes from the blocks of the production window
+// three ways (docs/fields.md, "Error bars"): the standard error of the blocks' own deltas,
+// the same over pairs of neighbouring blocks merged (which grows when neighbouring blocks are
+// correlated), and a bootstrap over blocks (resampled with replacement and pooled). The
+// reported error is the larger of the merged pairs' (the single blocks' when fewer than two
+// pairs show a front) and the bootstrap's. When a number cannot be determined it is NaN
+// and a reason says why (docs/fields.md, "When a number cannot be determined").
 #pragma once
 
+#include <array>
 #include <limits>
 #include <string>
 #include <vector>
@@ -16,20 +21,25 @@
 #include "bin_sums.hpp"
 #include "field_physics.hpp"
 #include "front_crossing.hpp"
+#include "stagnation_line.hpp"
 
 namespace granshock {
 
 struct Detachment {
+  FrontDefinition definition = FrontDefinition::density_threshold;
   bool found = false;
-  double y_shock = 0;       // shock position on the axis (pooled profile), m
+  double y_shock = 0;       // front position on the axis (pooled profile), m
   double surface = 0;       // y_c - R, m
   double delta = 0;         // surface - y_shock, m
   double delta_over_d = 0;  // delta / D
-  double delta_err = 0;     // standard error from the blocks, m (NaN with < 2 blocks)
+  double delta_err = 0;     // the reported error (see above), m
   double delta_over_d_err = 0;
-  double phi_peak = 0, threshold = 0;
+  // The three estimates of the error (NaN where they cannot be formed), m.
+  double err_blocks = 0, err_merged_pairs = 0, err_bootstrap = 0;
+  int bootstrap_found = 0, bootstrap_resamples = 0;  // resamples that showed a front
+  double peak = 0, threshold = 0;                    // of the definition's quantity
   std::vector<double> delta_blocks;  // per block with samples; NaN where no front was found
-  int blocks_used = 0;               // blocks whose delta entered the error
+  int blocks_used = 0;               // blocks whose delta entered err_blocks
   std::string reason;                // why delta is NaN (empty when found)
   std::string err_reason;            // why delta_err is NaN (empty when it is a number)
 };
@@ -39,17 +49,28 @@ struct DetachmentSearch {
   // upstream reference row of the grid, beyond the insertion strip) and ends at the last bin
   // whose centre lies upstream of the surface.
   double y_begin = 0;
-  // The upper edge of the grid rows that measured phi_up: a front upstream of it lies in
-  // those rows, so phi_up is not the state ahead of the shock and delta is undeterminable.
+  // The upper edge of the grid rows that measured the upstream state: a front upstream of
+  // it lies in those rows, so they are not the state ahead of the shock and delta is
+  // undeterminable.
   double y_upstream_end = -std::numeric_limits<double>::infinity();
   ThresholdRule rule;
-  MaskRule mask;  // masked profile bins (too few particle samples) hold no phi
+  MaskRule mask;  // masked profile bins (too few particle samples) hold no phi, T or Ma
+  int bootstrap_resamples = 200;  // 0: no bootstrap
 };
 
-// phi_up: the measured upstream phi (NaN when it could not be measured). Not found (NaN,
-// with a reason) without an obstacle or when the pooled profile shows no front.
-Detachment measure_detachment(const BinSums& profile, const FieldPhysics& physics, double phi_up,
-                              const DetachmentSearch& search);
+// profile: one column (a strip of the stagnation-line profile, strip_of()); upstream: the
+// measured state ahead of the shock (phi, T; NaN when not measured). Not found (NaN, with a
+// reason) without an obstacle or when the pooled profile shows no front. One result per
+// definition, in the order of kFrontDefinitions (each profile's fields are computed once).
+using Detachments = std::array<Detachment, kFrontDefinitions.size()>;
+Detachments measure_detachments(const BinSums& profile, const FieldPhysics& physics,
+                                const UpstreamValues& upstream, const DetachmentSearch& search);
+Detachment measure_detachment(const BinSums& profile, const FieldPhysics& physics,
+                              const UpstreamValues& upstream, const DetachmentSearch& search,
+                              FrontDefinition definition);
+// The entry of `all` for one definition.
+const Detachment& of(const Detachments& all, FrontDefinition definition);
+// The density threshold with phi_up alone (tests and the first versions of the analysis).
 Detachment measure_detachment(const BinSums& profile, const FieldPhysics& physics, double phi_up,
                               double y_search_begin, const ThresholdRule& rule = {});
 

@@ -52,6 +52,20 @@ DetachmentRow detachment_row(const std::filesystem::path& run_dir, const FieldAn
   r.delta_over_D_err_reason = a.detachment.err_reason;
   r.shock_angle_deg_reason = a.front.angle_reason;
   r.inflow_warning = a.inflow.warning;
+  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+  for (std::size_t k = 0; k < kFrontDefinitions.size(); ++k) {
+    r.by_definition[k] = a.detachments[k].delta_over_d;
+    r.by_definition_err[k] = a.detachments[k].delta_over_d_err;
+  }
+  r.consistent = r.spread = nan;
+  if (!a.convergence.verdicts.empty()) {
+    const ConvergenceVerdict& v = a.convergence.of(kPrimaryFront);
+    if (v.applicable) {
+      r.consistent = v.consistent ? 1 : 0;
+      r.spread = v.max_deviation / a.physics.obstacle->diameter;
+    }
+    r.verdict = v.text;
+  }
   return r;
 }
 
@@ -60,7 +74,10 @@ void write_detachment_table(const std::filesystem::path& out_dir,
   std::string csv =
       "run,D_over_d,ma_inf_target,ma_inf_measured,ma_inf_measured_downstream,delta_over_D,"
       "delta_over_D_err,phi_peak,shock_angle_deg,phi_inf_deviation,delta_over_D_reason,"
-      "delta_over_D_err_reason,shock_angle_deg_reason,inflow_warning\n";
+      "delta_over_D_err_reason,shock_angle_deg_reason,inflow_warning";
+  for (FrontDefinition d : kFrontDefinitions)
+    csv += std::string(",delta_over_D_") + name(d) + ",delta_over_D_" + name(d) + "_err";
+  csv += ",delta_over_D_consistent,delta_over_D_spread,delta_over_D_verdict\n";
   nlohmann::json table = nlohmann::json::array();
   for (const DetachmentRow& r : rows) {
     csv += csv_text(r.run);
@@ -71,6 +88,10 @@ void write_detachment_table(const std::filesystem::path& out_dir,
     for (const std::string* text : {&r.delta_over_D_reason, &r.delta_over_D_err_reason,
                                     &r.shock_angle_deg_reason, &r.inflow_warning})
       csv += "," + (text->empty() ? std::string() : csv_text(*text));
+    for (std::size_t k = 0; k < kFrontDefinitions.size(); ++k)
+      csv += "," + csv_number(r.by_definition[k]) + "," + csv_number(r.by_definition_err[k]);
+    csv += "," + csv_number(r.consistent) + "," + csv_number(r.spread) + "," +
+           (r.verdict.empty() ? std::string() : csv_text(r.verdict));
     csv += "\n";
     table.push_back({{"run", r.run},
                      {"D_over_d", json_number(r.d_over_particle)},
@@ -86,6 +107,16 @@ void write_detachment_table(const std::filesystem::path& out_dir,
                      {"delta_over_D_err_reason", json_text(r.delta_over_D_err_reason)},
                      {"shock_angle_deg_reason", json_text(r.shock_angle_deg_reason)},
                      {"inflow_warning", json_text(r.inflow_warning)}});
+    nlohmann::json& row = table.back();
+    for (std::size_t k = 0; k < kFrontDefinitions.size(); ++k) {
+      const std::string key = std::string("delta_over_D_") + name(kFrontDefinitions[k]);
+      row[key] = json_number(r.by_definition[k]);
+      row[key + "_err"] = json_number(r.by_definition_err[k]);
+    }
+    row["delta_over_D_consistent"] =
+        std::isfinite(r.consistent) ? nlohmann::json(r.consistent > 0) : nlohmann::json();
+    row["delta_over_D_spread"] = json_number(r.spread);
+    row["delta_over_D_verdict"] = json_text(r.verdict);
   }
   write_file_atomically(out_dir / "detachment.csv", csv);
   write_file_atomically(out_dir / "detachment.json", table.dump(2) + "\n");

@@ -2,6 +2,7 @@
 // upstream Mach number, as a CSV and a JSON table.
 #pragma once
 
+#include <array>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -20,6 +21,11 @@ struct DetachmentRow {
   // Why a number is NaN (empty when it is a number), and the inflow warning (empty: none).
   std::string delta_over_D_reason, delta_over_D_err_reason, shock_angle_deg_reason;
   std::string inflow_warning;
+  // delta/D and its error by every definition (kFrontDefinitions order), and whether the
+  // primary one agrees with itself across analysis choices (NaN: undetermined).
+  std::array<double, kFrontDefinitions.size()> by_definition{}, by_definition_err{};
+  double consistent = 0, spread = 0;
+  std::string verdict;
 };
 
 DetachmentRow detachment_row(const std::filesystem::path& run_dir, const FieldAnalysis& analysis,

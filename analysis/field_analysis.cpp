@@ -108,35 +108,53 @@ FieldAnalysis analyse_fields(const Scene& scene, BinSums grid, std::optional<Bin
     if (profile->n_species != a.grid.n_species)
       throw UserError("the stagnation-line profile holds " + std::to_string(profile->n_species) +
                       " species, the grid " + std::to_string(a.grid.n_species));
-    a.profile = std::move(*profile);
+    a.profile_all = std::move(*profile);
   } else {
-    a.profile = a.grid.column(axis_column(a.grid, phys));
+    a.profile_all = a.grid.column(axis_column(a.grid, phys));
     a.profile_from_grid = true;
   }
+  const double x_axis = phys.obstacle ? phys.obstacle->xc : 0.5 * (phys.box_x_lo + phys.box_x_hi);
+  a.profile = strip_of(a.profile_all, x_axis, o.strip_width_d * phys.d);
+  a.strip_width = a.profile.dx;
   a.profile_fields = compute_bin_fields(a.profile, phys, o.mask);
   DetachmentSearch search;
   search.y_begin = a.grid.y0 + a.reference_row * a.grid.dy;
   search.y_upstream_end = y_upstream_end;
   search.rule = o.threshold;
   search.mask = o.mask;
-  a.detachment = measure_detachment(a.profile, phys, a.phi_up, search);
+  search.bootstrap_resamples = o.bootstrap_resamples;
+  const UpstreamValues upstream{a.phi_up, a.upstream_downstream.temperature};
+  a.detachments = measure_detachments(a.profile, phys, upstream, search);
   const std::string coarse_axis = a.profile_from_grid ? axis_column_reason(a.grid, phys) : "";
   if (!coarse_axis.empty()) {
-    Detachment& d = a.detachment;
-    d.found = false;
-    d.y_shock = d.delta = d.delta_over_d = d.delta_err = d.delta_over_d_err = d.threshold = kNaN;
-    d.delta_blocks.assign(d.delta_blocks.size(), kNaN);
-    d.blocks_used = 0;
-    d.reason = d.err_reason = coarse_axis;
+    for (Detachment& d : a.detachments) {
+      d.found = false;
+      d.y_shock = d.delta = d.delta_over_d = d.delta_err = d.delta_over_d_err = d.threshold = kNaN;
+      d.delta_blocks.assign(d.delta_blocks.size(), kNaN);
+      d.blocks_used = 0;
+      d.reason = d.err_reason = coarse_axis;
+    }
+  }
+  if (phys.obstacle) {
+    ConvergenceInput in;
+    in.profile = &a.profile_all;
+    in.grid = &a.grid;
+    in.axis_column = axis_column(a.grid, phys);
+    in.x_axis = x_axis;
+    in.strip_width = a.strip_width;
+    in.reference = &a.detachments;
+    a.convergence = detachment_convergence(in, phys, upstream, search);
   }
 
   // Without a measured phi_up nothing that depends on the threshold rule is determined;
   // say why in terms of the upstream rows.
   if (!a.upstream_downstream.determined() && phys.obstacle) {
     const std::string why = "no upstream phi beyond the strip: " + a.upstream_downstream.reason;
-    if (!a.detachment.found) a.detachment.reason = a.detachment.err_reason = why;
+    for (Detachment& d : a.detachments)
+      if (!d.found) d.reason = d.err_reason = why;
     a.front.left.reason = a.front.right.reason = a.front.angle_reason = why;
   }
+  a.detachment = of(a.detachments, kPrimaryFront);
 
   a.eos = check_equation_of_state(a.fields, o.eos);
   a.phi_peak = kNaN;

@@ -13,6 +13,7 @@
 #include "bin_fields.hpp"
 #include "bin_sums.hpp"
 #include "detachment.hpp"
+#include "detachment_convergence.hpp"
 #include "eos_check.hpp"
 #include "field_physics.hpp"
 #include "front_crossing.hpp"
@@ -30,6 +31,8 @@ struct FieldAnalysisOptions {
   ThresholdRule threshold;
   EosCut eos;
   InflowTolerance inflow;
+  double strip_width_d = 4;  // the stagnation-line strip delta is measured on, in d
+  int bootstrap_resamples = 200;
 };
 
 struct FieldAnalysis {
@@ -37,8 +40,10 @@ struct FieldAnalysis {
   FieldAnalysisOptions options;
   BinSums grid;
   BinFields fields;
-  BinSums profile;  // the stagnation-line profile (or the grid column on the axis)
+  BinSums profile_all;  // the stagnation-line profile as sampled (every column)
+  BinSums profile;      // its strip on the axis (or the grid column on the axis)
   bool profile_from_grid = false;
+  double strip_width = 0;  // of `profile`, m
   BinFields profile_fields;
   UpstreamState upstream_inlet;       // first two rows (the paper)
   UpstreamState upstream_downstream;  // two rows from one bin beyond the strip
@@ -48,7 +53,9 @@ struct FieldAnalysis {
   std::string phi_up_err_reason;
   std::vector<Polyline> sonic_lines;  // Ma = 1 (scene's mass definition)
   ShockFront front;
-  Detachment detachment;
+  Detachment detachment;    // by the primary definition (kPrimaryFront)
+  Detachments detachments;  // by every definition, in the order of kFrontDefinitions
+  DetachmentConvergence convergence;
   EosCheck eos;
   double phi_peak = 0;  // max phi over unmasked grid bins (NaN: all masked)
   std::string phi_peak_reason;

@@ -69,9 +69,11 @@ std::string result_line(const Done& d) {
                      number(r.ma_inf_target, 3) + " (target), " + number(r.ma_inf_measured, 3) +
                      " (measured at the inlet), " + number(r.ma_inf_measured_downstream, 3) +
                      " (beyond the strip); delta/D = " + number(r.delta_over_D, 3);
-  if (std::isfinite(r.delta_over_D))
+  if (std::isfinite(r.delta_over_D)) {
     line += " +- " + number(r.delta_over_D_err, 2);
-  else
+    if (r.consistent == 0)
+      line += " (analysis choices move it by up to " + number(r.spread, 2) + ": " + r.verdict + ")";
+  } else
     line += " (" + r.delta_over_D_reason + ")";
   line += "; shock angle " + number(r.shock_angle_deg, 3) + " deg";
   if (!std::isfinite(r.shock_angle_deg)) line += " (" + r.shock_angle_deg_reason + ")";

@@ -2,8 +2,10 @@
 
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
+#include "atomic_file.hpp"
 #include "fields_xdmf.hpp"
 
 namespace granshock {
@@ -120,22 +122,36 @@ FieldsFileContent fields_file_content(const FieldAnalysis& a) {
   c.series.push_back({"/profile/delta_blocks", "m", "detachment length of each block with samples",
                       a.detachment.delta_blocks});
   const Detachment& d = a.detachment;
-  for (const auto& [name, value] :
-       std::vector<std::pair<std::string, double>>{{"x_lo", a.profile.x0},
-                                                   {"x_hi", a.profile.x0 + a.profile.dx},
-                                                   {"y0", a.profile.y0},
-                                                   {"dy", a.profile.dy},
-                                                   {"from_grid", a.profile_from_grid ? 1.0 : 0.0},
-                                                   {"y_shock", d.y_shock},
-                                                   {"surface", d.surface},
-                                                   {"delta", d.delta},
-                                                   {"delta_err", d.delta_err},
-                                                   {"delta_over_D", d.delta_over_d},
-                                                   {"delta_over_D_err", d.delta_over_d_err},
-                                                   {"phi_peak", d.phi_peak},
-                                                   {"threshold", d.threshold},
-                                                   {"blocks_used", double(d.blocks_used)}})
-    c.attributes.push_back({"/profile", name, value});
+  const Detachment& density = of(a.detachments, FrontDefinition::density_threshold);
+  const Detachment& temperature = of(a.detachments, FrontDefinition::temperature_jump);
+  std::vector<std::pair<std::string, double>> profile_attributes = {
+      {"x_lo", a.profile.x0},
+      {"x_hi", a.profile.x0 + a.profile.dx},
+      {"strip_width", a.strip_width},
+      {"y0", a.profile.y0},
+      {"dy", a.profile.dy},
+      {"from_grid", a.profile_from_grid ? 1.0 : 0.0},
+      {"y_shock", d.y_shock},
+      {"surface", d.surface},
+      {"delta", d.delta},
+      {"delta_err", d.delta_err},
+      {"delta_over_D", d.delta_over_d},
+      {"delta_over_D_err", d.delta_over_d_err},
+      {"phi_peak", density.peak},
+      {"threshold", density.threshold},
+      {"T_peak", temperature.peak},
+      {"T_threshold", temperature.threshold},
+      {"blocks_used", double(d.blocks_used)}};
+  // Every definition's front and delta (docs/fields.md, section 6).
+  for (const Detachment& e : a.detachments) {
+    const std::string suffix = std::string("_") + name(e.definition);
+    profile_attributes.push_back({"y_shock" + suffix, e.y_shock});
+    profile_attributes.push_back({"delta" + suffix, e.delta});
+    profile_attributes.push_back({"delta_err" + suffix, e.delta_err});
+  }
+  for (const auto& [attribute, value] : profile_attributes)
+    c.attributes.push_back({"/profile", attribute, value});
+  c.text_attributes.push_back({"/profile", "primary_definition", name(kPrimaryFront)});
   if (!d.reason.empty()) c.text_attributes.push_back({"/profile", "delta_reason", d.reason});
   if (!d.err_reason.empty())
     c.text_attributes.push_back({"/profile", "delta_err_reason", d.err_reason});
@@ -183,11 +199,92 @@ FieldsFileContent fields_file_content(const FieldAnalysis& a) {
   return c;
 }
 
+std::string convergence_csv(const FieldAnalysis& a) {
+  std::string csv = "choice,kind,size_d";
+  for (FrontDefinition d : kFrontDefinitions)
+    csv += std::string(",") + name(d) + "," + name(d) + "_err";
+  csv += "\n";
+  auto cell = [](double v) {
+    if (!std::isfinite(v)) return std::string();
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6g", v);
+    return std::string(text);
+  };
+  for (const ConvergenceChoice& c : a.convergence.choices) {
+    csv += "\"" + c.label + "\"," + c.kind + "," + cell(c.kind == "window" ? kNaN : c.size_d);
+    for (const Detachment& d : c.result)
+      csv += "," + cell(d.delta_over_d) + "," + cell(d.delta_over_d_err);
+    csv += "\n";
+  }
+  return csv;
+}
+
 void write_fields_outputs(const FieldAnalysis& a, const std::filesystem::path& dir) {
   const FieldsFileContent content = fields_file_content(a);
   write_fields_file(dir / "fields.h5", content);
   write_fields_xdmf(dir / "fields.xmf", "fields.h5", content);
+  write_file_atomically(dir / "detachment_convergence.csv", convergence_csv(a));
 }
+
+namespace {
+
+// Every definition's delta/D with its three error estimates (docs/fields.md, section 6).
+nlohmann::json detachment_keys(const FieldAnalysis& a) {
+  nlohmann::json all = nlohmann::json::object();
+  for (const Detachment& d : a.detachments) {
+    const double D = a.physics.obstacle ? a.physics.obstacle->diameter : kNaN;
+    nlohmann::json e;
+    e["delta_over_D"] = number_or_null(d.delta_over_d);
+    e["delta_over_D_err"] = number_or_null(d.delta_over_d_err);
+    e["delta_over_D_err_blocks"] = number_or_null(d.err_blocks / D);
+    e["delta_over_D_err_merged_pairs"] = number_or_null(d.err_merged_pairs / D);
+    e["delta_over_D_err_bootstrap"] = number_or_null(d.err_bootstrap / D);
+    e["bootstrap_found"] = d.bootstrap_found;
+    e["bootstrap_resamples"] = d.bootstrap_resamples;
+    e["blocks_used"] = d.blocks_used;
+    e["reason"] = d.reason.empty() ? nlohmann::json() : nlohmann::json(d.reason);
+    e["err_reason"] = d.err_reason.empty() ? nlohmann::json() : nlohmann::json(d.err_reason);
+    all[name(d.definition)] = e;
+  }
+  return all;
+}
+
+// The convergence table and the primary definition's verdict (detachment_convergence.hpp).
+void add_convergence_keys(nlohmann::json& j, const FieldAnalysis& a) {
+  const DetachmentConvergence& c = a.convergence;
+  const bool judged = !c.verdicts.empty() && c.of(kPrimaryFront).applicable;
+  const std::string why = c.verdicts.empty() ? a.detachment.reason : c.of(kPrimaryFront).text;
+  j["delta_over_D_consistent"] = judged ? nlohmann::json(c.of(kPrimaryFront).consistent) : nullptr;
+  j["delta_over_D_consistent_reason"] = judged ? nlohmann::json() : nlohmann::json(why);
+  const double spread =
+      judged ? c.of(kPrimaryFront).max_deviation / a.physics.obstacle->diameter : kNaN;
+  j["delta_over_D_spread"] = number_or_null(spread);
+  j["delta_over_D_spread_reason"] = judged ? nlohmann::json() : nlohmann::json(why);
+  j["delta_over_D_verdict"] = why;
+  if (c.verdicts.empty()) return;
+  const double D = a.physics.obstacle->diameter;
+  nlohmann::json rows = nlohmann::json::array();
+  for (const ConvergenceChoice& choice : c.choices) {
+    nlohmann::json row;
+    row["choice"] = choice.label;
+    row["kind"] = choice.kind;
+    row["size_d"] = number_or_null(choice.kind == "window" ? kNaN : choice.size_d);
+    for (const Detachment& d : choice.result) {
+      row[std::string(name(d.definition))] = number_or_null(d.delta_over_d);
+      row[std::string(name(d.definition)) + "_err"] = number_or_null(d.delta_over_d_err);
+    }
+    rows.push_back(row);
+  }
+  nlohmann::json verdicts = nlohmann::json::object();
+  for (const ConvergenceVerdict& v : c.verdicts)
+    verdicts[name(v.definition)] = {
+        {"consistent", v.applicable ? nlohmann::json(v.consistent) : nlohmann::json()},
+        {"max_deviation_over_D", number_or_null(v.applicable ? v.max_deviation / D : kNaN)},
+        {"text", v.text}};
+  j["detachment_convergence"] = {{"choices", rows}, {"verdicts", verdicts}};
+}
+
+}  // namespace
 
 nlohmann::json summary_keys(const FieldAnalysis& a) {
   nlohmann::json j;
@@ -219,6 +316,9 @@ nlohmann::json summary_keys(const FieldAnalysis& a) {
   put("delta_over_D_err", d.delta_over_d_err, d.err_reason);
   put("detachment_length_m", d.delta, d.reason);
   j["detachment_blocks"] = d.blocks_used;
+  j["delta_definition"] = name(kPrimaryFront);
+  j["detachment"] = detachment_keys(a);
+  add_convergence_keys(j, a);
   put("phi_peak", a.phi_peak, a.phi_peak_reason);
   put("shock_angle_deg", a.front.angle_deg, a.front.angle_reason);
   put("shock_angle_deg_left", a.front.left.angle_deg, a.front.left.reason);

@@ -13,7 +13,11 @@ namespace granshock {
 
 FieldsFileContent fields_file_content(const FieldAnalysis& analysis);
 
-// Writes dir/fields.h5 and dir/fields.xmf (both atomically).
+// The convergence table of delta (docs/fields.md, "Convergence table") as CSV: one row per
+// analysis choice, delta/D and its error by every definition; empty cells where undetermined.
+std::string convergence_csv(const FieldAnalysis& analysis);
+
+// Writes dir/fields.h5, dir/fields.xmf and dir/detachment_convergence.csv (atomically).
 void write_fields_outputs(const FieldAnalysis& analysis, const std::filesystem::path& dir);
 
 // The summary.json keys: ma_inf_target, ma_inf_measured, ma_inf_measured_downstream,

@@ -60,8 +60,9 @@ FrontCrossing find_front_crossing(const std::vector<double>& phi, const std::vec
   return c;
 }
 
-std::string describe(NoFront why, const FrontCrossing& c, double phi_up,
-                     const ThresholdRule& rule) {
+std::string describe(NoFront why, const FrontCrossing& c, double phi_up, const ThresholdRule& rule,
+                     const std::string& quantity) {
+  const char* q = quantity.c_str();
   char text[200];
   switch (why) {
     case NoFront::none:
@@ -69,19 +70,20 @@ std::string describe(NoFront why, const FrontCrossing& c, double phi_up,
     case NoFront::too_few_bins:
       return "fewer than 2 bins to search";
     case NoFront::no_upstream_phi:
-      return "no measured upstream phi";
+      return "no measured upstream " + quantity;
     case NoFront::all_masked:
       return "every searched bin is masked (too few particle samples)";
     case NoFront::jump_too_small:
-      std::snprintf(text, sizeof text, "the largest phi (%.3g) is below %.3g phi_up (%.3g)",
-                    c.phi_peak, rule.min_jump_ratio, rule.min_jump_ratio * phi_up);
+      std::snprintf(text, sizeof text, "the largest %s (%.3g) is below %.3g %s_up (%.3g)", q,
+                    c.phi_peak, rule.min_jump_ratio, q, rule.min_jump_ratio * phi_up);
       return text;
     case NoFront::masked_before_peak:
       return "a masked bin (too few particle samples) lies between the search start and the "
              "peak";
     case NoFront::above_threshold_first:
       std::snprintf(text, sizeof text,
-                    "phi is already above the threshold %.3g where the search starts", c.threshold);
+                    "%s is already above the threshold %.3g where the search starts", q,
+                    c.threshold);
       return text;
   }
   return "";

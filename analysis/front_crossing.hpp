@@ -48,7 +48,9 @@ struct FrontCrossing {
 FrontCrossing find_front_crossing(const std::vector<double>& phi, const std::vector<double>& y,
                                   int begin, int end, double phi_up, const ThresholdRule& rule);
 
-// One clause saying why there is no front, e.g. "the largest phi (0.12) is below 1.5 phi_up".
-std::string describe(NoFront why, const FrontCrossing& c, double phi_up, const ThresholdRule& rule);
+// One clause saying why there is no front, e.g. "the largest phi (0.12) is below 1.5 phi_up";
+// `quantity` names what was searched (the rule also serves the temperature).
+std::string describe(NoFront why, const FrontCrossing& c, double phi_up, const ThresholdRule& rule,
+                     const std::string& quantity = "phi");
 
 }  // namespace granshock

@@ -1,6 +1,10 @@
 #!/usr/bin/python3
 """The detachment length of several runs, like the paper's Fig. 6: delta/D against D/d,
-one series per upstream Mach number, with the block-average standard errors as error bars.
+one series per upstream Mach number, with the block-average errors as error bars; one panel
+per definition of the shock front (docs/fields.md, section 6), and in each Billig's
+correlation for the bow-shock stand-off of a cylinder in a perfect gas (gamma = 1.4),
+delta/R = 0.386 exp(4.67 / Ma^2) (F. S. Billig, "Shock-wave shapes around spherical- and
+cylindrical-nosed bodies", J. Spacecraft Rockets 4 (1967) 822-823), at each Ma_inf.
 
 Usage: plot_detachment.py DETACHMENT_JSON OUT_PNG
 
@@ -36,34 +40,59 @@ def main():
         key = float(f"{ma:.3g}") if math.isfinite(ma) else float("nan")
         groups.setdefault(key, []).append(row)
 
-    fig, ax = plt.subplots(figsize=(5.5, 4.0), constrained_layout=True)
+    definitions = [("temperature_jump", "T half-rise (primary)"),
+                   ("density_threshold", "$\\phi$ half-way"),
+                   ("density_max_gradient", "steepest $\\phi$ rise"),
+                   ("sonic_line", "sonic point")]
+    fig, axes = plt.subplots(2, 2, figsize=(9.0, 7.0), sharex=True, sharey=True,
+                             constrained_layout=True)
     markers = "osD^v<>"
-    # A run whose delta/D (or D/d) could not be determined has no point; the figure says
-    # how many, and detachment.json says why (delta_over_D_reason).
-    left_out = 0
-    for i, key in enumerate(sorted(groups, key=lambda k: (math.isnan(k), k))):
-        usable = [r for r in groups[key]
-                  if math.isfinite(number(r["D_over_d"])) and math.isfinite(number(r["delta_over_D"]))]
-        left_out += len(groups[key]) - len(usable)
-        if not usable:
-            continue
-        series = sorted(usable, key=lambda r: number(r["D_over_d"]))
-        x = [number(r["D_over_d"]) for r in series]
-        y = [number(r["delta_over_D"]) for r in series]
-        err = [number(r["delta_over_D_err"]) for r in series]
-        err = [e if math.isfinite(e) else 0.0 for e in err]
-        label = f"Ma$_\\infty$ = {key:g}" if math.isfinite(key) else "Ma$_\\infty$ unknown"
-        ax.errorbar(x, y, yerr=err, marker=markers[i % len(markers)], capsize=3, linewidth=1.0, label=label)
-    if left_out:
-        ax.text(0.98, 0.02, f"{left_out} of {len(rows)} runs without a determinable $\\delta$/D",
-                transform=ax.transAxes, ha="right", va="bottom", fontsize=8, color="0.3")
-    ax.set_ylim(bottom=0)
-    ax.set_xlabel("D / d")
-    ax.set_ylabel("$\\delta$ / D")
-    ax.set_title("Detachment length", fontsize=10)
-    ax.grid(alpha=0.3)
-    if ax.get_legend_handles_labels()[0]:
-        ax.legend(fontsize=8)
+    order = sorted(groups, key=lambda k: (math.isnan(k), k))
+    all_x = [number(r["D_over_d"]) for r in rows if math.isfinite(number(r["D_over_d"]))]
+    for ax, (definition, title) in zip(axes.flat, definitions):
+        key_y = f"delta_over_D_{definition}"
+        # Tables before granshock 0.9 have the density threshold only, as delta_over_D.
+        if not any(key_y in r for r in rows):
+            key_y = "delta_over_D" if definition == "density_threshold" else None
+        # A run whose delta/D (or D/d) could not be determined has no point; the panel says
+        # how many, and detachment.json says why (delta_over_D_reason).
+        left_out = 0
+        for i, key in enumerate(order):
+            color = f"C{i}"
+            if math.isfinite(key) and key > 0 and all_x:
+                billig = 0.5 * 0.386 * math.exp(4.67 / key ** 2)
+                ax.plot([min(all_x), max(all_x)], [billig, billig], color=color, linestyle=":",
+                        linewidth=1.0, label=f"Billig, Ma {key:g}")
+            if key_y is None:
+                continue
+            usable = [r for r in groups[key] if math.isfinite(number(r["D_over_d"]))
+                      and math.isfinite(number(r.get(key_y)))]
+            left_out += len(groups[key]) - len(usable)
+            if not usable:
+                continue
+            series = sorted(usable, key=lambda r: number(r["D_over_d"]))
+            x = [number(r["D_over_d"]) for r in series]
+            y = [number(r[key_y]) for r in series]
+            err = [number(r.get(key_y + "_err") if key_y != "delta_over_D" else r["delta_over_D_err"])
+                   for r in series]
+            err = [e if math.isfinite(e) else 0.0 for e in err]
+            label = f"Ma$_\\infty$ = {key:g}" if math.isfinite(key) else "Ma$_\\infty$ unknown"
+            ax.errorbar(x, y, yerr=err, marker=markers[i % len(markers)], color=color, capsize=3,
+                        linewidth=1.0, label=label)
+        if left_out:
+            ax.text(0.98, 0.02, f"{left_out} of {len(rows)} runs without a determinable $\\delta$/D",
+                    transform=ax.transAxes, ha="right", va="bottom", fontsize=7, color="0.3")
+        if key_y is None:
+            ax.text(0.5, 0.5, "not in this table", transform=ax.transAxes, ha="center", color="0.4")
+        ax.set_ylim(bottom=0)
+        ax.set_title(f"Detachment length: {title}", fontsize=9)
+        ax.grid(alpha=0.3)
+    for ax in axes[-1]:
+        ax.set_xlabel("D / d")
+    for ax in axes[:, 0]:
+        ax.set_ylabel("$\\delta$ / D")
+    if axes[0, 0].get_legend_handles_labels()[0]:
+        axes[0, 0].legend(fontsize=7)
     os.makedirs(os.path.dirname(os.path.abspath(sys.argv[2])), exist_ok=True)
     fig.savefig(sys.argv[2], dpi=150)
     plt.close(fig)

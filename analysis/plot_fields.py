@@ -57,6 +57,9 @@ class Run:
             self.profile["y"] = self.profile["y"] / self.d
             self.profile["phi"] = np.where(profile["masked"][...] != 0, np.nan, self.profile["phi"])
             self.y_shock = float(profile.attrs["y_shock"]) / self.d
+            # Every definition's front (docs/fields.md, section 6); files before 0.9 have one.
+            self.fronts = {name: float(profile.attrs["y_shock_" + name]) / self.d
+                           for name in FRONT_STYLES if "y_shock_" + name in profile.attrs}
             self.surface = float(profile.attrs["surface"]) / self.d
             self.delta_over_d = float(profile.attrs["delta_over_D"])
             self.delta_over_d_err = float(profile.attrs["delta_over_D_err"])
@@ -133,14 +136,26 @@ def positive_norm(values):
     return LogNorm(vmin=lo, vmax=hi) if hi > 100 * lo else None
 
 
+# The four definitions of the front on the stagnation line: colour, line style, label.
+FRONT_STYLES = {
+    "temperature_jump": ("C3", "--", "front: T half-rise (primary)"),
+    "sonic_line": ("C2", "-.", "front: sonic point Ma = 1"),
+    "density_threshold": ("C0", "--", "front: phi half-way"),
+    "density_max_gradient": ("C0", ":", "front: steepest phi rise"),
+}
+
+
 def profile_figure(run, path):
     p = run.profile
     fig, axes = plt.subplots(3, 1, figsize=(6.0, 7.0), sharex=True, constrained_layout=True)
     for ax, (name, label) in zip(axes, (("phi", "$\\phi$"), ("T_norm", "$T/(m_{av}U_\\infty^2)$"),
                                         ("Ma", "Ma"))):
         ax.plot(p["y"], p[name], "-o", markersize=2.5, linewidth=1.0)
-        if np.isfinite(run.y_shock):
-            ax.axvline(run.y_shock, color="C3", linestyle="--", linewidth=0.9, label="shock (threshold rule)")
+        fronts = run.fronts or {"density_threshold": run.y_shock}
+        for front, y in fronts.items():
+            if np.isfinite(y):
+                color, style, label = FRONT_STYLES[front]
+                ax.axvline(y, color=color, linestyle=style, linewidth=0.9, label=label)
         if np.isfinite(run.surface):
             ax.axvline(run.surface, color="k", linewidth=0.9, label="cylinder surface")
         if name == "Ma":
@@ -152,7 +167,7 @@ def profile_figure(run, path):
         ax.set_ylabel(label)
         ax.grid(alpha=0.3)
     if axes[0].get_legend_handles_labels()[0]:
-        axes[0].legend(fontsize=8)
+        axes[0].legend(fontsize=7)
     axes[-1].set_xlabel("y / d (along the stagnation line)")
     if p["y"].size and not np.isfinite(p["phi"]).any():  # every bin masked: the whole profile
         axes[-1].set_xlim(p["y"][0], max(p["y"][-1], np.nan_to_num(run.surface, nan=p["y"][-1])))

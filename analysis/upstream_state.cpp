@@ -101,7 +101,8 @@ std::vector<double> upstream_phi_by_block(const BinSums& grid, const FieldPhysic
   const BinLayout l = grid.layout();
   // phi = sum_a N_a pi d_a^2 / 4 / (S V), over the rows' bins: the same as the mean of the
   // bins' phi (docs/fields.md, section 2).
-  const double bins = static_cast<double>(row_end - row_begin) * grid.nx;
+  double area = 0;
+  for (int iy = row_begin; iy < row_end; ++iy) area += grid.bin_area(iy) * grid.nx;
   for (int b = 0; b < grid.blocks; ++b) {
     const double samples = grid.samples[static_cast<std::size_t>(b)];
     if (!(samples > 0)) continue;
@@ -114,7 +115,7 @@ std::vector<double> upstream_phi_by_block(const BinSums& grid, const FieldPhysic
                        l.offset(b, iy, ix, l.species_index(a, BinLayout::count)))] *
                    M_PI * d * d / 4;
         }
-    out.push_back(disks / (samples * grid.bin_area() * bins));
+    out.push_back(disks / (samples * area));
   }
   return out;
 }

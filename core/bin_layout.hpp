@@ -15,9 +15,12 @@ namespace granshock {
 
 struct BinLayout {
   int n_species = 2;
-  int nx = 1, ny = 1;      // bins across (x) and along (y) the flow
-  double x0 = 0, y0 = 0;   // lower-left corner of bin (0, 0), m
-  double bin_size = 3e-3;  // m (square bins)
+  int nx = 1, ny = 1;           // bins across (x) and along (y) the flow
+  double x0 = 0, y0 = 0;        // lower-left corner of bin (0, 0), m
+  double dx = 3e-3, dy = 3e-3;  // bin width (x) and height (y), m
+  // > 0: the columns tile a periodic x axis of this length, and a position left of x0
+  // belongs to the last column (the one that wraps across the periodic boundary).
+  double x_period = 0;
   int blocks = 10;
 
   static constexpr int per_species = 6;
@@ -43,18 +46,20 @@ struct BinLayout {
 // most 16 threads, atomic otherwise.
 enum class ScatterStrategy { automatic, atomic, scatter_view, rows };
 
-// The finer stagnation-line profile: a strip x in [x_lo, x_hi] cut along y into n bins
-// of dy from y0, with the same quantities per bin.
-struct ProfileLayout {
-  double x_lo = 0, x_hi = 0;
-  double y0 = 0, dy = 5e-4;
-  int n = 0;
-};
-
+// What a run samples: the grid over the whole domain and, with an obstacle, the finer
+// stagnation-line profile, a block of narrow columns centred on the obstacle's axis cut
+// into short rows (the same quantities per bin; docs/fields.md, section 1).
 struct FieldSampling {
   BinLayout grid;
-  ProfileLayout profile;  // n = 0: none
+  BinLayout profile = no_profile();
   ScatterStrategy strategy = ScatterStrategy::automatic;
+
+  bool has_profile() const { return profile.nx > 0 && profile.ny > 0; }
+  static BinLayout no_profile() {
+    BinLayout none;
+    none.nx = none.ny = 0;
+    return none;
+  }
 };
 
 }  // namespace granshock

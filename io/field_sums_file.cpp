@@ -9,30 +9,38 @@
 
 namespace granshock {
 
+namespace {
+
+// The geometry of one bin layout as attributes of `group` (docs/fields.md, section 1).
+void write_geometry(RunFile& f, const std::string& group, const BinLayout& l, double y_end) {
+  f.write_attribute(group, "nx", long(l.nx));
+  f.write_attribute(group, "ny", long(l.ny));
+  f.write_attribute(group, "blocks", long(l.blocks));
+  f.write_attribute(group, "n_species", long(l.n_species));
+  f.write_attribute(group, "x0", l.x0);
+  f.write_attribute(group, "y0", l.y0);
+  f.write_attribute(group, "dx", l.dx);
+  f.write_attribute(group, "dy", l.dy);
+  f.write_attribute(group, "x_period", l.x_period);
+  f.write_attribute(group, "y_end", y_end);
+}
+
+}  // namespace
+
 void write_field_sums(RunFile& f, const FieldSumsRecord& r) {
   const BinLayout& g = r.sampling.grid;
   const std::vector<double> samples(r.samples.begin(), r.samples.end());
   f.write_array("/fields/grid/sums", r.grid_sums, {g.blocks, g.ny, g.nx, g.quantities()});
   f.write_array("/fields/grid/samples", samples, {g.blocks});
-  f.write_attribute("/fields/grid", "nx", long(g.nx));
-  f.write_attribute("/fields/grid", "ny", long(g.ny));
-  f.write_attribute("/fields/grid", "blocks", long(g.blocks));
-  f.write_attribute("/fields/grid", "n_species", long(g.n_species));
-  f.write_attribute("/fields/grid", "x0", g.x0);
-  f.write_attribute("/fields/grid", "y0", g.y0);
-  f.write_attribute("/fields/grid", "bin_size", g.bin_size);
+  write_geometry(f, "/fields/grid", g, r.y_end);
   f.write_attribute("/fields/grid", "production_start", r.production_start);
   f.write_attribute("/fields/grid", "production_end", r.production_end);
   f.write_attribute("/fields/grid", "sample_every", r.sample_every);
-  const ProfileLayout& p = r.sampling.profile;
-  if (p.n > 0) {
-    f.write_array("/fields/profile/sums", r.profile_sums, {g.blocks, p.n, g.quantities()});
+  if (r.sampling.has_profile()) {
+    const BinLayout& p = r.sampling.profile;
+    f.write_array("/fields/profile/sums", r.profile_sums, {g.blocks, p.ny, p.nx, g.quantities()});
     f.write_array("/fields/profile/samples", samples, {g.blocks});
-    f.write_attribute("/fields/profile", "n", long(p.n));
-    f.write_attribute("/fields/profile", "x_lo", p.x_lo);
-    f.write_attribute("/fields/profile", "x_hi", p.x_hi);
-    f.write_attribute("/fields/profile", "y0", p.y0);
-    f.write_attribute("/fields/profile", "dy", p.dy);
+    write_geometry(f, "/fields/profile", p, r.y_end);
   }
 }
 
@@ -84,6 +92,9 @@ void validate(const RunFile& run, const std::string& group, BinSums& s,
   const std::vector<long> expected = rank == 4
                                          ? std::vector<long>{s.blocks, s.ny, s.nx, s.quantities()}
                                          : std::vector<long>{s.blocks, s.ny, s.quantities()};
+  if (!(s.y_end > s.y0) || !(s.x_period >= 0))
+    throw UserError(where + " has y_end = " + std::to_string(s.y_end) + " and x_period = " +
+                    std::to_string(s.x_period) + ": the domain must end after the first row");
   if (shape != expected || sample_shape != std::vector<long>{s.blocks})
     throw UserError(where + "/sums has shape " + shape_text(shape) + " and /samples " +
                     shape_text(sample_shape) + "; its attributes ask for " + shape_text(expected) +
@@ -94,18 +105,44 @@ void validate(const RunFile& run, const std::string& group, BinSums& s,
 
 }  // namespace
 
+namespace {
+
+// Reads a layout written by write_geometry; files before granshock 0.9 had square grid bins
+// (@bin_size) and a profile of one column (@n rows, @x_lo, @x_hi, @dy).
+void read_geometry(const RunFile& run, const std::string& g, BinSums& s) {
+  s.n_species = static_cast<int>(run.read_attribute_long(g, "n_species"));
+  s.x0 = run.read_attribute_double(g, "x0");
+  s.y0 = run.read_attribute_double(g, "y0");
+  s.nx = static_cast<int>(run.read_attribute_long(g, "nx"));
+  s.ny = static_cast<int>(run.read_attribute_long(g, "ny"));
+  s.dx = run.read_attribute_double(g, "dx");
+  s.dy = run.read_attribute_double(g, "dy");
+  s.x_period = run.read_attribute_double(g, "x_period");
+  s.y_end = run.read_attribute_double(g, "y_end");
+}
+
+bool has_attribute(const RunFile& run, const std::string& object, const std::string& name) {
+  return std::isfinite(optional_double(run, object, name));
+}
+
+}  // namespace
+
 BinSums read_grid_sums(const RunFile& run) {
   const std::string g = "/fields/grid";
   BinSums s;
   std::vector<long> shape, sample_shape;
   reading_sums(run, g, [&] {
-    s.nx = static_cast<int>(run.read_attribute_long(g, "nx"));
-    s.ny = static_cast<int>(run.read_attribute_long(g, "ny"));
+    if (has_attribute(run, g, "dx")) {
+      read_geometry(run, g, s);
+    } else {
+      s.nx = static_cast<int>(run.read_attribute_long(g, "nx"));
+      s.ny = static_cast<int>(run.read_attribute_long(g, "ny"));
+      s.n_species = static_cast<int>(run.read_attribute_long(g, "n_species"));
+      s.x0 = run.read_attribute_double(g, "x0");
+      s.y0 = run.read_attribute_double(g, "y0");
+      s.dx = s.dy = run.read_attribute_double(g, "bin_size");
+    }
     s.blocks = static_cast<int>(run.read_attribute_long(g, "blocks"));
-    s.n_species = static_cast<int>(run.read_attribute_long(g, "n_species"));
-    s.x0 = run.read_attribute_double(g, "x0");
-    s.y0 = run.read_attribute_double(g, "y0");
-    s.dx = s.dy = run.read_attribute_double(g, "bin_size");
     s.production_start = optional_double(run, g, "production_start");
     s.production_end = optional_double(run, g, "production_end");
     s.sums = run.read_array(g + "/sums", &shape);
@@ -116,32 +153,34 @@ BinSums read_grid_sums(const RunFile& run) {
 }
 
 bool has_profile_sums(const RunFile& run) {
-  try {
-    static_cast<void>(run.read_attribute_long("/fields/profile", "n"));
-    return true;
-  } catch (const UserError&) {
-    return false;
-  }
+  return has_attribute(run, "/fields/profile", "dy");
 }
 
 BinSums read_profile_sums(const RunFile& run) {
   const std::string g = "/fields/profile";
   BinSums s;
   std::vector<long> shape, sample_shape;
+  std::size_t rank = 4;
   reading_sums(run, g, [&] {
-    s.n_species = 0;  // from the shape
-    s.nx = 1;
-    s.ny = static_cast<int>(run.read_attribute_long(g, "n"));
-    s.x0 = run.read_attribute_double(g, "x_lo");
-    s.dx = run.read_attribute_double(g, "x_hi") - s.x0;
-    s.y0 = run.read_attribute_double(g, "y0");
-    s.dy = run.read_attribute_double(g, "dy");
+    if (has_attribute(run, g, "dx")) {
+      read_geometry(run, g, s);
+      s.n_species = 0;  // from the shape
+    } else {
+      rank = 3;
+      s.n_species = 0;
+      s.nx = 1;
+      s.ny = static_cast<int>(run.read_attribute_long(g, "n"));
+      s.x0 = run.read_attribute_double(g, "x_lo");
+      s.dx = run.read_attribute_double(g, "x_hi") - s.x0;
+      s.y0 = run.read_attribute_double(g, "y0");
+      s.dy = run.read_attribute_double(g, "dy");
+    }
     s.production_start = s.production_end = std::numeric_limits<double>::quiet_NaN();
     s.sums = run.read_array(g + "/sums", &shape);
     s.samples = run.read_array(g + "/samples", &sample_shape);
     s.blocks = static_cast<int>(s.samples.size());
   });
-  validate(run, g, s, shape, sample_shape, 3);
+  validate(run, g, s, shape, sample_shape, rank);
   return s;
 }
 

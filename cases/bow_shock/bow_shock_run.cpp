@@ -250,11 +250,12 @@ void BowShockRun::finish(bool completed) {
   FieldSumsRecord sums;
   sums.sampling = sampling_.layout();
   sums.grid_sums = solver_->field_sums(false);
-  if (sums.sampling.profile.n > 0) sums.profile_sums = solver_->field_sums(true);
+  if (sums.sampling.has_profile()) sums.profile_sums = solver_->field_sums(true);
   sums.samples = samples_;
   sums.production_start = scene_.run.production_start_s;
   sums.production_end = scene_.run.duration_s;
   sums.sample_every = scene_.run.sample_every;
+  sums.y_end = scene_.setup.box.hi[1];
   write_field_sums(*run_file_, sums);
   run_file_->flush();
   const double wall = wall_before_ + meter_->elapsed_s();

@@ -23,8 +23,9 @@ const std::vector<std::string>& run_outputs() {
   // summary (cases/bow_shock/run_command.cpp), the fields (analysis/fields_output.cpp)
   // and the figures drawn by analysis/plot_fields.py. Atomic writers use NAME.tmp.
   static const std::vector<std::string> outputs = [] {
-    const std::vector<std::string> atomic = {"run.xmf", "checkpoint.h5", "summary.json",
-                                             "fields.h5", "fields.xmf"};
+    const std::vector<std::string> atomic = {"run.xmf",      "checkpoint.h5",
+                                             "summary.json", "fields.h5",
+                                             "fields.xmf",   "detachment_convergence.csv"};
     std::vector<std::string> all = {"run.h5", "figures/solid_fraction.png",
                                     "figures/temperature.png", "figures/mach.png",
                                     "figures/stagnation_profiles.png"};

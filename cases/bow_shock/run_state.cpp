@@ -52,7 +52,7 @@ RunFit run_fit(const Scene& s, const InflowController& inflow, const SamplingPla
   f.quantities = g.quantities();
   f.n_species = g.n_species;
   f.grid_sums = long(g.bins()) * g.quantities() * g.blocks;
-  f.profile_sums = long(sampling.layout().profile.n) * g.quantities() * g.blocks;
+  f.profile_sums = long(sampling.layout().profile.bins()) * g.quantities() * g.blocks;
   f.samples = sampling.samples_by(step);
   return f;
 }

@@ -1,5 +1,6 @@
 // Field sampling of a bow-shock run (docs/fields.md, "Sampling"): where the bins are
-// (square bins over the domain and, with an obstacle, the fine stagnation-line strip),
+// (a grid over the domain aligned with the obstacle and, with an obstacle, the fine
+// stagnation-line profile),
 // when samples are taken (every output.sample_every steps of the production window) and
 // which block of the window each sample adds to.
 #pragma once
@@ -13,6 +14,11 @@ namespace granshock {
 
 class SamplingPlan {
  public:
+  // The stagnation-line profile: columns of 0.5 d across 6 d centred on the axis, rows of
+  // about 0.5 d (in particle diameters).
+  static constexpr int kProfileColumns = 12;
+  static constexpr double kProfileColumnWidth = 0.5, kProfileRowHeight = 0.5;
+
   explicit SamplingPlan(const Scene& scene);
 
   const FieldSampling& layout() const { return layout_; }

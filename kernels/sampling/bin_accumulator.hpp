@@ -18,27 +18,29 @@
 
 namespace granshock {
 
-// Where a position falls: flat bin index of the grid, or -1 outside.
+// Where a position falls: flat bin index of a bin layout (grid or profile), or -1 outside.
+// With `wrap` the columns tile the periodic x axis, and a position left of x0 (whose
+// columns start inside the domain) lies in the last column, which wraps across the
+// boundary; the clamp keeps a position that rounds onto the period's end in that column.
 struct GridIndex {
-  double x0, y0, inv_bin;
+  double x0, y0, inv_dx, inv_dy;
   int nx, ny;
+  bool wrap;
+  static GridIndex of(const BinLayout& l) {
+    return {l.x0, l.y0, 1.0 / l.dx, 1.0 / l.dy, l.nx, l.ny, l.x_period > 0};
+  }
   // The bin, and its row in `row`.
   KOKKOS_INLINE_FUNCTION int operator()(double x, double y, int& row) const {
-    const double fx = (x - x0) * inv_bin, fy = (y - y0) * inv_bin;
-    if (fx < 0 || fy < 0) return -1;
-    const int ix = int(fx), iy = int(fy);
+    double fx = (x - x0) * inv_dx;
+    const double fy = (y - y0) * inv_dy;
+    if (fy < 0) return -1;
+    if (fx < 0) {
+      if (!wrap) return -1;
+      fx += nx;
+    }
+    const int ix = wrap && int(fx) >= nx ? nx - 1 : int(fx), iy = int(fy);
     row = iy;
-    return ix < nx && iy < ny ? iy * nx + ix : -1;
-  }
-};
-struct ProfileIndex {
-  double x_lo, x_hi, y0, inv_dy;
-  int n;
-  KOKKOS_INLINE_FUNCTION int operator()(double x, double y, int& row) const {
-    if (x < x_lo || x >= x_hi || y < y0) return -1;
-    const int k = int((y - y0) * inv_dy);
-    row = k;
-    return k < n ? k : -1;
+    return ix >= 0 && ix < nx && iy < ny ? iy * nx + ix : -1;
   }
 };
 

@@ -221,15 +221,14 @@ class DemSolver final : public Solver {
   void configure_sampling(const FieldSampling& f) override {
     sampling_ = f;
     grid_sums_ = BinAccumulator<ExecSpace>(f.grid.bins(), f.grid.quantities(), f.grid.blocks);
-    if (f.profile.n > 0)
-      profile_sums_ = BinAccumulator<ExecSpace>(f.profile.n, f.grid.quantities(), f.grid.blocks);
+    if (f.has_profile())
+      profile_sums_ =
+          BinAccumulator<ExecSpace>(f.profile.bins(), f.grid.quantities(), f.grid.blocks);
   }
 
   void sample_fields(int block) override {
-    const BinLayout& g = sampling_.grid;
-    const GridIndex grid{g.x0, g.y0, 1.0 / g.bin_size, g.nx, g.ny};
-    const ProfileLayout& pr = sampling_.profile;
-    const ProfileIndex profile{pr.x_lo, pr.x_hi, pr.y0, 1.0 / pr.dy, pr.n};
+    const GridIndex grid = GridIndex::of(sampling_.grid);
+    const GridIndex profile = GridIndex::of(sampling_.profile);
     const ScatterStrategy strategy = BinAccumulator<ExecSpace>::resolve(sampling_.strategy);
     if (strategy == ScatterStrategy::rows) return sample_by_row_owners(block, grid, profile);
     if (int(virial_.extent(0)) < p_.n) virial_ = decltype(virial_)("virial", p_.capacity());
@@ -244,27 +243,26 @@ class DemSolver final : public Solver {
   }
 
   template <ScatterStrategy Strategy>
-  void sample_with(int block, const GridIndex& grid, const ProfileIndex& profile) {
+  void sample_with(int block, const GridIndex& grid, const GridIndex& profile) {
     grid_sums_.template sample<Strategy>(block, grid, p_, virial_);
     if (!profile_sums_.empty())
       profile_sums_.template sample<Strategy>(block, profile, p_, virial_);
   }
 
   // Grid and profile in one pass, the virial computed on the way (row_owner_sampling.hpp).
-  void sample_by_row_owners(int block, const GridIndex& grid, const ProfileIndex& profile) {
+  void sample_by_row_owners(int block, const GridIndex& grid, const GridIndex& profile) {
     using Virial = decltype(virial_);
-    using GridPart = SampleContribution<GridIndex, Store, Virial>;
-    using ProfilePart = SampleContribution<ProfileIndex, Store, Virial>;
+    using Part = SampleContribution<GridIndex, Store, Virial>;
     const int quantities = sampling_.grid.quantities();
     const int virial_terms = Dim * Dim < 4 ? Dim * Dim : 4;
-    const GridPart grid_part{
+    const Part grid_part{
         grid,        p_, {}, block * grid_sums_.block_size(), quantities, BinLayout::per_species,
         virial_terms};
-    const ProfilePart profile_part{
+    const Part profile_part{
         profile,     p_, {}, block * profile_sums_.block_size(), quantities, BinLayout::per_species,
         virial_terms};
     const int owners = BinAccumulator<ExecSpace>::row_owners();
-    const RowOwnerSamplePass<V, ExecSpace, GridPart, ProfilePart> pass{
+    const RowOwnerSamplePass<V, ExecSpace, Part> pass{
         {p_, pair_loop(), table_, obstacle_, Real(setup_.dt), history_overflow_, {}},
         grid_part,
         profile_part,

@@ -14,15 +14,14 @@
 
 namespace granshock {
 
-template <class V, class ExecSpace, class GridPart, class ProfilePart>
+template <class V, class ExecSpace, class Part>
 struct RowOwnerSamplePass {
   static constexpr int Dim = V::dim;
   using Real = typename V::real;
   using Sums = Kokkos::View<double*, typename ExecSpace::memory_space>;
 
   ContactForceKernel<V, ExecSpace, ForceMode::virial> contacts;
-  GridPart grid;        // SampleContribution<GridIndex, ...>
-  ProfilePart profile;  // SampleContribution<ProfileIndex, ...>
+  Part grid, profile;  // SampleContribution<GridIndex, ...> of each layout
   Sums grid_sums, profile_sums;
   bool with_profile;
   int n, owner_mask;

@@ -16,6 +16,7 @@
 
 #include "bin_sums.hpp"
 #include "field_physics.hpp"
+#include "field_sums_file.hpp"
 #include "kinetic_theory.hpp"
 #include "run_file.hpp"
 #include "scene_file.hpp"
@@ -104,7 +105,7 @@ inline void add_state(BinSums& s, int block, int iy, int ix, const BinState& st,
   auto at = [&](int q) -> double& {
     return s.sums[static_cast<std::size_t>(l.offset(block, iy, ix, q))];
   };
-  const double volume = s.bin_area() * samples * weight;
+  const double volume = s.bin_area(iy) * samples * weight;
   for (int a = 0; a < s.n_species; ++a) {
     const double n = st.n[static_cast<std::size_t>(a)] * volume;
     const double c2 =
@@ -213,29 +214,18 @@ inline void write_run_file(const std::filesystem::path& dir, const std::string& 
   std::filesystem::create_directories(dir);
   const LoadedScene loaded = parse_scene(scene_toml);
   RunFile run = RunFile::create(dir / "run.h5", scene_toml, loaded.resolved, 2);
-  const std::string g = "/fields/grid";
-  run.write_array(g + "/sums", grid.sums, {grid.blocks, grid.ny, grid.nx, grid.quantities()});
-  run.write_array(g + "/samples", grid.samples, {grid.blocks});
-  run.write_attribute(g, "nx", long(grid.nx));
-  run.write_attribute(g, "ny", long(grid.ny));
-  run.write_attribute(g, "blocks", long(grid.blocks));
-  run.write_attribute(g, "n_species", long(grid.n_species));
-  run.write_attribute(g, "x0", grid.x0);
-  run.write_attribute(g, "y0", grid.y0);
-  run.write_attribute(g, "bin_size", grid.dx);
-  run.write_attribute(g, "production_start", grid.production_start);
-  run.write_attribute(g, "production_end", grid.production_end);
+  FieldSumsRecord record;
+  record.sampling.grid = grid.layout();
+  record.grid_sums = grid.sums;
   if (profile != nullptr) {
-    const std::string p = "/fields/profile";
-    run.write_array(p + "/sums", profile->sums,
-                    {profile->blocks, profile->ny, profile->quantities()});
-    run.write_array(p + "/samples", profile->samples, {profile->blocks});
-    run.write_attribute(p, "n", long(profile->ny));
-    run.write_attribute(p, "x_lo", profile->x0);
-    run.write_attribute(p, "x_hi", profile->x0 + profile->dx);
-    run.write_attribute(p, "y0", profile->y0);
-    run.write_attribute(p, "dy", profile->dy);
+    record.sampling.profile = profile->layout();
+    record.profile_sums = profile->sums;
   }
+  for (double n : grid.samples) record.samples.push_back(static_cast<long>(n));
+  record.production_start = grid.production_start;
+  record.production_end = grid.production_end;
+  record.y_end = grid.y_end;
+  write_field_sums(run, record);
   run.flush();
 }
 

@@ -167,8 +167,14 @@ TEST(FieldsCommand, OneRunWritesFieldsXdmfFiguresAndSummary) {
   EXPECT_NEAR(j["ma_inf_measured_downstream"].get<double>(), 6.0, 1e-6);
   EXPECT_NEAR(j["phi_inf_measured"].get<double>(), 0.1, 1e-9);
   EXPECT_NEAR(j["phi_peak"].get<double>(), 0.4, 1e-9);
-  // delta = D/2 less the smearing of the V front across the 3 d strip (0.63 d): 5.37 d.
-  EXPECT_NEAR(j["delta_over_D"].get<double>(), (6.0 - 0.63) / 12.0, 0.5 / 12.0);
+  // The V front's apex lies D/2 = 6 d upstream of the surface. The primary definition, the
+  // temperature's half-rise, finds its upstream edge (a bin that holds a little of the slow,
+  // dense state already has a high T); the density threshold finds the front smeared across
+  // the 3 d strip (0.63 d further on): 5.37 d.
+  EXPECT_EQ(j["delta_definition"], "temperature_jump");
+  EXPECT_NEAR(j["delta_over_D"].get<double>(), 6.0 / 12.0, 0.5 / 12.0);
+  EXPECT_NEAR(j["detachment"]["density_threshold"]["delta_over_D"].get<double>(),
+              (6.0 - 0.63) / 12.0, 0.5 / 12.0);
   EXPECT_GT(j["delta_over_D_err"].get<double>(), 0.0);
   EXPECT_LT(j["delta_over_D_err"].get<double>(), 0.02);
   EXPECT_NEAR(j["shock_angle_deg"].get<double>(), 50.0, 3.0);

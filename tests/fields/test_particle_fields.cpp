@@ -126,7 +126,7 @@ BinSums accumulate(std::uint64_t seed, const std::vector<double>& sigma, const M
   sampling.grid.ny = kBinsY;
   sampling.grid.x0 = kGridX0;
   sampling.grid.y0 = kGridY0;
-  sampling.grid.bin_size = kBin;
+  sampling.grid.dx = sampling.grid.dy = kBin;
   sampling.grid.blocks = kBlocks;
   solver->configure_sampling(sampling);
 

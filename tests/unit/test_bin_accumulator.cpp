@@ -34,13 +34,25 @@ Fixture dense_gas(int warmup_steps) {
   f.solver = make_solver(f.setup, spec.particles);
   f.solver->set_particles(make_homogeneous_gas(f.setup, spec));
   f.solver->advance(warmup_steps);
+  // A grid like the bow-shock's (cases/bow_shock/sampling_plan.cpp): rectangular bins whose
+  // columns tile the periodic width from x0 > 0, so that the last column wraps across x = 0.
   BinLayout& g = f.sampling.grid;
   g.n_species = 2;
-  g.bin_size = 3e-3;
-  g.nx = int(f.setup.box.length(0) / g.bin_size);
-  g.ny = int(f.setup.box.length(1) / g.bin_size);
+  g.nx = int(f.setup.box.length(0) / 3e-3);
+  g.dx = f.setup.box.length(0) / g.nx;
+  g.x0 = f.setup.box.lo[0] + 0.4 * g.dx;
+  g.x_period = f.setup.box.length(0);
+  g.dy = 2.5e-3;
+  g.ny = int(f.setup.box.length(1) / g.dy);
   g.blocks = 4;
-  f.sampling.profile = {0.01, 0.014, 0.0, 5e-4, 40};
+  BinLayout& pr = f.sampling.profile;
+  pr = g;
+  pr.x_period = 0;
+  pr.nx = 8;
+  pr.dx = pr.dy = 5e-4;
+  pr.x0 = 0.01;
+  pr.y0 = 0.0;
+  pr.ny = 40;
   return f;
 }
 
@@ -48,22 +60,19 @@ Fixture dense_gas(int warmup_steps) {
 std::vector<double> reference_sums(const Fixture& f, const HostParticles& p, int block,
                                    bool profile) {
   const BinLayout& g = f.sampling.grid;
-  const ProfileLayout& pr = f.sampling.profile;
+  const BinLayout& layout = profile ? f.sampling.profile : g;
   const int q = g.quantities();
-  const long bins = profile ? pr.n : g.bins();
+  const long bins = layout.bins();
   std::vector<double> sums(std::size_t(g.blocks) * bins * q, 0.0);
   const double length[2] = {f.setup.box.length(0), f.setup.box.length(1)};
   for (std::size_t i = 0; i < p.size(); ++i) {
     const double x = p.position[i][0], y = p.position[i][1];
-    long bin = -1;
-    if (profile) {
-      if (x >= pr.x_lo && x < pr.x_hi && y >= pr.y0 && int((y - pr.y0) / pr.dy) < pr.n)
-        bin = int((y - pr.y0) / pr.dy);
-    } else if (x >= g.x0 && y >= g.y0 && int((x - g.x0) / g.bin_size) < g.nx &&
-               int((y - g.y0) / g.bin_size) < g.ny) {
-      bin = long(int((y - g.y0) / g.bin_size)) * g.nx + int((x - g.x0) / g.bin_size);
-    }
-    if (bin < 0) continue;
+    // Left of x0 on a periodic axis: the same place one period further right.
+    const double xs = x < layout.x0 && layout.x_period > 0 ? x + layout.x_period : x;
+    const long ix = long(std::floor((xs - layout.x0) / layout.dx)),
+               iy = long(std::floor((y - layout.y0) / layout.dy));
+    if (ix < 0 || ix >= layout.nx || iy < 0 || iy >= layout.ny) continue;
+    const long bin = iy * layout.nx + ix;
     double* s = &sums[(std::size_t(block) * bins + bin) * q];
     const double vx = p.velocity[i][0], vy = p.velocity[i][1];
     double* sp = s + BinLayout::per_species * p.species[i];

@@ -1,0 +1,64 @@
+// The stagnation line: the fields along one strip of the stagnation-line profile and the
+// four definitions of where the shock front crosses it (docs/fields.md, section 6):
+//   temperature_jump      T first reaches T_up + 1/2 (T_peak - T_up), searched from upstream:
+//                         the upstream edge of the hot region, which the paper places
+//                         "between the shock front and the obstacle" (primary);
+//   density_threshold     phi first reaches phi_up + 1/2 (phi_peak - phi_up);
+//   density_max_gradient  the steepest rise of phi upstream of its peak;
+//   sonic_line            Ma first falls below 1 (the sonic line "just behind the front").
+// All four search the same bins, from the reference row beyond the insertion strip to the
+// last bin upstream of the obstacle's surface, and interpolate linearly between bin centres.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "bin_fields.hpp"
+#include "bin_sums.hpp"
+#include "field_physics.hpp"
+#include "front_crossing.hpp"
+
+namespace granshock {
+
+enum class FrontDefinition {
+  temperature_jump,
+  density_threshold,
+  density_max_gradient,
+  sonic_line
+};
+inline constexpr std::array<FrontDefinition, 4> kFrontDefinitions = {
+    FrontDefinition::temperature_jump, FrontDefinition::density_threshold,
+    FrontDefinition::density_max_gradient, FrontDefinition::sonic_line};
+inline constexpr FrontDefinition kPrimaryFront = FrontDefinition::temperature_jump;
+const char* name(FrontDefinition definition);  // "temperature_jump", ...
+
+// The measured state ahead of the shock (the grid rows beyond the strip).
+struct UpstreamValues {
+  double phi = 0;
+  double temperature = 0;
+};
+
+// One column's fields, bin by bin upstream to downstream; masked bins hold NaN (phi too).
+struct StagnationLine {
+  std::vector<double> y, phi, temperature, mach;
+};
+StagnationLine stagnation_line(const BinSums& column, const FieldPhysics& physics,
+                               const MaskRule& mask);
+
+// Where the front crosses the line by one definition, searched in bins [begin, end).
+struct FrontFix {
+  bool found = false;
+  double y = 0;
+  double peak = 0, threshold = 0;  // of the definition's quantity (NaN: none)
+  std::string why;                 // why there is no front (empty when found)
+};
+FrontFix locate_front(FrontDefinition definition, const StagnationLine& line, int begin, int end,
+                      const UpstreamValues& upstream, const ThresholdRule& rule);
+
+// The columns of a stagnation-line profile within width / 2 of the axis at x_axis, added into
+// one strip (a one-column profile is returned as it is: files before granshock 0.9 held one
+// 4 d strip). The strip is at least one column wide.
+BinSums strip_of(const BinSums& profile, double x_axis, double width);
+
+}  // namespace granshock

@@ -1,0 +1,215 @@
+// The four definitions of the shock front on the stagnation line (analysis/stagnation_line.hpp,
+// docs/fields.md section 6), their error bars and the convergence table, on synthetic
+// profiles whose answers are known: a layered stagnation line where the temperature jumps,
+// the flow turns subsonic and the density jumps at three separate, chosen places, cut by
+// rows aligned with those places and by rows offset from them.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "detachment.hpp"
+#include "detachment_convergence.hpp"
+#include "field_analysis.hpp"
+#include "fields_output.hpp"
+#include "scene_file.hpp"
+#include "synthetic_run.hpp"
+
+using namespace granshock;
+
+namespace {
+
+constexpr double kD = 1e-3;
+const std::string kScene = test::bow_shock_scene(12);  // cylinder of 12 d at (30 d, 60 d)
+constexpr double kSurface = 54 * kD;
+// Upstream to downstream: the cold inflow (Ma 6, phi 0.1), the hot layer behind the
+// temperature jump (Ma 1.5, phi 0.15), the subsonic layer behind the sonic point (Ma 0.5,
+// phi 0.2) and the dense cap behind the density jump (Ma 0.2, phi 0.45).
+constexpr double kTemperatureJump = kSurface - 9 * kD, kSonic = kSurface - 6.5 * kD,
+                 kDensityJump = kSurface - 3.5 * kD;
+
+struct Layers {
+  test::BinState cold, hot, subsonic, dense;
+  double phi_up, t_up;
+};
+
+Layers layers(const FieldPhysics& phys) {
+  Layers l;
+  l.phi_up = 0.1;
+  l.t_up = test::temperature_for_mach(phys, 0.1, 1.0, 6.0);
+  l.cold = test::mixture_state(phys, 0.1, l.t_up, 0, 1.0);
+  l.hot = test::mixture_state(phys, 0.15, test::temperature_for_mach(phys, 0.15, 0.9, 1.5), 0, 0.9);
+  l.subsonic =
+      test::mixture_state(phys, 0.2, test::temperature_for_mach(phys, 0.2, 0.2, 0.5), 0, 0.2);
+  l.dense =
+      test::mixture_state(phys, 0.45, test::temperature_for_mach(phys, 0.45, 0.05, 0.2), 0, 0.05);
+  return l;
+}
+
+// A profile of nx columns of width dx on the axis (x = 30 d), rows of dy from y0 to the
+// surface, every block filled with the layers (shifted by shift[b] along y), each bin with
+// the fractions of the layers it holds.
+BinSums layered_profile(const FieldPhysics& phys, int nx, double dx, double y0, double dy,
+                        int blocks, const std::vector<double>& shift = {}) {
+  const Layers l = layers(phys);
+  const int ny = static_cast<int>(std::lround((kSurface - y0) / dy));
+  BinSums s = test::empty_sums(nx, ny, blocks, 30 * kD - 0.5 * nx * dx, y0, dx, dy);
+  constexpr int sub = 64;
+  for (int b = 0; b < blocks; ++b) {
+    const double move = shift.empty() ? 0 : shift[static_cast<std::size_t>(b) % shift.size()];
+    s.samples[static_cast<std::size_t>(b)] = 400;
+    for (int iy = 0; iy < ny; ++iy) {
+      double f[4] = {0, 0, 0, 0};
+      for (int j = 0; j < sub; ++j) {
+        const double y = y0 + (iy + (j + 0.5) / sub) * dy - move;
+        f[y < kTemperatureJump ? 0 : y < kSonic ? 1 : y < kDensityJump ? 2 : 3] += 1.0 / sub;
+      }
+      const test::BinState* state[4] = {&l.cold, &l.hot, &l.subsonic, &l.dense};
+      for (int ix = 0; ix < nx; ++ix)
+        for (int k = 0; k < 4; ++k)
+          if (f[k] > 0) test::add_state(s, b, iy, ix, *state[k], phys, 400, f[k]);
+    }
+  }
+  return s;
+}
+
+DetachmentSearch search_from(double y_begin) {
+  DetachmentSearch search;
+  search.y_begin = y_begin;
+  return search;
+}
+
+// Where each definition puts the front, for rows aligned with the layers' edges and for rows
+// offset from them by 0.3 of a row.
+class FrontDefinitions : public testing::TestWithParam<double> {};
+
+TEST_P(FrontDefinitions, EachFindsItsOwnEdge) {
+  const FieldPhysics phys = test::physics_of(kScene);
+  const Layers l = layers(phys);
+  const double dy = 0.5 * kD, offset = GetParam() * dy;
+  const BinSums profile = layered_profile(phys, 1, 4 * kD, offset, dy, 1);
+  const Detachments all =
+      measure_detachments(profile, phys, {l.phi_up, l.t_up}, search_from(10 * kD));
+  const struct {
+    FrontDefinition definition;
+    double edge;
+  } expected[] = {{FrontDefinition::temperature_jump, kTemperatureJump},
+                  {FrontDefinition::density_threshold, kDensityJump},
+                  {FrontDefinition::density_max_gradient, kDensityJump},
+                  {FrontDefinition::sonic_line, kSonic}};
+  for (const auto& e : expected) {
+    const Detachment& d = of(all, e.definition);
+    ASSERT_TRUE(d.found) << name(e.definition) << ": " << d.reason;
+    EXPECT_NEAR(d.surface, kSurface, 1e-12);
+    // Interpolating between bin centres across a step lands within half a row of it.
+    EXPECT_NEAR(d.y_shock, e.edge, 0.5 * dy) << name(e.definition);
+    EXPECT_NEAR(d.delta_over_d, (kSurface - d.y_shock) / (12 * kD), 1e-12);
+  }
+  if (offset == 0) {
+    // A step on a row edge between two plateaus: the half-rise of T and the crossing of
+    // Ma = 1 (1.5 on one side, 0.5 on the other) lie exactly on it.
+    EXPECT_NEAR(of(all, FrontDefinition::temperature_jump).y_shock, kTemperatureJump, 1e-9 * kD);
+    EXPECT_NEAR(of(all, FrontDefinition::sonic_line).y_shock, kSonic, 1e-9 * kD);
+  }
+  // The definitions keep their order along the line: hot edge, sonic point, dense cap.
+  EXPECT_GT(of(all, FrontDefinition::temperature_jump).delta,
+            of(all, FrontDefinition::sonic_line).delta);
+  EXPECT_GT(of(all, FrontDefinition::sonic_line).delta,
+            of(all, FrontDefinition::density_threshold).delta);
+}
+
+INSTANTIATE_TEST_SUITE_P(RowOffsets, FrontDefinitions, testing::Values(0.0, 0.3, 0.7));
+
+TEST(FrontDefinitions, SayWhyTheyFindNoFront) {
+  const FieldPhysics phys = test::physics_of(kScene);
+  const Layers l = layers(phys);
+  // Search from inside the subsonic layer: the T and Ma searches start past their edges.
+  const BinSums profile = layered_profile(phys, 1, 4 * kD, 0, 0.5 * kD, 1);
+  const Detachments all =
+      measure_detachments(profile, phys, {l.phi_up, l.t_up}, search_from(kSonic + 0.5 * kD));
+  EXPECT_FALSE(of(all, FrontDefinition::sonic_line).found);
+  EXPECT_NE(of(all, FrontDefinition::sonic_line).reason.find("already subsonic"), std::string::npos)
+      << of(all, FrontDefinition::sonic_line).reason;
+  EXPECT_FALSE(of(all, FrontDefinition::temperature_jump).found);
+  EXPECT_NE(of(all, FrontDefinition::temperature_jump).reason.find("T is already above"),
+            std::string::npos)
+      << of(all, FrontDefinition::temperature_jump).reason;
+  EXPECT_TRUE(of(all, FrontDefinition::density_threshold).found);
+}
+
+// Error bars: blocks whose fronts move independently against blocks that move in pairs
+// (neighbouring blocks correlated, as when the dense cap drifts slowly). The single-block
+// error assumes independence and misses the correlation; the merged pairs see it, and the
+// reported error follows them.
+TEST(FrontDefinitions, CorrelatedNeighbouringBlocksRaiseTheError) {
+  const FieldPhysics phys = test::physics_of(kScene);
+  const Layers l = layers(phys);
+  const std::vector<double> independent = {0.6 * kD, -0.9 * kD, 0.3 * kD, -0.3 * kD,
+                                           0.9 * kD, -0.6 * kD, 0.0,      0.45 * kD};
+  std::vector<double> paired;
+  for (std::size_t b = 0; b < independent.size(); ++b) paired.push_back(independent[b / 2 * 2]);
+  auto measure = [&](const std::vector<double>& shifts) {
+    return of(measure_detachments(layered_profile(phys, 1, 4 * kD, 0, 0.5 * kD, 8, shifts), phys,
+                                  {l.phi_up, l.t_up}, search_from(10 * kD)),
+              kPrimaryFront);
+  };
+  const Detachment free = measure(independent), pairs = measure(paired);
+  ASSERT_TRUE(free.found && pairs.found);
+  EXPECT_EQ(pairs.blocks_used, 8);
+  // Paired blocks: 4 distinct values seen as 8 independent ones, an error sqrt(7/3) = 1.53
+  // times too small; merging pairs recovers it.
+  EXPECT_GT(pairs.err_merged_pairs, 1.3 * pairs.err_blocks)
+      << pairs.err_merged_pairs / kD << " d vs " << pairs.err_blocks / kD << " d";
+  EXPECT_GE(pairs.delta_err, pairs.err_merged_pairs);
+  // The bootstrap resamples the 8 blocks as if independent: it sees the single-block spread
+  // (up to the estimator's shape: the half-rise of pooled, shifted steps behaves like a
+  // median of the shifts, whose spread exceeds the mean's), not the pairs'.
+  EXPECT_GT(pairs.err_bootstrap, 0.5 * pairs.err_blocks);
+  EXPECT_LT(pairs.err_bootstrap, 2.0 * pairs.err_blocks);
+  EXPECT_EQ(pairs.bootstrap_found, pairs.bootstrap_resamples);
+  // Independent blocks: merging does not raise the error beyond its own noise.
+  EXPECT_LT(free.err_merged_pairs, 1.3 * free.err_blocks);
+}
+
+// The whole analysis on a layered profile of 12 columns of 0.5 d (as runs sample it): the
+// convergence table holds every choice, and the primary definition agrees with itself when
+// the rows resolve the layers.
+TEST(FrontDefinitions, ConvergenceTableCoversEveryChoice) {
+  const FieldPhysics phys = test::physics_of(kScene);
+  const test::BowShockSums bow = test::bow_shock_sums(phys, 12, 4, 250);
+  const BinSums profile =
+      layered_profile(phys, 12, 0.5 * kD, 0, 0.5 * kD, 4, {0.1 * kD, -0.1 * kD});
+  const FieldAnalysis a = analyse_fields(parse_scene(kScene).scene, bow.grid, profile);
+  EXPECT_NEAR(a.strip_width, 4 * kD, 1e-12);
+  std::vector<std::string> labels;
+  for (const ConvergenceChoice& c : a.convergence.choices) labels.push_back(c.label);
+  const std::vector<std::string> expected = {"rows 0.5 d, strip 4 d",
+                                             "rows 1 d, strip 4 d",
+                                             "rows 1.5 d, strip 4 d",
+                                             "rows 2 d, strip 4 d",
+                                             "rows 3 d, strip 4 d",
+                                             "strip 1 d",
+                                             "strip 2 d",
+                                             "strip 4 d",
+                                             "strip 6 d",
+                                             "grid column 3 d",
+                                             "first half of the window",
+                                             "second half of the window"};
+  EXPECT_EQ(labels, expected);
+  // The reference cut is the first row of the table.
+  EXPECT_EQ(a.convergence.choices[0].result[0].delta, a.detachments[0].delta);
+  // Strips of any width see the same plane layers; the density threshold on 1.5-3 d rows
+  // merged from the face keeps the dense cap's edge (3.5 d from the face) within a row.
+  for (const ConvergenceChoice& c : a.convergence.choices) {
+    const Detachment& density = of(c.result, FrontDefinition::density_threshold);
+    if (c.kind == "strip" || c.kind == "window") {
+      EXPECT_NEAR(density.delta, kSurface - kDensityJump, 0.6 * kD) << c.label;
+    }
+  }
+  EXPECT_EQ(a.convergence.verdicts.size(), kFrontDefinitions.size());
+  EXPECT_FALSE(a.convergence.of(kPrimaryFront).text.empty());
+  const std::string csv = convergence_csv(a);
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 13);
+  EXPECT_EQ(csv.rfind("choice,kind,size_d,temperature_jump,temperature_jump_err,", 0), 0u);
+}
+
+}  // namespace
