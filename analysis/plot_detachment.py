@@ -60,9 +60,10 @@ def main():
         for i, key in enumerate(order):
             color = f"C{i}"
             if math.isfinite(key) and key > 0 and all_x:
+                # Independent of D/d: a line across the panel.
                 billig = 0.5 * 0.386 * math.exp(4.67 / key ** 2)
-                ax.plot([min(all_x), max(all_x)], [billig, billig], color=color, linestyle=":",
-                        linewidth=1.0, label=f"Billig, Ma {key:g}")
+                ax.axhline(billig, color=color, linestyle=":", linewidth=1.0,
+                           label=f"Billig, Ma {key:g}")
             if key_y is None:
                 continue
             usable = [r for r in groups[key] if math.isfinite(number(r["D_over_d"]))

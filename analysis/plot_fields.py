@@ -154,8 +154,8 @@ def profile_figure(run, path):
         fronts = run.fronts or {"density_threshold": run.y_shock}
         for front, y in fronts.items():
             if np.isfinite(y):
-                color, style, label = FRONT_STYLES[front]
-                ax.axvline(y, color=color, linestyle=style, linewidth=0.9, label=label)
+                color, style, front_label = FRONT_STYLES[front]
+                ax.axvline(y, color=color, linestyle=style, linewidth=0.9, label=front_label)
         if np.isfinite(run.surface):
             ax.axvline(run.surface, color="k", linewidth=0.9, label="cylinder surface")
         if name == "Ma":
