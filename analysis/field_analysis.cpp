@@ -165,6 +165,7 @@ FieldAnalysis analyse_fields(const Scene& scene, BinSums grid, std::optional<Bin
     a.phi_peak_reason = "every one of the " + std::to_string(a.fields.size()) +
                         " bins is masked (too few particle samples)";
   set_target_mach(a, phys.nominal_mach(phys.mass_definition));
+  a.features = measure_flow_features(a);
   return a;
 }
 

@@ -16,6 +16,7 @@
 #include "detachment_convergence.hpp"
 #include "eos_check.hpp"
 #include "field_physics.hpp"
+#include "flow_features.hpp"
 #include "front_crossing.hpp"
 #include "inflow_check.hpp"
 #include "polyline.hpp"
@@ -61,7 +62,8 @@ struct FieldAnalysis {
   std::string phi_peak_reason;
   double ma_target = 0;  // the run's target Ma_inf (set_target_mach), NaN: none
   std::string ma_target_reason;
-  InflowCheck inflow;  // measured upstream state against the targets
+  InflowCheck inflow;     // measured upstream state against the targets
+  FlowFeatures features;  // the paper's qualitative claims as numbers
 };
 
 FieldAnalysis analyse_fields(const Scene& scene, BinSums grid, std::optional<BinSums> profile,

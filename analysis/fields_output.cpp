@@ -320,6 +320,15 @@ nlohmann::json summary_keys(const FieldAnalysis& a) {
   j["detachment"] = detachment_keys(a);
   add_convergence_keys(j, a);
   put("phi_peak", a.phi_peak, a.phi_peak_reason);
+  const FlowFeatures& features = a.features;
+  put("shock_layer_phi_mean", features.shock_layer_phi_mean, features.shock_layer_reason);
+  put("shock_layer_phi_max", features.shock_layer_phi_max, features.shock_layer_reason);
+  put("hot_region_subsonic_fraction", features.hot_subsonic_fraction, features.hot_reason);
+  j["hot_region_bins"] = features.hot_bins;
+  put("upstream_ma_peak", features.upstream_ma_peak, features.upstream_ma_reason);
+  put("upstream_ma_peak_over_ma_inf", features.upstream_ma_peak_over_inf,
+      features.upstream_ma_reason);
+  put("wake_phi_over_phi_inf", features.wake_phi_over_phi_up, features.wake_reason);
   put("shock_angle_deg", a.front.angle_deg, a.front.angle_reason);
   put("shock_angle_deg_left", a.front.left.angle_deg, a.front.left.reason);
   put("shock_angle_deg_right", a.front.right.angle_deg, a.front.right.reason);
