@@ -36,7 +36,8 @@ LoadedScene load_case(const StudySpec& s, const StudyCase& c) {
 }  // namespace
 
 std::vector<std::string> run_overrides(const StudySpec& s, const PlannedCase& c) {
-  std::vector<std::string> o{"scene.name=" + c.spec.name};
+  // Quoted: a name such as "10" or "true" must stay a string (docs/scene_format.md).
+  std::vector<std::string> o{"scene.name=\"" + c.spec.name + "\""};
   for (const std::string& v : with_common(s, c.spec.overrides)) o.push_back(v);
   return o;
 }

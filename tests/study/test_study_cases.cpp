@@ -173,3 +173,19 @@ TEST(StudyPlan, SweepValuesAtTheBasePointBecomeOneBaseCase) {
   EXPECT_TRUE(plan.cases[1].spec.overrides.empty());
   for (std::size_t k = 0; k < plan.cases.size(); ++k) EXPECT_EQ(plan.cases[k].spec.index, int(k));
 }
+
+// A case name that TOML would read as a number or a boolean stays the scene's name.
+TEST(StudyPlan, NumericCaseNamesReachTheRunAsNames) {
+  TempDir tmp;
+  const auto base = tmp.write("small.toml", small_scene(true));
+  const StudySpec s = spec(
+      "[[case]]\nname = \"10\"\n[[case]]\nname = \"true\"\nset = "
+      "[\"scene.seed=3\"]\n",
+      base.string());
+  const StudyPlan plan = plan_study(s, tmp.path() / "out");
+  for (const PlannedCase& c : plan.cases) {
+    const LoadedScene run = load_scene_file(base, run_overrides(s, c));
+    EXPECT_EQ(run.scene.name, c.spec.name);
+    EXPECT_EQ(run.resolved, c.resolved);
+  }
+}
