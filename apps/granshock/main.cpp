@@ -16,6 +16,7 @@
 #include "hdf5_runtime.hpp"
 #include "head_on_collision.hpp"
 #include "run_command.hpp"
+#include "study_command.hpp"
 #include "user_error.hpp"
 
 namespace {
@@ -86,6 +87,35 @@ void add_fields_command(CLI::App& app, std::vector<std::filesystem::path>& dirs,
   cmd->add_option("--out", out, "where to write (required with several DIRs)");
 }
 
+void add_study_command(CLI::App& app, granshock::StudyOptions& o) {
+  auto* cmd = app.add_subcommand(
+      "study",
+      "run a parameter study: every case of STUDY.toml into its own run directory, "
+      "then the study table and figures (docs/study.md)");
+  cmd->add_option("study", o.study_file, "study file (TOML)")->required();
+  cmd->add_option("--out", o.out_dir,
+                  "study directory (default: the study file's out, else "
+                  "runs/<study name>)");
+  cmd->add_option("--case", o.only_case, "run only case K (0-based; for Slurm array tasks)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_flag("--collect", o.collect,
+                "build the table and figures from the finished cases; run nothing");
+  cmd->add_option("--emit", o.emit, "write a batch script into the study directory: slurm")
+      ->check(CLI::IsMember({"slurm"}));
+  cmd->add_flag("--dry-run", o.dry_run,
+                "check every case, list them with their overrides and expected cost; write "
+                "nothing");
+  cmd->add_option("--stop-after-steps", o.stop_after_steps,
+                  "the running case writes a checkpoint and stops after this many steps, and "
+                  "the study with it")
+      ->check([](const std::string& steps) {
+        return std::strtol(steps.c_str(), nullptr, 10) >= 1
+                   ? std::string()
+                   : std::string("must be a positive number of steps");
+      });
+  cmd->add_flag("--quiet", o.quiet, "no progress lines from the runs");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -100,6 +130,8 @@ int main(int argc, char** argv) {
   std::vector<std::filesystem::path> field_dirs;
   std::filesystem::path field_out;
   add_fields_command(app, field_dirs, field_out);
+  granshock::StudyOptions study;
+  add_study_command(app, study);
   auto* info = app.add_subcommand("info", "version, Kokkos backends and threads, build options");
 
   // Writes past a file-size limit fail with EFBIG, reported like a full disk, instead of
@@ -150,6 +182,7 @@ int main(int argc, char** argv) {
       return granshock::run_scene(run);
     }
     if (app.got_subcommand("fields")) return granshock::fields_command(field_dirs, field_out);
+    if (app.got_subcommand("study")) return granshock::study_command(study);
     if (info->parsed()) {
       std::cout << granshock::build_info_json() << "\n";
     } else if (app.got_subcommand("collide")) {

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <csignal>
 #include <iostream>
 
 #include "atomic_file.hpp"
@@ -12,6 +11,7 @@
 #include "checkpoint_file.hpp"
 #include "field_sums_file.hpp"
 #include "fields_command.hpp"
+#include "interrupt.hpp"
 #include "run_checks.hpp"
 #include "run_observables.hpp"
 #include "run_state.hpp"
@@ -24,11 +24,6 @@ namespace granshock {
 namespace fs = std::filesystem;
 
 namespace {
-
-volatile std::sig_atomic_t g_signal = 0;
-extern "C" void on_signal(int sig) {
-  g_signal = sig;
-}
 
 // Intervals longer than the run act once, at its end: clamping them to the duration keeps
 // the step count in range (run_checks.hpp bounds duration / dt).
@@ -77,8 +72,7 @@ int BowShockRun::execute() {
   first_step_ = solver_->steps_done();
   meter_.emplace(first_step_, total_steps_, scene_.run.progress_interval_s);
 
-  std::signal(SIGINT, on_signal);
-  std::signal(SIGTERM, on_signal);
+  catch_interrupts();
   try {
     return advance_to_end();
   } catch (const UserError& e) {
@@ -143,12 +137,12 @@ int BowShockRun::advance_to_end() {
     if (meter_->due() && !options_.quiet)
       meter_->report(step, step * scene_.setup.dt, long(solver_->size()),
                      solver_->diagnostics().contacts, particle_steps_, inflow_note());
-    if (g_signal != 0) {
+    if (interrupt_signal() != 0) {
       write_checkpoint_now();
       finish(false);
       std::cerr << fmt::format(
           "granshock: interrupted at step {}; checkpoint written, continue with --resume\n", step);
-      return 128 + int(g_signal);
+      return 128 + interrupt_signal();
     }
     if (options_.stop_after_steps > 0 && step >= first_step_ + options_.stop_after_steps &&
         step < total_steps_) {

@@ -1,0 +1,76 @@
+#include "case_directory.hpp"
+
+#include <fstream>
+#include <sstream>
+
+#include "run_directory.hpp"
+#include "run_file.hpp"
+
+namespace granshock {
+
+namespace fs = std::filesystem;
+
+std::string to_string(CaseState state) {
+  switch (state) {
+    case CaseState::missing:
+      return "missing";
+    case CaseState::finished:
+      return "finished";
+    case CaseState::needs_fields:
+      return "needs fields";
+    case CaseState::resumable:
+      return "unfinished";
+    case CaseState::restartable:
+      return "unfinished";
+  }
+  return "missing";
+}
+
+nlohmann::json read_summary(const fs::path& dir) {
+  std::ifstream in(dir / "summary.json");
+  if (!in) return nullptr;
+  std::stringstream text;
+  text << in.rdbuf();
+  nlohmann::json j = nlohmann::json::parse(text.str(), nullptr, false);
+  return j.is_object() ? j : nlohmann::json();
+}
+
+nlohmann::json summary_value(const nlohmann::json& summary, const std::string& key) {
+  if (!summary.is_object()) return nullptr;
+  const auto it = summary.find(key);
+  return it == summary.end() ? nlohmann::json() : *it;
+}
+
+std::string stored_scene(const fs::path& dir) {
+  std::error_code ec;
+  if (!fs::exists(dir / "run.h5", ec)) return {};
+  try {
+    return RunFile::open_read_only(dir / "run.h5").scene_resolved();
+  } catch (const std::exception&) {
+    return {};
+  }
+}
+
+CaseDirectory inspect_case_directory(const fs::path& dir) {
+  CaseDirectory c;
+  std::error_code ec;
+  if (!fs::exists(dir / kRunMarker, ec)) return c;  // not (yet) a run directory
+  c.summary = read_summary(dir);
+  if (c.summary.is_object()) {
+    const nlohmann::json steps = summary_value(c.summary, "steps");
+    const nlohmann::json wall = summary_value(c.summary, "wall_seconds");
+    c.steps_done = steps.is_number() ? steps.get<long>() : 0;
+    c.wall_seconds = wall.is_number() ? wall.get<double>() : 0.0;
+    if (summary_value(c.summary, "completed") == true) {
+      c.state =
+          c.summary.contains(kFieldsSummaryKey) ? CaseState::finished : CaseState::needs_fields;
+      return c;
+    }
+  }
+  const bool resumable = fs::exists(dir / "checkpoint.h5", ec) && fs::exists(dir / "run.h5", ec);
+  c.state = resumable ? CaseState::resumable : CaseState::restartable;
+  if (!resumable) c.steps_done = 0;
+  return c;
+}
+
+}  // namespace granshock

@@ -1,0 +1,45 @@
+// What a case's run directory holds (docs/study.md, "Skip and resume"), decided from the
+// files `granshock run` writes (docs/output_format.md, "The run directory"): a finished run
+// has summary.json with "completed": true and the field analysis' keys; an unfinished one
+// has its checkpoint to resume from.
+#pragma once
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace granshock {
+
+enum class CaseState {
+  missing,       // no run yet (no directory, an empty one, or one that is not a run's)
+  finished,      // completed, fields analysed: skipped
+  needs_fields,  // completed, but the field analysis did not finish (summary without its keys)
+  resumable,     // a run directory with checkpoint.h5 and run.h5, not completed
+  restartable    // a run directory with nothing to resume (killed before its first checkpoint)
+};
+
+std::string to_string(CaseState state);
+
+struct CaseDirectory {
+  CaseState state = CaseState::missing;
+  nlohmann::json summary;   // summary.json, or null
+  long steps_done = 0;      // steps of the last summary (0 without one)
+  double wall_seconds = 0;  // wall time of all legs so far (summary.json wall_seconds)
+};
+
+// The summary key the field analysis always writes (docs/fields.md, "summary.json").
+inline constexpr const char* kFieldsSummaryKey = "fields_bins";
+
+CaseDirectory inspect_case_directory(const std::filesystem::path& dir);
+
+// summary.json of `dir`, or null when it is missing or not a JSON object.
+nlohmann::json read_summary(const std::filesystem::path& dir);
+
+// summary[key], or null when it has none.
+nlohmann::json summary_value(const nlohmann::json& summary, const std::string& key);
+
+// The resolved scene stored in dir/run.h5, or "" when it cannot be read (no file, or a run
+// that holds it open).
+std::string stored_scene(const std::filesystem::path& dir);
+
+}  // namespace granshock

@@ -1,0 +1,103 @@
+#include "study_command.hpp"
+
+#include <fmt/format.h>
+
+#include <iostream>
+
+#include "atomic_file.hpp"
+#include "slurm_script.hpp"
+#include "study_directory.hpp"
+#include "study_listing.hpp"
+#include "study_plan.hpp"
+#include "study_preflight.hpp"
+#include "study_rate.hpp"
+#include "study_results.hpp"
+#include "study_runner.hpp"
+#include "user_error.hpp"
+
+namespace granshock {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+void check_options(const StudyOptions& o) {
+  const int modes = int(o.collect) + int(!o.emit.empty()) + int(o.dry_run);
+  if (modes > 1) throw UserError("--collect, --emit and --dry-run exclude each other");
+  if (o.only_case >= 0 && (o.collect || !o.emit.empty()))
+    throw UserError("--case runs one case; it does not go with --collect or --emit");
+  if (!o.emit.empty() && o.emit != "slurm")
+    throw UserError("--emit '" + o.emit + "': the one script granshock writes is 'slurm'");
+}
+
+std::vector<std::size_t> selection(const StudyPlan& plan, int only_case) {
+  const std::size_t n = plan.cases.size();
+  if (only_case >= 0 && std::size_t(only_case) >= n)
+    throw UserError(fmt::format("--case {}: the study '{}' has {} case{} (0 to {})", only_case,
+                                plan.spec.name, n, n == 1 ? "" : "s", n - 1));
+  if (only_case >= 0) return {std::size_t(only_case)};
+  std::vector<std::size_t> all(n);
+  for (std::size_t k = 0; k < n; ++k) all[k] = k;
+  return all;
+}
+
+int emit_slurm(const StudyPlan& plan) {
+  claim_study_directory(plan.out, plan.spec.name);
+  std::error_code ec;
+  const fs::path program = fs::read_symlink("/proc/self/exe", ec);
+  if (ec) throw UserError("cannot find the granshock program's own path (/proc/self/exe)");
+  const StudyRate rate = study_rate(plan);
+  const fs::path script = plan.out / "study.slurm";
+  write_file_atomically(script,
+                        slurm_script(plan, program, rate.particle_steps_per_second, rate.source));
+  std::cout << fmt::format("granshock study: wrote {} ({} array tasks); submit it with sbatch\n",
+                           script.string(), plan.cases.size());
+  return 0;
+}
+
+int collect(const StudyPlan& plan, bool quiet) {
+  if (check_study_directory(plan.out, plan.spec.name) != StudyDirectoryState::this_study)
+    throw UserError(fmt::format(
+        "--collect: '{}' holds no study (no {} marker); run the study first, or give its "
+        "directory with --out",
+        plan.out.string(), kStudyMarker));
+  return write_study_results(plan, {}, quiet);
+}
+
+}  // namespace
+
+int study_command(const StudyOptions& o) {
+  check_options(o);
+  const StudySpec spec = load_study_file(o.study_file);
+  const StudyPlan plan = plan_study(spec, o.out_dir.empty() ? spec.out : o.out_dir);
+  const std::vector<std::size_t> selected = selection(plan, o.only_case);
+  if (o.collect) return collect(plan, o.quiet);
+
+  check_study_directory(plan.out, spec.name);
+  check_case_directories(plan, selected);
+  if (o.dry_run) {
+    for (const PlannedCase& c : plan.cases)
+      for (const std::string& w : c.warnings)
+        std::cerr << "granshock study: warning: case " << c.spec.name << ": " << w << "\n";
+    print_study_listing(plan, selected, std::cout);
+    return 0;
+  }
+  if (!o.emit.empty()) return emit_slurm(plan);
+
+  claim_study_directory(plan.out, spec.name);
+  const StudyRunResult result =
+      run_study_cases(plan, selected, StudyRunOptions{o.stop_after_steps, o.quiet});
+  if (result.stopped) return result.exit_code;
+  for (const auto& [index, why] : result.failures)
+    std::cerr << fmt::format("granshock study: case {} (--case {}) failed: {}\n",
+                             plan.cases[std::size_t(index)].spec.name, index, why);
+  if (o.only_case >= 0) {
+    if (!o.quiet)
+      std::cerr << "granshock study: with --case the table is not built; build it with "
+                   "--collect once every case has run\n";
+    return result.failures.empty() ? 0 : 1;
+  }
+  return write_study_results(plan, result.failures, o.quiet);
+}
+
+}  // namespace granshock

@@ -1,0 +1,31 @@
+#include "study_cost.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace granshock {
+
+double expected_particles(const Scene& s) {
+  double disk = 0;  // the mean particle's area, by number
+  for (std::size_t a = 0; a < s.setup.species.size(); ++a)
+    disk += s.inflow.number_fraction[a] * M_PI * std::pow(s.setup.species[a].diameter_m, 2) / 4;
+  double free_area = s.setup.box.length(0) * s.setup.box.length(1);
+  if (s.setup.obstacle) free_area -= M_PI * std::pow(s.setup.obstacle->diameter_m, 2) / 4;
+  return disk > 0 ? s.inflow.area_fraction * std::max(0.0, free_area) / disk : 0.0;
+}
+
+double expected_particle_steps(const Scene& s, long steps_done) {
+  return expected_particles(s) * double(std::max(0L, s.total_steps() - steps_done));
+}
+
+std::string duration_text(double seconds) {
+  if (!std::isfinite(seconds) || seconds < 0) return "?";
+  const long s = std::lround(seconds);
+  const long h = s / 3600, m = s / 60 % 60, sec = s % 60;
+  if (h > 99) return fmt::format("{} d {:02d}:{:02d}:{:02d}", h / 24, h % 24, m, sec);
+  return fmt::format("{}:{:02d}:{:02d}", h, m, sec);
+}
+
+}  // namespace granshock

@@ -1,0 +1,71 @@
+// Study files of `granshock study` (docs/study.md, "The study file"): a base scene and the
+// `--set` overrides that make each case of a parameter study, read from TOML. Every key is
+// checked: an unknown key, a missing or mistyped value, an empty axis end in one UserError
+// line naming the study file and the key.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace granshock {
+
+// How the axes make cases: every combination (product), the k-th value of every axis
+// together (list, also called zip), or each axis on its own around the base scene (sweep).
+enum class StudyMode { product, list, sweep };
+std::string to_string(StudyMode mode);
+
+// One value of an axis: the overrides it applies and how it is named and tabulated.
+struct AxisValue {
+  std::string label;                   // part of the case name, filesystem-safe
+  std::vector<std::string> overrides;  // "key=value", as `granshock run --set` takes them
+  std::optional<double> number;        // the value in the table and figures, when a number
+  std::string text;                    // the value in the table otherwise
+};
+
+struct StudyAxis {
+  std::string name;  // a column of the study table and the name of its figure
+  std::vector<AxisValue> values;
+};
+
+// A [[case]] entry: a case named by the user with its own overrides.
+struct ExplicitCase {
+  std::string name;
+  std::vector<std::string> overrides;
+};
+
+// [slurm]: what `--emit slurm` writes besides the array (docs/study.md, "Slurm").
+struct SlurmSettings {
+  int cpus_per_task = 4;
+  std::vector<std::string> options;  // extra #SBATCH options, e.g. "--partition=short"
+};
+
+struct StudySpec {
+  std::filesystem::path file;  // the study file
+  std::string name;
+  std::filesystem::path base;  // the base scene, relative paths taken from the study file's folder
+  std::filesystem::path out;   // [study] out (relative to the working directory), or runs/<name>
+  std::vector<std::string> common;  // [study] set: overrides of every case, before its own
+  StudyMode mode = StudyMode::product;
+  std::vector<StudyAxis> axes;
+  std::vector<ExplicitCase> cases;
+  SlurmSettings slurm;
+};
+
+// The longest study file read (1 MiB, as scene files).
+inline constexpr std::size_t kMaxStudyFileBytes = std::size_t(1) << 20;
+
+// Reads and checks a study file; throws UserError("study file 'PATH': ...").
+StudySpec load_study_file(const std::filesystem::path& path);
+// The same from text; `path` names the file in messages and anchors a relative `base`.
+StudySpec parse_study(const std::string& text, const std::filesystem::path& path);
+
+// Whether `name` can name a study, an axis or a case: 1-64 of A-Z a-z 0-9 . _ -, not
+// starting with '.' or '-' (the rule of scene.name, docs/scene_format.md).
+bool is_safe_name(const std::string& name);
+// `text` made safe for a name: every run of other characters becomes '-', and leading
+// '.' and '-' are dropped.
+std::string safe_name(const std::string& text);
+
+}  // namespace granshock

@@ -1,0 +1,40 @@
+// A study made ready to run (docs/study.md, "Checks before anything runs"): every case's
+// scene loaded from the base scene and its overrides and checked as `granshock run` checks
+// it, so that a typo in the last case is found before the first one runs.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "scene.hpp"
+#include "study_cases.hpp"
+#include "study_file.hpp"
+
+namespace granshock {
+
+struct PlannedCase {
+  StudyCase spec;
+  std::filesystem::path dir;          // <out>/<name>
+  Scene scene;                        // resolved, named after the case
+  std::string resolved;               // its TOML (what `run --dry-run` prints)
+  std::vector<std::string> warnings;  // of the checks before a run
+};
+
+struct StudyPlan {
+  StudySpec spec;
+  std::filesystem::path out;
+  std::vector<PlannedCase> cases;
+};
+
+// Loads the base scene and every case; throws UserError naming the study file and the case
+// for a scene the run would refuse (an unknown key, a value out of range, an unstable time
+// step, field sampling without enough samples), and for two cases of the same scene.
+// `out`: the study's directory (--out, else the study file's out).
+StudyPlan plan_study(const StudySpec& spec, const std::filesystem::path& out);
+
+// The overrides `granshock run` gets for a case: scene.name, the study's [study] set, then
+// the case's own.
+std::vector<std::string> run_overrides(const StudySpec& study, const PlannedCase& c);
+
+}  // namespace granshock

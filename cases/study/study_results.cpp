@@ -1,0 +1,85 @@
+#include "study_results.hpp"
+
+#include <fmt/format.h>
+
+#include <iostream>
+
+#include "case_directory.hpp"
+#include "fields_command.hpp"
+#include "figures.hpp"
+#include "study_figures.hpp"
+#include "study_table.hpp"
+#include "user_error.hpp"
+
+namespace granshock {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+void warn(const std::string& what) {
+  std::cerr << "granshock study: warning: " << what << "\n";
+}
+
+// `granshock fields DIR... --out OUT` on the finished cases: detachment.csv/json and, with
+// Python, figures/detachment_length.png. The cases' own figures were drawn by their runs.
+void compare_finished(const StudyPlan& plan, const std::vector<fs::path>& finished, bool quiet) {
+  if (finished.size() < 2) {
+    if (!quiet)
+      std::cerr << "granshock study: the comparison of detachment lengths needs two finished "
+                   "cases; "
+                << finished.size() << " so far\n";
+    return;
+  }
+  fields_command(finished, plan.out, FieldsCommandOptions{false, quiet});
+  try {
+    require_plotting_python();
+    plot_detachment_figure(plan.out / "detachment.json",
+                           plan.out / "figures" / "detachment_length.png");
+  } catch (const UserError& e) {
+    warn(std::string("no detachment figure: ") + e.what());
+  }
+}
+
+}  // namespace
+
+int write_study_results(const StudyPlan& plan, const std::map<int, std::string>& failures,
+                        bool quiet) {
+  const StudyTable table = study_table(plan, failures);
+  write_study_table(plan.out, table);
+
+  std::vector<fs::path> finished;
+  std::vector<std::string> not_finished;
+  for (std::size_t k = 0; k < plan.cases.size(); ++k) {
+    const std::string status = table.rows[k]["status"].get<std::string>();
+    if (status == "finished")
+      finished.push_back(plan.cases[k].dir);
+    else
+      not_finished.push_back(plan.cases[k].spec.name + " (" + status + ")");
+  }
+  int code = 0;
+  try {
+    compare_finished(plan, finished, quiet);
+  } catch (const UserError& e) {
+    std::cerr << "granshock study: error: the comparison of the finished cases failed: " << e.what()
+              << "\n";
+    code = 1;
+  }
+  try {
+    plot_study_figures(plan);
+  } catch (const UserError& e) {
+    warn(std::string("no axis figures: ") + e.what());
+  }
+  if (!not_finished.empty()) {
+    std::cerr << fmt::format("granshock study: {} of {} cases not finished: {}\n",
+                             not_finished.size(), plan.cases.size(), fmt::join(not_finished, ", "));
+    code = 1;
+  }
+  if (!quiet)
+    std::cout << fmt::format("granshock study: {}: {} of {} cases finished; table in {}\n",
+                             plan.spec.name, finished.size(), plan.cases.size(),
+                             (plan.out / "study.csv").string());
+  return code;
+}
+
+}  // namespace granshock

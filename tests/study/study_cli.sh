@@ -1,0 +1,176 @@
+#!/usr/bin/env bash
+# `granshock study` end to end on tiny studies (tests/study/tiny.toml, interrupt.toml):
+# one check per call, named by CHECK (docs/study.md describes what each one relies on).
+# Usage: study_cli.sh GRANSHOCK SOURCE_DIR CHECK
+#   runs_and_tabulates     every case runs; study.csv/json, detachment table and figures
+#   skips_finished         a finished case is skipped and its run files are left untouched
+#   interrupts_and_resumes --stop-after-steps and SIGINT stop a case; the next call resumes it
+#   collect_lists_missing  --collect tabulates what is there and lists the missing cases
+#   emit_slurm             --emit slurm writes a script that bash accepts and that runs a case
+#   refuses_before_running a bad late case or a foreign directory: one line, exit 2, no case run
+set -u
+granshock=$1 source=$2 check=$3
+studies=$source/tests/study
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+out=$work/out
+status=0
+fail() { echo "FAIL: $*"; status=1; }
+
+# The data rows of study.csv whose status column is $1.
+rows_with_status() { tail -n +2 "$out/study.csv" | grep -c ",\"$1\"," ; }
+fingerprint() { for f in "$@"; do stat -c '%Y %s' "$f"; md5sum <"$f"; done; }
+
+case $check in
+runs_and_tabulates)
+  start=$(date +%s%N)
+  "$granshock" study "$studies/tiny.toml" --out "$out" --quiet >"$work/stdout" 2>"$work/stderr"
+  code=$?
+  echo "the tiny study (4 cases) took $((($(date +%s%N) - start) / 1000000)) ms"
+  [ $code -eq 0 ] || { fail "exit code $code"; cat "$work/stderr"; }
+  for k in 1 2 3 4; do
+    grep -q "case $k/4 .*: finished in" "$work/stderr" || fail "no progress line after case $k/4"
+  done
+  grep -q "study ETA" "$work/stderr" || fail "no ETA in the progress lines"
+  header=$(head -1 "$out/study.csv")
+  case $header in
+  case,index,status,wall_seconds,axis.phi,axis.e,scene.D_over_d,scene.U,scene.phi_inf,*) ;;
+  *) fail "study.csv header: $header" ;;
+  esac
+  for column in scene.restitution scene.number_fraction.steel scene.duration \
+    scene.production_start delta_over_D delta_over_D_reason ma_inf_measured phi_peak steps \
+    inflow.requested; do
+    echo "$header" | tr ',' '\n' | grep -qx "$column" || fail "study.csv has no column $column"
+  done
+  [ "$(rows_with_status finished)" -eq 4 ] || fail "expected 4 finished rows:"$'\n'"$(cat "$out/study.csv")"
+  grep -q '^"phi-0.12_e-0.8",3,"finished",' "$out/study.csv" || fail "no row for case 3"
+  python3 - "$out/study.json" <<'EOF' || fail "study.json"
+import json, sys
+rows = json.load(open(sys.argv[1]))
+assert len(rows) == 4, len(rows)
+assert [r["case"] for r in rows] == ["phi-0.1_e-0.5", "phi-0.1_e-0.8", "phi-0.12_e-0.5", "phi-0.12_e-0.8"]
+assert rows[2]["axis.phi"] == 0.12 and rows[2]["axis.e"] == 0.5, rows[2]
+assert all(r["steps"] == 20000 and r["completed"] is True for r in rows)
+assert all(len(r) == len(rows[0]) for r in rows)
+EOF
+  [ "$(($(wc -l <"$out/detachment.csv") - 1))" -eq 4 ] || fail "detachment.csv should have 4 rows"
+  if /usr/bin/python3 -c "import matplotlib, h5py, numpy" 2>/dev/null; then
+    for png in phi e detachment_length; do
+      [ -s "$out/figures/$png.png" ] || fail "no figure figures/$png.png"
+    done
+  else
+    grep -q "no axis figures" "$work/stderr" || fail "no warning about the missing figures"
+  fi
+  ;;
+skips_finished)
+  "$granshock" study "$studies/tiny.toml" --out "$out" --quiet --case 0 2>"$work/stderr" ||
+    fail "--case 0 failed: $(cat "$work/stderr")"
+  [ ! -e "$out/study.csv" ] || fail "--case must not build the table"
+  [ ! -e "$out/phi-0.1_e-0.8" ] || fail "--case 0 ran another case"
+  case0=$out/phi-0.1_e-0.5
+  before=$(fingerprint "$case0/run.h5" "$case0/checkpoint.h5")
+  summary=$(cat "$case0/summary.json")
+  sleep 1.1  # a rewrite would change the modification time
+  "$granshock" study "$studies/tiny.toml" --out "$out" --quiet 2>"$work/stderr" ||
+    fail "the study failed: $(cat "$work/stderr")"
+  grep -q "case 1/4 phi-0.1_e-0.5: finished before, skipped" "$work/stderr" ||
+    fail "case 0 was not skipped: $(cat "$work/stderr")"
+  grep -q "case 1/4 .*starting" "$work/stderr" && fail "case 0 was run again"
+  [ "$before" = "$(fingerprint "$case0/run.h5" "$case0/checkpoint.h5")" ] ||
+    fail "the skipped case's run.h5 or checkpoint.h5 changed"
+  [ "$summary" = "$(cat "$case0/summary.json")" ] || fail "the skipped case's summary.json changed"
+  [ "$(rows_with_status finished)" -eq 4 ] || fail "expected 4 finished rows"
+  ;;
+interrupts_and_resumes)
+  study=$studies/interrupt.toml
+  case0=$out/e-0.5
+  "$granshock" study "$study" --out "$out" --quiet --stop-after-steps 5000 2>"$work/stderr"
+  code=$?
+  [ $code -eq 0 ] || fail "--stop-after-steps: exit code $code"
+  grep -q "stopped in case 1/2 e-0.5 at step 5000 of 250000" "$work/stderr" ||
+    fail "no stop message: $(cat "$work/stderr")"
+  grep -q '"completed": false' "$case0/summary.json" || fail "case 0 should be unfinished"
+  [ ! -e "$out/e-0.8" ] || fail "the study went on after a stopped case"
+  [ ! -e "$out/study.csv" ] || fail "a stopped study must not build the table"
+
+  "$granshock" study "$study" --out "$out" --quiet 2>"$work/stderr" &
+  pid=$!
+  for _ in $(seq 100); do grep -q "resuming at step 5000" "$work/stderr" && break; sleep 0.1; done
+  sleep 0.5
+  kill -INT $pid
+  wait $pid
+  code=$?
+  [ $code -eq 130 ] || fail "SIGINT: exit code $code, expected 130: $(cat "$work/stderr")"
+  grep -q "resuming at step 5000 of 250000" "$work/stderr" || fail "case 0 was not resumed"
+  grep -Eq "interrupted (in|before) case" "$work/stderr" || fail "no interruption message"
+
+  "$granshock" study "$study" --out "$out" --quiet 2>"$work/stderr"
+  code=$?
+  [ $code -eq 0 ] || fail "the third call: exit code $code: $(cat "$work/stderr")"
+  for dir in "$out/e-0.5" "$out/e-0.8"; do
+    grep -q '"completed": true' "$dir/summary.json" || fail "$dir did not complete"
+    grep -q '"steps": 250000' "$dir/summary.json" || fail "$dir did not run all 250000 steps"
+  done
+  [ "$(rows_with_status finished)" -eq 2 ] || fail "expected 2 finished rows"
+  ;;
+collect_lists_missing)
+  "$granshock" study "$studies/tiny.toml" --out "$out" --collect 2>"$work/stderr"
+  [ $? -eq 2 ] || fail "--collect without a study directory must be a user error"
+  "$granshock" study "$studies/tiny.toml" --out "$out" --quiet --case 2 2>"$work/stderr" ||
+    fail "--case 2 failed: $(cat "$work/stderr")"
+  "$granshock" study "$studies/tiny.toml" --out "$out" --collect --quiet >"$work/stdout" 2>"$work/stderr"
+  code=$?
+  [ $code -eq 1 ] || fail "--collect with missing cases: exit code $code, expected 1"
+  grep -q "3 of 4 cases not finished: phi-0.1_e-0.5 (missing), phi-0.1_e-0.8 (missing), phi-0.12_e-0.8 (missing)" \
+    "$work/stderr" || fail "the missing cases are not listed: $(cat "$work/stderr")"
+  [ "$(tail -n +2 "$out/study.csv" | wc -l)" -eq 4 ] || fail "study.csv should have 4 rows"
+  [ "$(rows_with_status missing)" -eq 3 ] || fail "expected 3 missing rows"
+  grep -q '^"phi-0.12_e-0.5",2,"finished",' "$out/study.csv" || fail "case 2 is not finished"
+  head -1 "$out/study.csv" | tr ',' '\n' | grep -qx delta_over_D || fail "no summary columns"
+  [ ! -e "$out/phi-0.1_e-0.5" ] || fail "--collect ran a case"
+  ;;
+emit_slurm)
+  "$granshock" study "$studies/tiny.toml" --out "$out" --emit slurm >"$work/stdout" 2>"$work/stderr" ||
+    fail "--emit slurm failed: $(cat "$work/stderr")"
+  script=$out/study.slurm
+  [ -s "$script" ] || fail "no $script"
+  bash -n "$script" || fail "bash -n refuses the script"
+  grep -qx '#SBATCH --array=0-3' "$script" || fail "array range"
+  grep -qx '#SBATCH --cpus-per-task=4' "$script" || fail "cpus per task"
+  grep -Eqx '#SBATCH --time=[0-9]+-[0-9]{2}:[0-9]{2}:00' "$script" || fail "time limit"
+  grep -q 'OMP_NUM_THREADS="${SLURM_CPUS_PER_TASK' "$script" || fail "threads"
+  grep -Eq "^exec '/[^']*granshock' study '/[^']*/tiny.toml' --out '/[^']*' --case \"\\\$SLURM_ARRAY_TASK_ID\"$" \
+    "$script" || fail "the command line: $(grep '^exec' "$script")"
+  ls "$out" | grep -qv '^study.slurm$' && fail "--emit ran something: $(ls "$out")"
+  # The script itself, as an array task of a job would run it.
+  (cd "$work" && SLURM_ARRAY_TASK_ID=1 SLURM_CPUS_PER_TASK=1 bash "$script" >/dev/null 2>&1) ||
+    fail "the script failed as array task 1"
+  grep -q '"completed": true' "$out/phi-0.1_e-0.8/summary.json" 2>/dev/null ||
+    fail "array task 1 did not run case 1"
+  [ ! -e "$out/phi-0.1_e-0.5" ] || fail "array task 1 ran case 0 as well"
+  ;;
+refuses_before_running)
+  "$granshock" study "$studies/bad/late_bad_value.toml" --out "$out" 2>"$work/stderr"
+  code=$?
+  [ $code -eq 2 ] || fail "a bad fourth case: exit code $code"
+  [ "$(grep -vc '^Kokkos::' "$work/stderr")" -eq 1 ] || fail "expected one line: $(cat "$work/stderr")"
+  grep -q "case 'phi-0.69' (--case 3): scene key 'inflow.area_fraction'" "$work/stderr" ||
+    fail "the message: $(cat "$work/stderr")"
+  [ ! -e "$out" ] || fail "a refused study created its directory"
+  mkdir -p "$work/mine" && echo notes >"$work/mine/notes.txt"
+  "$granshock" study "$studies/tiny.toml" --out "$work/mine" 2>"$work/stderr"
+  [ $? -eq 2 ] || fail "a foreign directory must be refused"
+  grep -q "is not empty and holds no study" "$work/stderr" || fail "the message: $(cat "$work/stderr")"
+  [ "$(ls "$work/mine")" = notes.txt ] || fail "the foreign directory was changed"
+  "$granshock" study "$studies/tiny.toml" --out "$out" --emit slurm >/dev/null 2>&1
+  "$granshock" study "$studies/interrupt.toml" --out "$out" --dry-run 2>"$work/stderr" >/dev/null
+  [ $? -eq 2 ] || fail "another study's directory must be refused"
+  grep -q "holds the study 'tiny', not 'interrupt'" "$work/stderr" || fail "the message: $(cat "$work/stderr")"
+  ;;
+*)
+  echo "unknown check $check"
+  exit 2
+  ;;
+esac
+[ $status -eq 0 ] && echo "$check: passed"
+exit $status
