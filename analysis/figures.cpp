@@ -49,15 +49,6 @@ fs::path program_directory() {
   return ec ? fs::path() : self.parent_path();
 }
 
-void run_script(const std::string& script_name, const std::vector<std::string>& script_args) {
-  std::vector<std::string> args{plotting_python().string(), figure_script(script_name).string()};
-  args.insert(args.end(), script_args.begin(), script_args.end());
-  const int status = run_process(args, false);
-  if (status != 0)
-    throw UserError(script_name + " failed (exit status " + std::to_string(status) +
-                    ") drawing the figures; " + "its message is above");
-}
-
 }  // namespace
 
 fs::path plotting_python() {
@@ -66,12 +57,16 @@ fs::path plotting_python() {
 }
 
 fs::path figure_script(const std::string& name) {
+  return figure_script(name, GRANSHOCK_FIELDS_SCRIPT_DIR);
+}
+
+fs::path figure_script(const std::string& name, const fs::path& source_dir) {
   std::vector<fs::path> candidates;
   if (const char* env = std::getenv("GRANSHOCK_SCRIPT_DIR"); env != nullptr && *env != '\0')
     candidates.push_back(fs::path(env) / name);
   if (const fs::path dir = program_directory(); !dir.empty())
     candidates.push_back(dir / ".." / GRANSHOCK_FIELDS_INSTALL_DATADIR / name);
-  candidates.push_back(fs::path(GRANSHOCK_FIELDS_SCRIPT_DIR) / name);
+  candidates.push_back(source_dir / name);
   std::error_code ec;
   for (const fs::path& p : candidates)
     if (fs::is_regular_file(p, ec)) return p;
@@ -79,6 +74,15 @@ fs::path figure_script(const std::string& name) {
   for (const fs::path& p : candidates) tried += (tried.empty() ? "" : ", ") + p.string();
   throw UserError("cannot find the figure script " + name + " (looked at " + tried +
                   "); set GRANSHOCK_SCRIPT_DIR to the folder that holds it");
+}
+
+void run_figure_script(const fs::path& script, const std::vector<std::string>& script_args) {
+  std::vector<std::string> args{plotting_python().string(), script.string()};
+  args.insert(args.end(), script_args.begin(), script_args.end());
+  const int status = run_process(args, false);
+  if (status != 0)
+    throw UserError(script.filename().string() + " failed (exit status " +
+                    std::to_string(status) + ") drawing the figures; its message is above");
 }
 
 void require_plotting_python() {
@@ -95,11 +99,11 @@ void require_plotting_python() {
 }
 
 void plot_run_figures(const fs::path& fields_h5, const fs::path& figures_dir) {
-  run_script("plot_fields.py", {fields_h5.string(), figures_dir.string()});
+  run_figure_script(figure_script("plot_fields.py"), {fields_h5.string(), figures_dir.string()});
 }
 
 void plot_detachment_figure(const fs::path& table_json, const fs::path& png) {
-  run_script("plot_detachment.py", {table_json.string(), png.string()});
+  run_figure_script(figure_script("plot_detachment.py"), {table_json.string(), png.string()});
 }
 
 }  // namespace granshock

@@ -18,6 +18,13 @@ std::filesystem::path plotting_python();
 // <directory of the program>/../share/granshock (an installed granshock), then in the
 // source directory this library was built from. Throws UserError when none has it.
 std::filesystem::path figure_script(const std::string& name);
+// The same with another source directory, for scripts that live beside other code.
+std::filesystem::path figure_script(const std::string& name,
+                                    const std::filesystem::path& source_dir);
+
+// Runs the plotting interpreter on `script` with `args` (no shell); throws UserError
+// naming the script when it fails (its own message is on stderr).
+void run_figure_script(const std::filesystem::path& script, const std::vector<std::string>& args);
 
 // Throws UserError with the packages to install when the interpreter is missing or
 // cannot import matplotlib, h5py and numpy.

@@ -7,6 +7,7 @@
 #include "case_directory.hpp"
 #include "fields_command.hpp"
 #include "figures.hpp"
+#include "study_claims.hpp"
 #include "study_figures.hpp"
 #include "study_table.hpp"
 #include "user_error.hpp"
@@ -47,6 +48,7 @@ int write_study_results(const StudyPlan& plan, const std::map<int, std::string>&
                         bool quiet) {
   const StudyTable table = study_table(plan, failures);
   write_study_table(plan.out, table);
+  write_claims(plan.out, check_paper_claims(table));
 
   std::vector<fs::path> finished;
   std::vector<std::string> not_finished;

@@ -1,0 +1,169 @@
+#include "study_claims.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "atomic_file.hpp"
+
+namespace granshock {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+double number(const nlohmann::ordered_json& row, const std::string& key) {
+  const auto it = row.find(key);
+  return it != row.end() && it->is_number() ? it->get<double>() : kNaN;
+}
+
+struct Case {
+  std::string name;
+  double d_over_d, mach, delta, delta_err;
+  double shock_layer_phi, hot_subsonic, upstream_ma_ratio, wake;
+};
+
+std::vector<Case> finished_cases(const StudyTable& table) {
+  std::vector<Case> cases;
+  for (const auto& row : table.rows) {
+    if (row.value("status", std::string()) != "finished") continue;
+    double mach = number(row, "ma_inf_target");
+    if (std::isfinite(mach)) mach = std::stod(fmt::format("{:.3g}", mach));
+    cases.push_back(
+        {row.value("case", std::string()), number(row, "scene.D_over_d"), mach,
+         number(row, "delta_over_D"), number(row, "delta_over_D_err"),
+         number(row, "shock_layer_phi_mean"), number(row, "hot_region_subsonic_fraction"),
+         number(row, "upstream_ma_peak_over_ma_inf"), number(row, "wake_phi_over_phi_inf")});
+  }
+  return cases;
+}
+
+std::string with_error(double value, double error) {
+  if (!std::isfinite(value)) return "n/a";
+  return std::isfinite(error) ? fmt::format("{:.3f} +- {:.3f}", value, error)
+                              : fmt::format("{:.3f}", value);
+}
+
+// Groups of cases sharing `key`, each sorted by `along`; only finite keys.
+template <class Key, class Along>
+std::map<double, std::vector<Case>> groups(const std::vector<Case>& cases, Key key, Along along) {
+  std::map<double, std::vector<Case>> g;
+  for (const Case& c : cases)
+    if (std::isfinite(key(c)) && std::isfinite(along(c)) && std::isfinite(c.delta))
+      g[key(c)].push_back(c);
+  for (auto& [k, v] : g)
+    std::sort(v.begin(), v.end(),
+              [&](const Case& a, const Case& b) { return along(a) < along(b); });
+  return g;
+}
+
+StudyClaim falls_with_mach(const std::vector<Case>& cases) {
+  StudyClaim c{"delta/D falls as Ma_inf rises", "at every D/d, delta/D lower at each higher Ma_inf",
+               "undetermined", ""};
+  int judged = 0, holds = 0;
+  for (const auto& [d, group] : groups(
+           cases, [](const Case& x) { return x.d_over_d; }, [](const Case& x) { return x.mach; })) {
+    if (group.size() < 2) continue;
+    ++judged;
+    bool falls = true;
+    std::string line = fmt::format("D/d {:g}:", d);
+    for (std::size_t k = 0; k < group.size(); ++k) {
+      line += fmt::format(" {} (Ma {:g})", with_error(group[k].delta, group[k].delta_err),
+                          group[k].mach);
+      if (k > 0 && !(group[k].delta < group[k - 1].delta)) falls = false;
+    }
+    holds += falls;
+    c.numbers += (c.numbers.empty() ? "" : "; ") + line;
+  }
+  if (judged > 0)
+    c.verdict = holds == judged ? "holds" : "does not hold";
+  else
+    c.numbers = "needs two finished cases with the same D/d and different Ma_inf";
+  return c;
+}
+
+StudyClaim constant_in_size(const std::vector<Case>& cases) {
+  StudyClaim c{"delta/D is nearly constant in D/d at fixed Ma_inf",
+               "at every Ma_inf, (max - min) / mean of delta/D <= 20 %", "undetermined", ""};
+  int judged = 0, holds = 0;
+  for (const auto& [ma, group] : groups(
+           cases, [](const Case& x) { return x.mach; }, [](const Case& x) { return x.d_over_d; })) {
+    if (group.size() < 2) continue;
+    ++judged;
+    double lo = HUGE_VAL, hi = -HUGE_VAL, mean = 0;
+    std::string line = fmt::format("Ma {:g}:", ma);
+    for (const Case& x : group) {
+      lo = std::min(lo, x.delta);
+      hi = std::max(hi, x.delta);
+      mean += x.delta / static_cast<double>(group.size());
+      line += fmt::format(" {} (D/d {:g})", with_error(x.delta, x.delta_err), x.d_over_d);
+    }
+    const double spread = (hi - lo) / mean;
+    holds += spread <= 0.2;
+    c.numbers +=
+        (c.numbers.empty() ? "" : "; ") + line + fmt::format(", spread {:.0f} %", 100 * spread);
+  }
+  if (judged > 0)
+    c.verdict = holds == judged ? "holds" : "does not hold";
+  else
+    c.numbers = "needs two finished cases with the same Ma_inf and different D/d";
+  return c;
+}
+
+// A per-case number against a bound.
+StudyClaim per_case(const std::vector<Case>& cases, const std::string& claim,
+                    const std::string& criterion, double Case::*member, bool (*passes)(double)) {
+  StudyClaim c{claim, criterion, "undetermined", ""};
+  int judged = 0, holds = 0;
+  for (const Case& x : cases) {
+    const double v = x.*member;
+    c.numbers += (c.numbers.empty() ? "" : ", ") + x.name + " " +
+                 (std::isfinite(v) ? fmt::format("{:.3g}", v) : std::string("n/a"));
+    if (!std::isfinite(v)) continue;
+    ++judged;
+    holds += passes(v);
+  }
+  if (judged > 0) c.verdict = holds == judged ? "holds" : "does not hold";
+  if (cases.empty()) c.numbers = "no finished case";
+  return c;
+}
+
+}  // namespace
+
+std::vector<StudyClaim> check_paper_claims(const StudyTable& table) {
+  const std::vector<Case> cases = finished_cases(table);
+  return {
+      falls_with_mach(cases),
+      constant_in_size(cases),
+      per_case(cases, "phi is about 0.5 between shock and obstacle",
+               "shock-layer mean phi on the stagnation line in [0.35, 0.65] in every case",
+               &Case::shock_layer_phi, [](double v) { return v >= 0.35 && v <= 0.65; }),
+      per_case(cases, "the hot region behind the shock is subsonic",
+               "at least half of the hot grid bins at Ma < 1 in every case", &Case::hot_subsonic,
+               [](double v) { return v >= 0.5; }),
+      per_case(cases, "the local Ma upstream of the shock exceeds Ma_inf (the gas cools)",
+               "largest Ma ahead of the front / Ma_inf at the inlet > 1 in every case",
+               &Case::upstream_ma_ratio, [](double v) { return v > 1; }),
+      per_case(cases, "the wake is nearly empty",
+               "phi within one diameter behind the cylinder < 0.2 phi_inf in every case",
+               &Case::wake, [](double v) { return v < 0.2; }),
+  };
+}
+
+void write_claims(const std::filesystem::path& out, const std::vector<StudyClaim>& claims) {
+  std::string md = "| claim | criterion | verdict | numbers |\n|---|---|---|---|\n";
+  nlohmann::json j = nlohmann::json::array();
+  for (const StudyClaim& c : claims) {
+    md += fmt::format("| {} | {} | {} | {} |\n", c.claim, c.criterion, c.verdict, c.numbers);
+    j.push_back({{"claim", c.claim},
+                 {"criterion", c.criterion},
+                 {"verdict", c.verdict},
+                 {"numbers", c.numbers}});
+  }
+  write_file_atomically(out / "claims.md", md);
+  write_file_atomically(out / "claims.json", j.dump(2) + "\n");
+}
+
+}  // namespace granshock

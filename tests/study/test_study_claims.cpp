@@ -1,0 +1,76 @@
+// The paper's claims checked across a study's cases (cases/study/study_claims.hpp), on study
+// tables written by hand: each verdict follows its stated criterion, unfinished cases do not
+// count, and a claim without the cases it needs is undetermined.
+#include <gtest/gtest.h>
+
+#include "study_claims.hpp"
+
+using namespace granshock;
+
+namespace {
+
+nlohmann::ordered_json row(const std::string& name, double d_over_d, double mach, double delta,
+                           double wake = 0.02, const std::string& status = "finished") {
+  return {{"case", name},
+          {"status", status},
+          {"scene.D_over_d", d_over_d},
+          {"ma_inf_target", mach},
+          {"delta_over_D", delta},
+          {"delta_over_D_err", 0.01},
+          {"shock_layer_phi_mean", 0.48},
+          {"hot_region_subsonic_fraction", 0.8},
+          {"upstream_ma_peak_over_ma_inf", 1.4},
+          {"wake_phi_over_phi_inf", wake}};
+}
+
+const StudyClaim& find(const std::vector<StudyClaim>& claims, const std::string& start) {
+  for (const StudyClaim& c : claims)
+    if (c.claim.rfind(start, 0) == 0) return c;
+  throw std::runtime_error("no claim " + start);
+}
+
+TEST(StudyClaims, VerdictsFollowTheirCriteria) {
+  StudyTable t;
+  // Two sizes at two Mach numbers; delta/D falls with Ma and varies by 10 % with D/d.
+  t.rows = {row("d10_u1000", 10, 5.9, 0.26), row("d10_u2375", 10, 13.7, 0.21),
+            row("d50_u1000", 50, 5.9, 0.24), row("d50_u2375", 50, 13.7, 0.20, 0.5),
+            // Unfinished cases never count, whatever their numbers say.
+            row("d100_u1000", 100, 5.9, 0.9, 0.02, "unfinished")};
+  const std::vector<StudyClaim> claims = check_paper_claims(t);
+  ASSERT_EQ(claims.size(), 6u);
+  EXPECT_EQ(find(claims, "delta/D falls").verdict, "holds")
+      << find(claims, "delta/D falls").numbers;
+  EXPECT_NE(find(claims, "delta/D falls").numbers.find("D/d 10: 0.260 +- 0.010 (Ma 5.9) 0.210"),
+            std::string::npos)
+      << find(claims, "delta/D falls").numbers;
+  const StudyClaim& constant = find(claims, "delta/D is nearly constant");
+  EXPECT_EQ(constant.verdict, "holds") << constant.numbers;
+  EXPECT_NE(constant.numbers.find("spread 8 %"), std::string::npos) << constant.numbers;
+  EXPECT_EQ(find(claims, "phi is about 0.5").verdict, "holds");
+  EXPECT_EQ(find(claims, "the hot region").verdict, "holds");
+  EXPECT_EQ(find(claims, "the local Ma").verdict, "holds");
+  // One case has a wake at half of phi_inf.
+  EXPECT_EQ(find(claims, "the wake").verdict, "does not hold");
+  EXPECT_NE(find(claims, "the wake").numbers.find("d50_u2375 0.5"), std::string::npos);
+
+  // delta/D rising with Ma at one size, and by 50 % with D/d: both claims fail.
+  t.rows = {row("a", 10, 5.9, 0.20), row("b", 10, 13.7, 0.25), row("c", 50, 5.9, 0.30)};
+  const std::vector<StudyClaim> failing = check_paper_claims(t);
+  EXPECT_EQ(find(failing, "delta/D falls").verdict, "does not hold");
+  EXPECT_EQ(find(failing, "delta/D is nearly constant").verdict, "does not hold");
+}
+
+TEST(StudyClaims, UndeterminedWithoutTheCasesTheyNeed) {
+  StudyTable t;
+  t.rows = {row("only", 20, 5.9, 0.25)};
+  const std::vector<StudyClaim> claims = check_paper_claims(t);
+  EXPECT_EQ(find(claims, "delta/D falls").verdict, "undetermined");
+  EXPECT_NE(find(claims, "delta/D falls").numbers.find("needs two finished cases"),
+            std::string::npos);
+  EXPECT_EQ(find(claims, "delta/D is nearly constant").verdict, "undetermined");
+  EXPECT_EQ(find(claims, "the wake").verdict, "holds");
+  t.rows.clear();
+  EXPECT_EQ(find(check_paper_claims(t), "the wake").verdict, "undetermined");
+}
+
+}  // namespace
