@@ -29,7 +29,7 @@ FlowFeatures measure_flow_features(const FieldAnalysis& a) {
   // Along the stagnation strip: the shock layer behind the front, the gas ahead of it.
   if (!front.found) {
     f.shock_layer_reason = f.hot_reason = f.upstream_ma_reason =
-        "no front on the stagnation line: " + front.reason;
+        "no delta/D, so no front to measure from: " + front.reason;
   } else {
     double sum = 0, largest = kNaN, ma_peak = kNaN;
     int bins = 0;
