@@ -322,7 +322,6 @@ nlohmann::json summary_keys(const FieldAnalysis& a) {
   put("phi_peak", a.phi_peak, a.phi_peak_reason);
   const FlowFeatures& features = a.features;
   put("shock_layer_phi_mean", features.shock_layer_phi_mean, features.shock_layer_reason);
-  put("shock_layer_phi_max", features.shock_layer_phi_max, features.shock_layer_reason);
   put("hot_region_subsonic_fraction", features.hot_subsonic_fraction, features.hot_reason);
   j["hot_region_bins"] = features.hot_bins;
   put("upstream_ma_peak", features.upstream_ma_peak, features.upstream_ma_reason);

@@ -14,7 +14,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 FlowFeatures measure_flow_features(const FieldAnalysis& a) {
   FlowFeatures f;
-  f.shock_layer_phi_mean = f.shock_layer_phi_max = f.hot_subsonic_fraction = kNaN;
+  f.shock_layer_phi_mean = f.hot_subsonic_fraction = kNaN;
   f.upstream_ma_peak = f.upstream_ma_peak_over_inf = f.wake_phi_over_phi_up = kNaN;
   const FieldPhysics& phys = a.physics;
   if (!phys.obstacle) {
@@ -31,7 +31,7 @@ FlowFeatures measure_flow_features(const FieldAnalysis& a) {
     f.shock_layer_reason = f.hot_reason = f.upstream_ma_reason =
         "no delta/D, so no front to measure from: " + front.reason;
   } else {
-    double sum = 0, largest = kNaN, ma_peak = kNaN;
+    double sum = 0, ma_peak = kNaN;
     int bins = 0;
     const double y_begin = a.grid.y0 + a.reference_row * a.grid.dy;
     for (int k = 0; k < a.profile.ny; ++k) {
@@ -40,7 +40,6 @@ FlowFeatures measure_flow_features(const FieldAnalysis& a) {
       if (y > front.y_shock && y < front.surface && std::isfinite(line.phi[i])) {
         sum += line.phi[i];
         ++bins;
-        if (!(largest >= line.phi[i])) largest = line.phi[i];
       }
       if (y >= y_begin && y < front.y_shock && !line.masked[i] && std::isfinite(line.mach[i]) &&
           !(ma_peak >= line.mach[i]))
@@ -48,7 +47,6 @@ FlowFeatures measure_flow_features(const FieldAnalysis& a) {
     }
     if (bins > 0) {
       f.shock_layer_phi_mean = sum / bins;
-      f.shock_layer_phi_max = largest;
     } else {
       f.shock_layer_reason = "no profile bin between the front and the surface";
     }
@@ -61,22 +59,22 @@ FlowFeatures measure_flow_features(const FieldAnalysis& a) {
     else
       f.upstream_ma_peak_over_inf = ma_peak / ma_inf;
 
-    // The hot region: grid bins upstream of the cylinder's centre hotter than the primary
-    // front's threshold (T_up + 1/2 (T_peak - T_up) on the stagnation line).
-    const double hot = front.threshold;
+    // The hot region on the stagnation strip: the bins from the search start to the surface
+    // at or above the primary front's threshold, T_up + 1/2 (T_peak - T_up).
     int subsonic = 0;
-    for (int iy = 0; iy < a.grid.ny; ++iy)
-      for (int ix = 0; ix < a.grid.nx; ++ix) {
-        const std::size_t k = a.fields.index(iy, ix);
-        if (a.grid.y_centre(iy) > c.yc || a.fields.masked[k] || !(a.fields.temperature[k] >= hot))
-          continue;
-        ++f.hot_bins;
-        subsonic += a.fields.mach[k] < 1;
-      }
+    for (int k = 0; k < a.profile.ny; ++k) {
+      const std::size_t i = static_cast<std::size_t>(k);
+      const double y = a.profile.y_centre(k);
+      if (y < y_begin || y > front.surface || line.masked[i] ||
+          !(line.temperature[i] >= front.threshold))
+        continue;
+      ++f.hot_bins;
+      subsonic += line.mach[i] < 1;
+    }
     if (f.hot_bins > 0)
       f.hot_subsonic_fraction = static_cast<double>(subsonic) / f.hot_bins;
     else
-      f.hot_reason = "no unmasked grid bin upstream of the cylinder's centre is that hot";
+      f.hot_reason = "no unmasked bin of the stagnation strip is that hot";
   }
 
   // The wake: one diameter behind the cylinder, within its shadow.

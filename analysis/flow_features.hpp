@@ -1,10 +1,11 @@
 // The paper's qualitative claims about the bow shock, each turned into a number one run can
 // measure (docs/fields.md, "Flow features"):
-//   - "phi is about 0.5 between shock and obstacle": the mean and largest phi on the
-//     stagnation strip between the primary front and the surface;
+//   - "phi is about 0.5 between shock and obstacle": the mean phi on the stagnation strip
+//     between the primary front and the surface (its largest value is no measure: rows of
+//     0.5 d against the wall hold whole layers of particle centres, phi up to pi/2);
 //   - "the hot region behind the shock is subsonic and enveloped by the sonic line": of the
-//     grid bins upstream of the cylinder's centre that are hotter than the primary front's
-//     threshold, the fraction with Ma < 1;
+//     stagnation strip's bins hotter than the primary front's threshold, the fraction with
+//     Ma < 1;
 //   - "the local Ma upstream of the shock exceeds Ma_inf because the gas cools": the largest
 //     Ma on the stagnation strip between the search start and the primary front, over the
 //     measured Ma_inf at the inlet;
@@ -20,7 +21,7 @@ namespace granshock {
 struct FieldAnalysis;
 
 struct FlowFeatures {
-  double shock_layer_phi_mean = 0, shock_layer_phi_max = 0;
+  double shock_layer_phi_mean = 0;
   std::string shock_layer_reason;
   double hot_subsonic_fraction = 0;
   int hot_bins = 0;
