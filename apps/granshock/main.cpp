@@ -96,6 +96,9 @@ void add_study_command(CLI::App& app, granshock::StudyOptions& o) {
   cmd->add_option("--out", o.out_dir,
                   "study directory (default: the study file's out, else "
                   "runs/<study name>)");
+  cmd->add_option("--set", o.overrides,
+                  "override a scene key in every case, after the study file's [study] set, e.g. "
+                  "--set time.duration=2.0 (repeatable)");
   cmd->add_option("--case", o.only_case, "run only case K (0-based; for Slurm array tasks)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--collect", o.collect,

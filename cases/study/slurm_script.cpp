@@ -32,6 +32,10 @@ std::string slurm_script(const StudyPlan& plan, const fs::path& program, double 
   const fs::path out = fs::absolute(plan.out).lexically_normal();
   const bool plain_out = out.string().find_first_of(" \t%'\"\\$") == std::string::npos;
 
+  // The command line's --set, passed on to every task and to the collect step.
+  std::string sets;
+  for (const std::string& o : plan.spec.command_line_set) sets += " --set " + shell_quote(o);
+
   std::string s = "#!/bin/bash\n";
   s += fmt::format("# granshock study '{}': {} case{}, one per task of a Slurm job array\n",
                    plan.spec.name, n, n == 1 ? "" : "s");
@@ -42,9 +46,9 @@ std::string slurm_script(const StudyPlan& plan, const fs::path& program, double 
       "# x1.5, plus 10 minutes. A task past its limit gets SIGTERM, writes its checkpoint and\n"
       "# ends with 143; submit the script again and the unfinished cases resume, the finished\n"
       "# ones are skipped. When every task has ended, build the table and figures with\n"
-      "#   {} study {} --out {} --collect\n",
+      "#   {} study {} --out {}{} --collect\n",
       largest, rate, rate_source, shell_quote(program.string()), shell_quote(study.string()),
-      shell_quote(out.string()));
+      shell_quote(out.string()), sets);
   s += "#SBATCH --job-name=" + safe_name("granshock-" + plan.spec.name) + "\n";
   s += fmt::format("#SBATCH --array=0-{}\n", n - 1);
   s += fmt::format("#SBATCH --cpus-per-task={}\n", plan.spec.slurm.cpus_per_task);
@@ -58,9 +62,9 @@ std::string slurm_script(const StudyPlan& plan, const fs::path& program, double 
   s += "\nset -euo pipefail\n";
   s += "export OMP_NUM_THREADS=\"${SLURM_CPUS_PER_TASK:-1}\"\n";
   s += "export OMP_PROC_BIND=spread OMP_PLACES=threads\n";
-  s += fmt::format("exec {} study {} --out {} --case \"$SLURM_ARRAY_TASK_ID\"\n",
+  s += fmt::format("exec {} study {} --out {}{} --case \"$SLURM_ARRAY_TASK_ID\"\n",
                    shell_quote(program.string()), shell_quote(study.string()),
-                   shell_quote(out.string()));
+                   shell_quote(out.string()), sets);
   return s;
 }
 

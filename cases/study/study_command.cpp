@@ -68,7 +68,9 @@ int collect(const StudyPlan& plan, bool quiet) {
 
 int study_command(const StudyOptions& o) {
   check_options(o);
-  const StudySpec spec = load_study_file(o.study_file);
+  StudySpec spec = load_study_file(o.study_file);
+  spec.common.insert(spec.common.end(), o.overrides.begin(), o.overrides.end());
+  spec.command_line_set = o.overrides;
   const StudyPlan plan = plan_study(spec, o.out_dir.empty() ? spec.out : o.out_dir);
   const std::vector<std::size_t> selected = selection(plan, o.only_case);
   if (o.collect) return collect(plan, o.quiet);

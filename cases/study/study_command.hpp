@@ -4,18 +4,20 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace granshock {
 
 struct StudyOptions {
   std::filesystem::path study_file;
-  std::filesystem::path out_dir;  // empty: the study file's out, else runs/<study name>
-  int only_case = -1;             // --case K: run case K alone (array jobs); no table
-  bool collect = false;           // build the table from the directories, run nothing
-  std::string emit;               // "slurm": write <out>/study.slurm, run nothing
-  bool dry_run = false;           // list the cases with their overrides and cost
-  long stop_after_steps = 0;      // passed to the case that runs: it stops, and the study
-  bool quiet = false;             // no progress lines from the runs
+  std::filesystem::path out_dir;       // empty: the study file's out, else runs/<study name>
+  std::vector<std::string> overrides;  // --set: every case, after the file's [study] set
+  int only_case = -1;                  // --case K: run case K alone (array jobs); no table
+  bool collect = false;                // build the table from the directories, run nothing
+  std::string emit;                    // "slurm": write <out>/study.slurm, run nothing
+  bool dry_run = false;                // list the cases with their overrides and cost
+  long stop_after_steps = 0;           // passed to the case that runs: it stops, and the study
+  bool quiet = false;                  // no progress lines from the runs
 };
 
 // The process exit code: 0 every case (or case K) finished; 1 a case failed or, after the

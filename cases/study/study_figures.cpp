@@ -17,8 +17,8 @@ fs::path study_figure_script() {
 void plot_study_figures(const StudyPlan& plan) {
   if (plan.spec.axes.empty()) return;
   require_plotting_python();
-  std::vector<std::string> args{(plan.out / "study.json").string(),
-                                (plan.out / "figures").string(), to_string(plan.spec.mode)};
+  std::vector<std::string> args{(plan.out / "study.json").string(), (plan.out / "figures").string(),
+                                to_string(plan.spec.mode)};
   for (const StudyAxis& a : plan.spec.axes) args.push_back(a.name);
   run_figure_script(study_figure_script(), args);
 }

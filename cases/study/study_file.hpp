@@ -47,6 +47,9 @@ struct StudySpec {
   std::filesystem::path base;  // the base scene, relative paths taken from the study file's folder
   std::filesystem::path out;   // [study] out (relative to the working directory), or runs/<name>
   std::vector<std::string> common;  // [study] set: overrides of every case, before its own
+  // `granshock study --set`: overrides of every case given on the command line, after the
+  // file's (already in `common`; kept apart so that a Slurm script passes them on).
+  std::vector<std::string> command_line_set;
   StudyMode mode = StudyMode::product;
   std::vector<StudyAxis> axes;
   std::vector<ExplicitCase> cases;

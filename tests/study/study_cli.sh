@@ -8,6 +8,8 @@
 #   collect_lists_missing  --collect tabulates what is there and lists the missing cases
 #   emit_slurm             --emit slurm writes a script that bash accepts and that runs a case
 #   refuses_before_running a bad late case or a foreign directory: one line, exit 2, no case run
+#   set_reaches_every_case --set overrides every case after the file's [study] set, reaches the
+#                          Slurm script, and a bad one is refused before any case runs
 set -u
 granshock=$1 source=$2 check=$3
 studies=$source/tests/study
@@ -148,6 +150,23 @@ emit_slurm)
   grep -q '"completed": true' "$out/phi-0.1_e-0.8/summary.json" 2>/dev/null ||
     fail "array task 1 did not run case 1"
   [ ! -e "$out/phi-0.1_e-0.5" ] || fail "array task 1 ran case 0 as well"
+  ;;
+set_reaches_every_case)
+  # The tiny study's 4 ms shortened to 3 ms: case 2 alone, 15 000 steps of 2e-7 s.
+  "$granshock" study "$studies/tiny.toml" --out "$out" --case 2 --quiet \
+    --set time.duration=0.003 >"$work/stdout" 2>"$work/stderr" || fail "--set: $(cat "$work/stderr")"
+  grep -q '"steps": 15000' "$out/phi-0.12_e-0.5/summary.json" 2>/dev/null ||
+    fail "case 2 did not run 3 ms: $(grep '"steps"' "$out/phi-0.12_e-0.5/summary.json")"
+  "$granshock" study "$studies/tiny.toml" --out "$work/slurm" --emit slurm \
+    --set 'time.duration=0.003' >/dev/null 2>&1 || fail "--emit slurm with --set"
+  grep -q -- "--set 'time.duration=0.003' --case" "$work/slurm/study.slurm" ||
+    fail "the script drops --set: $(grep '^exec' "$work/slurm/study.slurm")"
+  bash -n "$work/slurm/study.slurm" || fail "bash -n refuses the script"
+  "$granshock" study "$studies/tiny.toml" --out "$work/bad" --set nosuch.key=1 2>"$work/stderr"
+  code=$?
+  [ $code -eq 2 ] || fail "a bad --set: exit code $code"
+  grep -q "nosuch" "$work/stderr" || fail "the refusal does not name the key: $(cat "$work/stderr")"
+  [ ! -e "$work/bad/phi-0.1_e-0.5" ] || fail "a case ran despite the bad --set"
   ;;
 refuses_before_running)
   "$granshock" study "$studies/bad/late_bad_value.toml" --out "$out" 2>"$work/stderr"
