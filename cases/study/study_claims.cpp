@@ -103,7 +103,7 @@ StudyClaim constant_in_size(const std::vector<Case>& cases) {
     const double spread = (hi - lo) / mean;
     holds += spread <= 0.2;
     c.numbers +=
-        (c.numbers.empty() ? "" : "; ") + line + fmt::format(", spread {:.0f} %", 100 * spread);
+        (c.numbers.empty() ? "" : "; ") + line + fmt::format(", spread {:.1f} %", 100 * spread);
   }
   if (judged > 0)
     c.verdict = holds == judged ? "holds" : "does not hold";
@@ -141,8 +141,8 @@ std::vector<StudyClaim> check_paper_claims(const StudyTable& table) {
                "shock-layer mean phi on the stagnation line in [0.35, 0.65] in every case",
                &Case::shock_layer_phi, [](double v) { return v >= 0.35 && v <= 0.65; }),
       per_case(cases, "the hot region behind the shock is subsonic",
-               "at least half of the hot grid bins at Ma < 1 in every case", &Case::hot_subsonic,
-               [](double v) { return v >= 0.5; }),
+               "at least half of the hot bins on the stagnation strip at Ma < 1 in every case",
+               &Case::hot_subsonic, [](double v) { return v >= 0.5; }),
       per_case(cases, "the local Ma upstream of the shock exceeds Ma_inf (the gas cools)",
                "largest Ma ahead of the front / Ma_inf at the inlet > 1 in every case",
                &Case::upstream_ma_ratio, [](double v) { return v > 1; }),

@@ -3,7 +3,7 @@
 //   - delta/D falls as Ma_inf rises, at fixed D/d;
 //   - delta/D is nearly constant in D/d at fixed Ma_inf (relative spread <= 20 %);
 //   - phi is about 0.5 between shock and obstacle (shock-layer mean in [0.35, 0.65]);
-//   - the hot region behind the shock is subsonic (most of its bins, fraction >= 0.5);
+//   - the hot region behind the shock is subsonic (at least half of the hot strip bins);
 //   - the local Ma upstream of the shock exceeds Ma_inf (peak / Ma_inf > 1);
 //   - the wake is nearly empty (phi behind the cylinder below 0.2 phi_inf).
 // The per-case numbers come from each run's summary.json (docs/fields.md, section 6).

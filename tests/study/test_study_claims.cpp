@@ -45,7 +45,7 @@ TEST(StudyClaims, VerdictsFollowTheirCriteria) {
       << find(claims, "delta/D falls").numbers;
   const StudyClaim& constant = find(claims, "delta/D is nearly constant");
   EXPECT_EQ(constant.verdict, "holds") << constant.numbers;
-  EXPECT_NE(constant.numbers.find("spread 8 %"), std::string::npos) << constant.numbers;
+  EXPECT_NE(constant.numbers.find("spread 8.0 %"), std::string::npos) << constant.numbers;
   EXPECT_EQ(find(claims, "phi is about 0.5").verdict, "holds");
   EXPECT_EQ(find(claims, "the hot region").verdict, "holds");
   EXPECT_EQ(find(claims, "the local Ma").verdict, "holds");
