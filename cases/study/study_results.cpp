@@ -22,10 +22,13 @@ void warn(const std::string& what) {
   std::cerr << "granshock study: warning: " << what << "\n";
 }
 
-// `granshock fields DIR... --out OUT` on the finished cases: detachment.csv/json and, with
-// Python, figures/detachment_length.png. The cases' own figures were drawn by their runs.
+// `granshock fields DIR... --out OUT` on the finished cases: each case's fields.h5 and
+// summary.json analysed again by this granshock (a case run by an older one gains the keys
+// of the current analysis before it is tabulated), detachment.csv/json and, with Python,
+// figures/detachment_length.png. The cases' own figures were drawn by their runs.
 void compare_finished(const StudyPlan& plan, const std::vector<fs::path>& finished, bool quiet) {
   if (finished.size() < 2) {
+    if (finished.size() == 1) fields_command(finished, {}, FieldsCommandOptions{false, quiet});
     if (!quiet)
       std::cerr << "granshock study: the comparison of detachment lengths needs two finished "
                    "cases; "
@@ -46,14 +49,11 @@ void compare_finished(const StudyPlan& plan, const std::vector<fs::path>& finish
 
 int write_study_results(const StudyPlan& plan, const std::map<int, std::string>& failures,
                         bool quiet) {
-  const StudyTable table = study_table(plan, failures);
-  write_study_table(plan.out, table);
-  write_claims(plan.out, check_paper_claims(table));
-
   std::vector<fs::path> finished;
   std::vector<std::string> not_finished;
+  const StudyTable states = study_table(plan, failures);
   for (std::size_t k = 0; k < plan.cases.size(); ++k) {
-    const std::string status = table.rows[k]["status"].get<std::string>();
+    const std::string status = states.rows[k]["status"].get<std::string>();
     if (status == "finished")
       finished.push_back(plan.cases[k].dir);
     else
@@ -67,6 +67,10 @@ int write_study_results(const StudyPlan& plan, const std::map<int, std::string>&
               << "\n";
     code = 1;
   }
+  // The table from the summaries as the analysis above left them.
+  const StudyTable table = study_table(plan, failures);
+  write_study_table(plan.out, table);
+  write_claims(plan.out, check_paper_claims(table));
   try {
     plot_study_figures(plan);
   } catch (const UserError& e) {
