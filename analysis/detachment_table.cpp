@@ -6,23 +6,11 @@
 #include <nlohmann/json.hpp>
 
 #include "atomic_file.hpp"
+#include "csv_cells.hpp"
 
 namespace granshock {
 
 namespace {
-
-std::string csv_number(double v) {
-  if (!std::isfinite(v)) return "";
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.10g", v);
-  return buffer;
-}
-
-std::string csv_text(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return out + "\"";
-}
 
 nlohmann::json json_number(double v) {
   return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json();

@@ -104,13 +104,14 @@ FieldAnalysis analyse_fields(const Scene& scene, BinSums grid, std::optional<Bin
   a.front = find_shock_front(a.fields, a.grid, phys, a.phi_up, a.reference_row, o.threshold,
                              y_upstream_end);
 
+  const int on_axis = axis_column(a.grid, phys);
   if (profile) {
     if (profile->n_species != a.grid.n_species)
       throw UserError("the stagnation-line profile holds " + std::to_string(profile->n_species) +
                       " species, the grid " + std::to_string(a.grid.n_species));
     a.profile_all = std::move(*profile);
   } else {
-    a.profile_all = a.grid.column(axis_column(a.grid, phys));
+    a.profile_all = a.grid.column(on_axis);
     a.profile_from_grid = true;
   }
   const double x_axis = phys.obstacle ? phys.obstacle->xc : 0.5 * (phys.box_x_lo + phys.box_x_hi);
@@ -139,7 +140,7 @@ FieldAnalysis analyse_fields(const Scene& scene, BinSums grid, std::optional<Bin
     ConvergenceInput in;
     in.profile = &a.profile_all;
     in.grid = &a.grid;
-    in.axis_column = axis_column(a.grid, phys);
+    in.axis_column = on_axis;
     in.x_axis = x_axis;
     in.strip_width = a.strip_width;
     in.reference = &a.detachments;

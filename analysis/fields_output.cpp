@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "atomic_file.hpp"
+#include "csv_cells.hpp"
 #include "fields_xdmf.hpp"
 
 namespace granshock {
@@ -204,16 +205,11 @@ std::string convergence_csv(const FieldAnalysis& a) {
   for (FrontDefinition d : kFrontDefinitions)
     csv += std::string(",") + name(d) + "," + name(d) + "_err";
   csv += "\n";
-  auto cell = [](double v) {
-    if (!std::isfinite(v)) return std::string();
-    char text[32];
-    std::snprintf(text, sizeof text, "%.6g", v);
-    return std::string(text);
-  };
   for (const ConvergenceChoice& c : a.convergence.choices) {
-    csv += "\"" + c.label + "\"," + c.kind + "," + cell(c.kind == "window" ? kNaN : c.size_d);
+    csv +=
+        csv_text(c.label) + "," + c.kind + "," + csv_number(c.kind == "window" ? kNaN : c.size_d);
     for (const Detachment& d : c.result)
-      csv += "," + cell(d.delta_over_d) + "," + cell(d.delta_over_d_err);
+      csv += "," + csv_number(d.delta_over_d) + "," + csv_number(d.delta_over_d_err);
     csv += "\n";
   }
   return csv;
