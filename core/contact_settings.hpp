@@ -24,9 +24,25 @@ struct ContactOptions {
   double characteristic_velocity_m_per_s = 1.0;
 };
 
+// How the damping of every pair is chosen (docs/contact_model.md, "Restitution at the
+// chosen time step"): `continuous` from e by the law's closed form (LIGGGHTS), exact as
+// dt -> 0; `discrete` calibrated at start-up so that the solver's own integrator at the
+// run's dt returns e, averaged over the phase of the first contact step.
+enum class RestitutionMode { continuous, discrete };
+RestitutionMode parse_restitution_mode(const std::string& name);  // "continuous" | "discrete"
+std::string to_string(RestitutionMode mode);
+
 struct ContactSettings {
   ContactModelKind model = ContactModelKind::hertz;
   ContactOptions options;
+  RestitutionMode restitution_mode = RestitutionMode::continuous;
+  // discrete: the impact speed the damping is calibrated at (m/s); 0 in a scene means the
+  // inflow speed, resolved when the scene is read.
+  double calibration_speed_m_per_s = 0;
+  // discrete, once calibrated (kernels/models/restitution_calibration.hpp): the damping
+  // beta every pair runs with, indexed like `restitution`; empty: beta from e.
+  std::vector<std::vector<double>> calibrated_beta;
+  std::vector<double> obstacle_calibrated_beta;
   // Indexed [species_i][species_j] (symmetric) and [species] for the obstacle.
   std::vector<std::vector<double>> restitution;
   std::vector<std::vector<double>> friction;

@@ -17,6 +17,16 @@ std::string to_string(ContactModelKind model) {
   return model == ContactModelKind::hertz ? "hertz" : "hooke";
 }
 
+RestitutionMode parse_restitution_mode(const std::string& name) {
+  if (name == "continuous") return RestitutionMode::continuous;
+  if (name == "discrete") return RestitutionMode::discrete;
+  throw UserError("restitution mode '" + name + "' is not one of continuous, discrete");
+}
+
+std::string to_string(RestitutionMode mode) {
+  return mode == RestitutionMode::continuous ? "continuous" : "discrete";
+}
+
 ContactSettings ContactSettings::uniform(int n, double e, double mu) {
   ContactSettings m;
   m.restitution.assign(n, std::vector<double>(n, e));
@@ -41,14 +51,19 @@ double SolverSetup::max_diameter() const {
 }
 
 PairProperties SolverSetup::pair(int a, int b) const {
-  return particle_pair(species.at(a), species.at(b), contacts.restitution.at(a).at(b),
-                       contacts.friction.at(a).at(b));
+  PairProperties p = particle_pair(species.at(a), species.at(b), contacts.restitution.at(a).at(b),
+                                   contacts.friction.at(a).at(b));
+  if (!contacts.calibrated_beta.empty()) p.beta = contacts.calibrated_beta.at(a).at(b);
+  return p;
 }
 
 PairProperties SolverSetup::obstacle_pair(int a) const {
   if (!obstacle) throw std::logic_error("obstacle_pair: the scene has no obstacle");
-  return particle_obstacle(species.at(a), obstacle->material, contacts.obstacle_restitution.at(a),
-                           contacts.obstacle_friction.at(a));
+  PairProperties p =
+      particle_obstacle(species.at(a), obstacle->material, contacts.obstacle_restitution.at(a),
+                        contacts.obstacle_friction.at(a));
+  if (!contacts.obstacle_calibrated_beta.empty()) p.beta = contacts.obstacle_calibrated_beta.at(a);
+  return p;
 }
 
 std::vector<PairProperties> SolverSetup::all_pairs() const {

@@ -47,6 +47,7 @@ struct Reading {
   Scene& s;
   std::map<std::string, Material> materials = {{"steel", steel()}, {"aluminium", aluminium()}};
   std::optional<double> characteristic_velocity;  // default: the inflow speed
+  std::optional<double> calibration_speed;        // default: the inflow speed
   Material material;
   Species species;
   double number_fraction = 0;
@@ -378,6 +379,22 @@ const Key kContactKeys[] = {
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.s.setup.contacts.friction[0][0]);
      }},
+    {"restitution_mode", "string",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       st.s.setup.contacts.restitution_mode =
+           parse_restitution_mode(r.choice(k, {"continuous", "discrete"}, "continuous"));
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) {
+       t.insert(k, to_string(w.s.setup.contacts.restitution_mode));
+     }},
+    // Its default, the inflow speed, is known once [inflow] is read (read_scene).
+    {"calibration_speed", "number (m/s)",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       if (r.has(k)) st.calibration_speed = r.positive(k);
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) {
+       t.insert(k, w.s.setup.contacts.calibration_speed_m_per_s);
+     }},
     {"model", "string",
      [](TableReader& r, Reading& st, const std::string& k) {
        st.s.setup.contacts.model = parse_contact_model(r.choice(k, {"hertz", "hooke"}, "hertz"));
@@ -691,6 +708,8 @@ Scene read_scene(const toml::table& root) {
   top.finish();
   s.setup.contacts.options.characteristic_velocity_m_per_s =
       st.characteristic_velocity.value_or(s.inflow.speed_m_per_s);
+  s.setup.contacts.calibration_speed_m_per_s =
+      st.calibration_speed.value_or(s.inflow.speed_m_per_s);
   return s;
 }
 

@@ -30,7 +30,7 @@ std::string one_line(std::string text) {
 }
 
 void add_collide_command(CLI::App& app, granshock::CollisionOptions& o, std::string& precision,
-                         std::string& model) {
+                         std::string& model, std::string& restitution_mode) {
   auto* cmd = app.add_subcommand("collide",
                                  "head-on collision of two particles or a particle and "
                                  "the fixed cylinder; prints JSON");
@@ -51,6 +51,11 @@ void add_collide_command(CLI::App& app, granshock::CollisionOptions& o, std::str
   cmd->add_option("--precision", precision, "double | single")
       ->check(CLI::IsMember({"double", "single"}));
   cmd->add_flag("--force", o.force, "run even when dt is past the stable limit");
+  cmd->add_option("--restitution-mode", restitution_mode,
+                  "continuous (default) | discrete: damping calibrated at this speed and dt")
+      ->check(CLI::IsMember({"continuous", "discrete"}));
+  cmd->add_option("--phase", o.phase,
+                  "the first contact step overlaps by phase x speed x dt, in (0, 1]; default 1");
 }
 
 void add_run_command(CLI::App& app, granshock::RunOptions& o) {
@@ -126,8 +131,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.allow_extras(false);
   granshock::CollisionOptions collide;
-  std::string precision = "double", model = "hertz";
-  add_collide_command(app, collide, precision, model);
+  std::string precision = "double", model = "hertz", restitution_mode = "continuous";
+  add_collide_command(app, collide, precision, model, restitution_mode);
   granshock::RunOptions run;
   add_run_command(app, run);
   std::vector<std::filesystem::path> field_dirs;
@@ -192,6 +197,7 @@ int main(int argc, char** argv) {
       collide.precision = precision == "single" ? granshock::Precision::single_precision
                                                 : granshock::Precision::double_precision;
       collide.model = granshock::parse_contact_model(model);
+      collide.restitution_mode = granshock::parse_restitution_mode(restitution_mode);
       const auto result = granshock::run_head_on_collision(collide);
       if (result.time_step.verdict != granshock::TimeStepAssessment::Verdict::ok)
         std::cerr << "granshock: warning: " << result.time_step.message << "\n";

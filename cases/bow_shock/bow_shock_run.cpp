@@ -12,6 +12,7 @@
 #include "field_sums_file.hpp"
 #include "fields_command.hpp"
 #include "interrupt.hpp"
+#include "models/restitution_calibration.hpp"
 #include "run_checks.hpp"
 #include "run_observables.hpp"
 #include "run_state.hpp"
@@ -47,8 +48,11 @@ int BowShockRun::execute() {
                              : options_.overwrite ? DirectoryMode::overwrite
                                                   : DirectoryMode::create;
   RunDirectory::check(dir_, mode);
-  // Again with a calibrated sigma: the fastest impact, so the time-step guard, depend on it.
-  if (calibrate_inflow()) warnings = check_scene_before_run(scene_, options_.force);
+  // Again with a calibrated damping or sigma: the time-step guard depends on the damping
+  // ratio and on the fastest impact.
+  const bool damping_calibrated = calibrate_restitution();
+  if (calibrate_inflow() || damping_calibrated)
+    warnings = check_scene_before_run(scene_, options_.force);
   for (const std::string& w : warnings) std::cerr << "granshock: warning: " << w << "\n";
 
   total_steps_ = scene_.total_steps();
@@ -85,6 +89,21 @@ int BowShockRun::execute() {
                           last_checkpoint_step_)
             : std::string("no checkpoint had been written yet")));
   }
+}
+
+// contact.restitution_mode = "discrete" (docs/contact_model.md, "Restitution at the chosen
+// time step"): a pure function of the scene, so a resumed run finds the same damping.
+bool BowShockRun::calibrate_restitution() {
+  if (scene_.setup.contacts.restitution_mode != RestitutionMode::discrete) return false;
+  const RestitutionCalibration c = apply_restitution_mode(loaded_.scene.setup);
+  if (!options_.quiet)
+    for (const PairCalibration& p : c.pairs)
+      std::cerr << fmt::format(
+          "granshock: restitution of {} calibrated at dt = {:.3g} s, {:g} m/s: beta {:.5f} "
+          "(continuous {:.5f}) returns e = {:.5f} for {:g} (continuous: {:.5f})\n",
+          p.pair, c.dt, c.speed, p.beta, p.beta_continuous, p.e_eff, p.restitution,
+          p.e_eff_continuous);
+  return true;
 }
 
 // inflow.mach_at = "inlet_bins" (docs/fields.md, "Three upstream Mach numbers"): sigma is

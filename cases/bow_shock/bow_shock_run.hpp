@@ -37,7 +37,8 @@ class BowShockRun {
   };
 
   int advance_to_end();
-  bool calibrate_inflow();  // true when it changed sigma (inflow.mach_at = "inlet_bins")
+  bool calibrate_inflow();       // true when it changed sigma (inflow.mach_at = "inlet_bins")
+  bool calibrate_restitution();  // true when it set the damping (restitution_mode = "discrete")
   void start_fresh();
   void resume();
   void actions_at(long step);

@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "bow_shock_run.hpp"
+#include "models/restitution_calibration.hpp"
 #include "run_checks.hpp"
 #include "run_directory.hpp"
 #include "scene_file.hpp"
@@ -14,9 +15,14 @@ std::filesystem::path run_directory_of(const RunOptions& o, const Scene& scene) 
 }
 
 RunCheck check_run(const RunOptions& o) {
-  const LoadedScene loaded = load_scene_file(o.scene_file, o.overrides);
+  LoadedScene loaded = load_scene_file(o.scene_file, o.overrides);
   RunCheck c;
   c.warnings = check_scene_before_run(loaded.scene, o.force);
+  // The guard again with the damping the run will calibrate (restitution_mode = "discrete").
+  if (loaded.scene.setup.contacts.restitution_mode == RestitutionMode::discrete) {
+    apply_restitution_mode(loaded.scene.setup);
+    c.warnings = check_scene_before_run(loaded.scene, o.force);
+  }
   c.directory = run_directory_of(o, loaded.scene);
   RunDirectory::check(c.directory, o.resume      ? DirectoryMode::resume
                                    : o.overwrite ? DirectoryMode::overwrite

@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "head_on_collision.hpp"
+#include "models/restitution_calibration.hpp"
 #include "run_checks.hpp"
 
 namespace granshock {
@@ -36,6 +37,33 @@ nlohmann::json effective_restitution_table(const Scene& s) {
     }
   }
   return out;
+}
+
+nlohmann::json restitution_calibration_summary(const Scene& s) {
+  if (s.setup.contacts.restitution_mode == RestitutionMode::continuous) return nullptr;
+  SolverSetup setup = s.setup;
+  const RestitutionCalibration c = apply_restitution_mode(setup);
+  nlohmann::json pairs = nlohmann::json::object();
+  for (const PairCalibration& p : c.pairs) {
+    nlohmann::json at_speeds = nlohmann::json::array();
+    for (std::size_t k = 0; k < p.speed_residuals.size(); ++k)
+      at_speeds.push_back(
+          {{"speed", kResidualSpeedFactors[k] * c.speed}, {"e_eff_minus_e", p.speed_residuals[k]}});
+    pairs[p.pair] = {{"e", p.restitution},
+                     {"beta_continuous", p.beta_continuous},
+                     {"beta", p.beta},
+                     {"dt_over_tc", p.dt_over_tc},
+                     {"e_eff_continuous", p.e_eff_continuous},
+                     {"e_eff", p.e_eff},
+                     {"e_eff_phase_min", p.phase_min},
+                     {"e_eff_phase_max", p.phase_max},
+                     {"residual_over_speed", at_speeds}};
+  }
+  return {{"mode", to_string(s.setup.contacts.restitution_mode)},
+          {"speed", c.speed},
+          {"dt", c.dt},
+          {"phases", kCalibrationPhases},
+          {"pairs", pairs}};
 }
 
 nlohmann::json calibration_summary(const InletCalibration& c) {
@@ -91,6 +119,7 @@ nlohmann::json run_summary(const Scene& s, const Solver& solver, const InflowCon
   j["particle_steps_per_second"] =
       times.leg_seconds > 0 ? times.particle_steps / times.leg_seconds : 0.0;
   j["effective_restitution_at_dt"] = effective_restitution_table(s);
+  j["restitution_calibration"] = restitution_calibration_summary(s);
   return j;
 }
 

@@ -23,6 +23,11 @@ nlohmann::json run_summary(const Scene& scene, const Solver& solver, const Inflo
                            const InletCalibration* calibration, bool completed,
                            const RunTimes& times);
 
+// contact.restitution_mode = "discrete": every pair's calibrated damping, its phase-averaged
+// e_eff against the continuous damping's, its spread over the phase of the first contact
+// step and its residual at other impact speeds; null in continuous mode.
+nlohmann::json restitution_calibration_summary(const Scene& scene);
+
 // How sigma was calibrated: target, first guess, every iterate, the sigma chosen.
 nlohmann::json calibration_summary(const InletCalibration& calibration);
 

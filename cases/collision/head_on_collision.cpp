@@ -81,17 +81,21 @@ std::vector<std::string> collision_pair_names() {
 }
 
 CollisionResult collide_species(const SolverSetup& scene, int a, int b, double speed, double dt,
-                                bool force) {
-  const PairProperties props =
+                                bool force, double phase) {
+  PairProperties props =
       b < 0 ? particle_obstacle(
                   scene.species[a], scene.obstacle ? scene.obstacle->material : aluminium(),
                   scene.contacts.obstacle_restitution[a], scene.contacts.obstacle_friction[a])
             : scene.pair(a, b);
+  if (b < 0 && !scene.contacts.obstacle_calibrated_beta.empty())
+    props.beta = scene.contacts.obstacle_calibrated_beta[a];
   CollisionResult r;
   r.pair = props.name;
   r.speed = speed;
   r.e_in = props.restitution;
   r.limit_force = scene.contacts.options.limit_force;
+  r.phase = phase;
+  r.beta = props.beta;
   r.model = to_string(scene.contacts.model);
   const ContactSettings& contacts = scene.contacts;
   r.t_c = collision_time(contacts.model, props, contacts.options, speed);
@@ -111,9 +115,10 @@ CollisionResult collide_species(const SolverSetup& scene, int a, int b, double s
         20.0 * r.t_c / kMaxCollisionSteps));
   Geometry g = build(scene, a, b, r.dt);
 
-  // Start a few steps before contact, in the zero-momentum frame for two particles.
+  // Start a few steps before contact, in the zero-momentum frame for two particles; the
+  // sixth drift overlaps them by phase x speed x dt.
   HostParticles start;
-  const double gap0 = 5.0 * speed * r.dt;
+  const double gap0 = (6.0 - phase) * speed * r.dt;
   if (g.on_obstacle) {
     start.add({-(g.cylinder_radius + g.radius_a + gap0), 0, 0}, {speed, 0, 0}, a, 0);
   } else {
@@ -168,6 +173,8 @@ CollisionResult run_head_on_collision(const CollisionOptions& o) {
                                 *o.characteristic_velocity));
   if (o.dt && !(*o.dt > 0 && std::isfinite(*o.dt)))
     throw UserError(fmt::format("--dt {} must be a positive time step in s", *o.dt));
+  if (!(o.phase > 0 && o.phase <= 1))
+    throw UserError(fmt::format("--phase {} must be in (0, 1]", o.phase));
 
   // The paper's materials, d = 1 mm, and an aluminium cylinder.
   SolverSetup paper;
@@ -181,10 +188,29 @@ CollisionResult run_head_on_collision(const CollisionOptions& o) {
   paper.obstacle = Obstacle{ObstacleShape::cylinder, {0, 0, 0}, 10 * kDiameter, aluminium()};
   const auto dash = o.pair.find('-');
   const std::string second = o.pair.substr(dash + 1);
-  CollisionResult r = collide_species(paper, paper_species(o.pair.substr(0, dash)),
-                                      second == "obstacle" ? -1 : paper_species(second),
-                                      o.speed_m_per_s, o.dt.value_or(0.0), o.force);
+  const int a = paper_species(o.pair.substr(0, dash));
+  const int b = second == "obstacle" ? -1 : paper_species(second);
+  double dt = o.dt.value_or(0.0);
+  std::optional<PairCalibration> calibration;
+  if (o.restitution_mode == RestitutionMode::discrete) {
+    // This pair alone, at this impact's speed and dt (the default dt, t_c/100, first): a
+    // dt chosen for a soft pair may be past the reach of a stiffer one.
+    const PairProperties p = b < 0 ? paper.obstacle_pair(a) : paper.pair(a, b);
+    if (dt <= 0) dt = collision_time(o.model, p, paper.contacts.options, o.speed_m_per_s) / 100.0;
+    calibration = calibrate_pair(o.model, p, paper.contacts.options, dt, o.speed_m_per_s);
+    ContactSettings& c = paper.contacts;
+    c.restitution_mode = RestitutionMode::discrete;
+    c.calibration_speed_m_per_s = o.speed_m_per_s;
+    c.calibrated_beta.assign(2, std::vector<double>(2, damping_beta(o.restitution)));
+    c.obstacle_calibrated_beta.assign(2, damping_beta(o.restitution));
+    if (b < 0)
+      c.obstacle_calibrated_beta[a] = calibration->beta;
+    else
+      c.calibrated_beta[a][b] = c.calibrated_beta[b][a] = calibration->beta;
+  }
+  CollisionResult r = collide_species(paper, a, b, o.speed_m_per_s, dt, o.force, o.phase);
   r.pair = o.pair;
+  r.calibration = calibration;
   return r;
 }
 
@@ -209,6 +235,23 @@ std::string to_json(const CollisionResult& r) {
   if (!r.time_step.message.empty()) j["time_step_warning"] = r.time_step.message;
   j["predicted_overlap_over_d"] = r.overlap.overlap_over_d;
   if (!r.overlap.message.empty()) j["overlap_warning"] = r.overlap.message;
+  j["phase"] = r.phase;
+  j["beta"] = r.beta;
+  j["restitution_mode"] = r.calibration ? "discrete" : "continuous";
+  if (r.calibration) {
+    const PairCalibration& c = *r.calibration;
+    nlohmann::json residuals = nlohmann::json::array();
+    for (std::size_t k = 0; k < c.speed_residuals.size(); ++k)
+      residuals.push_back(
+          {{"speed", kResidualSpeedFactors[k] * r.speed}, {"e_eff_minus_e", c.speed_residuals[k]}});
+    j["calibration"] = {{"beta_continuous", c.beta_continuous},
+                        {"phases", kCalibrationPhases},
+                        {"e_eff_phase_averaged", c.e_eff},
+                        {"e_eff_phase_averaged_continuous", c.e_eff_continuous},
+                        {"e_eff_phase_min", c.phase_min},
+                        {"e_eff_phase_max", c.phase_max},
+                        {"residual_over_speed", residuals}};
+  }
   return j.dump(2);
 }
 

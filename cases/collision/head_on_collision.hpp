@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "models/restitution_calibration.hpp"
 #include "models/time_step_guard.hpp"
 #include "solver_setup.hpp"
 
@@ -24,6 +25,9 @@ struct CollisionOptions {
   bool limit_force = false;
   Precision precision = Precision::double_precision;
   bool force = false;  // run even past the stable time step
+  RestitutionMode restitution_mode = RestitutionMode::continuous;
+  // The first contact step overlaps by phase x speed x dt, phase in (0, 1].
+  double phase = 1.0;
 };
 
 inline constexpr double kMaxCollisionSteps = 1e7;
@@ -37,12 +41,15 @@ struct CollisionResult {
   double e_eff = 0;      // post/pre normal relative speed
   double t_contact = 0;  // s, from overlap zero crossings interpolated between steps
   double max_overlap = 0;
+  double phase = 1.0;
+  double beta = 0;  // the damping the collision ran with
   long steps = 0;
   bool limit_force = false;
   std::string model;
   std::string variant;
   TimeStepAssessment time_step;
-  OverlapAssessment overlap;  // the Hertz peak overlap predicted at this speed
+  OverlapAssessment overlap;                   // the Hertz peak overlap predicted at this speed
+  std::optional<PairCalibration> calibration;  // restitution_mode = discrete
 };
 
 std::vector<std::string> collision_pair_names();
@@ -52,9 +59,10 @@ std::vector<std::string> collision_pair_names();
 // kMaxCollisionSteps steps, or particles that passed through each other.
 CollisionResult run_head_on_collision(const CollisionOptions& options);
 // The same experiment for species a against species b of any setup, or against its
-// obstacle (b = -1), with that setup's contact parameters; dt = 0 picks t_c/100.
+// obstacle (b = -1), with that setup's contact parameters (its calibrated damping, if any);
+// dt = 0 picks t_c/100. The first contact step overlaps by phase x speed x dt.
 CollisionResult collide_species(const SolverSetup& setup, int a, int b, double speed, double dt,
-                                bool force);
+                                bool force, double phase = 1.0);
 std::string to_json(const CollisionResult& r);
 
 }  // namespace granshock

@@ -3,7 +3,7 @@
 // spring-dashpot whose constant stiffness gives, at the characteristic impact speed V, the
 // same peak overlap as the Hertz law (Johnson, Contact Mechanics, 1985, eq. 11.23):
 //   kn = 16/15 sqrt(R*) Y* (15 m* V^2 / (16 sqrt(R*) Y*))^(1/5),   kt = kn,
-//   gn = sqrt(4 m* kn / (1 + (pi / ln e)^2)) = 2 |beta| sqrt(m* kn),  gt = gn,
+//   gn = sqrt(4 m* kn / (1 + (pi / ln e)^2)) = -2 beta sqrt(m* kn),  gt = gn,
 //   Fn = kn dn - gn vn.
 // For a linear oscillator the closed forms hold at every impact speed: the contact lasts
 // t_c = pi / omega_d with omega_d = sqrt(kn/m* - (gn / 2m*)^2), and the rebound speed is
@@ -49,7 +49,7 @@ struct HookeModel {
            std::pow(15.0 * p.mass_star * v * v / (16.0 * sqrt_r * p.youngs_star), 0.2);
   }
   static double damping(const PairProperties& p, const ContactOptions& o) {
-    return 2.0 * std::abs(p.beta) * std::sqrt(p.mass_star * stiffness(p, o));
+    return -2.0 * p.beta * std::sqrt(p.mass_star * stiffness(p, o));
   }
 
   template <class Real>
@@ -63,13 +63,14 @@ struct HookeModel {
   }
 
   template <class Real>
-  KOKKOS_FORCEINLINE_FUNCTION static Normal<Real> normal(const Coefficients<Real>& c, Real dn, Real vn) {
+  KOKKOS_FORCEINLINE_FUNCTION static Normal<Real> normal(const Coefficients<Real>& c, Real dn,
+                                                         Real vn) {
     return {dmath::max(c.kn * dn - c.gn * vn, c.normal_force_floor)};
   }
 
   template <class Real>
   KOKKOS_FORCEINLINE_FUNCTION static Spring<Real> tangential(const Coefficients<Real>& c,
-                                                        const Normal<Real>&) {
+                                                             const Normal<Real>&) {
     return {c.kt, c.gt};
   }
 
@@ -95,8 +96,8 @@ struct HookeModel {
                                           double) {
     return stiffness(p, o);
   }
-  // gn / (2 sqrt(m* kn)) = |beta|.
-  static double damping_ratio(const PairProperties& p) { return std::abs(p.beta); }
+  // gn / (2 sqrt(m* kn)) = -beta (beta <= 0 from e; a calibrated beta may be > 0).
+  static double damping_ratio(const PairProperties& p) { return -p.beta; }
 };
 
 }  // namespace granshock

@@ -25,7 +25,9 @@ double stable_time_step(ContactModelKind model, const PairProperties& p, const C
   return with_contact_model(model, [&](auto law) {
     // omega dt <= sqrt(2 + zeta^2) - zeta: a contact resolved in one step gains no energy
     // (time_step_guard.hpp).
-    const double zeta = law.damping_ratio(p);
+    // A calibrated beta > 0 (negative damping, restitution_calibration.hpp) is tiny; the
+    // margin of an undamped law is kept for it.
+    const double zeta = std::max(0.0, law.damping_ratio(p));
     const double margin = std::sqrt(2.0 + zeta * zeta) - zeta;
     double omega = std::sqrt(law.peak_normal_stiffness(p, o, v) / p.mass_star);
     if (friction)

@@ -137,8 +137,56 @@ INSTANTIATE_TEST_SUITE_P(
         BadRun{"bins_below_a_particle",
                {"numerics.bin_size=0.001 d"},
                "smaller than the particle diameter"},
-        BadRun{"blocks_beyond_limit", {"output.blocks=1000000000"}, "must be at most 10000"}),
+        BadRun{"blocks_beyond_limit", {"output.blocks=1000000000"}, "must be at most 10000"},
+        BadRun{
+            "unknown_restitution_mode", {"contact.restitution_mode=\"exact\""}, "restitution_mode"},
+        // Issue 11: a step the guard accepts (at the fastest impact, 2.8 m/s) but at
+        // which no damping returns e = 0.01 for impacts at 50 m/s (dt/t_c = 0.36).
+        BadRun{"discrete_restitution_unreachable",
+               {"contact.restitution_mode=\"discrete\"", "contact.restitution=0.01",
+                "contact.calibration_speed=50", "time.dt=5e-7"},
+               "no damping makes the steel-steel pair return e = 0.01"}),
     [](const auto& param_info) { return std::string(param_info.param.name); });
+
+// Issue 11: contact.restitution_mode = "discrete" calibrates every pair at the run's dt,
+// reports it in summary.json, changes the trajectory (the kernels run with the calibrated
+// damping) and resumes bitwise (the calibration is a pure function of the scene).
+TEST(RunDiscreteRestitution, CalibratedReportedUsedAndResumedBitwise) {
+  TempDir tmp;
+  const auto scene = tmp.write("small.toml", small_scene(true));
+  const std::vector<std::string> base = {"time.duration=0.004", "time.production_start=0.002"};
+  std::vector<std::string> discrete = base;
+  discrete.push_back("contact.restitution_mode=\"discrete\"");
+  ASSERT_EQ(run_scene(options_for(scene, tmp.path() / "continuous", base)), 0);
+  ASSERT_EQ(run_scene(options_for(scene, tmp.path() / "discrete", discrete)), 0);
+  RunOptions first = options_for(scene, tmp.path() / "split", discrete);
+  first.stop_after_steps = 7001;
+  ASSERT_EQ(run_scene(first), 0);
+  RunOptions second = options_for(scene, tmp.path() / "split", discrete);
+  second.resume = true;
+  ASSERT_EQ(run_scene(second), 0);
+
+  const nlohmann::json j = read_summary(tmp.path() / "discrete" / "summary.json");
+  const nlohmann::json& c = j.at("restitution_calibration");
+  EXPECT_EQ(c.at("mode"), "discrete");
+  ASSERT_EQ(c.at("pairs").size(), 5u) << c.dump();  // 3 particle pairs, 2 with the obstacle
+  for (const auto& [pair, p] : c.at("pairs").items()) {
+    EXPECT_NEAR(p.at("e_eff").get<double>(), p.at("e").get<double>(), 1e-9) << pair;
+    EXPECT_NE(p.at("beta").get<double>(), p.at("beta_continuous").get<double>()) << pair;
+    EXPECT_EQ(p.at("residual_over_speed").size(), 4u) << pair;
+  }
+  EXPECT_TRUE(read_summary(tmp.path() / "continuous" / "summary.json")
+                  .at("restitution_calibration")
+                  .is_null());
+
+  CheckpointExtras e1, e2, e3;
+  const SolverState cont = read_checkpoint(tmp.path() / "continuous" / "checkpoint.h5", e1);
+  const SolverState disc = read_checkpoint(tmp.path() / "discrete" / "checkpoint.h5", e2);
+  const SolverState split = read_checkpoint(tmp.path() / "split" / "checkpoint.h5", e3);
+  EXPECT_NE(cont.velocity, disc.velocity) << "the calibrated damping did not reach the kernels";
+  EXPECT_EQ(disc.velocity, split.velocity) << "a resumed discrete run is not bitwise equal";
+  EXPECT_EQ(disc.position, split.position);
+}
 
 TEST(RunRefusesDirectory, UnwritableOrExisting) {
   TempDir tmp;

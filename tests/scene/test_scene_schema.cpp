@@ -56,6 +56,8 @@ const std::map<std::string, NonDefault>& non_default_values() {
       {"contact.model", {{"contact.model=\"hooke\""}}},
       {"contact.limit_force", {{"contact.limit_force=true"}}},
       {"contact.characteristic_velocity", {{"contact.characteristic_velocity=3.5"}}},
+      {"contact.restitution_mode", {{"contact.restitution_mode=\"discrete\""}}},
+      {"contact.calibration_speed", {{"contact.calibration_speed=2.5"}}},
       {"contact.pairs.\"a-b\".restitution",
        {{"contact.pairs.steel-aluminium.restitution=0.9",
          "contact.pairs.aluminium-obstacle.restitution=0.7"}}},
@@ -134,6 +136,9 @@ std::vector<std::string> differences(const Scene& a, const Scene& b) {
   d("setup.contacts.options.limit_force", ca.options.limit_force, cb.options.limit_force);
   d("setup.contacts.options.characteristic_velocity_m_per_s",
     ca.options.characteristic_velocity_m_per_s, cb.options.characteristic_velocity_m_per_s);
+  d("setup.contacts.restitution_mode", ca.restitution_mode, cb.restitution_mode);
+  d("setup.contacts.calibration_speed_m_per_s", ca.calibration_speed_m_per_s,
+    cb.calibration_speed_m_per_s);
   d("setup.contacts.restitution", ca.restitution, cb.restitution);
   d("setup.contacts.friction", ca.friction, cb.friction);
   d("setup.contacts.obstacle_restitution", ca.obstacle_restitution, cb.obstacle_restitution);
