@@ -23,7 +23,26 @@ struct Case {
   std::string name;
   double d_over_d, mach, delta, delta_err;
   double shock_layer_phi, hot_subsonic, upstream_ma_ratio, wake;
+  // Every other scene column ("scene.*"), as text: cases compared along Ma_inf must agree on
+  // all but the Mach number and the speed (the paper changes U with Ma), cases compared
+  // along D/d on all but D/d. In a sweep study (studies/future_work.toml) the phi, e, ...
+  // cases are then not mistaken for points of the Ma_inf or D/d series.
+  std::string context_for_mach, context_for_size;
 };
+
+// The scene columns of a row except those named, joined as "key=value;".
+std::string scene_context(const nlohmann::ordered_json& row,
+                          std::initializer_list<const char*> except) {
+  std::string context;
+  for (const auto& [key, value] : row.items()) {
+    if (key.rfind("scene.", 0) != 0) continue;
+    if (std::find_if(except.begin(), except.end(), [&](const char* e) { return key == e; }) !=
+        except.end())
+      continue;
+    context += key + "=" + value.dump() + ";";
+  }
+  return context;
+}
 
 std::vector<Case> finished_cases(const StudyTable& table) {
   std::vector<Case> cases;
@@ -35,7 +54,8 @@ std::vector<Case> finished_cases(const StudyTable& table) {
         {row.value("case", std::string()), number(row, "scene.D_over_d"), mach,
          number(row, "delta_over_D"), number(row, "delta_over_D_err"),
          number(row, "shock_layer_phi_mean"), number(row, "hot_region_subsonic_fraction"),
-         number(row, "upstream_ma_peak_over_ma_inf"), number(row, "wake_phi_over_phi_inf")});
+         number(row, "upstream_ma_peak_over_ma_inf"), number(row, "wake_phi_over_phi_inf"),
+         scene_context(row, {"scene.mach", "scene.U"}), scene_context(row, {"scene.D_over_d"})});
   }
   return cases;
 }
@@ -46,13 +66,17 @@ std::string with_error(double value, double error) {
                               : fmt::format("{:.3f}", value);
 }
 
-// Groups of cases sharing `key`, each sorted by `along`; only finite keys.
+// Groups of cases sharing `key` and `context`, each sorted by `along`; only finite keys.
+// Ordered by key, then context.
 template <class Key, class Along>
-std::map<double, std::vector<Case>> groups(const std::vector<Case>& cases, Key key, Along along) {
-  std::map<double, std::vector<Case>> g;
+std::map<std::pair<double, std::string>, std::vector<Case>> groups(const std::vector<Case>& cases,
+                                                                   Key key,
+                                                                   std::string Case::*context,
+                                                                   Along along) {
+  std::map<std::pair<double, std::string>, std::vector<Case>> g;
   for (const Case& c : cases)
     if (std::isfinite(key(c)) && std::isfinite(along(c)) && std::isfinite(c.delta))
-      g[key(c)].push_back(c);
+      g[{key(c), c.*context}].push_back(c);
   for (auto& [k, v] : g)
     std::sort(v.begin(), v.end(),
               [&](const Case& a, const Case& b) { return along(a) < along(b); });
@@ -65,8 +89,10 @@ StudyClaim falls_with_mach(const std::vector<Case>& cases) {
                "undetermined", ""};
   int judged = 0, holds = 0, significant = 0;
   const auto by_size = groups(
-      cases, [](const Case& x) { return x.d_over_d; }, [](const Case& x) { return x.mach; });
-  for (const auto& [d, group] : by_size) {
+      cases, [](const Case& x) { return x.d_over_d; }, &Case::context_for_mach,
+      [](const Case& x) { return x.mach; });
+  for (const auto& [key, group] : by_size) {
+    const double d = key.first;
     if (group.size() < 2) continue;
     ++judged;
     bool falls = true, clearly = true;
@@ -99,9 +125,11 @@ StudyClaim constant_in_size(const std::vector<Case>& cases) {
   StudyClaim c{"delta/D is nearly constant in D/d at fixed Ma_inf",
                "at every Ma_inf, (max - min) / mean of delta/D <= 20 %", "undetermined", ""};
   int judged = 0, holds = 0;
-  for (const auto& [ma, group] : groups(
-           cases, [](const Case& x) { return x.mach; }, [](const Case& x) { return x.d_over_d; })) {
+  for (const auto& [key, group] : groups(
+           cases, [](const Case& x) { return x.mach; }, &Case::context_for_size,
+           [](const Case& x) { return x.d_over_d; })) {
     if (group.size() < 2) continue;
+    const double ma = key.first;
     ++judged;
     double lo = HUGE_VAL, hi = -HUGE_VAL, mean = 0;
     std::string line = fmt::format("Ma {:g}:", ma);

@@ -67,6 +67,29 @@ TEST(StudyClaims, VerdictsFollowTheirCriteria) {
   EXPECT_EQ(find(failing, "delta/D is nearly constant").verdict, "does not hold");
 }
 
+// A sweep study (studies/future_work.toml): cases that differ from the base in phi_inf or
+// e are not points of the Ma_inf series, however large their delta/D. Only the Ma axis
+// (the base and the cases that change Ma alone) is judged.
+TEST(StudyClaims, SweepCasesOnOtherAxesAreNotComparedAlongMa) {
+  StudyTable t;
+  const auto with = [](nlohmann::ordered_json r, double phi, double e) {
+    r["scene.phi_inf"] = phi;
+    r["scene.restitution"] = e;
+    return r;
+  };
+  t.rows = {with(row("base", 20, 5.9, 0.30), 0.1, 0.5), with(row("Ma-9", 20, 9, 0.25), 0.1, 0.5),
+            with(row("Ma-13.7", 20, 13.7, 0.20), 0.1, 0.5),
+            with(row("phi-0.3", 20, 5.9, 0.57), 0.3, 0.5),
+            with(row("e-0.9", 20, 5.9, 0.35), 0.1, 0.9)};
+  const std::vector<StudyClaim> claims = check_paper_claims(t);
+  const StudyClaim& falls = find(claims, "delta/D falls");
+  EXPECT_EQ(falls.verdict, "holds") << falls.numbers;
+  EXPECT_EQ(falls.numbers.find("0.570"), std::string::npos) << falls.numbers;
+  EXPECT_EQ(falls.numbers.find("0.350"), std::string::npos) << falls.numbers;
+  // No two cases differ in D/d alone.
+  EXPECT_EQ(find(claims, "delta/D is nearly constant").verdict, "undetermined");
+}
+
 TEST(StudyClaims, UndeterminedWithoutTheCasesTheyNeed) {
   StudyTable t;
   t.rows = {row("only", 20, 5.9, 0.25)};
