@@ -44,21 +44,7 @@ nlohmann::json restitution_calibration_summary(const Scene& s) {
   SolverSetup setup = s.setup;
   const RestitutionCalibration c = apply_restitution_mode(setup);
   nlohmann::json pairs = nlohmann::json::object();
-  for (const PairCalibration& p : c.pairs) {
-    nlohmann::json at_speeds = nlohmann::json::array();
-    for (std::size_t k = 0; k < p.speed_residuals.size(); ++k)
-      at_speeds.push_back(
-          {{"speed", kResidualSpeedFactors[k] * c.speed}, {"e_eff_minus_e", p.speed_residuals[k]}});
-    pairs[p.pair] = {{"e", p.restitution},
-                     {"beta_continuous", p.beta_continuous},
-                     {"beta", p.beta},
-                     {"dt_over_tc", p.dt_over_tc},
-                     {"e_eff_continuous", p.e_eff_continuous},
-                     {"e_eff", p.e_eff},
-                     {"e_eff_phase_min", p.phase_min},
-                     {"e_eff_phase_max", p.phase_max},
-                     {"residual_over_speed", at_speeds}};
-  }
+  for (const PairCalibration& p : c.pairs) pairs[p.pair] = to_json(p, c.speed);
   return {{"mode", to_string(s.setup.contacts.restitution_mode)},
           {"speed", c.speed},
           {"dt", c.dt},

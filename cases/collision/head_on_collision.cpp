@@ -82,13 +82,13 @@ std::vector<std::string> collision_pair_names() {
 
 CollisionResult collide_species(const SolverSetup& scene, int a, int b, double speed, double dt,
                                 bool force, double phase) {
-  PairProperties props =
-      b < 0 ? particle_obstacle(
-                  scene.species[a], scene.obstacle ? scene.obstacle->material : aluminium(),
-                  scene.contacts.obstacle_restitution[a], scene.contacts.obstacle_friction[a])
-            : scene.pair(a, b);
-  if (b < 0 && !scene.contacts.obstacle_calibrated_beta.empty())
-    props.beta = scene.contacts.obstacle_calibrated_beta[a];
+  // A scene without an obstacle collides with an aluminium cylinder (build()).
+  const PairProperties props =
+      b >= 0 ? scene.pair(a, b)
+      : scene.obstacle
+          ? scene.obstacle_pair(a)
+          : particle_obstacle(scene.species[a], aluminium(), scene.contacts.obstacle_restitution[a],
+                              scene.contacts.obstacle_friction[a]);
   CollisionResult r;
   r.pair = props.name;
   r.speed = speed;
@@ -214,6 +214,23 @@ CollisionResult run_head_on_collision(const CollisionOptions& o) {
   return r;
 }
 
+nlohmann::json to_json(const PairCalibration& c, double calibration_speed) {
+  nlohmann::json residuals = nlohmann::json::array();
+  for (std::size_t k = 0; k < c.speed_residuals.size(); ++k)
+    residuals.push_back({{"speed", kResidualSpeedFactors[k] * calibration_speed},
+                         {"e_eff_minus_e", c.speed_residuals[k]}});
+  return {{"e", c.restitution},
+          {"beta_continuous", c.beta_continuous},
+          {"beta", c.beta},
+          {"dt_over_tc", c.dt_over_tc},
+          {"phases", kCalibrationPhases},
+          {"e_eff_continuous", c.e_eff_continuous},
+          {"e_eff", c.e_eff},
+          {"e_eff_phase_min", c.phase_min},
+          {"e_eff_phase_max", c.phase_max},
+          {"residual_over_speed", residuals}};
+}
+
 std::string to_json(const CollisionResult& r) {
   nlohmann::json j;
   j["pair"] = r.pair;
@@ -238,20 +255,7 @@ std::string to_json(const CollisionResult& r) {
   j["phase"] = r.phase;
   j["beta"] = r.beta;
   j["restitution_mode"] = r.calibration ? "discrete" : "continuous";
-  if (r.calibration) {
-    const PairCalibration& c = *r.calibration;
-    nlohmann::json residuals = nlohmann::json::array();
-    for (std::size_t k = 0; k < c.speed_residuals.size(); ++k)
-      residuals.push_back(
-          {{"speed", kResidualSpeedFactors[k] * r.speed}, {"e_eff_minus_e", c.speed_residuals[k]}});
-    j["calibration"] = {{"beta_continuous", c.beta_continuous},
-                        {"phases", kCalibrationPhases},
-                        {"e_eff_phase_averaged", c.e_eff},
-                        {"e_eff_phase_averaged_continuous", c.e_eff_continuous},
-                        {"e_eff_phase_min", c.phase_min},
-                        {"e_eff_phase_max", c.phase_max},
-                        {"residual_over_speed", residuals}};
-  }
+  if (r.calibration) j["calibration"] = to_json(*r.calibration, r.speed);
   return j.dump(2);
 }
 

@@ -4,6 +4,7 @@
 // restitution, the contact duration and the peak overlap.
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -64,5 +65,8 @@ CollisionResult run_head_on_collision(const CollisionOptions& options);
 CollisionResult collide_species(const SolverSetup& setup, int a, int b, double speed, double dt,
                                 bool force, double phase = 1.0);
 std::string to_json(const CollisionResult& r);
+// One pair's damping calibration (restitution_calibration.hpp), as `collide` and
+// summary.json's `restitution_calibration` print it.
+nlohmann::json to_json(const PairCalibration& calibration, double calibration_speed);
 
 }  // namespace granshock

@@ -50,12 +50,30 @@ double discrete_restitution(ContactModelKind model, const PairProperties& p,
       model, [&](auto law) { return one_impact<decltype(law)>(p, o, dt, speed, phase); });
 }
 
+namespace {
+
+struct OverPhases {
+  double mean = 0, min = INFINITY, max = -INFINITY;
+};
+
+OverPhases over_phases(ContactModelKind model, const PairProperties& p, const ContactOptions& o,
+                       double dt, double speed) {
+  OverPhases r;
+  for (int k = 0; k < kCalibrationPhases; ++k) {
+    const double e = discrete_restitution(model, p, o, dt, speed, (k + 0.5) / kCalibrationPhases);
+    r.mean += e;
+    r.min = std::min(r.min, e);
+    r.max = std::max(r.max, e);
+  }
+  r.mean /= kCalibrationPhases;
+  return r;
+}
+
+}  // namespace
+
 double phase_averaged_restitution(ContactModelKind model, const PairProperties& p,
                                   const ContactOptions& o, double dt, double speed) {
-  double sum = 0;
-  for (int k = 0; k < kCalibrationPhases; ++k)
-    sum += discrete_restitution(model, p, o, dt, speed, (k + 0.5) / kCalibrationPhases);
-  return sum / kCalibrationPhases;
+  return over_phases(model, p, o, dt, speed).mean;
 }
 
 PairCalibration calibrate_pair(ContactModelKind model, const PairProperties& requested,
@@ -86,14 +104,10 @@ PairCalibration calibrate_pair(ContactModelKind model, const PairProperties& req
   }
   c.beta = 0.5 * (lo + hi);
   p.beta = c.beta;
-  c.e_eff = e_at(c.beta);
-  c.phase_min = INFINITY;
-  c.phase_max = -INFINITY;
-  for (int k = 0; k < kCalibrationPhases; ++k) {
-    const double e = discrete_restitution(model, p, o, dt, speed, (k + 0.5) / kCalibrationPhases);
-    c.phase_min = std::min(c.phase_min, e);
-    c.phase_max = std::max(c.phase_max, e);
-  }
+  const OverPhases calibrated = over_phases(model, p, o, dt, speed);
+  c.e_eff = calibrated.mean;
+  c.phase_min = calibrated.min;
+  c.phase_max = calibrated.max;
   for (double f : kResidualSpeedFactors)
     c.speed_residuals.push_back(phase_averaged_restitution(model, p, o, dt, f * speed) -
                                 c.restitution);

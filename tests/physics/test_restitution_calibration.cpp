@@ -43,29 +43,33 @@ struct PhaseAverage {
   double reported_average = 0;  // the calibration's own phase average
 };
 
+// The pair of `o` with the paper's materials, as the reduced integrator needs it.
+PairProperties paper_pair(const CollisionOptions& o) {
+  SolverSetup paper;
+  paper.species = {{"steel", steel(), 1e-3}, {"aluminium", aluminium(), 1e-3}};
+  paper.contacts = ContactSettings::uniform(2, o.restitution, 0.0);
+  paper.obstacle = Obstacle{ObstacleShape::cylinder, {0, 0, 0}, 1e-2, aluminium()};
+  const auto dash = o.pair.find('-');
+  const int i = o.pair.substr(0, dash) == "steel" ? 0 : 1;
+  const std::string second = o.pair.substr(dash + 1);
+  return second == "obstacle" ? paper.obstacle_pair(i) : paper.pair(i, second == "steel" ? 0 : 1);
+}
+
 // Runs the solver at every calibration phase with the mode and dt of `o`.
 PhaseAverage over_phases(CollisionOptions o) {
   PhaseAverage a;
+  ContactOptions options;
+  options.characteristic_velocity_m_per_s = o.speed_m_per_s;
+  PairProperties props = paper_pair(o);
   for (int k = 0; k < kCalibrationPhases; ++k) {
     o.phase = (k + 0.5) / kCalibrationPhases;
     const CollisionResult r = run_head_on_collision(o);
     a.solver += r.e_eff / kCalibrationPhases;
     if (r.calibration) a.reported_average = r.calibration->e_eff;
     // The same impact in the reduced integrator, with the damping the solver ran with.
-    SolverSetup paper;
-    paper.species = {{"steel", steel(), 1e-3}, {"aluminium", aluminium(), 1e-3}};
-    paper.contacts = ContactSettings::uniform(2, o.restitution, 0.0);
-    paper.contacts.model = o.model;
-    paper.contacts.options.characteristic_velocity_m_per_s = o.speed_m_per_s;
-    paper.obstacle = Obstacle{ObstacleShape::cylinder, {0, 0, 0}, 1e-2, aluminium()};
-    const auto dash = o.pair.find('-');
-    const int i = o.pair.substr(0, dash) == "steel" ? 0 : 1;
-    const std::string second = o.pair.substr(dash + 1);
-    PairProperties props =
-        second == "obstacle" ? paper.obstacle_pair(i) : paper.pair(i, second == "steel" ? 0 : 1);
     props.beta = r.beta;
-    const double reduced = discrete_restitution(o.model, props, paper.contacts.options, r.dt,
-                                                o.speed_m_per_s, o.phase);
+    const double reduced =
+        discrete_restitution(o.model, props, options, r.dt, o.speed_m_per_s, o.phase);
     a.worst_mismatch = std::max(a.worst_mismatch, std::abs(reduced - r.e_eff));
   }
   return a;
