@@ -197,7 +197,7 @@ Detachment measure_detachment(const BinSums& profile, const FieldPhysics& phys, 
   DetachmentSearch search;
   search.y_begin = y_search_begin;
   search.rule = rule;
-  return measure_detachment(profile, phys, {phi_up, kNaN}, search,
+  return measure_detachment(profile, phys, UpstreamValues{phi_up}, search,
                             FrontDefinition::density_threshold);
 }
 

@@ -124,7 +124,7 @@ FieldAnalysis analyse_fields(const Scene& scene, BinSums grid, std::optional<Bin
   search.rule = o.threshold;
   search.mask = o.mask;
   search.bootstrap_resamples = o.bootstrap_resamples;
-  const UpstreamValues upstream{a.phi_up, a.upstream_downstream.temperature};
+  const UpstreamValues upstream{a.phi_up};
   a.detachments = measure_detachments(a.profile, phys, upstream, search);
   const std::string coarse_axis = a.profile_from_grid ? axis_column_reason(a.grid, phys) : "";
   if (!coarse_axis.empty()) {

@@ -59,13 +59,14 @@ FlowFeatures measure_flow_features(const FieldAnalysis& a) {
     else
       f.upstream_ma_peak_over_inf = ma_peak / ma_inf;
 
-    // The hot region on the stagnation strip: the bins from the search start to the surface
-    // at or above the primary front's threshold, T_up + 1/2 (T_peak - T_up).
+    // The hot region on the stagnation strip: the bins from the front to the surface at or
+    // above the primary front's threshold, T_min + 1/2 (T_peak - T_min). The inflow near the
+    // inlet, before it cools, may be as hot and does not count.
     int subsonic = 0;
     for (int k = 0; k < a.profile.ny; ++k) {
       const std::size_t i = static_cast<std::size_t>(k);
       const double y = a.profile.y_centre(k);
-      if (y < y_begin || y > front.surface || line.masked[i] ||
+      if (y < front.y_shock || y > front.surface || line.masked[i] ||
           !(line.temperature[i] >= front.threshold))
         continue;
       ++f.hot_bins;

@@ -4,8 +4,8 @@
 //     between the primary front and the surface (its largest value is no measure: rows of
 //     0.5 d against the wall hold whole layers of particle centres, phi up to pi/2);
 //   - "the hot region behind the shock is subsonic and enveloped by the sonic line": of the
-//     stagnation strip's bins hotter than the primary front's threshold, the fraction with
-//     Ma < 1;
+//     stagnation strip's bins between the primary front and the surface at or above its
+//     threshold, the fraction with Ma < 1;
 //   - "the local Ma upstream of the shock exceeds Ma_inf because the gas cools": the largest
 //     Ma on the stagnation strip between the search start and the primary front, over the
 //     measured Ma_inf at the inlet;

@@ -26,6 +26,7 @@ FrontCrossing find_front_crossing(const std::vector<double>& phi, const std::vec
   if (c.peak_index < 0) return c;
   c.why = NoFront::jump_too_small;
   if (!(c.phi_peak >= rule.min_jump_ratio * phi_up)) return c;
+  c.base = phi_up;
   c.threshold = phi_up + rule.fraction * (c.phi_peak - phi_up);
   c.why = NoFront::masked_before_peak;
   for (int k = begin; k <= c.peak_index; ++k)
@@ -60,6 +61,46 @@ FrontCrossing find_front_crossing(const std::vector<double>& phi, const std::vec
   return c;
 }
 
+FrontCrossing find_largest_rise(const std::vector<double>& values, const std::vector<double>& y,
+                                int begin, int end, const ThresholdRule& rule) {
+  if (values.size() != y.size())
+    throw std::invalid_argument("find_largest_rise: values and y differ in length");
+  FrontCrossing c;
+  begin = std::max(begin, 0);
+  end = std::min(end, static_cast<int>(values.size()));
+  if (end - begin < 2) return c;
+  // One pass downstream with the running minimum: the largest rise ends at the bin whose
+  // value exceeds the smallest value before it by most.
+  int lowest = -1, rise_from = -1;
+  double rise = 0;
+  for (int k = begin; k < end; ++k) {
+    if (!std::isfinite(values[k])) continue;
+    if (lowest >= 0 && values[k] - values[lowest] > rise) {
+      rise = values[k] - values[lowest];
+      rise_from = lowest;
+      c.peak_index = k;
+    }
+    if (lowest < 0 || values[k] < values[lowest]) lowest = k;
+  }
+  c.why = lowest < 0 ? NoFront::all_masked : NoFront::no_rise;
+  if (c.peak_index < 0) return c;
+  c.base = values[rise_from];
+  c.phi_peak = values[c.peak_index];
+  c.why = NoFront::rise_too_small;
+  if (!(c.phi_peak >= rule.min_jump_ratio * c.base)) return c;
+  c.why = NoFront::masked_before_peak;
+  for (int k = rise_from; k <= c.peak_index; ++k)
+    if (!std::isfinite(values[k])) return c;
+  c.threshold = c.base + rule.fraction * (c.phi_peak - c.base);
+  int k = c.peak_index;
+  while (values[k - 1] >= c.threshold) --k;  // stops at rise_from + 1 at the latest
+  const double t = (c.threshold - values[k - 1]) / (values[k] - values[k - 1]);
+  c.y_threshold = y[k - 1] + t * (y[k] - y[k - 1]);
+  c.found = true;
+  c.why = NoFront::none;
+  return c;
+}
+
 std::string describe(NoFront why, const FrontCrossing& c, double phi_up, const ThresholdRule& rule,
                      const std::string& quantity) {
   const char* q = quantity.c_str();
@@ -80,6 +121,12 @@ std::string describe(NoFront why, const FrontCrossing& c, double phi_up, const T
     case NoFront::masked_before_peak:
       return "a masked bin (too few particle samples) lies between the search start and the "
              "peak";
+    case NoFront::no_rise:
+      return quantity + " nowhere rises along the searched bins";
+    case NoFront::rise_too_small:
+      std::snprintf(text, sizeof text, "%s rises at most from %.3g to %.3g, less than %.3g-fold", q,
+                    c.base, c.phi_peak, rule.min_jump_ratio);
+      return text;
     case NoFront::above_threshold_first:
       std::snprintf(text, sizeof text,
                     "%s is already above the threshold %.3g where the search starts", q,

@@ -25,13 +25,16 @@ enum class NoFront {
   jump_too_small,         // phi_peak < min_jump_ratio phi_up
   masked_before_peak,     // a masked (NaN) bin between the start and the peak
   above_threshold_first,  // phi already at or above the threshold where the search starts
+  no_rise,                // the values only fall along the searched bins
+  rise_too_small,         // the largest rise ends below min_jump_ratio times its start
 };
 
 struct FrontCrossing {
   bool found = false;
   NoFront why = NoFront::too_few_bins;
-  double threshold = 0;  // phi_up + fraction (phi_peak - phi_up)
-  double phi_peak = 0;   // max phi over the searched bins
+  double base = 0;       // where the rise starts from: phi_up, or the largest rise's start
+  double threshold = 0;  // base + fraction (phi_peak - base)
+  double phi_peak = 0;   // max phi over the searched bins (the largest rise's top)
   int peak_index = -1;
   double y_threshold = 0;  // linear interpolation between the two bins around the crossing
   double y_max_gradient =
@@ -47,6 +50,18 @@ struct FrontCrossing {
 // already above the threshold at `begin`, or when a NaN lies between `begin` and the peak.
 FrontCrossing find_front_crossing(const std::vector<double>& phi, const std::vector<double>& y,
                                   int begin, int end, double phi_up, const ThresholdRule& rule);
+
+// The half-rise of the largest rise along a line, for a quantity that may fall ahead of the
+// front and be larger far upstream than at the front: the temperature, which the inflow
+// loses to inelastic collisions on its way to the shock (docs/fields.md, section 6). The
+// rise is the pair of bins i < j in [begin, end) that maximises values[j] - values[i]; its
+// base is values[i], its peak values[j], the threshold base + fraction (peak - base), and the
+// crossing the upstream edge of the run of bins at or above the threshold that ends at the
+// peak: walking back from j, the first k with values[k - 1] < threshold <= values[k],
+// interpolated linearly. Not found when nothing rises, when peak < min_jump_ratio base, or
+// when a NaN lies between i and j. No maximum gradient is measured.
+FrontCrossing find_largest_rise(const std::vector<double>& values, const std::vector<double>& y,
+                                int begin, int end, const ThresholdRule& rule);
 
 // One clause saying why there is no front, e.g. "the largest phi (0.12) is below 1.5 phi_up";
 // `quantity` names what was searched (the rule also serves the temperature).

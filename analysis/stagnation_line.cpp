@@ -47,21 +47,17 @@ FrontFix sonic_point(const StagnationLine& line, int begin, int end) {
   return f;
 }
 
-// The threshold rule (front_crossing.hpp) on one quantity; `what` names it in reasons.
-FrontFix crossing_of(const std::vector<double>& values, const StagnationLine& line, int begin,
-                     int end, double upstream, const ThresholdRule& rule, bool max_gradient,
-                     const char* what) {
-  const FrontCrossing c = find_front_crossing(values, line.y, begin, end, upstream, rule);
+// A front from one crossing (front_crossing.hpp); `what` names the quantity in reasons.
+FrontFix fix_of(const FrontCrossing& c, double upstream, const ThresholdRule& rule,
+                bool max_gradient, const char* what) {
   FrontFix f;
   f.peak = c.peak_index >= 0 ? c.phi_peak : kNaN;
   f.threshold = c.found ? c.threshold : kNaN;
   f.found = c.found;
-  if (c.found) {
+  if (c.found)
     f.y = max_gradient ? c.y_max_gradient : c.y_threshold;
-    return f;
-  }
-  const std::string why = describe(c.why, c, upstream, rule, what);
-  f.why = why;
+  else
+    f.why = describe(c.why, c, upstream, rule, what);
   return f;
 }
 }  // namespace
@@ -108,12 +104,12 @@ FrontFix locate_front(FrontDefinition definition, const StagnationLine& line, in
   }
   switch (definition) {
     case FrontDefinition::temperature_jump:
-      return crossing_of(line.temperature, line, begin, end, upstream.temperature, rule, false,
-                         "T");
+      return fix_of(find_largest_rise(line.temperature, line.y, begin, end, rule), kNaN, rule,
+                    false, "T");
     case FrontDefinition::density_threshold:
-      return crossing_of(line.phi, line, begin, end, upstream.phi, rule, false, "phi");
     case FrontDefinition::density_max_gradient:
-      return crossing_of(line.phi, line, begin, end, upstream.phi, rule, true, "phi");
+      return fix_of(find_front_crossing(line.phi, line.y, begin, end, upstream.phi, rule),
+                    upstream.phi, rule, definition == FrontDefinition::density_max_gradient, "phi");
     case FrontDefinition::sonic_line:
       return sonic_point(line, begin, end);
   }

@@ -1,8 +1,10 @@
 // The stagnation line: the fields along one strip of the stagnation-line profile and the
 // four definitions of where the shock front crosses it (docs/fields.md, section 6):
-//   temperature_jump      T first reaches T_up + 1/2 (T_peak - T_up), searched from upstream:
-//                         the upstream edge of the hot region, which the paper places
-//                         "between the shock front and the obstacle" (primary);
+//   temperature_jump      the half-rise of the largest rise of T along the line, T_min to
+//                         T_peak, walking back from the peak: the upstream edge of the hot
+//                         region, which the paper places "between the shock front and the
+//                         obstacle" (primary); the inflow cools on its way to the shock, so
+//                         the rise starts from the cooled gas, not from the inlet's T_up;
 //   density_threshold     phi first reaches phi_up + 1/2 (phi_peak - phi_up);
 //   density_max_gradient  the steepest rise of phi upstream of its peak;
 //   sonic_line            Ma first falls below 1 (the sonic line "just behind the front").
@@ -33,10 +35,10 @@ inline constexpr std::array<FrontDefinition, 4> kFrontDefinitions = {
 inline constexpr FrontDefinition kPrimaryFront = FrontDefinition::temperature_jump;
 const char* name(FrontDefinition definition);  // "temperature_jump", ...
 
-// The measured state ahead of the shock (the grid rows beyond the strip).
+// The measured state ahead of the shock (the grid rows beyond the strip): the density
+// definitions rise from it.
 struct UpstreamValues {
   double phi = 0;
-  double temperature = 0;
 };
 
 // One column's fields, bin by bin upstream to downstream; masked bins hold NaN (phi too).
