@@ -92,8 +92,8 @@ FrontCrossing find_largest_rise(const std::vector<double>& values, const std::ve
   for (int k = rise_from; k <= c.peak_index; ++k)
     if (!std::isfinite(values[k])) return c;
   c.threshold = c.base + rule.fraction * (c.phi_peak - c.base);
-  int k = c.peak_index;
-  while (values[k - 1] >= c.threshold) --k;  // stops at rise_from + 1 at the latest
+  int k = rise_from + 1;
+  while (values[k] < c.threshold) ++k;  // stops at the peak at the latest
   const double t = (c.threshold - values[k - 1]) / (values[k] - values[k - 1]);
   c.y_threshold = y[k - 1] + t * (y[k] - y[k - 1]);
   c.found = true;

@@ -56,10 +56,11 @@ FrontCrossing find_front_crossing(const std::vector<double>& phi, const std::vec
 // loses to inelastic collisions on its way to the shock (docs/fields.md, section 6). The
 // rise is the pair of bins i < j in [begin, end) that maximises values[j] - values[i]; its
 // base is values[i], its peak values[j], the threshold base + fraction (peak - base), and the
-// crossing the upstream edge of the run of bins at or above the threshold that ends at the
-// peak: walking back from j, the first k with values[k - 1] < threshold <= values[k],
-// interpolated linearly. Not found when nothing rises, when peak < min_jump_ratio base, or
-// when a NaN lies between i and j. No maximum gradient is measured.
+// crossing the first bin k in (i, j] with values[k] >= threshold, interpolated linearly
+// from k - 1: searched downstream from the rise's start, so warmer gas upstream of the
+// start does not count, nor does a dip below the threshold inside the hot layer. Not found
+// when nothing rises, when peak < min_jump_ratio base, or when a NaN lies between i and j.
+// No maximum gradient is measured.
 FrontCrossing find_largest_rise(const std::vector<double>& values, const std::vector<double>& y,
                                 int begin, int end, const ThresholdRule& rule);
 

@@ -1,7 +1,7 @@
 // The stagnation line: the fields along one strip of the stagnation-line profile and the
 // four definitions of where the shock front crosses it (docs/fields.md, section 6):
 //   temperature_jump      the half-rise of the largest rise of T along the line, T_min to
-//                         T_peak, walking back from the peak: the upstream edge of the hot
+//                         T_peak, searched downstream from T_min: the upstream edge of the hot
 //                         region, which the paper places "between the shock front and the
 //                         obstacle" (primary); the inflow cools on its way to the shock, so
 //                         the rise starts from the cooled gas, not from the inlet's T_up;

@@ -182,12 +182,11 @@ TEST_P(FrontDefinitions, TemperatureRisesFromTheCooledGasNotTheWarmInlet) {
 }
 
 // The largest rise on plain lines of bins (analysis/front_crossing.hpp).
-TEST(LargestRise, HalfRiseOfTheLargestRiseWalkingBackFromItsPeak) {
+TEST(LargestRise, HalfRiseOfTheLargestRiseSearchedFromItsStart) {
   const std::vector<double> y = {0, 1, 2, 3, 4, 5, 6, 7, 8};
   const ThresholdRule rule;
-  // Warm start, cooling, a bump above the threshold (6 at y = 3) that the walk back from the
-  // peak does not reach, then the jump from 1 to 9: threshold 5, crossed between y = 6 (3)
-  // and 7 (9).
+  // Warm start, cooling, a bump above the threshold (6 at y = 3) upstream of the coldest
+  // point, then the jump from 1 to 9: threshold 5, crossed between y = 6 (3) and 7 (9).
   const std::vector<double> t = {8, 6, 2, 6, 1, 1, 3, 9, 7};
   const FrontCrossing c = find_largest_rise(t, y, 0, 9, rule);
   ASSERT_TRUE(c.found) << describe(c.why, c, 0, rule, "T");
@@ -201,6 +200,12 @@ TEST(LargestRise, HalfRiseOfTheLargestRiseWalkingBackFromItsPeak) {
       find_largest_rise({8, 1, 1, 6, 6, 9, 2}, {0, 1, 2, 3, 4, 5, 6}, 0, 7, rule);
   ASSERT_TRUE(plateau.found);
   EXPECT_DOUBLE_EQ(plateau.y_threshold, 2 + 4.0 / 5);
+  // A dip below the threshold inside the hot layer (4 at y = 4) does not move the front to
+  // the dip's downstream side.
+  const FrontCrossing dip =
+      find_largest_rise({8, 1, 1, 7, 4, 9, 2}, {0, 1, 2, 3, 4, 5, 6}, 0, 7, rule);
+  ASSERT_TRUE(dip.found);
+  EXPECT_DOUBLE_EQ(dip.y_threshold, 2 + 4.0 / 6);
 }
 
 TEST(LargestRise, SaysWhyThereIsNone) {
