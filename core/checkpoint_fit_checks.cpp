@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "checkpoint_check_support.hpp"
+#include "contact_settings.hpp"
 
 namespace granshock {
 
@@ -64,6 +65,35 @@ void check_fit(const SolverState& s, const SolverFit& fit) {
   if (fit.history_slots > 0) check_spring_lengths(s, fit);
 }
 
+// The contact law's range (contact_settings.hpp): a state in which two particles overlap
+// by more than kOverlapRefuse of the smaller diameter, or a centre lies inside the obstacle,
+// was not made by the solver (insertion places no particle on another or in the keep-out
+// zone; docs/stability.md), and resuming it would fling the particles apart.
+template <class Distance>
+void check_contact_range(const SolverState& s, const SolverFit& fit, std::size_t i,
+                         const Distance& distance) {
+  const std::size_t dim = std::size_t(s.dim);
+  const double ri = fit.radius[std::size_t(s.species[i])];
+  for (int k = s.neighbour_offsets[i]; k < s.neighbour_offsets[i + 1]; ++k) {
+    const std::size_t j = std::size_t(s.neighbours[std::size_t(k)]);
+    const double rj = fit.radius[std::size_t(s.species[j])];
+    const double overlap = (ri + rj - distance(i, j)) / (2 * std::min(ri, rj));
+    if (overlap > kOverlapRefuse)
+      fail(
+          fmt::format("particles {} and {} overlap by {:.3g} of a diameter, past the contact "
+                      "law's range ({}): the state was not made by the solver",
+                      s.id[i], s.id[j], overlap, kOverlapRefuse));
+  }
+  if (!fit.obstacle) return;
+  const double dx = s.position[i * dim] - fit.obstacle->centre[0];
+  const double dy = s.position[i * dim + 1] - fit.obstacle->centre[1];
+  if (std::sqrt(dx * dx + dy * dy) < 0.5 * fit.obstacle->diameter_m)
+    fail(
+        fmt::format("particle {} lies inside the obstacle (its centre {:.3g} m from the axis, "
+                    "radius {:.3g} m): the state was not made by the solver",
+                    s.id[i], std::sqrt(dx * dx + dy * dy), 0.5 * fit.obstacle->diameter_m));
+}
+
 void check_contacts(const SolverState& s, const SolverFit& fit) {
   const std::size_t dim = std::size_t(s.dim), slots = std::size_t(s.history_slots);
   const double r_max = largest(fit.radius);
@@ -84,6 +114,7 @@ void check_contacts(const SolverState& s, const SolverFit& fit) {
     return false;
   };
   for (std::size_t i = 0; i < s.size(); ++i) {
+    check_contact_range(s, fit, i, distance);
     // Near a face the last force may come from a partner deleted since (open axis) or
     // from the obstacle seen across the wrap (periodic axis): no conclusion there.
     bool near_face = false;

@@ -14,6 +14,13 @@ enum class ContactModelKind { hertz, hooke };
 ContactModelKind parse_contact_model(const std::string& name);  // "hertz" | "hooke"
 std::string to_string(ContactModelKind model);
 
+// The range of the contact laws, as overlap over the pair's smaller diameter
+// (docs/contact_model.md): past kOverlapWarn they lose accuracy; past kOverlapRefuse the
+// particles nearly pass through each other, and the law has no meaning. The time-step
+// guard applies them to the fastest impact, the checkpoint checks to a stored state.
+inline constexpr double kOverlapWarn = 0.05;
+inline constexpr double kOverlapRefuse = 0.2;
+
 // What a contact law takes besides the pair's materials and restitution.
 struct ContactOptions {
   // Clamp Fn >= 0 (no attraction at the end of a contact). Off by default, as in

@@ -25,6 +25,10 @@ struct Diagnostics {
   long contacts = 0;             // particle pairs plus particle-obstacle contacts
   std::array<double, 3> momentum{0, 0, 0};
   long non_finite = 0;  // particles with a NaN or infinite position or velocity
+  // Particles whose centre lies inside the obstacle: a contact keeps a centre at least
+  // R + r - (the largest overlap, 0.2 d: docs/contact_model.md) from the axis, so one
+  // there was pushed through the surface (docs/stability.md).
+  long inside_obstacle = 0;
 
   double total_energy() const { return kinetic_energy + rotational_energy + elastic_energy; }
 };

@@ -240,6 +240,17 @@ void BowShockRun::write_series_row(long step) {
   row.deleted_outlet = removed.high[1];
   row.deleted_inlet = removed.low[1];
   run_file_->append_time_series(row);
+  if (!warned_energy_) {
+    const std::string energy =
+        energy_warning(scene_, row.kinetic_energy, solver_->size(), row.time);
+    warned_energy_ = !energy.empty();
+    if (warned_energy_) std::cerr << "granshock: warning: " << energy << "\n";
+  }
+  if (!warned_backflow_) {
+    const std::string backflow = inlet_backflow_warning(row.deleted_inlet, row.inserted, row.time);
+    warned_backflow_ = !backflow.empty();
+    if (warned_backflow_) std::cerr << "granshock: warning: " << backflow << "\n";
+  }
 }
 
 void BowShockRun::write_snapshot(long step) {

@@ -66,6 +66,8 @@ class BowShockRun {
   std::optional<ProgressMeter> meter_;
   std::optional<RunDirectory> run_directory_;
   bool warned_inflow_ = false;
+  bool warned_backflow_ = false;  // particles leaving through the inlet (run_observables.hpp)
+  bool warned_energy_ = false;    // energy created by the integration (run_observables.hpp)
   std::optional<InletCalibration> calibration_;
 };
 

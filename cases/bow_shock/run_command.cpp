@@ -1,5 +1,7 @@
 #include "run_command.hpp"
 
+#include <fmt/format.h>
+
 #include <iostream>
 
 #include "bow_shock_run.hpp"
@@ -28,6 +30,11 @@ RunCheck check_run(const RunOptions& o) {
                                    : o.overwrite ? DirectoryMode::overwrite
                                                  : DirectoryMode::create);
   c.resolved_scene = loaded.resolved;
+  const TimeStepAssessment guard = assess_time_step(loaded.scene);
+  c.time_step = fmt::format(
+      "time.dt = {:.4g} s is {:.3g} t_c ({} at {:.3g} m/s, t_c = {:.4g} s); stable limit {:.4g} s",
+      guard.dt, guard.dt_over_tc(), guard.stiffest_pair, guard.impact_speed, guard.t_c,
+      guard.dt_stable);
   c.calibrates_inflow = loaded.scene.inflow.mach_at == MachReference::inlet_bins;
   return c;
 }
@@ -40,7 +47,7 @@ int run_scene(const RunOptions& o) {
     if (c.calibrates_inflow)
       std::cout << "# inflow.mach_at = \"inlet_bins\": the run calibrates sigma before it "
                    "starts; the sigma below is its first guess\n";
-    std::cout << c.resolved_scene;
+    std::cout << "# " << c.time_step << "\n" << c.resolved_scene;
     return 0;
   }
   BowShockRun run(o, load_scene_file(o.scene_file, o.overrides));

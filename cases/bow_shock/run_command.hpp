@@ -33,6 +33,7 @@ struct RunCheck {
   std::filesystem::path directory;
   std::vector<std::string> warnings;
   bool calibrates_inflow = false;  // inflow.mach_at = "inlet_bins"
+  std::string time_step;           // dt against t_c and the guard's stable limit, one line
 };
 RunCheck check_run(const RunOptions& options);
 

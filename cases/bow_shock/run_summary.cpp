@@ -86,6 +86,8 @@ nlohmann::json run_summary(const Scene& s, const Solver& solver, const InflowCon
   j["deleted"] = removed.total();
   j["deleted_outlet"] = removed.high[1];
   j["deleted_inlet"] = removed.low[1];
+  j["inlet_backflow_fraction"] =
+      inflow.inserted() > 0 ? double(removed.low[1]) / double(inflow.inserted()) : 0.0;
   j["dt"] = s.setup.dt;
   j["t_c"] = guard.t_c;
   j["dt_over_tc"] = guard.dt_over_tc();

@@ -55,16 +55,15 @@ TimeStepAssessment assess_time_step(const std::vector<PairProperties>& pairs,
 TimeStepAssessment assess_time_step(const SolverSetup& setup, double impact_speed);
 
 // Whether the contact law stays in its range at the fastest impact: a warning past
-// kOverlapWarn of the pair's smaller diameter, a refusal past kOverlapRefuse, where the
-// particles would nearly pass through each other (docs/contact_model.md).
+// kOverlapWarn of the pair's smaller diameter, a refusal past kOverlapRefuse
+// (contact_settings.hpp), where the particles would nearly pass through each other
+// (docs/contact_model.md).
 struct OverlapAssessment {
   TimeStepAssessment::Verdict verdict = TimeStepAssessment::Verdict::ok;
   std::string pair;           // the pair with the largest relative overlap
   double overlap_over_d = 0;  // its peak overlap / smaller diameter
   std::string message;        // empty when ok
 };
-inline constexpr double kOverlapWarn = 0.05;
-inline constexpr double kOverlapRefuse = 0.2;
 OverlapAssessment assess_overlap(const std::vector<PairProperties>& pairs, ContactModelKind model,
                                  const ContactOptions& options, double impact_speed);
 OverlapAssessment assess_overlap(const SolverSetup& setup, double impact_speed);

@@ -105,11 +105,16 @@ struct SolverDiagnostics {
           Vec<Dim, Real> n;
           if (obstacle_.touches(xi, ri, dn, n)) acc += 1;
         }));
+    out.inside_obstacle = long(sum(
+        "diag::inside_obstacle", KOKKOS_LAMBDA(const int i, double& acc) {
+          acc += obstacle_.keeps_out(x(i, 0), x(i, 1), Real(0)) ? 1.0 : 0.0;
+        }));
     out.kinetic_energy = comm.sum(out.kinetic_energy);
     out.rotational_energy = comm.sum(out.rotational_energy);
     out.elastic_energy = comm.sum(out.elastic_energy);
     out.contacts = comm.sum(out.contacts);
     out.non_finite = comm.sum(out.non_finite);
+    out.inside_obstacle = comm.sum(out.inside_obstacle);
     for (double& m : out.momentum) m = comm.sum(m);
     return out;
   }

@@ -212,6 +212,18 @@ TEST(CheckpointChecks, StateAgainstTheSolver) {
          x.s.history_spring[0] = 0;
        },
        "lacks particle 1"},
+      // Issue 11, the extremes: particles overlapping by 0.3 d, and a centre inside the
+      // obstacle, are states the solver cannot have made.
+      {"overlap past the contact law's range", [](Sample& x) { x.s.position[2] = 0.0107; },
+       "particles 0 and 1 overlap by 0.3 of a diameter, past the contact law's range (0.2)"},
+      {"centre inside the obstacle",
+       [](Sample& x) {
+         Obstacle o;
+         o.centre = {0.030, 0.0405, 0};
+         o.diameter_m = 0.004;
+         x.fit.obstacle = o;
+       },
+       "particle 2 lies inside the obstacle"},
   });
 }
 

@@ -9,30 +9,18 @@
 #include "checkpoint_file.hpp"
 #include "run_command.hpp"
 #include "run_file.hpp"
+#include "run_helpers.hpp"
 #include "scene_fixtures.hpp"
 #include "user_error.hpp"
 
 using namespace granshock;
+using granshock::testing::read_json;
+using granshock::testing::run_options;
 using granshock::testing::small_scene;
 using granshock::testing::TempDir;
 namespace fs = std::filesystem;
 
 namespace {
-
-RunOptions options_for(const fs::path& scene, const fs::path& out,
-                       std::vector<std::string> sets = {}) {
-  RunOptions o;
-  o.scene_file = scene;
-  o.out_dir = out;
-  o.overrides = std::move(sets);
-  o.quiet = true;
-  return o;
-}
-
-nlohmann::json read_summary(const fs::path& path) {
-  std::ifstream in(path);
-  return nlohmann::json::parse(in);
-}
 
 std::vector<double> series(const RunFile& f, const std::string& name) {
   return f.read_array("/observables/" + name + "/value");
@@ -43,7 +31,7 @@ std::vector<double> series(const RunFile& f, const std::string& name) {
 TEST(RunMassBalance, InsertedMinusDeletedIsPresentAtEveryOutput) {
   TempDir tmp;
   const auto scene = tmp.write("small.toml", small_scene(true));
-  ASSERT_EQ(run_scene(options_for(scene, tmp.path() / "run")), 0);
+  ASSERT_EQ(run_scene(run_options(scene, tmp.path() / "run")), 0);
   const RunFile f = RunFile::open_read_only(tmp.path() / "run" / "run.h5");
   const auto present = series(f, "particles"), inserted = series(f, "inserted");
   const auto outlet = series(f, "deleted_outlet"), inlet = series(f, "deleted_inlet");
@@ -59,11 +47,11 @@ TEST(RunResume, InterruptedAndResumedEqualsUninterruptedBitwise) {
   TempDir tmp;
   const auto scene = tmp.write("small.toml", small_scene(true));
   const std::vector<std::string> sets = {"time.duration=0.004", "time.production_start=0.002"};
-  ASSERT_EQ(run_scene(options_for(scene, tmp.path() / "straight", sets)), 0);
-  RunOptions first = options_for(scene, tmp.path() / "split", sets);
+  ASSERT_EQ(run_scene(run_options(scene, tmp.path() / "straight", sets)), 0);
+  RunOptions first = run_options(scene, tmp.path() / "split", sets);
   first.stop_after_steps = 7001;  // not a checkpoint step (those are multiples of 20 000)
   ASSERT_EQ(run_scene(first), 0);
-  RunOptions second = options_for(scene, tmp.path() / "split", sets);
+  RunOptions second = run_options(scene, tmp.path() / "split", sets);
   second.resume = true;
   ASSERT_EQ(run_scene(second), 0);
 
@@ -98,7 +86,7 @@ TEST_P(RunRefuses, WithOneMessageAndNoOutput) {
   const auto scene = tmp.write("small.toml", small_scene(true));
   const fs::path out = tmp.path() / "out";
   try {
-    run_scene(options_for(scene, out, GetParam().sets));
+    run_scene(run_options(scene, out, GetParam().sets));
     FAIL() << "accepted";
   } catch (const UserError& e) {
     EXPECT_NE(std::string(e.what()).find(GetParam().expected), std::string::npos) << e.what();
@@ -157,16 +145,16 @@ TEST(RunDiscreteRestitution, CalibratedReportedUsedAndResumedBitwise) {
   const std::vector<std::string> base = {"time.duration=0.004", "time.production_start=0.002"};
   std::vector<std::string> discrete = base;
   discrete.push_back("contact.restitution_mode=\"discrete\"");
-  ASSERT_EQ(run_scene(options_for(scene, tmp.path() / "continuous", base)), 0);
-  ASSERT_EQ(run_scene(options_for(scene, tmp.path() / "discrete", discrete)), 0);
-  RunOptions first = options_for(scene, tmp.path() / "split", discrete);
+  ASSERT_EQ(run_scene(run_options(scene, tmp.path() / "continuous", base)), 0);
+  ASSERT_EQ(run_scene(run_options(scene, tmp.path() / "discrete", discrete)), 0);
+  RunOptions first = run_options(scene, tmp.path() / "split", discrete);
   first.stop_after_steps = 7001;
   ASSERT_EQ(run_scene(first), 0);
-  RunOptions second = options_for(scene, tmp.path() / "split", discrete);
+  RunOptions second = run_options(scene, tmp.path() / "split", discrete);
   second.resume = true;
   ASSERT_EQ(run_scene(second), 0);
 
-  const nlohmann::json j = read_summary(tmp.path() / "discrete" / "summary.json");
+  const nlohmann::json j = read_json(tmp.path() / "discrete" / "summary.json");
   const nlohmann::json& c = j.at("restitution_calibration");
   EXPECT_EQ(c.at("mode"), "discrete");
   ASSERT_EQ(c.at("pairs").size(), 5u) << c.dump();  // 3 particle pairs, 2 with the obstacle
@@ -175,7 +163,7 @@ TEST(RunDiscreteRestitution, CalibratedReportedUsedAndResumedBitwise) {
     EXPECT_NE(p.at("beta").get<double>(), p.at("beta_continuous").get<double>()) << pair;
     EXPECT_EQ(p.at("residual_over_speed").size(), 4u) << pair;
   }
-  EXPECT_TRUE(read_summary(tmp.path() / "continuous" / "summary.json")
+  EXPECT_TRUE(read_json(tmp.path() / "continuous" / "summary.json")
                   .at("restitution_calibration")
                   .is_null());
 
@@ -192,12 +180,12 @@ TEST(RunRefusesDirectory, UnwritableOrExisting) {
   TempDir tmp;
   const auto scene = tmp.write("small.toml", small_scene(true));
   const auto file = tmp.write("a-file", "x");
-  EXPECT_THROW(run_scene(options_for(scene, file / "out")), UserError);  // parent is a file
+  EXPECT_THROW(run_scene(run_options(scene, file / "out")), UserError);  // parent is a file
   EXPECT_FALSE(fs::exists(file / "out"));
   fs::create_directories(tmp.path() / "old");
   tmp.write("old/run.h5", "previous results");
   try {
-    run_scene(options_for(scene, tmp.path() / "old"));
+    run_scene(run_options(scene, tmp.path() / "old"));
     FAIL() << "an existing run directory was overwritten without --overwrite";
   } catch (const UserError& e) {
     // Unmarked (granshock before 0.2): refused even with --overwrite
@@ -205,7 +193,7 @@ TEST(RunRefusesDirectory, UnwritableOrExisting) {
     EXPECT_NE(std::string(e.what()).find("perhaps from a granshock before 0.2"), std::string::npos)
         << e.what();
   }
-  RunOptions resume = options_for(scene, tmp.path() / "nothing-here");
+  RunOptions resume = run_options(scene, tmp.path() / "nothing-here");
   resume.resume = true;
   EXPECT_THROW(run_scene(resume), UserError);
 }
@@ -216,7 +204,7 @@ TEST(RunRefusesDirectory, UnwritableOrExisting) {
 TEST(RunDefaultScene, FormsADenseRegionInFrontOfTheObstacle) {
   TempDir tmp;
   const fs::path scene = fs::path(GRANSHOCK_SOURCE_DIR) / "scenes" / "default.toml";
-  ASSERT_EQ(run_scene(options_for(scene, tmp.path() / "run",
+  ASSERT_EQ(run_scene(run_options(scene, tmp.path() / "run",
                                   {"time.duration=0.04", "time.production_start=0.02",
                                    "output.snapshot_interval=0.01"})),
             0);
@@ -247,7 +235,7 @@ TEST(RunStability, ForcedUnstableStepStopsWithADiagnosis) {
   const auto scene = tmp.write("small.toml", small_scene(true));
   // Samples every 10 steps: at this dt the default 100 would leave the production window too
   // few field samples, and the run would be refused before it could blow up.
-  RunOptions o = options_for(scene, tmp.path() / "run", {"time.dt=3e-6", "output.sample_every=10"});
+  RunOptions o = run_options(scene, tmp.path() / "run", {"time.dt=3e-6", "output.sample_every=10"});
   o.force = true;
   try {
     run_scene(o);
@@ -266,7 +254,7 @@ TEST(RunStability, ForcedUnstableStepStopsWithADiagnosis) {
 TEST(RunInflow, AStripThatStaysFullIsReportedAndItsBacklogBounded) {
   TempDir tmp;
   const auto scene = tmp.write("small.toml", small_scene(true));
-  RunOptions o = options_for(
+  RunOptions o = run_options(
       scene, tmp.path() / "blocked",
       {"inflow.area_fraction=0.4", "inflow.velocity=0.5", "inflow.sigma=0.05",
        "contact.restitution=0.2", "domain.width=\"30 d\"", "domain.length=\"40 d\"",
@@ -276,7 +264,7 @@ TEST(RunInflow, AStripThatStaysFullIsReportedAndItsBacklogBounded) {
   ASSERT_EQ(run_scene(o), 0);
   const std::string err = ::testing::internal::GetCapturedStderr();
   EXPECT_NE(err.find("warning: the inflow falls short"), std::string::npos) << err;
-  const auto blocked = read_summary(tmp.path() / "blocked" / "summary.json")["inflow"];
+  const auto blocked = read_json(tmp.path() / "blocked" / "summary.json")["inflow"];
   std::printf("[ measured ] blocked inlet: %s\n", blocked.dump().c_str());
   EXPECT_TRUE(blocked["falls_short"].get<bool>());
   EXPECT_LT(blocked["achieved_fraction"].get<double>(), 0.97);
@@ -288,11 +276,11 @@ TEST(RunInflow, AStripThatStaysFullIsReportedAndItsBacklogBounded) {
                   blocked["lost"].get<double>(),
               1e-6);
 
-  ASSERT_EQ(run_scene(options_for(
+  ASSERT_EQ(run_scene(run_options(
                 scene, tmp.path() / "free",
                 {"time.duration=0.002", "time.production_start=0.001", "output.sample_every=10"})),
             0);
-  const auto free = read_summary(tmp.path() / "free" / "summary.json")["inflow"];
+  const auto free = read_json(tmp.path() / "free" / "summary.json")["inflow"];
   EXPECT_FALSE(free["falls_short"].get<bool>()) << free.dump();
   EXPECT_GT(free["achieved_fraction"].get<double>(), 0.99) << free.dump();
 }
