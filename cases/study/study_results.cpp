@@ -25,23 +25,24 @@ void warn(const std::string& what) {
 // `granshock fields DIR... --out OUT` on the finished cases: each case's fields.h5 and
 // summary.json analysed again by this granshock (a case run by an older one gains the keys
 // of the current analysis before it is tabulated), detachment.csv/json and, with Python,
-// figures/detachment_length.png. The cases' own figures were drawn by their runs.
+// figures/detachment_length.png and each case's figures drawn again (the ones its run drew
+// showed the analysis of that time).
 void compare_finished(const StudyPlan& plan, const std::vector<fs::path>& finished, bool quiet) {
-  if (finished.size() < 2) {
-    if (finished.size() == 1) fields_command(finished, {}, FieldsCommandOptions{false, quiet});
-    if (!quiet)
-      std::cerr << "granshock study: the comparison of detachment lengths needs two finished "
-                   "cases; "
-                << finished.size() << " so far\n";
-    return;
-  }
-  fields_command(finished, plan.out, FieldsCommandOptions{false, quiet});
+  if (finished.size() == 1) fields_command(finished, {}, FieldsCommandOptions{false, quiet});
+  if (finished.size() >= 2) fields_command(finished, plan.out, FieldsCommandOptions{false, quiet});
+  if (finished.size() < 2 && !quiet)
+    std::cerr << "granshock study: the comparison of detachment lengths needs two finished "
+                 "cases; "
+              << finished.size() << " so far\n";
+  if (finished.empty()) return;
   try {
     require_plotting_python();
-    plot_detachment_figure(plan.out / "detachment.json",
-                           plan.out / "figures" / "detachment_length.png");
+    for (const fs::path& dir : finished) plot_run_figures(dir / "fields.h5", dir / "figures");
+    if (finished.size() >= 2)
+      plot_detachment_figure(plan.out / "detachment.json",
+                             plan.out / "figures" / "detachment_length.png");
   } catch (const UserError& e) {
-    warn(std::string("no detachment figure: ") + e.what());
+    warn(std::string("no figures: ") + e.what());
   }
 }
 

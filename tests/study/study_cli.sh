@@ -134,9 +134,13 @@ collect_lists_missing)
   # analysis) is analysed again before it is tabulated.
   /usr/bin/python3 -c 'import json, sys; p = sys.argv[1]; s = json.load(open(p)); s.pop("detachment"); json.dump(s, open(p, "w"))' \
     "$out/phi-0.12_e-0.5/summary.json"
+  # Its figures are drawn again from the new analysis (they showed the old fronts).
+  rm "$out/phi-0.12_e-0.5/figures/stagnation_profiles.png"
   "$granshock" study "$studies/tiny.toml" --out "$out" --collect --quiet >/dev/null 2>&1
   head -1 "$out/study.csv" | tr ',' '\n' | grep -qx detachment.temperature_jump.delta_over_D ||
     fail "the table holds the stale summary: $(head -1 "$out/study.csv")"
+  [ -s "$out/phi-0.12_e-0.5/figures/stagnation_profiles.png" ] ||
+    fail "--collect analysed the case again but did not redraw its figures"
   ;;
 emit_slurm)
   "$granshock" study "$studies/tiny.toml" --out "$out" --emit slurm >"$work/stdout" 2>"$work/stderr" ||
