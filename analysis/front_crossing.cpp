@@ -4,17 +4,27 @@
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <string>
 
 namespace granshock {
 
+namespace {
+// The bins [begin, end) of a line clamped to it; false (no front: too few bins) when fewer
+// than 2 remain. Values and centres must be as long as each other.
+bool clamp_search(const std::vector<double>& values, const std::vector<double>& y, int& begin,
+                  int& end, const char* caller) {
+  if (values.size() != y.size())
+    throw std::invalid_argument(std::string(caller) + ": values and y differ in length");
+  begin = std::max(begin, 0);
+  end = std::min(end, static_cast<int>(values.size()));
+  return end - begin >= 2;
+}
+}  // namespace
+
 FrontCrossing find_front_crossing(const std::vector<double>& phi, const std::vector<double>& y,
                                   int begin, int end, double phi_up, const ThresholdRule& rule) {
-  if (phi.size() != y.size())
-    throw std::invalid_argument("find_front_crossing: phi and y differ in length");
   FrontCrossing c;
-  begin = std::max(begin, 0);
-  end = std::min(end, static_cast<int>(phi.size()));
-  if (end - begin < 2) return c;
+  if (!clamp_search(phi, y, begin, end, "find_front_crossing")) return c;
   c.why = NoFront::no_upstream_phi;
   if (!(phi_up > 0)) return c;
   for (int k = begin; k < end; ++k)
@@ -63,12 +73,8 @@ FrontCrossing find_front_crossing(const std::vector<double>& phi, const std::vec
 
 FrontCrossing find_largest_rise(const std::vector<double>& values, const std::vector<double>& y,
                                 int begin, int end, const ThresholdRule& rule) {
-  if (values.size() != y.size())
-    throw std::invalid_argument("find_largest_rise: values and y differ in length");
   FrontCrossing c;
-  begin = std::max(begin, 0);
-  end = std::min(end, static_cast<int>(values.size()));
-  if (end - begin < 2) return c;
+  if (!clamp_search(values, y, begin, end, "find_largest_rise")) return c;
   // One pass downstream with the running minimum: the largest rise ends at the bin whose
   // value exceeds the smallest value before it by most.
   int lowest = -1, rise_from = -1;
