@@ -46,6 +46,10 @@ struct ContactSettings {
   // discrete: the impact speed the damping is calibrated at (m/s); 0 in a scene means the
   // inflow speed, resolved when the scene is read.
   double calibration_speed_m_per_s = 0;
+  // Every Young's modulus (particles and obstacle) divided by this for the contacts
+  // (docs/contact_model.md, "Softening"): the collision time grows as softening^(2/5) for
+  // Hertz, so dt can grow with it; restitution, masses and sizes are kept. 1: none.
+  double softening = 1;
   // discrete, once calibrated (kernels/models/restitution_calibration.hpp): the damping
   // beta every pair runs with, indexed like `restitution`; empty: beta from e.
   std::vector<std::vector<double>> calibrated_beta;

@@ -12,7 +12,8 @@ struct Material {
   double density_kg_m3 = 0;
 };
 
-// The paper's materials (Table 1 and section 2 of the paper; docs/design.md, "Particles and materials").
+// The paper's materials (Table 1 and section 2 of the paper; docs/design.md, "Particles and
+// materials").
 Material steel();
 Material aluminium();  // rho = rho_steel / 2.907
 

@@ -33,6 +33,12 @@ PairProperties particle_pair(const Species& a, const Species& b, double e, doubl
   return p;
 }
 
+PairProperties softened(PairProperties p, double softening) {
+  p.youngs_star /= softening;
+  p.shear_star /= softening;
+  return p;
+}
+
 PairProperties particle_obstacle(const Species& s, const Material& obstacle, double e, double mu) {
   PairProperties p;
   p.name = s.name + "-obstacle";

@@ -29,5 +29,7 @@ PairProperties particle_pair(const Species& a, const Species& b, double restitut
                              double friction);
 PairProperties particle_obstacle(const Species& p, const Material& obstacle, double restitution,
                                  double friction);
+// The pair with its Young's and shear moduli divided by `softening` (contact.softening).
+PairProperties softened(PairProperties pair, double softening);
 
 }  // namespace granshock

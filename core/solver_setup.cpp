@@ -51,17 +51,20 @@ double SolverSetup::max_diameter() const {
 }
 
 PairProperties SolverSetup::pair(int a, int b) const {
-  PairProperties p = particle_pair(species.at(a), species.at(b), contacts.restitution.at(a).at(b),
-                                   contacts.friction.at(a).at(b));
+  PairProperties p =
+      softened(particle_pair(species.at(a), species.at(b), contacts.restitution.at(a).at(b),
+                             contacts.friction.at(a).at(b)),
+               contacts.softening);
   if (!contacts.calibrated_beta.empty()) p.beta = contacts.calibrated_beta.at(a).at(b);
   return p;
 }
 
 PairProperties SolverSetup::obstacle_pair(int a) const {
   if (!obstacle) throw std::logic_error("obstacle_pair: the scene has no obstacle");
-  PairProperties p =
+  PairProperties p = softened(
       particle_obstacle(species.at(a), obstacle->material, contacts.obstacle_restitution.at(a),
-                        contacts.obstacle_friction.at(a));
+                        contacts.obstacle_friction.at(a)),
+      contacts.softening);
   if (!contacts.obstacle_calibrated_beta.empty()) p.beta = contacts.obstacle_calibrated_beta.at(a);
   return p;
 }

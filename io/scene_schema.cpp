@@ -395,6 +395,13 @@ const Key kContactKeys[] = {
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.s.setup.contacts.calibration_speed_m_per_s);
      }},
+    {"softening", "number",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       st.s.setup.contacts.softening = r.number_in(k, 1, INFINITY, false, true, 1.0);
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) {
+       t.insert(k, w.s.setup.contacts.softening);
+     }},
     {"model", "string",
      [](TableReader& r, Reading& st, const std::string& k) {
        st.s.setup.contacts.model = parse_contact_model(r.choice(k, {"hertz", "hooke"}, "hertz"));

@@ -84,11 +84,12 @@ CollisionResult collide_species(const SolverSetup& scene, int a, int b, double s
                                 bool force, double phase) {
   // A scene without an obstacle collides with an aluminium cylinder (build()).
   const PairProperties props =
-      b >= 0 ? scene.pair(a, b)
-      : scene.obstacle
-          ? scene.obstacle_pair(a)
-          : particle_obstacle(scene.species[a], aluminium(), scene.contacts.obstacle_restitution[a],
-                              scene.contacts.obstacle_friction[a]);
+      b >= 0           ? scene.pair(a, b)
+      : scene.obstacle ? scene.obstacle_pair(a)
+                       : softened(particle_obstacle(scene.species[a], aluminium(),
+                                                    scene.contacts.obstacle_restitution[a],
+                                                    scene.contacts.obstacle_friction[a]),
+                                  scene.contacts.softening);
   CollisionResult r;
   r.pair = props.name;
   r.speed = speed;

@@ -58,6 +58,7 @@ const std::map<std::string, NonDefault>& non_default_values() {
       {"contact.characteristic_velocity", {{"contact.characteristic_velocity=3.5"}}},
       {"contact.restitution_mode", {{"contact.restitution_mode=\"discrete\""}}},
       {"contact.calibration_speed", {{"contact.calibration_speed=2.5"}}},
+      {"contact.softening", {{"contact.softening=1000"}}},
       {"contact.pairs.\"a-b\".restitution",
        {{"contact.pairs.steel-aluminium.restitution=0.9",
          "contact.pairs.aluminium-obstacle.restitution=0.7"}}},
@@ -139,6 +140,7 @@ std::vector<std::string> differences(const Scene& a, const Scene& b) {
   d("setup.contacts.restitution_mode", ca.restitution_mode, cb.restitution_mode);
   d("setup.contacts.calibration_speed_m_per_s", ca.calibration_speed_m_per_s,
     cb.calibration_speed_m_per_s);
+  d("setup.contacts.softening", ca.softening, cb.softening);
   d("setup.contacts.restitution", ca.restitution, cb.restitution);
   d("setup.contacts.friction", ca.friction, cb.friction);
   d("setup.contacts.obstacle_restitution", ca.obstacle_restitution, cb.obstacle_restitution);
