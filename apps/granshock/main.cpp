@@ -30,7 +30,7 @@ std::string one_line(std::string text) {
 }
 
 void add_collide_command(CLI::App& app, granshock::CollisionOptions& o, std::string& precision,
-                         std::string& model, std::string& restitution_mode) {
+                         std::string& model, std::string& restitution_mode, std::string& along) {
   auto* cmd = app.add_subcommand("collide",
                                  "head-on collision of two particles or a particle and "
                                  "the fixed cylinder; prints JSON");
@@ -56,6 +56,12 @@ void add_collide_command(CLI::App& app, granshock::CollisionOptions& o, std::str
       ->check(CLI::IsMember({"continuous", "discrete"}));
   cmd->add_option("--phase", o.phase,
                   "the first contact step overlaps by phase x speed x dt, in (0, 1]; default 1");
+  cmd->add_option("--at", o.place.centre,
+                  "X,Y: where the impact happens (m), e.g. 0.5,0 at the far edge of the "
+                  "paper's 500 d box; default 0,0")
+      ->delimiter(',');
+  cmd->add_option("--along", along, "the line of impact: x (default) | y")
+      ->check(CLI::IsMember({"x", "y"}));
 }
 
 void add_run_command(CLI::App& app, granshock::RunOptions& o) {
@@ -132,7 +138,8 @@ int main(int argc, char** argv) {
   app.allow_extras(false);
   granshock::CollisionOptions collide;
   std::string precision = "double", model = "hertz", restitution_mode = "continuous";
-  add_collide_command(app, collide, precision, model, restitution_mode);
+  std::string along = "x";
+  add_collide_command(app, collide, precision, model, restitution_mode, along);
   granshock::RunOptions run;
   add_run_command(app, run);
   std::vector<std::filesystem::path> field_dirs;
@@ -198,6 +205,7 @@ int main(int argc, char** argv) {
                                                 : granshock::Precision::double_precision;
       collide.model = granshock::parse_contact_model(model);
       collide.restitution_mode = granshock::parse_restitution_mode(restitution_mode);
+      collide.place.axis = along == "y" ? 1 : 0;
       const auto result = granshock::run_head_on_collision(collide);
       if (result.time_step.verdict != granshock::TimeStepAssessment::Verdict::ok)
         std::cerr << "granshock: warning: " << result.time_step.message << "\n";

@@ -21,17 +21,29 @@ const std::vector<std::string> kPairs = {"steel-steel", "steel-aluminium", "alum
                                          "steel-obstacle", "aluminium-obstacle"};
 
 // The collision's own small world: the scene's species, contacts and precision, an open
-// box, and (for impacts on the obstacle) a cylinder of the scene's obstacle material at
-// the origin.
+// box around the impact's place, and (for impacts on the obstacle) a cylinder of the
+// scene's obstacle material centred there.
 struct Geometry {
   SolverSetup setup;
   double radius_a = 0, radius_b = 0, cylinder_radius = 0;
   bool on_obstacle = false;
+  ImpactPlace place;
+  // A coordinate along the line of impact, relative to the impact's place.
+  double along(const std::array<double, 3>& position) const {
+    return position[std::size_t(place.axis)] - place.centre[std::size_t(place.axis)];
+  }
+  // A point at distance s along the line of impact from the impact's place.
+  std::array<double, 3> at(double s) const {
+    std::array<double, 3> x = {place.centre[0], place.centre[1], 0};
+    x[std::size_t(place.axis)] += s;
+    return x;
+  }
 };
 
-Geometry build(const SolverSetup& scene, int a, int b, double dt) {
+Geometry build(const SolverSetup& scene, int a, int b, double dt, const ImpactPlace& place) {
   Geometry g;
   g.on_obstacle = b < 0;
+  g.place = place;
   g.setup.species = scene.species;
   g.setup.contacts = scene.contacts;
   g.setup.precision = scene.precision;
@@ -41,33 +53,34 @@ Geometry build(const SolverSetup& scene, int a, int b, double dt) {
   g.radius_b = g.on_obstacle ? 0 : scene.species[b].radius_m();
   g.cylinder_radius = 5 * dmax;
   const double half = 20 * dmax;
-  g.setup.box.lo = {-half, -half, 0};
-  g.setup.box.hi = {half, half, dmax};
+  g.setup.box.lo = {place.centre[0] - half, place.centre[1] - half, 0};
+  g.setup.box.hi = {place.centre[0] + half, place.centre[1] + half, dmax};
   if (g.on_obstacle) {
     const Material material = scene.obstacle ? scene.obstacle->material : aluminium();
-    g.setup.obstacle =
-        Obstacle{ObstacleShape::cylinder, {0, 0, 0}, 2 * g.cylinder_radius, material};
+    g.setup.obstacle = Obstacle{ObstacleShape::cylinder, g.at(0), 2 * g.cylinder_radius, material};
   }
   return g;
 }
 
-// Surface-to-surface distance along x between the colliding bodies (negative = overlap).
+// Surface-to-surface distance along the line of impact between the colliding bodies
+// (negative = overlap).
 double gap(const Geometry& g, const HostParticles& p) {
-  if (g.on_obstacle) return std::abs(p.position[0][0]) - g.radius_a - g.cylinder_radius;
-  return std::abs(p.position[1][0] - p.position[0][0]) - g.radius_a - g.radius_b;
+  if (g.on_obstacle) return std::abs(g.along(p.position[0])) - g.radius_a - g.cylinder_radius;
+  return std::abs(g.along(p.position[1]) - g.along(p.position[0])) - g.radius_a - g.radius_b;
 }
 
 // Relative normal velocity, positive when separating.
 double separation_speed(const Geometry& g, const HostParticles& p) {
-  if (g.on_obstacle) return -p.velocity[0][0];  // particle on the -x side of the cylinder
-  return p.velocity[1][0] - p.velocity[0][0];
+  const std::size_t k = std::size_t(g.place.axis);
+  if (g.on_obstacle) return -p.velocity[0][k];  // particle on the low side of the cylinder
+  return p.velocity[1][k] - p.velocity[0][k];
 }
 
 // Whether the bodies have swapped sides: a particle beyond the cylinder's axis, or the
-// two particles in the wrong order along x.
+// two particles in the wrong order along the line of impact.
 bool passed_through(const Geometry& g, const HostParticles& p) {
-  if (g.on_obstacle) return p.position[0][0] > 0;
-  return p.position[1][0] < p.position[0][0];
+  if (g.on_obstacle) return g.along(p.position[0]) > 0;
+  return g.along(p.position[1]) < g.along(p.position[0]);
 }
 
 int paper_species(const std::string& name) {
@@ -81,7 +94,7 @@ std::vector<std::string> collision_pair_names() {
 }
 
 CollisionResult collide_species(const SolverSetup& scene, int a, int b, double speed, double dt,
-                                bool force, double phase) {
+                                bool force, double phase, const ImpactPlace& place) {
   // A scene without an obstacle collides with an aluminium cylinder (build()).
   const PairProperties props =
       b >= 0           ? scene.pair(a, b)
@@ -96,6 +109,7 @@ CollisionResult collide_species(const SolverSetup& scene, int a, int b, double s
   r.e_in = props.restitution;
   r.limit_force = scene.contacts.options.limit_force;
   r.phase = phase;
+  r.place = place;
   r.beta = props.beta;
   r.model = to_string(scene.contacts.model);
   const ContactSettings& contacts = scene.contacts;
@@ -114,18 +128,27 @@ CollisionResult collide_species(const SolverSetup& scene, int a, int b, double s
         "{:.3g} s); collide integrates at most {:.0e}: use dt >= {:.3g} s",
         r.dt, 20.0 * r.t_c / r.dt, r.pair, r.t_c, kMaxCollisionSteps,
         20.0 * r.t_c / kMaxCollisionSteps));
-  Geometry g = build(scene, a, b, r.dt);
+  if (place.axis != 0 && place.axis != 1)
+    throw UserError(fmt::format("the line of impact must be along x or y (axis {})", place.axis));
+  for (const double c : place.centre)
+    if (!std::isfinite(c)) throw UserError("the impact's place must be finite");
+  Geometry g = build(scene, a, b, r.dt, place);
 
   // Start a few steps before contact, in the zero-momentum frame for two particles; the
   // sixth drift overlaps them by phase x speed x dt.
   HostParticles start;
   const double gap0 = (6.0 - phase) * speed * r.dt;
+  const auto velocity = [&](double u) {
+    std::array<double, 3> v = {0, 0, 0};
+    v[std::size_t(place.axis)] = u;
+    return v;
+  };
   if (g.on_obstacle) {
-    start.add({-(g.cylinder_radius + g.radius_a + gap0), 0, 0}, {speed, 0, 0}, a, 0);
+    start.add(g.at(-(g.cylinder_radius + g.radius_a + gap0)), velocity(speed), a, 0);
   } else {
     const double ma = scene.species[a].mass_kg(), mb = scene.species[b].mass_kg();
-    start.add({-(g.radius_a + 0.5 * gap0), 0, 0}, {speed * mb / (ma + mb), 0, 0}, a, 0);
-    start.add({g.radius_b + 0.5 * gap0, 0, 0}, {-speed * ma / (ma + mb), 0, 0}, b, 1);
+    start.add(g.at(-(g.radius_a + 0.5 * gap0)), velocity(speed * mb / (ma + mb)), a, 0);
+    start.add(g.at(g.radius_b + 0.5 * gap0), velocity(-speed * ma / (ma + mb)), b, 1);
   }
   auto solver = make_solver(g.setup, start.size());
   solver->set_particles(start);
@@ -209,7 +232,7 @@ CollisionResult run_head_on_collision(const CollisionOptions& o) {
     else
       c.calibrated_beta[a][b] = c.calibrated_beta[b][a] = calibration->beta;
   }
-  CollisionResult r = collide_species(paper, a, b, o.speed_m_per_s, dt, o.force, o.phase);
+  CollisionResult r = collide_species(paper, a, b, o.speed_m_per_s, dt, o.force, o.phase, o.place);
   r.pair = o.pair;
   r.calibration = calibration;
   return r;
@@ -254,6 +277,8 @@ std::string to_json(const CollisionResult& r) {
   j["predicted_overlap_over_d"] = r.overlap.overlap_over_d;
   if (!r.overlap.message.empty()) j["overlap_warning"] = r.overlap.message;
   j["phase"] = r.phase;
+  j["at"] = r.place.centre;
+  j["along"] = r.place.axis == 0 ? "x" : "y";
   j["beta"] = r.beta;
   j["restitution_mode"] = r.calibration ? "discrete" : "continuous";
   if (r.calibration) j["calibration"] = to_json(*r.calibration, r.speed);

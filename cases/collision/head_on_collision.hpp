@@ -4,6 +4,7 @@
 // restitution, the contact duration and the peak overlap.
 #pragma once
 
+#include <array>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -14,6 +15,15 @@
 #include "solver_setup.hpp"
 
 namespace granshock {
+
+// Where an impact happens: the point of first contact of two particles, or the
+// cylinder's axis, and the axis along which the bodies approach (0 = x, 1 = y). Far from
+// the origin (the paper's box spans 0.5 m) it shows what the precision of positions
+// costs: docs/design.md, "Particles".
+struct ImpactPlace {
+  std::array<double, 2> centre = {0, 0};  // m
+  int axis = 0;
+};
 
 struct CollisionOptions {
   std::string pair = "steel-steel";  // a-b for two particles, a-obstacle for the cylinder
@@ -29,6 +39,7 @@ struct CollisionOptions {
   RestitutionMode restitution_mode = RestitutionMode::continuous;
   // The first contact step overlaps by phase x speed x dt, phase in (0, 1].
   double phase = 1.0;
+  ImpactPlace place;
 };
 
 inline constexpr double kMaxCollisionSteps = 1e7;
@@ -43,6 +54,7 @@ struct CollisionResult {
   double t_contact = 0;  // s, from overlap zero crossings interpolated between steps
   double max_overlap = 0;
   double phase = 1.0;
+  ImpactPlace place;
   double beta = 0;  // the damping the collision ran with
   long steps = 0;
   bool limit_force = false;
@@ -63,7 +75,7 @@ CollisionResult run_head_on_collision(const CollisionOptions& options);
 // obstacle (b = -1), with that setup's contact parameters (its calibrated damping, if any);
 // dt = 0 picks t_c/100. The first contact step overlaps by phase x speed x dt.
 CollisionResult collide_species(const SolverSetup& setup, int a, int b, double speed, double dt,
-                                bool force, double phase = 1.0);
+                                bool force, double phase = 1.0, const ImpactPlace& place = {});
 std::string to_json(const CollisionResult& r);
 // One pair's damping calibration (restitution_calibration.hpp), as `collide` and
 // summary.json's `restitution_calibration` print it.

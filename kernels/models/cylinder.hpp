@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "device/device_math.hpp"
+#include "device/position.hpp"
 #include "device/vec.hpp"
 #include "obstacle.hpp"
 
@@ -22,14 +23,16 @@ struct CylinderShape {
     return o && o->shape == ObstacleShape::cylinder;
   }
 
+  // Positions and the centre are Position (double); a particle's offset from the axis is
+  // formed in Position and rounded to Real, the rest is Real (device/position.hpp).
   template <int Dim, class Real>
   struct Geometry {
-    Vec<Dim, Real> centre;  // in 3-D centre[2] is ignored (the axis is along z)
+    Vec<Dim, Position> centre;  // in 3-D centre[2] is ignored (the axis is along z)
     Real radius;
 
     static Geometry from(const std::optional<Obstacle>& o) {
       Geometry g;
-      for (int d = 0; d < Dim; ++d) g.centre[d] = Real(o->centre[d]);
+      for (int d = 0; d < Dim; ++d) g.centre[d] = Position(o->centre[d]);
       g.radius = Real(o->radius_m());
       return g;
     }
@@ -39,9 +42,9 @@ struct CylinderShape {
     // a quarter of a step of the default scene (perf; docs/benchmarks.md).
     // A particle of radius r at x touches the surface when its distance from the axis is
     // below r + R: then dn = r + R - |x - x_c| and n is the radial unit vector.
-    KOKKOS_FORCEINLINE_FUNCTION bool touches(const Vec<Dim, Real>& x, Real r, Real& dn,
+    KOKKOS_FORCEINLINE_FUNCTION bool touches(const Vec<Dim, Position>& x, Real r, Real& dn,
                                              Vec<Dim, Real>& n) const {
-      Vec<Dim, Real> dx = x - centre;
+      Vec<Dim, Real> dx = to_real<Real>(x - centre);
       if constexpr (Dim == 3) dx[2] = 0;
       const Real r2 = dot(dx, dx);
       const Real reach = r + radius;
@@ -53,9 +56,9 @@ struct CylinderShape {
     }
 
     // Insertion places no centre within `clearance` of the surface.
-    KOKKOS_FORCEINLINE_FUNCTION bool keeps_out(Real x0, Real x1, Real clearance) const {
-      const Real cx = x0 - centre[0], cy = x1 - centre[1];
-      const Real reach = radius + clearance;
+    KOKKOS_FORCEINLINE_FUNCTION bool keeps_out(Position x0, Position x1, Real clearance) const {
+      const Position cx = x0 - centre[0], cy = x1 - centre[1];
+      const Position reach = Position(radius + clearance);
       return cx * cx + cy * cy < reach * reach;
     }
   };

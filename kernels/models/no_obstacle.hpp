@@ -4,6 +4,7 @@
 #include <Kokkos_Core.hpp>
 #include <optional>
 
+#include "device/position.hpp"
 #include "device/vec.hpp"
 #include "obstacle.hpp"
 
@@ -19,10 +20,11 @@ struct NoObstacle {
   template <int Dim, class Real>
   struct Geometry {
     static Geometry from(const std::optional<Obstacle>&) { return {}; }
-    KOKKOS_FORCEINLINE_FUNCTION bool touches(const Vec<Dim, Real>&, Real, Real&, Vec<Dim, Real>&) const {
+    KOKKOS_FORCEINLINE_FUNCTION bool touches(const Vec<Dim, Position>&, Real, Real&,
+                                             Vec<Dim, Real>&) const {
       return false;
     }
-    KOKKOS_FORCEINLINE_FUNCTION bool keeps_out(Real, Real, Real) const { return false; }
+    KOKKOS_FORCEINLINE_FUNCTION bool keeps_out(Position, Position, Real) const { return false; }
   };
 
   static double kept_out_area(const std::optional<Obstacle>&, double, double, double) { return 0; }

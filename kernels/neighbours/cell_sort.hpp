@@ -11,6 +11,7 @@
 
 namespace granshock {
 
+// Real: the coordinate type of the grid and positions (Position in the solver).
 template <int Dim, class Real, class ExecSpace>
 class CellSort {
  public:

@@ -3,11 +3,14 @@
 // order. The force kernel, the contact virial of field sampling, the elastic energy and
 // the contact count all run through it, so the contact criterion and the minimum image
 // are written once. Full lists: each touching pair is visited from both sides.
+// Positions are Position (double) in every variant: a pair's separation and its periodic
+// image are formed in double and only then rounded to Real (device/position.hpp).
 #pragma once
 
 #include <Kokkos_Core.hpp>
 
 #include "device/box_geometry.hpp"
+#include "device/position.hpp"
 #include "device/vec.hpp"
 
 namespace granshock {
@@ -16,22 +19,23 @@ template <int Dim, class Real, class MemSpace>
 struct PairLoop {
   Kokkos::View<int*, MemSpace> offsets;     // n + 1
   Kokkos::View<int*, MemSpace> neighbours;  // partners of i: [offsets(i), offsets(i + 1))
-  Kokkos::View<Real* [Dim], MemSpace> x;
+  Kokkos::View<Position* [Dim], MemSpace> x;
   Kokkos::View<int*, MemSpace> species;
   Kokkos::View<Real*, MemSpace> radius;  // per species
-  BoxGeometry<Dim, Real> box;
+  BoxGeometry<Dim, Position> box;
   Real max_radius;  // of all species: partners beyond ri + max_radius are not looked up
 
-  KOKKOS_FORCEINLINE_FUNCTION Vec<Dim, Real> position(int i) const {
-    Vec<Dim, Real> r;
+  KOKKOS_FORCEINLINE_FUNCTION Vec<Dim, Position> position(int i) const {
+    Vec<Dim, Position> r;
     for (int d = 0; d < Dim; ++d) r[d] = x(i, d);
     return r;
   }
 
   // Calls touching(j, sj, dx, r2, rsum) for each partner j of particle i (at xi, radius
-  // ri) in contact: dx = x_i - x_j (minimum image), r2 = |dx|^2 < rsum^2, rsum = r_i + r_j.
+  // ri) in contact: dx = x_i - x_j (minimum image, formed in Position, then rounded to
+  // Real), r2 = |dx|^2 < rsum^2, rsum = r_i + r_j.
   template <class F>
-  KOKKOS_FORCEINLINE_FUNCTION void for_each_contact(int i, const Vec<Dim, Real>& xi, Real ri,
+  KOKKOS_FORCEINLINE_FUNCTION void for_each_contact(int i, const Vec<Dim, Position>& xi, Real ri,
                                                     F&& touching) const {
     // Most list partners are not touching: they are rejected on the distance alone,
     // before the two dependent loads of their radius (species, then radius).
@@ -39,7 +43,7 @@ struct PairLoop {
     const Real reach2 = reach * reach;
     for (int k = offsets(i); k < offsets(i + 1); ++k) {
       const int j = neighbours(k);
-      const Vec<Dim, Real> dx = box.nearby_image(xi - position(j));
+      const Vec<Dim, Real> dx = to_real<Real>(box.nearby_image(xi - position(j)));
       const Real r2 = dot(dx, dx);
       if (r2 >= reach2) continue;
       const int sj = species(j);

@@ -3,12 +3,15 @@
 // results identical for any thread count; contacts are rare in a granular gas, so the
 // doubled pair checks cost little. The list holds every partner within
 // r_i + r_j + skin and stays valid until some particle has moved more than skin/2.
+// Cells and separations are in Position (double, device/position.hpp), radii and skin in
+// the variant's Real.
 #pragma once
 
 #include <Kokkos_Core.hpp>
 #include <vector>
 
 #include "device/box_geometry.hpp"
+#include "device/position.hpp"
 #include "device/vec.hpp"
 #include "neighbours/cell_grid.hpp"
 
@@ -39,7 +42,7 @@ class VerletList {
 
   // Particles must be sorted by cell: cell c holds indices [cell_start(c), cell_start(c+1)).
   template <class PositionView, class SpeciesView, class RadiusView, class StartView>
-  void build(const CellGrid<Dim, Real>& grid, const BoxGeometry<Dim, Real>& box,
+  void build(const CellGrid<Dim, Position>& grid, const BoxGeometry<Dim, Position>& box,
              const StartView& cell_start, const PositionView& x, const SpeciesView& species,
              const RadiusView& radius, Real skin, int n) {
     if (int(offsets.extent(0)) < n + 1)
@@ -74,26 +77,26 @@ class VerletList {
 
  private:
   template <class PositionView, class SpeciesView, class RadiusView, class StartView, class F>
-  KOKKOS_INLINE_FUNCTION static void visit(const CellGrid<Dim, Real>& grid,
-                                           const BoxGeometry<Dim, Real>& box,
+  KOKKOS_INLINE_FUNCTION static void visit(const CellGrid<Dim, Position>& grid,
+                                           const BoxGeometry<Dim, Position>& box,
                                            const StartView& cell_start, const PositionView& x,
                                            const SpeciesView& species, const RadiusView& radius,
                                            Real skin, int i, F&& action) {
     int c[Dim];
-    Vec<Dim, Real> xi;
+    Vec<Dim, Position> xi;
     for (int d = 0; d < Dim; ++d) {
       xi[d] = x(i, d);
       c[d] = grid.coord(d, xi[d]);
     }
     const Real ri = radius(species(i));
-    for (int k = 0; k < CellGrid<Dim, Real>::neighbour_count(); ++k) {
+    for (int k = 0; k < CellGrid<Dim, Position>::neighbour_count(); ++k) {
       const int cell = grid.neighbour(c, k);
       if (cell < 0) continue;
       for (int j = cell_start(cell); j < cell_start(cell + 1); ++j) {
         if (j == i) continue;
-        Vec<Dim, Real> dx;
-        for (int d = 0; d < Dim; ++d) dx[d] = xi[d] - x(j, d);
-        dx = box.minimum_image(dx);
+        Vec<Dim, Position> image;
+        for (int d = 0; d < Dim; ++d) image[d] = xi[d] - x(j, d);
+        const Vec<Dim, Real> dx = to_real<Real>(box.minimum_image(image));
         const Real cut = ri + radius(species(j)) + skin;
         if (dot(dx, dx) < cut * cut) action(j);
       }

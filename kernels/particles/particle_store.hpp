@@ -5,7 +5,9 @@
 // so a new per-particle quantity is one line there and one member of SolverState.
 // Owned particles occupy [0, n); the Views have spare capacity so that particles can be
 // inserted and removed (and, with domain decomposition, ghosts appended after the owned
-// ones) without a reallocation each step. Vectors are View<Real*[Dim]>: contiguous
+// ones) without a reallocation each step. Positions (x, x_ref) are always stored as
+// Position, double, in every precision variant (device/position.hpp; docs/design.md,
+// "Particles"); the other vectors as Real. Vectors are View<T*[Dim]>: contiguous
 // components per particle on the host (LayoutRight), one array per component on a GPU
 // (LayoutLeft), each the coalesced layout for its backend. A frictionless scene allocates
 // no rotation and no contact history (docs/design.md, "The variant table").
@@ -15,9 +17,11 @@
 #include <string>
 #include <tuple>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "device/device_lambda.hpp"
+#include "device/position.hpp"
 #include "particles/reorder.hpp"
 #include "solver_state.hpp"
 
@@ -39,14 +43,17 @@ struct ParticleStore {
   // Tangential springs per particle: more than the contacts a sphere can have.
   static constexpr int history_slots = Dim == 2 ? 8 : 16;
 
+  using Position = granshock::Position;  // double: device/position.hpp
+  using PositionView = Kokkos::View<Position* [Dim], MemSpace>;
   using VectorView = Kokkos::View<Real* [Dim], MemSpace>;
   using ScalarView = Kokkos::View<Real*, MemSpace>;
   using IntView = Kokkos::View<int*, MemSpace>;
   using PartnerView = Kokkos::View<int* [history_slots], MemSpace>;
   using SpringView = Kokkos::View<Real * [history_slots * Dim], MemSpace>;
 
-  VectorView x, v, f;
-  VectorView x_ref;  // positions at the last neighbour-list build (the skin criterion)
+  PositionView x;      // positions
+  PositionView x_ref;  // positions at the last neighbour-list build (the skin criterion)
+  VectorView v, f;
   IntView species;
   IntView id;  // global id, never reused within a run
   // With friction: spin about z and its torque, and the tangential springs, kept per
@@ -119,9 +126,16 @@ class ParticlePermutation {
   }
 
  private:
-  std::tuple<typename Store::VectorView, typename Store::ScalarView, typename Store::IntView,
-             typename Store::PartnerView, typename Store::SpringView>
-      scratch_;
+  // One scratch buffer per distinct array type (std::get by type needs each once): in the
+  // double variant positions and the other vectors share a type.
+  using Common =
+      std::tuple<typename Store::VectorView, typename Store::ScalarView, typename Store::IntView,
+                 typename Store::PartnerView, typename Store::SpringView>;
+  using Scratch = std::conditional_t<
+      std::is_same_v<typename Store::PositionView, typename Store::VectorView>, Common,
+      decltype(std::tuple_cat(std::declval<std::tuple<typename Store::PositionView>>(),
+                              std::declval<Common>()))>;
+  Scratch scratch_;
 };
 
 }  // namespace granshock

@@ -26,18 +26,21 @@ class ParticlePopulation {
   using Policy = Kokkos::RangePolicy<ExecSpace>;
   using Store = ParticleStore<Dim, Real, Mem, V::friction>;
   using Obstacle = typename V::obstacle::template Geometry<Dim, Real>;
+  // Candidates, the overlap test and the escape test are in Position (double) in every
+  // variant (device/position.hpp).
+  using Position = typename Store::Position;
   static constexpr int kInsertionRounds = 16;
 
   ParticlePopulation() = default;
-  ParticlePopulation(const SolverSetup& setup, const BoxGeometry<Dim, Real>& box,
+  ParticlePopulation(const SolverSetup& setup, const BoxGeometry<Dim, Position>& box,
                      const Obstacle& obstacle)
       : box_(box),
         obstacle_(obstacle),
         max_diameter_(Real(setup.max_diameter())),
         cumulative_("insert_cumulative", setup.species.size()) {
     for (int d = 0; d < Dim; ++d) {
-      escape_.lo[d] = Real(setup.box.lo[d]);
-      escape_.hi[d] = Real(setup.box.hi[d]);
+      escape_.lo[d] = Position(setup.box.lo[d]);
+      escape_.hi[d] = Position(setup.box.hi[d]);
       escape_.check[d] = setup.delete_outside && !setup.box.periodic[d];
       deletes_ = deletes_ || escape_.check[d];
     }
@@ -87,8 +90,9 @@ class ParticlePopulation {
                    long first_candidate) {
     const int n = p.n;
     const Real dmax = max_diameter_;
-    const Real x0 = Real(rq.x_range[0]), y0 = Real(rq.y_range[0]);
-    const Real wx = Real(rq.x_range[1] - rq.x_range[0]), wy = Real(rq.y_range[1] - rq.y_range[0]);
+    const Position x0 = Position(rq.x_range[0]), y0 = Position(rq.y_range[0]);
+    const Position wx = Position(rq.x_range[1] - rq.x_range[0]);
+    const Position wy = Position(rq.y_range[1] - rq.y_range[0]);
     const auto box = box_;
     const auto x = p.x;
 
@@ -106,32 +110,32 @@ class ParticlePopulation {
 
     const CounterRng rng{rq.seed};
     const std::uint64_t pos_stream = InsertionStreams::position(rq.event);
-    Kokkos::View<Real* [2], Mem> cand("insert_candidates", m);
+    Kokkos::View<Position* [2], Mem> cand("insert_candidates", m);
     Kokkos::parallel_for(
         "insert::draw", Policy(0, m), KOKKOS_LAMBDA(const int k) {
           const std::uint64_t c = std::uint64_t(first_candidate + k);
-          cand(k, 0) = x0 + Real(rng.uniform(pos_stream, 2 * c)) * wx;
-          cand(k, 1) = y0 + Real(rng.uniform(pos_stream, 2 * c + 1)) * wy;
+          cand(k, 0) = x0 + Position(rng.uniform(pos_stream, 2 * c)) * wx;
+          cand(k, 1) = y0 + Position(rng.uniform(pos_stream, 2 * c + 1)) * wy;
         });
     const auto obstacle = obstacle_;
     Kokkos::View<int*, Mem> rank("insert_rank", m);
     int accepted = 0;
-    const Real d2 = dmax * dmax;
+    const Position d2 = Position(dmax) * Position(dmax);
     Kokkos::parallel_scan(
         "insert::accept", Policy(0, m),
         KOKKOS_LAMBDA(const int k, int& running, const bool final) {
-          Vec<Dim, Real> ck = Vec<Dim, Real>::zero();
+          Vec<Dim, Position> ck = Vec<Dim, Position>::zero();
           ck[0] = cand(k, 0);
           ck[1] = cand(k, 1);
           bool ok = !obstacle.keeps_out(ck[0], ck[1], dmax);
           for (int e = 0; e < n_near && ok; ++e) {
-            Vec<Dim, Real> dx;
+            Vec<Dim, Position> dx;
             for (int d = 0; d < Dim; ++d) dx[d] = ck[d] - x(near(e), d);
             dx = box.minimum_image(dx);
             ok = dot(dx, dx) >= d2;
           }
           for (int j = 0; j < k && ok; ++j) {
-            Vec<Dim, Real> dx = Vec<Dim, Real>::zero();
+            Vec<Dim, Position> dx = Vec<Dim, Position>::zero();
             dx[0] = ck[0] - cand(j, 0);
             dx[1] = ck[1] - cand(j, 1);
             dx = box.minimum_image(dx);
@@ -157,7 +161,7 @@ class ParticlePopulation {
           const int i = n + r;
           const std::uint64_t s = std::uint64_t(placed + r);  // rank within the whole event
           for (int d = 0; d < Dim; ++d) {
-            q.x(i, d) = d < 2 ? cand(k, d) : Real(0);
+            q.x(i, d) = d < 2 ? cand(k, d) : Position(0);
             q.f(i, d) = 0;
           }
           q.v(i, 0) = ux + Real(sigma * rng.normal(vel_stream, 2 * s));
@@ -190,7 +194,7 @@ class ParticlePopulation {
       keep_order_ = Kokkos::View<int*, Mem>("keep_order", p.capacity());
     long per_face[2 * Dim];
     const int kept =
-        compact_escaped<Dim, Real, ExecSpace>(escape_, p.x, p.n, keep_order_, per_face);
+        compact_escaped<Dim, Position, ExecSpace>(escape_, p.x, p.n, keep_order_, per_face);
     if (kept == p.n) return;
     for (int d = 0; d < Dim; ++d) {
       removed_.low[d] += per_face[2 * d];
@@ -209,7 +213,7 @@ class ParticlePopulation {
     p = bigger;
   }
 
-  const EscapeTest<Dim, Real>& escape_test() const { return escape_; }
+  const EscapeTest<Dim, Position>& escape_test() const { return escape_; }
   const RemovalCounts& removed() const { return removed_; }
   int next_id() const { return next_id_; }
   void restore(int next_id, const RemovalCounts& removed) {
@@ -225,11 +229,11 @@ class ParticlePopulation {
     Kokkos::deep_copy(cumulative_, h);
   }
 
-  BoxGeometry<Dim, Real> box_{};
+  BoxGeometry<Dim, Position> box_{};
   Obstacle obstacle_{};
   Real max_diameter_ = 0;
   Kokkos::View<double*, Mem> cumulative_;  // cumulative number fractions per species
-  EscapeTest<Dim, Real> escape_{};
+  EscapeTest<Dim, Position> escape_{};
   bool deletes_ = false;
   Kokkos::View<int*, Mem> keep_order_;
   RemovalCounts removed_;

@@ -30,6 +30,7 @@ struct ContactForceKernel {
   using Mem = typename ExecSpace::memory_space;
   using Store = ParticleStore<Dim, Real, Mem, V::friction>;
   using Obstacle = typename V::obstacle::template Geometry<Dim, Real>;
+  using Position = typename Store::Position;  // of x: double (device/position.hpp)
 
   Store p;
   PairLoop<Dim, Real, Mem> pairs;
@@ -40,7 +41,7 @@ struct ContactForceKernel {
   Kokkos::View<Real * [Dim * Dim], Mem> virial;  // ForceMode::virial only
 
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
-    const Vec<Dim, Real> xi = pairs.position(i);
+    const Vec<Dim, Position> xi = pairs.position(i);
     const Vec<Dim, Real> vi = velocity(i);
     if constexpr (Mode == ForceMode::virial) {
       Real w[Dim * Dim] = {};
@@ -61,8 +62,9 @@ struct ContactForceKernel {
   // The force and torque on particle i at xi with velocity vi (ForceMode::forces): its
   // contacts, their springs (updated) and the obstacle. The fused step (fused_step.hpp)
   // calls it directly and keeps the result in registers.
-  KOKKOS_FORCEINLINE_FUNCTION void total(int i, const Vec<Dim, Real>& xi, const Vec<Dim, Real>& vi,
-                                         Vec<Dim, Real>& force, Real& torque) const {
+  KOKKOS_FORCEINLINE_FUNCTION void total(int i, const Vec<Dim, Position>& xi,
+                                         const Vec<Dim, Real>& vi, Vec<Dim, Real>& force,
+                                         Real& torque) const {
     force = Vec<Dim, Real>::zero();
     torque = 0;
     int used_slots = 0;  // bit s set when slot s carried a contact this step
@@ -76,7 +78,7 @@ struct ContactForceKernel {
 
   // Sums the pair forces of i's contacts into force (and torque; w, the virial, in
   // ForceMode::virial).
-  KOKKOS_FORCEINLINE_FUNCTION void sum_contacts(int i, const Vec<Dim, Real>& xi,
+  KOKKOS_FORCEINLINE_FUNCTION void sum_contacts(int i, const Vec<Dim, Position>& xi,
                                                 const Vec<Dim, Real>& vi, Vec<Dim, Real>& force,
                                                 Real& torque, int& used_slots, Real* w) const {
     const int si = p.species(i);
@@ -124,7 +126,7 @@ struct ContactForceKernel {
 
   // Contact with the obstacle: its shape gives the overlap and the normal, the law the
   // force with the obstacle coefficients (R* = r_i, m* = m_i).
-  KOKKOS_FORCEINLINE_FUNCTION void obstacle_contact(int i, const Vec<Dim, Real>& xi,
+  KOKKOS_FORCEINLINE_FUNCTION void obstacle_contact(int i, const Vec<Dim, Position>& xi,
                                                     const Vec<Dim, Real>& vi, int si, Real ri,
                                                     Vec<Dim, Real>& force, Real& torque) const {
     Real dn;

@@ -45,15 +45,18 @@ class DemSolver final : public Solver {
   using Policy = Kokkos::RangePolicy<ExecSpace>;
   using Store = ParticleStore<Dim, Real, Mem, V::friction>;
   using Obstacle = typename V::obstacle::template Geometry<Dim, Real>;
+  // Positions, the box, cells and the skin displacement are in Position (double) in every
+  // variant; the rest in Real (device/position.hpp; docs/design.md, "Particles").
+  using Position = typename Store::Position;
 
   DemSolver(const SolverSetup& setup, std::size_t capacity, const Communicator& comm)
       : setup_(validated(setup)),
         comm_(comm),
         table_(PairTable<Model, Real, Mem>::build(setup)),
-        box_(BoxGeometry<Dim, Real>::from(setup.box)),
+        box_(BoxGeometry<Dim, Position>::from(setup.box)),
         obstacle_(Obstacle::from(setup.obstacle)),
         skin_(Real(setup.skin())),
-        grid_(CellGrid<Dim, Real>::make(setup.box, setup.max_diameter() + setup.skin())),
+        grid_(CellGrid<Dim, Position>::make(setup.box, setup.max_diameter() + setup.skin())),
         population_(setup, box_, obstacle_),
         history_overflow_("history_overflow") {
     integrator_.dt = Real(setup.dt);
@@ -72,7 +75,7 @@ class DemSolver final : public Solver {
     int next_id = 0;
     for (int i = 0; i < n; ++i) {
       for (int d = 0; d < Dim; ++d) {
-        x(i, d) = Real(hp.position[i][d]);
+        x(i, d) = Position(hp.position[i][d]);
         v(i, d) = Real(hp.velocity[i][d]);
       }
       if (hp.species[i] < 0 || hp.species[i] >= int(setup_.species.size()))
@@ -346,24 +349,25 @@ class DemSolver final : public Solver {
   SolverSetup setup_;
   const Communicator& comm_;
   PairTable<Model, Real, Mem> table_;
-  BoxGeometry<Dim, Real> box_;
+  BoxGeometry<Dim, Position> box_;
   Obstacle obstacle_;
   Real skin_;
-  CellGrid<Dim, Real> grid_;
+  CellGrid<Dim, Position> grid_;
   VelocityVerlet<V, ExecSpace> integrator_;
 
   Store p_;
   ParticlePopulation<V, ExecSpace> population_;
   ParticlePermutation<ExecSpace, Store> permutation_;
   SingleProcessExchange<Store> exchange_;
-  CellSort<Dim, Real, ExecSpace> sort_;
+  CellSort<Dim, Position, ExecSpace> sort_;
   VerletList<Dim, Real, ExecSpace> list_;
   Kokkos::View<int, Mem> history_overflow_;
 
   FieldSampling sampling_;
   BinAccumulator<ExecSpace> grid_sums_, profile_sums_;
   Kokkos::View<Real * [Dim * Dim], Mem> virial_;
-  typename Store::VectorView x_next_, v_next_;  // the fused step's second buffers
+  typename Store::PositionView x_next_;  // the fused step's second buffers
+  typename Store::VectorView v_next_;
   typename Store::ScalarView omega_next_;
   long steps_ = 0;
   long builds_ = 0;

@@ -29,6 +29,7 @@ struct SolverDiagnostics {
   using Store = ParticleStore<Dim, Real, Mem, V::friction>;
   using Table = PairTable<Model, Real, Mem>;
   using Obstacle = typename V::obstacle::template Geometry<Dim, Real>;
+  using Position = typename Store::Position;  // of x: double (device/position.hpp)
 
   Store p;
   PairLoop<Dim, Real, Mem> pairs;
@@ -43,7 +44,8 @@ struct SolverDiagnostics {
   }
 
   Diagnostics compute(const Communicator& comm) const {
-    const auto x = p.x, v = p.v;  // one type per auto declaration (VectorView)
+    const auto x = p.x;  // one type per auto declaration: PositionView
+    const auto v = p.v;  // VectorView
     const auto omega = p.omega;
     const auto species = p.species, id = p.id;
     const auto table_ = table;
@@ -81,7 +83,7 @@ struct SolverDiagnostics {
     out.elastic_energy = sum(
         "diag::elastic", KOKKOS_LAMBDA(const int i, double& acc) {
           const int si = species(i);
-          const Vec<Dim, Real> xi = pairs_.position(i);
+          const Vec<Dim, Position> xi = pairs_.position(i);
           const Real ri = table_.radius(si);
           pairs_.for_each_contact(i, xi, ri,
                                   [&](int, int sj, const Vec<Dim, Real>&, Real r2, Real rsum) {
@@ -96,7 +98,7 @@ struct SolverDiagnostics {
     out.contacts = long(sum(
         "diag::contacts", KOKKOS_LAMBDA(const int i, double& acc) {
           const int si = species(i);
-          const Vec<Dim, Real> xi = pairs_.position(i);
+          const Vec<Dim, Position> xi = pairs_.position(i);
           const Real ri = table_.radius(si);
           pairs_.for_each_contact(i, xi, ri, [&](int j, int, const Vec<Dim, Real>&, Real, Real) {
             if (id(j) > id(i)) acc += 1;

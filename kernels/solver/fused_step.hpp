@@ -9,7 +9,8 @@
 // afterwards. The arithmetic, operation for operation, is that of the separate halves, so
 // the trajectory is bitwise the same (tests/reference/check_bitwise.sh). The pass also
 // returns the largest squared displacement since the last list build, like first_half().
-// The forces are not stored: advance() ends with the unfused forces and second half, so
+// Positions are Position (double) in every variant (device/position.hpp). The forces are
+// not stored: advance() ends with the unfused forces and second half, so
 // a caller always finds f, v and x of the same step.
 #pragma once
 
@@ -24,17 +25,20 @@ struct FusedStepKernel {
   static constexpr int Dim = V::dim;
   using Real = typename V::real;
   using Mem = typename ExecSpace::memory_space;
-  using VectorView = Kokkos::View<Real* [Dim], Mem>;
-  using ScalarView = Kokkos::View<Real*, Mem>;
+  using Store = typename ContactForceKernel<V, ExecSpace>::Store;
+  using Position = typename Store::Position;
+  using VectorView = typename Store::VectorView;
+  using ScalarView = typename Store::ScalarView;
 
   ContactForceKernel<V, ExecSpace> forces;  // reads the current x, v (and spin)
-  VectorView x_next, v_next;
+  typename Store::PositionView x_next;
+  VectorView v_next;
   ScalarView omega_next;  // with friction
   Vec<Dim, Real> gravity;
 
   KOKKOS_FORCEINLINE_FUNCTION void operator()(const int i, Real& worst) const {
     const auto& p = forces.p;
-    const Vec<Dim, Real> xi = forces.pairs.position(i);
+    const Vec<Dim, Position> xi = forces.pairs.position(i);
     const Vec<Dim, Real> vi = forces.velocity(i);
     Vec<Dim, Real> f;
     Real torque;
@@ -47,10 +51,10 @@ struct FusedStepKernel {
       Real v = vi[d];
       v += half * (f[d] * im + gravity[d]);  // second half of this step
       v += half * (f[d] * im + gravity[d]);  // first half of the next
-      const Real x = xi[d] + step * v;
+      const Position x = xi[d] + step * v;   // the drift: a Real step onto a Position
       v_next(i, d) = v;
       x_next(i, d) = x;
-      const Real moved = x - p.x_ref(i, d);
+      const Real moved = Real(x - p.x_ref(i, d));
       d2 += moved * moved;
     }
     if constexpr (V::friction) {

@@ -78,23 +78,24 @@ void import_particles(Store& p, const SolverState& s) {
 }
 
 // Refuses (InvalidCheckpoint) a state whose lists this solver would not have built.
+// Positions are Position (double) in every variant (device/position.hpp); the other
+// arrays of a single-precision solver hold floats.
 template <int Dim, class Real, class ExecSpace, class RadiusView>
-void check_lists(const SolverState& s, const CellGrid<Dim, Real>& grid,
-                 const BoxGeometry<Dim, Real>& box, const EscapeTest<Dim, Real>& escape,
+void check_lists(const SolverState& s, const CellGrid<Dim, Position>& grid,
+                 const BoxGeometry<Dim, Position>& box, const EscapeTest<Dim, Position>& escape,
                  const RadiusView& radius, Real skin) {
   using Mem = typename ExecSpace::memory_space;
   const int n = int(s.size());
   auto fail = [](const std::string& what) { throw InvalidCheckpoint(what); };
   if constexpr (!std::is_same_v<Real, double>) {
-    for (const auto* values :
-         {&s.position, &s.velocity, &s.force, &s.angular_velocity, &s.torque, &s.history_spring,
-          &s.history_obstacle_spring, &s.reference_position})
+    for (const auto* values : {&s.velocity, &s.force, &s.angular_velocity, &s.torque,
+                               &s.history_spring, &s.history_obstacle_spring})
       for (double v : *values)
         if (double(Real(v)) != v)
           fail(fmt::format("/state: {} is not a value of this single-precision solver", v));
   }
   const Real rebuild_d2 = Real(0.25) * skin * skin;  // as in DemSolver::advance
-  Kokkos::View<Real* [Dim], Mem> xr("check_x_ref", std::max(n, 1));
+  Kokkos::View<Position* [Dim], Mem> xr("check_x_ref", std::max(n, 1));
   Kokkos::View<int*, Mem> species("check_species", std::max(n, 1)), id("check_id", std::max(n, 1));
   auto h_xr = Kokkos::create_mirror_view(xr);
   auto h_species = Kokkos::create_mirror_view(species);
@@ -103,7 +104,7 @@ void check_lists(const SolverState& s, const CellGrid<Dim, Real>& grid,
     Real d2 = 0;
     for (int d = 0; d < Dim; ++d) {
       const std::size_t k = std::size_t(i) * Dim + d;
-      const Real ref = Real(s.reference_position[k]);
+      const Position ref = Position(s.reference_position[k]);
       const bool wrapped = box.wrap(d, ref) == ref;
       const bool kept = !escape.check[d] || (ref >= escape.lo[d] && ref < escape.hi[d]);
       if (!wrapped || !kept)
@@ -112,7 +113,7 @@ void check_lists(const SolverState& s, const CellGrid<Dim, Real>& grid,
                         "where a rebuild leaves none",
                         k, double(ref), d));
       h_xr(i, d) = ref;
-      const Real moved = Real(s.position[k]) - ref;
+      const Real moved = Real(Position(s.position[k]) - ref);
       d2 += moved * moved;
     }
     if (d2 > rebuild_d2)
@@ -127,7 +128,7 @@ void check_lists(const SolverState& s, const CellGrid<Dim, Real>& grid,
   Kokkos::deep_copy(xr, h_xr);
   Kokkos::deep_copy(species, h_species);
   Kokkos::deep_copy(id, h_id);
-  CellSort<Dim, Real, ExecSpace> sort;
+  CellSort<Dim, Position, ExecSpace> sort;
   sort.sort(grid, xr, id, n);
   const auto order = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sort.order);
   for (int k = 0; k < n; ++k)
@@ -170,6 +171,8 @@ SolverFit solver_fit(const SolverSetup& setup, bool friction) {
   double extent = 0;
   for (int d = 0; d < Dim; ++d)
     extent = std::max({extent, std::abs(setup.box.lo[d]), std::abs(setup.box.hi[d])});
+  // The contact test rounds a separation (formed in double) and the radii to Real: a few
+  // ulps of a contact distance, which a few ulps of the box's extent bound from above.
   f.distance_tolerance = 16 * double(std::numeric_limits<Real>::epsilon()) * extent;
   return f;
 }

@@ -2,6 +2,8 @@
 //   first half:  v += dt/2 (f/m + g);  x += dt v;  (w += dt/2 tau/I with friction)
 //   second half: v += dt/2 (f/m + g);              (w += dt/2 tau/I with friction)
 // Forces between the halves see positions at t + dt and velocities at t + dt/2.
+// Positions are Position (double) in every variant: the drift adds a Real step dt v to a
+// double position, and the displacement from x_ref is formed in double (device/position.hpp).
 #pragma once
 
 #include <Kokkos_Core.hpp>
@@ -31,7 +33,8 @@ struct VelocityVerlet {
   Real first_half(const Store& p, const Table& table) const {
     const Real half = Real(0.5) * dt, step = dt;
     const auto g = gravity;
-    const auto x = p.x, v = p.v, f = p.f, x_ref = p.x_ref;
+    const auto x = p.x, x_ref = p.x_ref;  // one type per auto declaration
+    const auto v = p.v, f = p.f;
     const auto omega = p.omega, torque = p.torque;
     const auto species = p.species;
     const auto inv_mass = table.inv_mass, inv_inertia = table.inv_inertia;
@@ -46,7 +49,7 @@ struct VelocityVerlet {
           for (int d = 0; d < Dim; ++d) {
             v(i, d) += half * (f(i, d) * im + g[d]);
             x(i, d) += step * v(i, d);
-            const Real moved = x(i, d) - x_ref(i, d);
+            const Real moved = Real(x(i, d) - x_ref(i, d));
             d2 += moved * moved;
           }
           if constexpr (V::friction) omega(i) += half * torque(i) * inv_inertia(s);

@@ -97,16 +97,17 @@ TEST(HeadOnCollisionLimitForce, RaisesRestitutionAsTheReferenceDoes) {
   }
 }
 
-// Single precision through the same kernels: the overlap (~1e-6 m) is resolved against
-// positions of ~1e-3 m with 24-bit mantissas, so a looser 2 % on e is the price; this
-// test records that price rather than hiding it.
-TEST(HeadOnCollisionSinglePrecision, RestitutionWithinTwoPercent) {
+// Single precision through the same kernels: positions are double and the separation
+// (~1e-3 m) is rounded to float only after it is formed, so the overlap (~1e-6 m) errs by
+// about 1e-4 of itself and e_eff meets the double test's 0.5 % (it took 2 % when
+// positions were float; far from the origin: test_single_precision.cpp).
+TEST(HeadOnCollisionSinglePrecision, RestitutionWithinHalfAPercent) {
   CollisionOptions o;
   o.pair = "steel-steel";
   o.speed_m_per_s = 1.0;
   o.precision = Precision::single_precision;
   const CollisionResult r = run_head_on_collision(o);
-  EXPECT_NEAR(r.e_eff, 0.5, 0.02 * 0.5);
+  EXPECT_NEAR(r.e_eff, 0.5, 0.005 * 0.5);
 }
 
 }  // namespace
