@@ -34,12 +34,14 @@ struct Case {
 std::string scene_context(const nlohmann::ordered_json& row,
                           std::initializer_list<const char*> except) {
   std::string context;
-  for (const auto& [key, value] : row.items()) {
+  for (const auto& item : row.items()) {
+    // (No structured binding: capturing one in the lambda is C++20, and nvcc warns.)
+    const std::string& key = item.key();
     if (key.rfind("scene.", 0) != 0) continue;
     if (std::find_if(except.begin(), except.end(), [&](const char* e) { return key == e; }) !=
         except.end())
       continue;
-    context += key + "=" + value.dump() + ";";
+    context += key + "=" + item.value().dump() + ";";
   }
   return context;
 }
