@@ -1,0 +1,151 @@
+#!/usr/bin/python3
+"""The speed-against-accuracy table of a trade-off study (studies/tradeoff_default.toml).
+
+Usage: /usr/bin/python3 trade_table.py STUDY_DIR OUT_DIR
+
+Every case is compared with the case "reference" (the most accurate settings) and the
+difference set beside the noise: the same comparison between the case "scene" (the scene
+as given) and "seed-2" (the scene with another seed). A difference at or below the noise
+is not an error the setting made. Writes OUT_DIR/trade.csv (every number), trade.md (the
+table of docs/accuracy.md) and pareto.png (speed-up against each error).
+"""
+import csv
+import json
+import math
+import os
+import sys
+
+import h5py
+import numpy as np
+
+DEFINITIONS = ["temperature_jump", "sonic_line", "density_threshold"]
+FIELDS = ["phi", "T", "Ma"]
+
+
+def load(study, name):
+    d = os.path.join(study, name)
+    s = json.load(open(os.path.join(d, "summary.json")))
+    with h5py.File(os.path.join(d, "fields.h5"), "r") as f:
+        fields = {q: f["fields/" + q][...] for q in FIELDS}
+        # Bins that hold on average less than half a particle (the nearly empty wake) are
+        # left out: a few samples of a cold particle give Ma up to 5e7 there.
+        fields["masked"] = (f["fields/masked"][...] != 0) | (f["fields/mean_count"][...] < 0.5)
+    return s, fields
+
+
+def e_eff_error(summary):
+    """Largest |e_eff / e - 1| over the pairs at the inflow speed, at the run's dt."""
+    worst = 0.0
+    for pair in summary["effective_restitution_at_dt"].values():
+        e = pair["e_in"]
+        worst = max(worst, abs(pair["at_inflow_speed"]["e_eff"] / e - 1))
+    return worst
+
+
+def scalars(summary):
+    out = {}
+    for k in DEFINITIONS:
+        out["delta_over_D." + k] = summary["detachment"][k]["delta_over_D"]
+    for k in ["phi_peak", "ma_inf_measured", "shock_angle_deg"]:
+        out[k] = summary.get(k)
+    return out
+
+
+def l2(a, b):
+    """Relative L2 difference of field a against b over the bins used in both."""
+    ok = ~a["masked"] & ~b["masked"]
+    out = {}
+    for q in FIELDS:
+        x, y = a[q][ok], b[q][ok]
+        good = np.isfinite(x) & np.isfinite(y)
+        out["L2." + q] = float(np.sqrt(np.sum((x[good] - y[good]) ** 2) / np.sum(y[good] ** 2)))
+    return out
+
+
+def differences(case, ref):
+    (sc, fc), (sr, fr) = case, ref
+    a, b = scalars(sc), scalars(sr)
+    out = {k: (abs(a[k] - b[k]) if a[k] is not None and b[k] is not None else None) for k in a}
+    out.update(l2(fc, fr))
+    return out
+
+
+def main(study, out_dir):
+    names = [r["case"] for r in csv.DictReader(open(os.path.join(study, "study.csv")))]
+    runs = {n: load(study, n) for n in names}
+    ref = runs["reference"]
+    noise = differences(runs["seed-2"], runs["scene"])
+    wall_ref = ref[0]["wall_seconds"]
+    rows = []
+    for n in names:
+        s = runs[n][0]
+        row = {"case": n, "dt": s["dt"], "dt_over_tc": s["dt_over_tc"],
+               "wall_seconds": s["wall_seconds"],
+               "speedup": wall_ref / s["wall_seconds"],
+               "particle_steps_per_second": s["particle_steps_per_second"],
+               "e_eff_error": e_eff_error(s)}
+        row.update({k: v for k, v in scalars(s).items()})
+        diff = differences(runs[n], ref)
+        for k, v in diff.items():
+            row["diff." + k] = v
+            row["over_noise." + k] = v / noise[k] if v is not None and noise[k] else None
+        rows.append(row)
+    os.makedirs(out_dir, exist_ok=True)
+    with open(os.path.join(out_dir, "trade.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
+        w.writeheader()
+        w.writerows(rows)
+
+    def cell(r, k, fmt):
+        v, q = r["diff." + k], r["over_noise." + k]
+        if v is None:
+            return "n/a"
+        mark = " (noise)" if q is not None and q <= 1 else ""
+        return f"{v:{fmt}}{mark}"
+
+    lines = ["| case | dt/t_c | wall (s) | speed-up | max e_eff error | delta/D (primary) | "
+             "|delta/D - ref| | L2 phi | L2 T | L2 Ma | |phi_peak - ref| | |Ma_inf - ref| |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    for r in rows:
+        lines.append(
+            f"| {r['case']} | {r['dt_over_tc']:.3f} | {r['wall_seconds']:.0f} | "
+            f"{r['speedup']:.2f} | {100 * r['e_eff_error']:.2f} % | "
+            f"{r['delta_over_D.temperature_jump']:.3f} | "
+            f"{cell(r, 'delta_over_D.temperature_jump', '.3f')} | {cell(r, 'L2.phi', '.3f')} | "
+            f"{cell(r, 'L2.T', '.3f')} | {cell(r, 'L2.Ma', '.3f')} | "
+            f"{cell(r, 'phi_peak', '.3f')} | {cell(r, 'ma_inf_measured', '.3f')} |")
+    lines.append("")
+    lines.append("Noise (scene against seed-2): " + ", ".join(
+        f"{k} {v:.3g}" for k, v in noise.items() if v is not None))
+    open(os.path.join(out_dir, "trade.md"), "w").write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.5))
+    for ax, key, label in [(axes[0], "L2.phi", "relative L2 difference of phi"),
+                           (axes[1], "delta_over_D.temperature_jump", "|delta/D - reference|")]:
+        for r in rows:
+            if r["case"] == "reference":
+                continue
+            v = r["diff." + key]
+            if v is None:
+                continue
+            ax.scatter(r["speedup"], max(v, 1e-5), color="C0")
+            ax.annotate(r["case"], (r["speedup"], max(v, 1e-5)), fontsize=7,
+                        xytext=(3, 3), textcoords="offset points")
+        ax.axhline(noise[key], color="C3", ls="--", label="noise (second seed)")
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_xlabel("speed-up against the reference (wall time)")
+        ax.set_ylabel(label)
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=8)
+    fig.suptitle("Default scene: speed against accuracy")
+    fig.tight_layout()
+    fig.savefig(os.path.join(out_dir, "pareto.png"), dpi=110)
+
+
+if __name__ == "__main__":
+    main(sys.argv[1], sys.argv[2])
