@@ -17,6 +17,7 @@
 #include "head_on_collision.hpp"
 #include "run_command.hpp"
 #include "study_command.hpp"
+#include "tradeoff_command.hpp"
 #include "user_error.hpp"
 
 namespace {
@@ -130,6 +131,21 @@ void add_study_command(CLI::App& app, granshock::StudyOptions& o) {
   cmd->add_flag("--quiet", o.quiet, "no progress lines from the runs");
 }
 
+void add_tradeoff_command(CLI::App& app, granshock::TradeoffOptions& o) {
+  auto* cmd = app.add_subcommand(
+      "tradeoff",
+      "run a scene at a reference (dt = t_c/100) and at one cheaper setting per case, then "
+      "the table of speed-up against every difference and its noise (docs/accuracy.md)");
+  cmd->add_option("scene", o.scene_file, "scene file (TOML)")->required();
+  cmd->add_option("--out", o.out_dir, "study directory (default: runs/tradeoff_<scene name>)");
+  cmd->add_option("--set", o.overrides,
+                  "override a scene key in every case, e.g. --set time.duration=0.1 (repeatable)");
+  cmd->add_flag("--collect", o.collect, "build the table from the finished cases; run nothing");
+  cmd->add_flag("--dry-run", o.dry_run,
+                "list the cases with their overrides and expected cost; write nothing");
+  cmd->add_flag("--quiet", o.quiet, "no progress lines from the runs");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -147,6 +163,8 @@ int main(int argc, char** argv) {
   add_fields_command(app, field_dirs, field_out);
   granshock::StudyOptions study;
   add_study_command(app, study);
+  granshock::TradeoffOptions tradeoff;
+  add_tradeoff_command(app, tradeoff);
   auto* info = app.add_subcommand("info", "version, Kokkos backends and threads, build options");
 
   // Writes past a file-size limit fail with EFBIG, reported like a full disk, instead of
@@ -198,6 +216,7 @@ int main(int argc, char** argv) {
     }
     if (app.got_subcommand("fields")) return granshock::fields_command(field_dirs, field_out);
     if (app.got_subcommand("study")) return granshock::study_command(study);
+    if (app.got_subcommand("tradeoff")) return granshock::tradeoff_command(tradeoff);
     if (info->parsed()) {
       std::cout << granshock::build_info_json() << "\n";
     } else if (app.got_subcommand("collide")) {

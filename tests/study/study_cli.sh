@@ -10,6 +10,7 @@
 #   refuses_before_running a bad late case or a foreign directory: one line, exit 2, no case run
 #   set_reaches_every_case --set overrides every case after the file's [study] set, reaches the
 #                          Slurm script, and a bad one is refused before any case runs
+#   tradeoff_runs_and_tabulates  `granshock tradeoff`: the dry run, the 15 cases, the table
 set -u
 granshock=$1 source=$2 check=$3
 studies=$source/tests/study
@@ -196,6 +197,34 @@ refuses_before_running)
   "$granshock" study "$studies/interrupt.toml" --out "$out" --dry-run 2>"$work/stderr" >/dev/null
   [ $? -eq 2 ] || fail "another study's directory must be refused"
   grep -q "holds the study 'tiny', not 'interrupt'" "$work/stderr" || fail "the message: $(cat "$work/stderr")"
+  ;;
+tradeoff_runs_and_tabulates)
+  # `granshock tradeoff` on the default scene shrunk as tiny.toml shrinks it (docs/accuracy.md):
+  # a dry run writes nothing; the run makes 15 cases, the study file and the trade table.
+  tiny=(--set "domain.width=40 d" --set "domain.length=60 d" --set "obstacle.diameter=10 d"
+    --set 'obstacle.centre=["20 d", "35 d"]' --set time.duration=0.004
+    --set time.production_start=0.002 --set output.sample_every=20
+    --set output.snapshot_interval=0.002 --set output.checkpoint_interval=0.001
+    --set output.series_interval=0.0005 --set output.progress_interval=1000)
+  "$granshock" tradeoff "$source/scenes/default.toml" --out "$out" --dry-run "${tiny[@]}" \
+    >"$work/stdout" 2>"$work/stderr" || fail "--dry-run failed: $(cat "$work/stderr")"
+  grep -q -- "--case 14  seed-2" "$work/stdout" || fail "the dry run lists no 15th case: $(cat "$work/stdout")"
+  [ ! -e "$out" ] || fail "--dry-run wrote $out"
+  "$granshock" tradeoff "$source/scenes/default.toml" --out "$out" --quiet "${tiny[@]}" \
+    >"$work/stdout" 2>"$work/stderr" || fail "the trade-off failed: $(tail -5 "$work/stderr")"
+  [ -s "$out/tradeoff.toml" ] || fail "no tradeoff.toml"
+  [ "$(tail -n +2 "$out/trade.csv" | wc -l)" -eq 15 ] || fail "trade.csv should have 15 rows"
+  for f in trade.md trade.json pareto.png; do [ -s "$out/$f" ] || fail "no $f"; done
+  /usr/bin/python3 -c '
+import json, sys
+t = json.load(open(sys.argv[1]))
+ref = t["cases"][0]
+assert ref["case"] == "reference" and ref["speedup"] == 1.0, ref
+assert abs(ref["dt_over_tc"] - 0.01) < 1e-6, ref["dt_over_tc"]
+soft = [c for c in t["cases"] if c["case"] == "soft-1000"][0]
+assert soft["speedup"] > 1, soft["speedup"]
+assert t["noise"]["L2.phi"] > 0, t["noise"]
+' "$out/trade.json" || fail "trade.json: the reference, the speed-up or the noise is wrong"
   ;;
 *)
   echo "unknown check $check"

@@ -1,17 +1,16 @@
 #!/usr/bin/python3
-"""The speed-against-accuracy table of a trade-off study (studies/tradeoff_default.toml).
+"""The speed-against-accuracy table of `granshock tradeoff` (docs/accuracy.md).
 
-Usage: /usr/bin/python3 trade_table.py STUDY_DIR OUT_DIR
+Usage: /usr/bin/python3 trade_table.py STUDY_DIR OUT_DIR (granshock tradeoff runs it)
 
 Every case is compared with the case "reference" (the most accurate settings) and the
 difference set beside the noise: the same comparison between the case "scene" (the scene
 as given) and "seed-2" (the scene with another seed). A difference at or below the noise
-is not an error the setting made. Writes OUT_DIR/trade.csv (every number), trade.md (the
-table of docs/accuracy.md) and pareto.png (speed-up against each error).
+is not an error the setting made. Writes OUT_DIR/trade.csv and trade.json (every number),
+trade.md (the table of docs/accuracy.md) and pareto.png (speed-up against each error).
 """
 import csv
 import json
-import math
 import os
 import sys
 
@@ -95,6 +94,8 @@ def main(study, out_dir):
         w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
         w.writeheader()
         w.writerows(rows)
+    with open(os.path.join(out_dir, "trade.json"), "w") as f:
+        json.dump({"noise": noise, "cases": rows}, f, indent=1)
 
     def cell(r, k, fmt):
         v, q = r["diff." + k], r["over_noise." + k]
@@ -103,14 +104,17 @@ def main(study, out_dir):
         mark = " (noise)" if q is not None and q <= 1 else ""
         return f"{v:{fmt}}{mark}"
 
+    def num(v, spec):
+        return "n/a" if v is None else f"{v:{spec}}"
+
     lines = ["| case | dt/t_c | wall (s) | speed-up | max e_eff error | delta/D (primary) | "
              "|delta/D - ref| | L2 phi | L2 T | L2 Ma | |phi_peak - ref| | |Ma_inf - ref| |",
              "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         lines.append(
-            f"| {r['case']} | {r['dt_over_tc']:.3f} | {r['wall_seconds']:.0f} | "
+            f"| {r['case']} | {r['dt_over_tc']:.3f} | {r['wall_seconds']:.1f} | "
             f"{r['speedup']:.2f} | {100 * r['e_eff_error']:.2f} % | "
-            f"{r['delta_over_D.temperature_jump']:.3f} | "
+            f"{num(r['delta_over_D.temperature_jump'], '.3f')} | "
             f"{cell(r, 'delta_over_D.temperature_jump', '.3f')} | {cell(r, 'L2.phi', '.3f')} | "
             f"{cell(r, 'L2.T', '.3f')} | {cell(r, 'L2.Ma', '.3f')} | "
             f"{cell(r, 'phi_peak', '.3f')} | {cell(r, 'ma_inf_measured', '.3f')} |")
@@ -135,13 +139,15 @@ def main(study, out_dir):
             ax.scatter(r["speedup"], max(v, 1e-5), color="C0")
             ax.annotate(r["case"], (r["speedup"], max(v, 1e-5)), fontsize=7,
                         xytext=(3, 3), textcoords="offset points")
-        ax.axhline(noise[key], color="C3", ls="--", label="noise (second seed)")
+        if noise[key]:
+            ax.axhline(noise[key], color="C3", ls="--", label="noise (second seed)")
         ax.set_xscale("log")
         ax.set_yscale("log")
         ax.set_xlabel("speed-up against the reference (wall time)")
         ax.set_ylabel(label)
         ax.grid(alpha=0.3)
-        ax.legend(fontsize=8)
+        if noise[key]:
+            ax.legend(fontsize=8)
     fig.suptitle("Default scene: speed against accuracy")
     fig.tight_layout()
     fig.savefig(os.path.join(out_dir, "pareto.png"), dpi=110)

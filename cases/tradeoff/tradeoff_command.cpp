@@ -1,0 +1,64 @@
+#include "tradeoff_command.hpp"
+
+#include <unistd.h>
+
+#include <fstream>
+#include <iostream>
+
+#include "figures.hpp"
+#include "scene_file.hpp"
+#include "study_command.hpp"
+#include "tradeoff_paths.hpp"
+#include "tradeoff_plan.hpp"
+#include "user_error.hpp"
+
+namespace granshock {
+
+namespace fs = std::filesystem;
+
+int tradeoff_command(const TradeoffOptions& o) {
+  const LoadedScene loaded = load_scene_file(o.scene_file, o.overrides);
+  const std::string name = "tradeoff_" + loaded.scene.name;
+  const fs::path out = o.out_dir.empty() ? fs::path("runs") / name : o.out_dir;
+  const std::string toml =
+      tradeoff_study_toml(name, o.scene_file, o.overrides, tradeoff_cases(loaded.scene));
+
+  // The study runner refuses a directory it did not make, so the study file is written
+  // aside and copied in (for the record) once the study has made its directory.
+  const fs::path study_file =
+      fs::temp_directory_path() / (name + "-" + std::to_string(::getpid()) + ".toml");
+  {
+    std::ofstream file(study_file);
+    file << toml;
+    if (!file) throw UserError("cannot write '" + study_file.string() + "'");
+  }
+  StudyOptions study;
+  study.study_file = study_file;
+  study.out_dir = out;
+  study.collect = o.collect;
+  study.dry_run = o.dry_run;
+  study.quiet = o.quiet;
+  int code = 0;
+  try {
+    code = study_command(study);
+  } catch (...) {
+    fs::remove(study_file);
+    throw;
+  }
+  std::error_code ec;
+  if (!o.dry_run && fs::is_directory(out))
+    fs::copy_file(study_file, out / "tradeoff.toml", fs::copy_options::overwrite_existing, ec);
+  fs::remove(study_file);
+  if (o.dry_run) return code;
+  if (code != 0) {
+    std::cerr << "granshock tradeoff: no trade table until every case has finished\n";
+    return code;
+  }
+  require_plotting_python();
+  run_figure_script(figure_script("trade_table.py", GRANSHOCK_TRADEOFF_SCRIPT_DIR),
+                    {out.string(), out.string()});
+  if (!o.quiet) std::cout << "granshock tradeoff: table in " << (out / "trade.md").string() << "\n";
+  return 0;
+}
+
+}  // namespace granshock
