@@ -199,11 +199,12 @@ refuses_before_running)
   grep -q "holds the study 'tiny', not 'interrupt'" "$work/stderr" || fail "the message: $(cat "$work/stderr")"
   ;;
 tradeoff_runs_and_tabulates)
-  # `granshock tradeoff` on the default scene shrunk as tiny.toml shrinks it (docs/accuracy.md):
+  # `granshock tradeoff` on the default scene shrunk as tiny.toml shrinks it, 2 ms simulated
+  # (docs/accuracy.md):
   # a dry run writes nothing; the run makes 15 cases, the study file and the trade table.
   tiny=(--set "domain.width=40 d" --set "domain.length=60 d" --set "obstacle.diameter=10 d"
-    --set 'obstacle.centre=["20 d", "35 d"]' --set time.duration=0.004
-    --set time.production_start=0.002 --set output.sample_every=20
+    --set 'obstacle.centre=["20 d", "35 d"]' --set time.duration=0.002
+    --set time.production_start=0.001 --set output.sample_every=20
     --set output.snapshot_interval=0.002 --set output.checkpoint_interval=0.001
     --set output.series_interval=0.0005 --set output.progress_interval=1000)
   "$granshock" tradeoff "$source/scenes/default.toml" --out "$out" --dry-run "${tiny[@]}" \
