@@ -87,11 +87,12 @@ void check_contact_range(const SolverState& s, const SolverFit& fit, std::size_t
   if (!fit.obstacle) return;
   const double dx = s.position[i * dim] - fit.obstacle->centre[0];
   const double dy = s.position[i * dim + 1] - fit.obstacle->centre[1];
-  if (std::sqrt(dx * dx + dy * dy) < 0.5 * fit.obstacle->diameter_m)
+  const double from_axis = std::sqrt(dx * dx + dy * dy);
+  if (from_axis < 0.5 * fit.obstacle->diameter_m)
     fail(
         fmt::format("particle {} lies inside the obstacle (its centre {:.3g} m from the axis, "
                     "radius {:.3g} m): the state was not made by the solver",
-                    s.id[i], std::sqrt(dx * dx + dy * dy), 0.5 * fit.obstacle->diameter_m));
+                    s.id[i], from_axis, 0.5 * fit.obstacle->diameter_m));
 }
 
 void check_contacts(const SolverState& s, const SolverFit& fit) {

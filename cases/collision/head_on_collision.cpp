@@ -55,10 +55,9 @@ Geometry build(const SolverSetup& scene, int a, int b, double dt, const ImpactPl
   const double half = 20 * dmax;
   g.setup.box.lo = {place.centre[0] - half, place.centre[1] - half, 0};
   g.setup.box.hi = {place.centre[0] + half, place.centre[1] + half, dmax};
-  if (g.on_obstacle) {
-    const Material material = scene.obstacle ? scene.obstacle->material : aluminium();
-    g.setup.obstacle = Obstacle{ObstacleShape::cylinder, g.at(0), 2 * g.cylinder_radius, material};
-  }
+  if (g.on_obstacle)
+    g.setup.obstacle =
+        Obstacle{ObstacleShape::cylinder, g.at(0), 2 * g.cylinder_radius, scene.obstacle->material};
   return g;
 }
 
@@ -93,16 +92,14 @@ std::vector<std::string> collision_pair_names() {
   return kPairs;
 }
 
-CollisionResult collide_species(const SolverSetup& scene, int a, int b, double speed, double dt,
+CollisionResult collide_species(const SolverSetup& given, int a, int b, double speed, double dt,
                                 bool force, double phase, const ImpactPlace& place) {
-  // A scene without an obstacle collides with an aluminium cylinder (build()).
-  const PairProperties props =
-      b >= 0           ? scene.pair(a, b)
-      : scene.obstacle ? scene.obstacle_pair(a)
-                       : softened(particle_obstacle(scene.species[a], aluminium(),
-                                                    scene.contacts.obstacle_restitution[a],
-                                                    scene.contacts.obstacle_friction[a]),
-                                  scene.contacts.softening);
+  // A scene without an obstacle collides with an aluminium cylinder: its pair properties
+  // (softening, calibrated damping) then come from SolverSetup like any obstacle's.
+  SolverSetup scene = given;
+  if (b < 0 && !scene.obstacle)
+    scene.obstacle = Obstacle{ObstacleShape::cylinder, {}, 0, aluminium()};
+  const PairProperties props = b >= 0 ? scene.pair(a, b) : scene.obstacle_pair(a);
   CollisionResult r;
   r.pair = props.name;
   r.speed = speed;
