@@ -24,31 +24,30 @@ int tradeoff_command(const TradeoffOptions& o) {
       tradeoff_study_toml(name, o.scene_file, o.overrides, tradeoff_cases(loaded.scene));
 
   // The study runner refuses a directory it did not make, so the study file is written
-  // aside and copied in (for the record) once the study has made its directory.
-  const fs::path study_file =
-      fs::temp_directory_path() / (name + "-" + std::to_string(::getpid()) + ".toml");
+  // aside (removed however the study ends) and copied in, for the record, once the study
+  // has made its directory.
+  struct TemporaryFile {
+    fs::path path;
+    ~TemporaryFile() {
+      std::error_code ignored;
+      fs::remove(path, ignored);
+    }
+  } study_file{fs::temp_directory_path() / (name + "-" + std::to_string(::getpid()) + ".toml")};
   {
-    std::ofstream file(study_file);
+    std::ofstream file(study_file.path);
     file << toml;
-    if (!file) throw UserError("cannot write '" + study_file.string() + "'");
+    if (!file) throw UserError("cannot write '" + study_file.path.string() + "'");
   }
   StudyOptions study;
-  study.study_file = study_file;
+  study.study_file = study_file.path;
   study.out_dir = out;
   study.collect = o.collect;
   study.dry_run = o.dry_run;
   study.quiet = o.quiet;
-  int code = 0;
-  try {
-    code = study_command(study);
-  } catch (...) {
-    fs::remove(study_file);
-    throw;
-  }
+  const int code = study_command(study);
   std::error_code ec;
   if (!o.dry_run && fs::is_directory(out))
-    fs::copy_file(study_file, out / "tradeoff.toml", fs::copy_options::overwrite_existing, ec);
-  fs::remove(study_file);
+    fs::copy_file(study_file.path, out / "tradeoff.toml", fs::copy_options::overwrite_existing, ec);
   if (o.dry_run) return code;
   if (code != 0) {
     std::cerr << "granshock tradeoff: no trade table until every case has finished\n";
