@@ -88,6 +88,13 @@ void add_run_command(CLI::App& app, granshock::RunOptions& o) {
   cmd->add_flag("--dry-run", o.dry_run,
                 "check the scene and the output directory, print the resolved scene, write "
                 "nothing");
+  cmd->add_option("--accuracy", o.accuracy,
+                  "error budget, e.g. 2%: choose dt, stiffness softening and precision from a "
+                  "measured trade table (docs/accuracy.md) and say what was chosen");
+  cmd->add_option("--accuracy-table", o.accuracy_table,
+                  "the trade.json of `granshock tradeoff` to choose from (default: the paper "
+                  "case's, docs/results/tradeoff/paper_d50_u2375)")
+      ->check(CLI::ExistingFile);
 }
 
 void add_fields_command(CLI::App& app, std::vector<std::filesystem::path>& dirs,

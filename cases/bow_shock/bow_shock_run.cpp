@@ -284,9 +284,9 @@ void BowShockRun::finish(bool completed) {
   run_file_->flush();
   const double wall = wall_before_ + meter_->elapsed_s();
   const long steps = solver_->steps_done();
-  const nlohmann::json j =
-      run_summary(scene_, *solver_, inflow_, calibration_ ? &*calibration_ : nullptr, completed,
-                  {wall, meter_->elapsed_s(), particle_steps_});
+  nlohmann::json j = run_summary(scene_, *solver_, inflow_, calibration_ ? &*calibration_ : nullptr,
+                                 completed, {wall, meter_->elapsed_s(), particle_steps_});
+  if (!options_.accuracy_choice.is_null()) j["accuracy_choice"] = options_.accuracy_choice;
   write_file_atomically(dir_ / "summary.json", j.dump(2) + "\n");
   if (completed && run_file_) {
     // The field analysis reads run.h5, which must be closed first.

@@ -4,6 +4,7 @@
 
 #include <iostream>
 
+#include "accuracy_choice.hpp"
 #include "bow_shock_run.hpp"
 #include "models/restitution_calibration.hpp"
 #include "run_checks.hpp"
@@ -39,7 +40,28 @@ RunCheck check_run(const RunOptions& o) {
   return c;
 }
 
-int run_scene(const RunOptions& o) {
+namespace {
+
+// --accuracy: the chosen settings become --set overrides after the user's own, so that the
+// resolved scene (run.h5, resume) records them; the choice is said before anything runs.
+RunOptions with_accuracy_choice(const RunOptions& given) {
+  if (given.accuracy.empty()) return given;
+  RunOptions o = given;
+  const AccuracyChoice choice =
+      choose_accuracy(o.scene_file, o.overrides, o.accuracy, o.accuracy_table);
+  o.overrides.insert(o.overrides.end(), choice.overrides.begin(), choice.overrides.end());
+  o.accuracy_choice = choice.record;
+  // On --dry-run stdout is a scene file: the report goes there as TOML comments.
+  for (const std::string& line : choice.report)
+    (o.dry_run ? std::cout : std::cerr)
+        << (o.dry_run ? "# accuracy: " : "granshock: accuracy: ") << line << "\n";
+  return o;
+}
+
+}  // namespace
+
+int run_scene(const RunOptions& given) {
+  const RunOptions o = with_accuracy_choice(given);
   if (o.dry_run) {
     const RunCheck c = check_run(o);
     for (const std::string& w : c.warnings) std::cerr << "granshock: warning: " << w << "\n";

@@ -7,7 +7,9 @@
 #include <stdexcept>
 #include <string>
 
+#include <nlohmann/json.hpp>
 #include <vector>
+
 #include "run_observables.hpp"  // NumericalFailure
 #include "scene.hpp"
 
@@ -23,6 +25,9 @@ struct RunOptions {
   long stop_after_steps = 0;  // > 0: checkpoint and stop after this many steps (batch jobs)
   bool quiet = false;         // no progress lines
   bool dry_run = false;       // check the scene and the directory, print the resolved scene
+  std::string accuracy;       // an error budget ("2%"): settings from a measured table
+  std::filesystem::path accuracy_table;  // that table; empty: default_accuracy_table()
+  nlohmann::json accuracy_choice;        // what run_scene chose for `accuracy`; null without
 };
 
 // What `granshock run --dry-run` checks: the scene, the limits and guards of a run and the

@@ -11,13 +11,6 @@ namespace granshock {
 
 namespace {
 
-// time.dt and the sample interval that keeps the scene's sampling interval in time.
-std::vector<std::string> at_dt(const Scene& s, double dt) {
-  const double interval = double(s.run.sample_every) * s.setup.dt;
-  const long every = std::max(1L, std::lround(interval / dt));
-  return {fmt::format("time.dt={:.9g}", dt), fmt::format("output.sample_every={}", every)};
-}
-
 std::vector<std::string> with(std::vector<std::string> a, const std::string& b) {
   a.insert(a.begin(), b);
   return a;
@@ -25,15 +18,23 @@ std::vector<std::string> with(std::vector<std::string> a, const std::string& b) 
 
 }  // namespace
 
+std::vector<std::string> overrides_at_dt(const Scene& s, double dt) {
+  const double interval = double(s.run.sample_every) * s.setup.dt;
+  const long every = std::max(1L, std::lround(interval / dt));
+  return {fmt::format("time.dt={:.9g}", dt), fmt::format("output.sample_every={}", every)};
+}
+
 std::vector<TradeCase> tradeoff_cases(const Scene& s) {
   const TimeStepAssessment guard = assess_time_step(s);
   const double tc = guard.t_c, dt = s.setup.dt, d = s.setup.max_diameter();
-  std::vector<TradeCase> cases = {
-      {"reference", at_dt(s, tc / 100)}, {"dt-tc50", at_dt(s, tc / 50)},
-      {"dt-tc25", at_dt(s, tc / 25)},    {"scene", at_dt(s, dt)},
-      {"dt-tc6", at_dt(s, tc / 6)},      {"dt-stable", at_dt(s, 0.95 * guard.dt_stable)}};
+  std::vector<TradeCase> cases = {{"reference", overrides_at_dt(s, tc / 100)},
+                                  {"dt-tc50", overrides_at_dt(s, tc / 50)},
+                                  {"dt-tc25", overrides_at_dt(s, tc / 25)},
+                                  {"scene", overrides_at_dt(s, dt)},
+                                  {"dt-tc6", overrides_at_dt(s, tc / 6)},
+                                  {"dt-stable", overrides_at_dt(s, 0.95 * guard.dt_stable)}};
   for (const double f : {10.0, 100.0, 1000.0})
-    cases.push_back({fmt::format("soft-{:g}", f), with(at_dt(s, dt * std::pow(f, 0.4)),
+    cases.push_back({fmt::format("soft-{:g}", f), with(overrides_at_dt(s, dt * std::pow(f, 0.4)),
                                                        fmt::format("contact.softening={:g}", f))});
   const double window_mid = 0.5 * (s.run.production_start_s + s.run.duration_s);
   cases.push_back({"single", {"numerics.precision=\"single\""}});

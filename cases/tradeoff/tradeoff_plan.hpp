@@ -16,6 +16,10 @@ struct TradeCase {
   std::vector<std::string> overrides;  // "key=value", after the scene's own
 };
 
+// time.dt = dt and the sample interval (in steps) that keeps the scene's sampling interval
+// in simulated time, at least one step.
+std::vector<std::string> overrides_at_dt(const Scene& scene, double dt);
+
 // From the scene's collision time t_c and stable limit at its fastest impact (the guard):
 //   reference    dt = t_c/100, double, the materials as given
 //   dt-tc50, dt-tc25, scene (the scene's dt), dt-tc6, dt-stable (0.95 of the limit)

@@ -1,0 +1,178 @@
+#include "accuracy_choice.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <set>
+
+#include "run_checks.hpp"
+#include "scene_file.hpp"
+#include "tradeoff_paths.hpp"
+#include "tradeoff_plan.hpp"
+#include "user_error.hpp"
+
+namespace granshock {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+bool changes_only(const MeasuredSetting& s, const std::set<std::string>& keys) {
+  return std::all_of(s.changed.begin(), s.changed.end(),
+                     [&](const std::string& k) { return keys.count(k) > 0; });
+}
+
+const MeasuredSetting* find_case(const AccuracyTable& table, const std::string& name) {
+  for (const MeasuredSetting& s : table.settings)
+    if (s.name == name) return &s;
+  return nullptr;
+}
+
+std::string percent(double fraction) {
+  return std::isfinite(fraction) ? fmt::format("{:.3g} %", 100 * fraction) : "unbounded";
+}
+
+std::string describe(const MeasuredSetting& s) {
+  return fmt::format(
+      "\"{}\" (dt = {:.3g} t_c, softening {:g}; error at most {}, set by {}; "
+      "{:.3g}x the reference's speed)",
+      s.name, s.dt_over_tc, s.softening, percent(s.error_bound), s.bound_by, s.speedup);
+}
+
+void choose_precision(const AccuracyTable& table, double budget, SettingChoice& c) {
+  const MeasuredSetting* single = nullptr;
+  for (const MeasuredSetting& s : table.settings)
+    if (s.single_precision && changes_only(s, {"numerics.precision"})) single = &s;
+  const MeasuredSetting* scene = find_case(table, "scene");
+  if (single == nullptr || scene == nullptr) {
+    c.reasons.push_back("double precision: the table has no single-precision case");
+    return;
+  }
+  const double ratio = single->speedup / scene->speedup;
+  if (single->error_bound > budget) {
+    c.reasons.push_back(fmt::format("double precision: single's error is up to {} ({})",
+                                    percent(single->error_bound), single->bound_by));
+  } else if (ratio <= 1) {
+    c.reasons.push_back(fmt::format(
+        "double precision: single was measured at {:.3g}x the speed of double, no faster", ratio));
+  } else {
+    c.single_precision = true;
+    c.reasons.push_back(
+        fmt::format("single precision: error at most {} ({}), {:.3g}x the speed of double",
+                    percent(single->error_bound), single->bound_by, ratio));
+  }
+}
+
+}  // namespace
+
+double parse_error_budget(const std::string& text) {
+  const auto bad = [&] {
+    return UserError(fmt::format(
+        "--accuracy '{}': give the error budget as a percentage, e.g. --accuracy 2%", text));
+  };
+  if (text.size() < 2 || text.back() != '%') throw bad();
+  const std::string number = text.substr(0, text.size() - 1);
+  char* end = nullptr;
+  const double value = std::strtod(number.c_str(), &end);
+  if (end != number.c_str() + number.size() || !std::isfinite(value) || value <= 0) throw bad();
+  return value / 100;
+}
+
+SettingChoice choose_setting(const AccuracyTable& table, double budget) {
+  SettingChoice c;
+  std::vector<const MeasuredSetting*> candidates;
+  for (const MeasuredSetting& s : table.settings)
+    if (!s.single_precision && changes_only(s, {"time.dt", "contact.softening"}))
+      candidates.push_back(&s);
+  const MeasuredSetting* best = nullptr;
+  for (const MeasuredSetting* s : candidates)
+    if (s->error_bound <= budget && (best == nullptr || s->speedup > best->speedup)) best = s;
+  if (best == nullptr) {
+    c.certified = false;
+    c.setting = *find_case(table, "reference");  // read_accuracy_table requires it
+    c.reasons.push_back(fmt::format(
+        "no measured setting is within {}: the table cannot bound an error below its noise, "
+        "{} ({} between two seeds); chose the most accurate case, {}",
+        percent(budget), percent(table.noise_floor), table.noise_floor_by, describe(c.setting)));
+    return c;  // single precision is a cheaper setting: not without a certified budget
+  }
+  c.setting = *best;
+  c.reasons.push_back("chose " + describe(c.setting));
+  for (const MeasuredSetting* s : candidates)
+    if (s->speedup > best->speedup)
+      c.reasons.push_back("not " + describe(*s) + ": past the budget");
+  choose_precision(table, budget, c);
+  return c;
+}
+
+fs::path default_accuracy_table() {
+  std::vector<fs::path> candidates;
+  std::error_code ec;
+  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec) candidates.push_back(self.parent_path() / ".." / GRANSHOCK_ACCURACY_TABLE_INSTALLED);
+  candidates.push_back(GRANSHOCK_ACCURACY_TABLE_SOURCE);
+  for (const fs::path& p : candidates)
+    if (fs::is_regular_file(p, ec)) return p;
+  std::vector<std::string> tried;
+  for (const fs::path& p : candidates) tried.push_back(p.string());
+  throw UserError(
+      fmt::format("--accuracy: cannot find the measured table (looked at {}); name one with "
+                  "--accuracy-table",
+                  fmt::join(tried, ", ")));
+}
+
+AccuracyChoice choose_accuracy(const fs::path& scene_file,
+                               const std::vector<std::string>& overrides,
+                               const std::string& budget_text, const fs::path& table_file) {
+  const double budget = parse_error_budget(budget_text);
+  const fs::path table_path = table_file.empty() ? default_accuracy_table() : table_file;
+  const AccuracyTable table = read_accuracy_table(table_path);
+  const SettingChoice sc = choose_setting(table, budget);
+  const MeasuredSetting& s = sc.setting;
+
+  AccuracyChoice out;
+  std::vector<std::string> chosen;
+  if (s.softening != 1) chosen.push_back(fmt::format("contact.softening={:g}", s.softening));
+  if (sc.single_precision) chosen.push_back("numerics.precision=\"single\"");
+  std::vector<std::string> all = overrides;
+  all.insert(all.end(), chosen.begin(), chosen.end());
+  // t_c of this scene at the chosen softening: the case's dt/t_c carries over.
+  const LoadedScene loaded = load_scene_file(scene_file, all);
+  const TimeStepAssessment guard = assess_time_step(loaded.scene);
+  double dt = s.dt_over_tc * guard.t_c;
+  out.report.push_back(fmt::format("budget {} on e_eff, delta/D, phi_peak and Ma_inf, from {}",
+                                   percent(budget), table_path.string()));
+  out.report.insert(out.report.end(), sc.reasons.begin(), sc.reasons.end());
+  if (dt > 0.95 * guard.dt_stable) {
+    dt = 0.95 * guard.dt_stable;
+    out.report.push_back(fmt::format(
+        "dt lowered to 0.95 of this scene's stable limit, {:.4g} s: {:.3g} t_c is past it here",
+        guard.dt_stable, s.dt_over_tc));
+  }
+  // As the override writes it (9 digits), so that the record names the dt the run uses.
+  dt = std::stod(fmt::format("{:.9g}", dt));
+  const std::vector<std::string> at_dt = overrides_at_dt(loaded.scene, dt);
+  chosen.insert(chosen.end(), at_dt.begin(), at_dt.end());
+  out.report.push_back(fmt::format("so: {} (t_c = {:.4g} s, {} at {:.3g} m/s)",
+                                   fmt::join(chosen, ", "), guard.t_c, guard.stiffest_pair,
+                                   guard.impact_speed));
+  out.overrides = chosen;
+  out.record = {{"budget", budget},
+                {"table", table_path.string()},
+                {"case", s.name},
+                {"certified", sc.certified},
+                {"error_bound", s.error_bound},
+                {"bound_by", s.bound_by},
+                {"noise_floor", table.noise_floor},
+                {"speedup_over_reference", s.speedup},
+                {"dt", dt},
+                {"dt_over_tc", dt / guard.t_c},
+                {"softening", s.softening},
+                {"precision", sc.single_precision ? "single" : "double"},
+                {"overrides", chosen}};
+  return out;
+}
+
+}  // namespace granshock

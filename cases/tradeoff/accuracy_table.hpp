@@ -1,0 +1,46 @@
+// A measured trade table (trade.json of `granshock tradeoff`, cases/tradeoff/trade_table.py)
+// read as the settings `granshock run --accuracy` may choose and the error each is known to
+// cost (docs/accuracy.md, "Choosing settings for an error budget").
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace granshock {
+
+// The answers a budget bounds: delta/D by each definition, the peak solid fraction and the
+// measured upstream Mach number, each relative to the reference's value; and e_eff.
+inline const std::vector<std::string> kBudgetAnswers = {
+    "delta_over_D.temperature_jump", "delta_over_D.sonic_line", "delta_over_D.density_threshold",
+    "phi_peak", "ma_inf_measured"};
+
+struct MeasuredSetting {
+  std::string name;                  // the table's case
+  std::vector<std::string> changed;  // scene keys changed against the scene as given
+  double dt_over_tc = 0;             // dt / t_c at the fastest impact (the guard's t_c)
+  double softening = 1;              // contact.softening
+  bool single_precision = false;     // numerics.precision = "single"
+  double speedup = 0;                // wall time of the reference / its own
+  double e_eff_error = 0;            // largest |e_eff / e - 1| over the pairs at its dt
+  // The largest relative error it is known not to exceed: over e_eff and every answer,
+  // max(|difference from the reference|, noise) / |reference|. A difference below the
+  // noise is no error, but no smaller bound can be claimed for it either. Infinite when
+  // the setting lost an answer the reference has.
+  double error_bound = 0;
+  std::string bound_by;  // the answer that sets error_bound
+};
+
+struct AccuracyTable {
+  std::filesystem::path source;
+  std::vector<MeasuredSetting> settings;  // in the table's order
+  // The smallest bound any setting can have: the largest relative noise over the answers.
+  double noise_floor = 0;
+  std::string noise_floor_by;
+};
+
+// Reads trade.json; throws UserError naming the file and the cause where it cannot be read
+// or lacks the cases "reference", "scene" and "seed-2" or a setting's columns.
+AccuracyTable read_accuracy_table(const std::filesystem::path& trade_json);
+
+}  // namespace granshock

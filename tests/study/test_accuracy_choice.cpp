@@ -1,0 +1,183 @@
+// `granshock run --accuracy` (cases/tradeoff/accuracy_choice.hpp): the error bound of every
+// measured case, the fastest case within a budget among those that change only dt and
+// softening, single precision only where measured faster, the budget below the table's
+// noise, and the choice carried over to another scene through dt / t_c.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "accuracy_choice.hpp"
+#include "run_checks.hpp"
+#include "scene_file.hpp"
+#include "scene_fixtures.hpp"
+#include "trade_table_fixture.hpp"
+#include "user_error.hpp"
+
+using namespace granshock;
+using granshock::testing::fake_trade_table;
+using granshock::testing::TempDir;
+
+namespace {
+
+AccuracyTable table_of(const nlohmann::json& doc, const TempDir& dir) {
+  return read_accuracy_table(dir.write("trade.json", doc.dump()));
+}
+
+const MeasuredSetting& setting(const AccuracyTable& t, const std::string& name) {
+  for (const MeasuredSetting& s : t.settings)
+    if (s.name == name) return s;
+  throw std::runtime_error("no case " + name);
+}
+
+bool mentions(const std::vector<std::string>& lines, const std::string& text) {
+  for (const std::string& l : lines)
+    if (l.find(text) != std::string::npos) return true;
+  return false;
+}
+
+}  // namespace
+
+TEST(AccuracyTable, BoundIsTheDifferenceOrTheNoiseOrEeff) {
+  TempDir dir;
+  const AccuracyTable t = table_of(fake_trade_table(), dir);
+  EXPECT_NEAR(t.noise_floor, 0.01, 1e-12);
+  // Below the noise: bounded by the noise, 1 %.
+  EXPECT_NEAR(setting(t, "reference").error_bound, 0.01, 1e-12);
+  EXPECT_NEAR(setting(t, "dt-tc25").error_bound, 0.01, 1e-12);
+  // Past the noise: the difference.
+  EXPECT_NEAR(setting(t, "scene").error_bound, 0.02, 1e-12);
+  EXPECT_EQ(setting(t, "scene").bound_by, "delta_over_D.temperature_jump");
+  EXPECT_NEAR(setting(t, "soft-100").error_bound, 0.04, 1e-12);
+  // e_eff past both.
+  EXPECT_NEAR(setting(t, "dt-stable").error_bound, 0.14, 1e-12);
+  EXPECT_EQ(setting(t, "dt-stable").bound_by, "e_eff");
+  EXPECT_EQ(setting(t, "soft-100").softening, 100);
+  EXPECT_TRUE(setting(t, "single").single_precision);
+}
+
+TEST(AccuracyTable, ACaseThatLostAnAnswerIsUnbounded) {
+  TempDir dir;
+  nlohmann::json doc = fake_trade_table();
+  granshock::testing::FakeTradeCase lost{"soft-1000", "contact.softening time.dt", 0.08, 45.0,
+                                         0.0125};
+  lost.delta_diff = std::nullopt;
+  lost.softening = 1000;
+  doc["cases"].push_back(granshock::testing::fake_trade_case(lost));
+  const AccuracyTable t = table_of(doc, dir);
+  EXPECT_EQ(setting(t, "soft-1000").error_bound, std::numeric_limits<double>::infinity());
+  // The fastest case of all, never chosen.
+  EXPECT_EQ(choose_setting(t, 10.0).setting.name, "soft-100");
+}
+
+TEST(AccuracyChoice, FastestCaseWithinTheBudget) {
+  TempDir dir;
+  const AccuracyTable t = table_of(fake_trade_table(), dir);
+  EXPECT_EQ(choose_setting(t, 0.011).setting.name, "dt-tc25");
+  // skin-0.6 and window-half are faster than the scene and within 2.5 %, but change
+  // settings --accuracy does not choose.
+  EXPECT_EQ(choose_setting(t, 0.025).setting.name, "scene");
+  EXPECT_EQ(choose_setting(t, 0.05).setting.name, "soft-100");
+  // dt-stable is within 20 % but slower than soft-100.
+  const SettingChoice c = choose_setting(t, 0.2);
+  EXPECT_EQ(c.setting.name, "soft-100");
+  EXPECT_TRUE(c.certified);
+  EXPECT_FALSE(c.single_precision);
+  EXPECT_TRUE(mentions(c.reasons, "no faster")) << "single at 7.7x against the scene's 8x";
+}
+
+TEST(AccuracyChoice, RejectedFasterCasesAreNamed) {
+  TempDir dir;
+  const SettingChoice c = choose_setting(table_of(fake_trade_table(), dir), 0.025);
+  EXPECT_TRUE(mentions(c.reasons, "not \"soft-100\""));
+  EXPECT_TRUE(mentions(c.reasons, "not \"dt-stable\""));
+  EXPECT_FALSE(mentions(c.reasons, "skin-0.6"));
+}
+
+TEST(AccuracyChoice, BelowTheNoiseTheMostAccurateCaseAndSaysSo) {
+  TempDir dir;
+  const SettingChoice c = choose_setting(table_of(fake_trade_table(), dir), 0.005);
+  EXPECT_EQ(c.setting.name, "reference");
+  EXPECT_FALSE(c.certified);
+  EXPECT_FALSE(c.single_precision);
+  EXPECT_TRUE(mentions(c.reasons, "cannot bound an error below its noise, 1 %"));
+}
+
+TEST(AccuracyChoice, SinglePrecisionOnlyWhereMeasuredFasterAndWithin) {
+  TempDir dir;
+  const AccuracyTable faster = table_of(fake_trade_table(9.0), dir);
+  EXPECT_TRUE(choose_setting(faster, 0.025).single_precision);
+  // Its own bound is 1.26 %: past a budget of 1.1 %.
+  const SettingChoice tight = choose_setting(faster, 0.011);
+  EXPECT_FALSE(tight.single_precision);
+  EXPECT_TRUE(mentions(tight.reasons, "single's error is up to 1.26 %"));
+}
+
+TEST(AccuracyChoice, BudgetIsAPercentage) {
+  EXPECT_DOUBLE_EQ(parse_error_budget("2%"), 0.02);
+  EXPECT_DOUBLE_EQ(parse_error_budget("0.5%"), 0.005);
+  for (const char* bad : {"2", "%", "-1%", "0%", "two%", "2 %%", "nan%"})
+    EXPECT_THROW(parse_error_budget(bad), UserError) << bad;
+}
+
+TEST(AccuracyTable, UnreadableTablesNameFileAndCause) {
+  TempDir dir;
+  const auto message = [&](const std::string& text) {
+    try {
+      read_accuracy_table(dir.write("t.json", text));
+    } catch (const UserError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(message("{").find("t.json: is not JSON"), std::string::npos);
+  EXPECT_NE(message("{\"cases\": []}").find("has no \"cases\" and \"noise\""), std::string::npos);
+  nlohmann::json no_seed = fake_trade_table();
+  no_seed["cases"].erase(no_seed["cases"].size() - 1);
+  EXPECT_NE(message(no_seed.dump()).find("has no case \"seed-2\""), std::string::npos);
+  nlohmann::json old = fake_trade_table();
+  old["cases"][1].erase("softening");
+  EXPECT_NE(message(old.dump()).find("case \"dt-tc25\" lacks"), std::string::npos);
+  EXPECT_THROW(read_accuracy_table(dir.path() / "missing.json"), UserError);
+}
+
+// The case's dt / t_c carries over to another scene, at the chosen softening; the fields are
+// sampled at the scene's interval in simulated time.
+TEST(AccuracyChoice, AppliedThroughDtOverTcAtTheChosenSoftening) {
+  TempDir dir;
+  const auto scene_file = dir.write("small.toml", granshock::testing::small_scene(true));
+  const auto table = dir.write("trade.json", fake_trade_table().dump());
+  const AccuracyChoice c = choose_accuracy(scene_file, {}, "5%", table);
+  EXPECT_EQ(c.record["case"], "soft-100");
+  ASSERT_EQ(c.overrides.size(), 3u);
+  EXPECT_EQ(c.overrides[0], "contact.softening=100");
+  const Scene softened = load_scene_file(scene_file, {"contact.softening=100"}).scene;
+  const double t_c = assess_time_step(softened).t_c;
+  const Scene chosen = load_scene_file(scene_file, c.overrides).scene;
+  EXPECT_NEAR(chosen.setup.dt, 0.08 * t_c, 1e-8 * t_c);
+  EXPECT_NEAR(chosen.run.sample_every * chosen.setup.dt, softened.run.sample_every * 2e-7,
+              0.5 * chosen.setup.dt);
+  EXPECT_DOUBLE_EQ(c.record["dt"].get<double>(), chosen.setup.dt);
+  EXPECT_TRUE(mentions(c.report, "chose \"soft-100\""));
+}
+
+// A dt / t_c past this scene's stable limit (a table measured with another contact law)
+// is lowered to 0.95 of the limit, and the report says so.
+TEST(AccuracyChoice, LoweredToTheStableLimitOfThisScene) {
+  TempDir dir;
+  nlohmann::json doc = fake_trade_table();
+  for (nlohmann::json& row : doc["cases"])
+    if (row["case"] == "dt-stable") row["dt_over_tc"] = 0.9;
+  const auto scene_file = dir.write("small.toml", granshock::testing::small_scene(true));
+  const AccuracyChoice c =
+      choose_accuracy(scene_file, {}, "15%", dir.write("trade.json", doc.dump()));
+  EXPECT_EQ(c.record["case"], "soft-100");  // faster; dt-stable only with a bigger speed-up
+  doc["cases"][4]["speedup"] = 1.0;         // soft-100 now slow: dt-stable is chosen
+  const AccuracyChoice s =
+      choose_accuracy(scene_file, {}, "15%", dir.write("trade2.json", doc.dump()));
+  EXPECT_EQ(s.record["case"], "dt-stable");
+  const Scene scene = load_scene_file(scene_file, {}).scene;
+  EXPECT_NEAR(s.record["dt"].get<double>(), 0.95 * assess_time_step(scene).dt_stable,
+              1e-9 * assess_time_step(scene).dt_stable);
+  EXPECT_TRUE(mentions(s.report, "dt lowered to 0.95 of this scene's stable limit"));
+}
