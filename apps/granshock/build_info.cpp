@@ -3,11 +3,13 @@
 #include <Kokkos_Core.hpp>
 #include <nlohmann/json.hpp>
 
+#include "mpi_runtime.hpp"
+
 #include "version.hpp"
 
 namespace granshock {
 
-std::string build_info_json() {
+std::string build_info_json(int processes) {
   nlohmann::json j;
   j["granshock"] = GRANSHOCK_VERSION_STRING;
   j["kokkos"] = std::to_string(KOKKOS_VERSION / 10000) + "." +
@@ -29,7 +31,10 @@ std::string build_info_json() {
   j["backends"] = backends;
   j["default_execution_space"] = Kokkos::DefaultExecutionSpace::name();
   j["threads"] = Kokkos::DefaultHostExecutionSpace().concurrency();
-  j["mpi"] = false;
+  // MPI: linked always (parallel HDF5); started only under a launcher (docs/parallel.md).
+  j["mpi"] = {{"library", MpiRuntime::library_version()},
+              {"launched", MpiRuntime::launched_by_mpi()},
+              {"processes", processes}};
   j["build_type"] = GRANSHOCK_BUILD_TYPE;
   j["compiler"] = GRANSHOCK_COMPILER;
   return j.dump(2);

@@ -5,6 +5,7 @@
 
 namespace granshock {
 
-std::string build_info_json();
+// `processes`: the MPI processes this one was started with (1 without a launcher).
+std::string build_info_json(int processes);
 
 }  // namespace granshock

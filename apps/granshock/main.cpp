@@ -15,6 +15,7 @@
 #include "fields_command.hpp"
 #include "hdf5_runtime.hpp"
 #include "head_on_collision.hpp"
+#include "mpi_runtime.hpp"
 #include "run_command.hpp"
 #include "study_command.hpp"
 #include "tradeoff_command.hpp"
@@ -186,7 +187,15 @@ int main(int argc, char** argv) {
   for (int k = 1; k < argc; ++k)
     if (std::string_view(argv[k]) == "--help" || std::string_view(argv[k]) == "-h")
       argv[k] = help_stand_in;
+  // MPI before Kokkos, which may bind devices by MPI rank.
+  std::optional<granshock::MpiRuntime> mpi;
   std::optional<granshock::KokkosRuntime> kokkos;
+  try {
+    mpi.emplace(argc, argv);
+  } catch (const std::exception& e) {
+    std::cerr << "granshock: error: cannot start MPI: " << one_line(e.what()) << "\n";
+    return 5;
+  }
   try {
     kokkos.emplace(argc, argv);
   } catch (const std::exception& e) {
@@ -215,6 +224,16 @@ int main(int argc, char** argv) {
               << "--help)\n";
     return 2;
   }
+  // Several processes would each run the whole scene into the same directory. Every rank
+  // decides alike and returns, so none waits for another; rank 0 alone says why.
+  if (mpi->size() > 1 && !info->parsed()) {
+    if (mpi->rank() == 0)
+      std::cerr << "granshock: error: started as " << mpi->size()
+                << " MPI processes, but a scene runs in one process (domain decomposition is "
+                   "not available yet: docs/parallel.md); run without mpirun and set the "
+                   "threads with OMP_NUM_THREADS\n";
+    return 2;
+  }
   try {
     if (app.got_subcommand("run")) {
       if (run.overwrite && run.resume)
@@ -225,7 +244,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("study")) return granshock::study_command(study);
     if (app.got_subcommand("tradeoff")) return granshock::tradeoff_command(tradeoff);
     if (info->parsed()) {
-      std::cout << granshock::build_info_json() << "\n";
+      if (mpi->rank() == 0) std::cout << granshock::build_info_json(mpi->size()) << "\n";
     } else if (app.got_subcommand("collide")) {
       collide.precision = precision == "single" ? granshock::Precision::single_precision
                                                 : granshock::Precision::double_precision;
