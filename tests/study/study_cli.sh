@@ -10,7 +10,8 @@
 #   refuses_before_running a bad late case or a foreign directory: one line, exit 2, no case run
 #   set_reaches_every_case --set overrides every case after the file's [study] set, reaches the
 #                          Slurm script, and a bad one is refused before any case runs
-#   tradeoff_runs_and_tabulates  `granshock tradeoff`: the dry run, the 15 cases, the table
+#   tradeoff_runs_and_tabulates  `granshock tradeoff`: the dry run, the 15 cases, the table,
+#                                the table read by `granshock run --accuracy`
 set -u
 granshock=$1 source=$2 check=$3
 studies=$source/tests/study
@@ -225,7 +226,21 @@ assert abs(ref["dt_over_tc"] - 0.01) < 1e-6, ref["dt_over_tc"]
 soft = [c for c in t["cases"] if c["case"] == "soft-1000"][0]
 assert soft["speedup"] > 1, soft["speedup"]
 assert t["noise"]["L2.phi"] > 0, t["noise"]
-' "$out/trade.json" || fail "trade.json: the reference, the speed-up or the noise is wrong"
+# The settings --accuracy chooses from, read from each case's resolved scene.
+assert soft["softening"] == 1000.0 and soft["changed"] == "contact.softening time.dt", soft
+single = [c for c in t["cases"] if c["case"] == "single"][0]
+assert single["precision"] == "single" and single["changed"] == "numerics.precision", single
+assert [c for c in t["cases"] if c["case"] == "scene"][0]["changed"] == ""
+' "$out/trade.json" || fail "trade.json: the reference, the speed-up, the noise or a setting is wrong"
+  # The table feeds --accuracy: a budget the table cannot certify falls back to the
+  # reference's dt = t_c/100, and says so.
+  "$granshock" run "$source/scenes/default.toml" "${tiny[@]}" --accuracy 0.001% \
+    --accuracy-table "$out/trade.json" --dry-run --out "$work/never" >"$work/choice" 2>&1 ||
+    fail "--accuracy with the table failed: $(cat "$work/choice")"
+  grep -q '# accuracy: no measured setting is within 0.001 %' "$work/choice" ||
+    fail "--accuracy did not say that nothing met the budget: $(cat "$work/choice")"
+  grep -q '# time.dt = .* is 0.01 t_c' "$work/choice" ||
+    fail "--accuracy did not fall back to the reference's dt: $(cat "$work/choice")"
   ;;
 *)
   echo "unknown check $check"
