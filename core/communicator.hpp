@@ -4,7 +4,8 @@
 // (max), the diagnostics and particle counts (sums), the overflow flags (any) and the
 // field sums (sum in place) are global reductions. The single-process implementation is
 // the identity. Halo exchange and migration of particles, the seam's device half, live
-// beside the particle store (kernels/particles/particle_exchange.hpp).
+// beside the particle store (kernels/particles/slab_exchange.hpp) and travel through
+// send_receive.
 #pragma once
 
 #include <vector>
@@ -21,6 +22,12 @@ class Communicator {
   virtual long sum(long local) const = 0;
   virtual bool any(bool local) const = 0;
   virtual void sum_in_place(std::vector<double>& values) const = 0;
+  // Sends `bytes` to rank `dest` and returns what rank `source` sent to this one, in one
+  // exchange (the transport of migration and ghosts, docs/parallel.md). kNone as `dest`
+  // sends nothing; as `source` it receives nothing (an open face).
+  static constexpr int kNone = -1;
+  virtual std::vector<char> send_receive(const std::vector<char>& bytes, int dest,
+                                         int source) const = 0;
 };
 
 // One process owns everything: every reduction returns its argument.
@@ -33,6 +40,11 @@ class SingleProcess final : public Communicator {
   long sum(long local) const override { return local; }
   bool any(bool local) const override { return local; }
   void sum_in_place(std::vector<double>&) const override {}
+  std::vector<char> send_receive(const std::vector<char>& bytes, int dest,
+                                 int source) const override {
+    // Rank 0 to itself (a periodic face of a single slab).
+    return dest == 0 && source == 0 ? bytes : std::vector<char>();
+  }
 
   static const SingleProcess& instance() {
     static const SingleProcess one;

@@ -53,4 +53,22 @@ void MpiCommunicator::sum_in_place(std::vector<double>& values) const {
   }
 }
 
+std::vector<char> MpiCommunicator::send_receive(const std::vector<char>& bytes, int dest,
+                                                int source) const {
+  const int to = dest == kNone ? MPI_PROC_NULL : dest;
+  const int from = source == kNone ? MPI_PROC_NULL : source;
+  if (bytes.size() > std::size_t(INT_MAX))
+    throw std::runtime_error("a halo message of more than 2 GiB");
+  // The size first, then the bytes: the receiver allocates what it is sent.
+  int count = int(bytes.size()), incoming = 0;
+  require(MPI_Sendrecv(&count, 1, MPI_INT, to, 1, &incoming, 1, MPI_INT, from, 1, comm_,
+                       MPI_STATUS_IGNORE),
+          "MPI_Sendrecv (size)");
+  std::vector<char> received(static_cast<std::size_t>(incoming));
+  require(MPI_Sendrecv(bytes.data(), count, MPI_BYTE, to, 2, received.data(), incoming, MPI_BYTE,
+                       from, 2, comm_, MPI_STATUS_IGNORE),
+          "MPI_Sendrecv (bytes)");
+  return received;
+}
+
 }  // namespace granshock

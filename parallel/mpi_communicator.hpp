@@ -20,6 +20,8 @@ class MpiCommunicator final : public Communicator {
   long sum(long local) const override;
   bool any(bool local) const override;
   void sum_in_place(std::vector<double>& values) const override;
+  std::vector<char> send_receive(const std::vector<char>& bytes, int dest,
+                                 int source) const override;
 
  private:
   MPI_Comm comm_;

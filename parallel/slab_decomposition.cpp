@@ -68,9 +68,12 @@ long SlabDecomposition::row_of(double coordinate) const {
 }
 
 int SlabDecomposition::owner(double coordinate) const {
-  const long row = std::clamp<long>(row_of(coordinate), 0, rows() - 1);
+  return owner_of_row(int(std::clamp<long>(row_of(coordinate), 0, rows() - 1)));
+}
+
+int SlabDecomposition::owner_of_row(int row) const {
   // The last slab whose first row is at or before `row`.
-  const auto it = std::upper_bound(first_row_.begin(), first_row_.end() - 1, int(row));
+  const auto it = std::upper_bound(first_row_.begin(), first_row_.end() - 1, row);
   return int(it - first_row_.begin()) - 1;
 }
 

@@ -34,6 +34,8 @@ class SlabDecomposition {
   // before the first and past the last (a particle outside an open box before its
   // removal) belong to the end slabs.
   int owner(double coordinate) const;
+  // The rank owning a cell row (0 <= row < rows()).
+  int owner_of_row(int row) const;
   // The row of a coordinate, unclamped; the arithmetic of CellGrid::coord (kernels/
   // neighbours/cell_grid.hpp), so that a slab boundary is a cell boundary to the last bit.
   long row_of(double coordinate) const;

@@ -17,6 +17,22 @@
 
 namespace granshock {
 
+// The cells of the ghosts appended after the n owned particles (several processes,
+// particles/slab_exchange.hpp): cell c's ghosts are [begin(c), end(c)). Owned cells and
+// ghost cells are disjoint, so a cell's candidates keep their (cell, id) order.
+template <class Mem>
+struct GhostCells {
+  Kokkos::View<int*, Mem> start;  // ncell + 1, relative to `offset`
+  int offset = 0;                 // the owned count
+  KOKKOS_INLINE_FUNCTION int begin(int c) const { return offset + start(c); }
+  KOKKOS_INLINE_FUNCTION int end(int c) const { return offset + start(c + 1); }
+};
+// One process: no ghosts; the ghost loop compiles away.
+struct NoGhostCells {
+  KOKKOS_INLINE_FUNCTION int begin(int) const { return 0; }
+  KOKKOS_INLINE_FUNCTION int end(int) const { return 0; }
+};
+
 template <int Dim, class Real, class ExecSpace>
 class VerletList {
  public:
@@ -40,11 +56,13 @@ class VerletList {
     total = int(host_neighbours.size());
   }
 
-  // Particles must be sorted by cell: cell c holds indices [cell_start(c), cell_start(c+1)).
-  template <class PositionView, class SpeciesView, class RadiusView, class StartView>
+  // Particles must be sorted by cell: cell c holds indices [cell_start(c), cell_start(c+1)),
+  // and its ghosts (if any) [ghosts.begin(c), ghosts.end(c)).
+  template <class PositionView, class SpeciesView, class RadiusView, class StartView,
+            class Ghosts = NoGhostCells>
   void build(const CellGrid<Dim, Position>& grid, const BoxGeometry<Dim, Position>& box,
              const StartView& cell_start, const PositionView& x, const SpeciesView& species,
-             const RadiusView& radius, Real skin, int n) {
+             const RadiusView& radius, Real skin, int n, const Ghosts& ghosts = {}) {
     if (int(offsets.extent(0)) < n + 1)
       offsets = Kokkos::View<int*, Mem>("verlet_offsets", n + n / 4 + 16);
     auto off = offsets;
@@ -52,7 +70,7 @@ class VerletList {
     Kokkos::parallel_for(
         "verlet::count", Policy(0, n), KOKKOS_LAMBDA(const int i) {
           int count = 0;
-          visit(grid, box, cell_start, x, species, radius, skin, i, [&](int) { ++count; });
+          visit(grid, box, cell_start, ghosts, x, species, radius, skin, i, [&](int) { ++count; });
           off(i + 1) = count;
         });
     int sum = 0;
@@ -71,17 +89,19 @@ class VerletList {
     Kokkos::parallel_for(
         "verlet::fill", Policy(0, n), KOKKOS_LAMBDA(const int i) {
           int k = off(i);
-          visit(grid, box, cell_start, x, species, radius, skin, i, [&](int j) { nb(k++) = j; });
+          visit(grid, box, cell_start, ghosts, x, species, radius, skin, i,
+                [&](int j) { nb(k++) = j; });
         });
   }
 
  private:
-  template <class PositionView, class SpeciesView, class RadiusView, class StartView, class F>
+  template <class PositionView, class SpeciesView, class RadiusView, class StartView, class Ghosts,
+            class F>
   KOKKOS_INLINE_FUNCTION static void visit(const CellGrid<Dim, Position>& grid,
                                            const BoxGeometry<Dim, Position>& box,
-                                           const StartView& cell_start, const PositionView& x,
-                                           const SpeciesView& species, const RadiusView& radius,
-                                           Real skin, int i, F&& action) {
+                                           const StartView& cell_start, const Ghosts& ghosts,
+                                           const PositionView& x, const SpeciesView& species,
+                                           const RadiusView& radius, Real skin, int i, F&& action) {
     int c[Dim];
     Vec<Dim, Position> xi;
     for (int d = 0; d < Dim; ++d) {
@@ -92,14 +112,18 @@ class VerletList {
     for (int k = 0; k < CellGrid<Dim, Position>::neighbour_count(); ++k) {
       const int cell = grid.neighbour(c, k);
       if (cell < 0) continue;
-      for (int j = cell_start(cell); j < cell_start(cell + 1); ++j) {
-        if (j == i) continue;
-        Vec<Dim, Position> image;
-        for (int d = 0; d < Dim; ++d) image[d] = xi[d] - x(j, d);
-        const Vec<Dim, Real> dx = to_real<Real>(box.minimum_image(image));
-        const Real cut = ri + radius(species(j)) + skin;
-        if (dot(dx, dx) < cut * cut) action(j);
-      }
+      const auto candidates = [&](int begin, int end) {
+        for (int j = begin; j < end; ++j) {
+          if (j == i) continue;
+          Vec<Dim, Position> image;
+          for (int d = 0; d < Dim; ++d) image[d] = xi[d] - x(j, d);
+          const Vec<Dim, Real> dx = to_real<Real>(box.minimum_image(image));
+          const Real cut = ri + radius(species(j)) + skin;
+          if (dot(dx, dx) < cut * cut) action(j);
+        }
+      };
+      candidates(cell_start(cell), cell_start(cell + 1));
+      candidates(ghosts.begin(cell), ghosts.end(cell));
     }
   }
 };

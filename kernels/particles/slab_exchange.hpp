@@ -1,0 +1,319 @@
+// Domain decomposition in slabs of cell rows along y (docs/parallel.md): the exchange half
+// of the communication seam for several processes (particle_exchange.hpp is the one-process
+// half). At each list rebuild, particles whose cell row belongs to another slab migrate to
+// it, and each slab sends its lowest and highest cell rows to the slabs below and above as
+// ghosts, appended after the owned particles. A row is at least one interaction range
+// (largest diameter + skin) wide, so the ghosts are every partner a Verlet list can hold.
+// Between rebuilds the ghosts' positions, velocities (and spins) are refreshed from their
+// owners after every position update.
+//
+// Bitwise the same as one process: every rank sorts into the global cell grid, owned cells
+// and ghost cells are disjoint (slab cuts are row boundaries), and ghosts arrive in their
+// owner's (cell, id) order, so a particle's list partners come in the same order as in one
+// process; ghosts carry the owner's coordinates, so the minimum image is formed alike.
+//
+// Transport is through host copies (free on host backends; whole arrays on a GPU, a cost
+// to remove when the GPU build uses it) and Communicator::send_receive: one exchange down
+// and one up per rebuild (migration, ghosts) and per step (halo).
+#pragma once
+
+#include <Kokkos_Core.hpp>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include "communicator.hpp"
+#include "domain.hpp"
+#include "neighbours/cell_grid.hpp"
+#include "slab_decomposition.hpp"
+
+namespace granshock {
+
+// The byte image of chosen rows of Kokkos Views (host mirrors), one array after another.
+namespace row_bytes {
+
+template <class View>
+int width(const View& v) {
+  if constexpr (View::rank == 1) {
+    return 1;
+  } else {
+    return int(v.extent(1));
+  }
+}
+
+template <class View>
+void append(std::vector<char>& out, const View& v, int begin, int end) {
+  using T = typename View::non_const_value_type;
+  const int w = width(v);
+  for (int i = begin; i < end; ++i)
+    for (int c = 0; c < w; ++c) {
+      T value;
+      if constexpr (View::rank == 1) {
+        value = v(i);
+      } else {
+        value = v(i, c);
+      }
+      const char* bytes = reinterpret_cast<const char*>(&value);
+      out.insert(out.end(), bytes, bytes + sizeof(T));
+    }
+}
+
+// Reads `count` rows into v starting at row `first`; returns the bytes consumed.
+template <class View>
+std::size_t extract(const View& v, const char* in, int first, int count) {
+  using T = typename View::non_const_value_type;
+  const int w = width(v);
+  std::size_t at = 0;
+  for (int i = first; i < first + count; ++i)
+    for (int c = 0; c < w; ++c) {
+      T value;
+      std::memcpy(&value, in + at, sizeof(T));
+      at += sizeof(T);
+      if constexpr (View::rank == 1) {
+        v(i) = value;
+      } else {
+        v(i, c) = value;
+      }
+    }
+  return at;
+}
+
+}  // namespace row_bytes
+
+template <int Dim, class Store, class ExecSpace>
+class SlabExchange {
+ public:
+  static constexpr int kAxis = 1;  // y: along the flow
+  using Mem = typename ExecSpace::memory_space;
+  using Grid = CellGrid<Dim, Position>;
+
+  // Equal slabs of the grid's rows; two rows at least where y is periodic, so that the
+  // rows below and above a slab are two different rows.
+  // Rows are contiguous ranges of the flat cell index only in 2-D (y-major cells).
+  static_assert(Dim == 2, "slabs along y: 2-D cell grids only (docs/parallel.md)");
+
+  SlabExchange(const Communicator& comm, const Grid& grid, const Box& box)
+      : comm_(comm),
+        grid_(grid),
+        slabs_(SlabDecomposition::equal(comm.size(), box.lo[kAxis], box.length(kAxis),
+                                        grid.ncell[kAxis], box.periodic[kAxis] ? 2 : 1,
+                                        box.periodic[kAxis])) {
+    const int r = comm.rank(), n = comm.size();
+    const bool periodic = box.periodic[kAxis];
+    lower_ = r > 0 ? r - 1 : (periodic ? n - 1 : Communicator::kNone);
+    upper_ = r + 1 < n ? r + 1 : (periodic ? 0 : Communicator::kNone);
+  }
+
+  const SlabDecomposition& slabs() const { return slabs_; }
+  int ghosts() const { return ghosts_; }
+
+  // Hands the owned particles whose row is now another slab's to it and appends those
+  // that arrived; returns the new owned count. `grow(capacity)` enlarges the store.
+  template <class Permutation, class Grow>
+  int migrate(Store& p, Permutation& permute, Grow&& grow) {
+    auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.x);
+    std::vector<int> keep, down, up;
+    const int me = comm_.rank();
+    for (int i = 0; i < p.n; ++i) {
+      const int owner = slabs_.owner_of_row(grid_.coord(kAxis, x(i, kAxis)));
+      if (owner == me) {
+        keep.push_back(i);
+      } else if (owner == lower_) {
+        down.push_back(i);
+      } else if (owner == upper_) {
+        up.push_back(i);
+      } else {
+        throw std::logic_error("a particle crossed more than one slab between list rebuilds");
+      }
+    }
+    const std::vector<char> to_lower = pack_all(p, down), to_upper = pack_all(p, up);
+    if (int(keep.size()) < p.n) {
+      Kokkos::View<int*, Kokkos::HostSpace> order_host("keep_order", keep.size());
+      for (std::size_t k = 0; k < keep.size(); ++k) order_host(k) = keep[k];
+      auto order = Kokkos::create_mirror_view_and_copy(Mem(), order_host);
+      permute.apply(p, order, int(keep.size()));
+      p.n = int(keep.size());
+    }
+    for (const std::vector<char>& arrived : {comm_.send_receive(to_lower, lower_, upper_),
+                                             comm_.send_receive(to_upper, upper_, lower_)})
+      unpack_all(p, arrived, grow);
+    return p.n;
+  }
+
+  // Appends the neighbours' boundary rows after the owned particles, which must be sorted
+  // by cell (the cell sort's permutation applied: a row is one contiguous range), and
+  // returns how many. `ghost_start` receives the ghosts' cell offsets (ncell + 1,
+  // relative to p.n) for the list build.
+  template <class StartView, class Grow>
+  int append_ghosts(Store& p, const StartView& cell_start, Kokkos::View<int*, Mem>& ghost_start,
+                    Grow&& grow) {
+    auto start = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), cell_start);
+    const int per_row = grid_.total() / grid_.ncell[kAxis];
+    const auto row_range = [&](int row) {
+      return std::pair<int, int>{start(row * per_row), start((row + 1) * per_row)};
+    };
+    send_down_ = row_range(slabs_.first_row(comm_.rank()));
+    send_up_ = row_range(slabs_.end_row(comm_.rank()) - 1);
+    // Down first: from the slab above, its lowest row (the row above this slab).
+    const std::vector<char> from_upper =
+        comm_.send_receive(pack_ghost(p, send_down_), lower_, upper_);
+    const std::vector<char> from_lower =
+        comm_.send_receive(pack_ghost(p, send_up_), upper_, lower_);
+    // In increasing cell order: the row below this slab first unless it wrapped to the top.
+    const int rows = grid_.ncell[kAxis];
+    const int below = (slabs_.first_row(comm_.rank()) - 1 + rows) % rows;
+    const int above = slabs_.end_row(comm_.rank()) % rows;
+    below_first_ = below < above;
+    const int needed = p.n + count_ghosts(from_upper) + count_ghosts(from_lower);
+    if (needed > p.capacity()) grow(needed + needed / 4);
+    int at = p.n;
+    for (const std::vector<char>* bytes :
+         below_first_ ? std::vector<const std::vector<char>*>{&from_lower, &from_upper}
+                      : std::vector<const std::vector<char>*>{&from_upper, &from_lower})
+      at += unpack_ghost(p, *bytes, at);
+    ghosts_ = at - p.n;
+    index_ghost_cells(p, ghost_start);
+    return ghosts_;
+  }
+
+  // After a position update without a rebuild: the ghosts' new state from their owners.
+  void update_ghosts(Store& p) {
+    const std::vector<char> from_upper =
+        comm_.send_receive(pack_motion(p, send_down_), lower_, upper_);
+    const std::vector<char> from_lower =
+        comm_.send_receive(pack_motion(p, send_up_), upper_, lower_);
+    int at = p.n;
+    for (const std::vector<char>* bytes :
+         below_first_ ? std::vector<const std::vector<char>*>{&from_lower, &from_upper}
+                      : std::vector<const std::vector<char>*>{&from_upper, &from_lower})
+      at += unpack_motion(p, *bytes, at);
+    if (at != p.n + ghosts_)
+      throw std::logic_error("a halo update brought " + std::to_string(at - p.n) +
+                             " ghosts, the rebuild " + std::to_string(ghosts_));
+  }
+
+ private:
+  // Every per-particle array travels with a migrating particle.
+  template <class F>
+  static void for_all(Store& p, F&& f) {
+    Store::for_each_array([&](auto, auto& view) { f(view); }, p);
+  }
+  // A ghost: what a partner's force reads (position, velocity, species, id, spin).
+  template <class F>
+  static void for_ghost(Store& p, F&& f) {
+    f(p.x);
+    f(p.v);
+    f(p.species);
+    f(p.id);
+    if constexpr (Store::friction) f(p.omega);
+  }
+  // Between rebuilds only what moves.
+  template <class F>
+  static void for_motion(Store& p, F&& f) {
+    f(p.x);
+    f(p.v);
+    if constexpr (Store::friction) f(p.omega);
+  }
+
+  template <class ForArrays>
+  static std::size_t bytes_per_particle(Store& p, ForArrays&& arrays) {
+    std::size_t total = 0;
+    arrays(p, [&](auto& view) {
+      total += sizeof(typename std::decay_t<decltype(view)>::non_const_value_type) *
+               std::size_t(row_bytes::width(view));
+    });
+    return total;
+  }
+
+  template <class ForArrays>
+  static std::vector<char> pack_rows(Store& p, const std::vector<int>& rows, ForArrays&& arrays) {
+    std::vector<char> out;
+    arrays(p, [&](auto& view) {
+      auto host = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), view);
+      for (const int i : rows) row_bytes::append(out, host, i, i + 1);
+    });
+    return out;
+  }
+  template <class ForArrays>
+  static std::vector<char> pack_range(Store& p, std::pair<int, int> range, ForArrays&& arrays) {
+    std::vector<char> out;
+    arrays(p, [&](auto& view) {
+      auto host = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), view);
+      row_bytes::append(out, host, range.first, range.second);
+    });
+    return out;
+  }
+  // Writes the particles in `bytes` at rows [first, first + count); returns count.
+  template <class ForArrays>
+  static int unpack_rows(Store& p, const std::vector<char>& bytes, int first, ForArrays&& arrays) {
+    const std::size_t each = bytes_per_particle(p, arrays);
+    const int count = int(bytes.size() / each);
+    if (count == 0) return 0;
+    std::size_t at = 0;
+    arrays(p, [&](auto& view) {
+      auto host = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), view);
+      at += row_bytes::extract(host, bytes.data() + at, first, count);
+      Kokkos::deep_copy(view, host);
+    });
+    return count;
+  }
+
+  std::vector<char> pack_all(Store& p, const std::vector<int>& rows) const {
+    return pack_rows(p, rows, [](Store& s, auto&& f) { for_all(s, f); });
+  }
+  template <class Grow>
+  void unpack_all(Store& p, const std::vector<char>& bytes, Grow& grow) const {
+    const auto arrays = [](Store& s, auto&& f) { for_all(s, f); };
+    const int count = int(bytes.size() / bytes_per_particle(p, arrays));
+    if (p.n + count > p.capacity()) grow(p.n + count + (p.n + count) / 4);
+    p.n += unpack_rows(p, bytes, p.n, arrays);
+  }
+  std::vector<char> pack_ghost(Store& p, std::pair<int, int> range) const {
+    return pack_range(p, range, [](Store& s, auto&& f) { for_ghost(s, f); });
+  }
+  int count_ghosts(const std::vector<char>& bytes) {
+    Store empty;
+    return int(bytes.size() /
+               bytes_per_particle(empty, [](Store& s, auto&& f) { for_ghost(s, f); }));
+  }
+  int unpack_ghost(Store& p, const std::vector<char>& bytes, int first) const {
+    return unpack_rows(p, bytes, first, [](Store& s, auto&& f) { for_ghost(s, f); });
+  }
+  std::vector<char> pack_motion(Store& p, std::pair<int, int> range) const {
+    return pack_range(p, range, [](Store& s, auto&& f) { for_motion(s, f); });
+  }
+  int unpack_motion(Store& p, const std::vector<char>& bytes, int first) const {
+    return unpack_rows(p, bytes, first, [](Store& s, auto&& f) { for_motion(s, f); });
+  }
+
+  // Cell offsets of the ghost block: ghosts are in increasing cell order (each row in
+  // its owner's cell order, the lower row first).
+  void index_ghost_cells(Store& p, Kokkos::View<int*, Mem>& ghost_start) const {
+    const int ncell = grid_.total();
+    if (int(ghost_start.extent(0)) != ncell + 1)
+      ghost_start = Kokkos::View<int*, Mem>("ghost_cell_start", ncell + 1);
+    auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.x);
+    auto start = Kokkos::create_mirror_view(ghost_start);
+    int g = 0;
+    for (int c = 0; c <= ncell; ++c) {
+      while (g < ghosts_ && grid_.cell_of(x, p.n + g) < c) ++g;
+      start(c) = g;
+    }
+    for (int k = 1; k < ghosts_; ++k)
+      if (grid_.cell_of(x, p.n + k) < grid_.cell_of(x, p.n + k - 1))
+        throw std::logic_error("ghosts out of cell order");
+    Kokkos::deep_copy(ghost_start, start);
+  }
+
+  const Communicator& comm_;
+  Grid grid_;
+  SlabDecomposition slabs_;
+  int lower_ = Communicator::kNone, upper_ = Communicator::kNone;
+  std::pair<int, int> send_down_{0, 0}, send_up_{0, 0};  // storage ranges of the boundary rows
+  bool below_first_ = true;
+  int ghosts_ = 0;
+};
+
+}  // namespace granshock
