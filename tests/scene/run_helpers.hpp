@@ -2,6 +2,8 @@
 // output directory, and summary.json as JSON.
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -21,6 +23,19 @@ inline RunOptions run_options(const std::filesystem::path& scene, const std::fil
   o.overrides = std::move(sets);
   o.quiet = true;
   return o;
+}
+
+// The two runs a bitwise-resume test compares: options_for("straight") run through, and
+// options_for("split") stopped after `stop_after` steps, then resumed with the same options.
+template <class OptionsFor>
+void run_straight_and_split(OptionsFor&& options_for, long stop_after) {
+  ASSERT_EQ(run_scene(options_for("straight")), 0);
+  RunOptions first = options_for("split");
+  first.stop_after_steps = stop_after;
+  ASSERT_EQ(run_scene(first), 0);
+  RunOptions second = options_for("split");
+  second.resume = true;
+  ASSERT_EQ(run_scene(second), 0);
 }
 
 inline nlohmann::json read_json(const std::filesystem::path& path) {

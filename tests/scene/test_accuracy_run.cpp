@@ -26,13 +26,7 @@ TEST(RunAccuracy, ChosenSettingsReachTheRunAndResume) {
     o.accuracy_table = table;
     return o;
   };
-  ASSERT_EQ(run_scene(with_budget("straight")), 0);
-  RunOptions first = with_budget("split");
-  first.stop_after_steps = 1001;
-  ASSERT_EQ(run_scene(first), 0);
-  RunOptions second = with_budget("split");
-  second.resume = true;
-  ASSERT_EQ(run_scene(second), 0);
+  granshock::testing::run_straight_and_split(with_budget, 1001);
 
   const nlohmann::json j = read_json(tmp.path() / "straight" / "summary.json");
   const nlohmann::json& choice = j.at("accuracy_choice");

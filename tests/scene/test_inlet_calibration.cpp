@@ -17,6 +17,7 @@
 #include "checkpoint_file.hpp"
 #include "inlet_calibration.hpp"
 #include "run_command.hpp"
+#include "run_helpers.hpp"
 #include "scene_file.hpp"
 #include "scene_fixtures.hpp"
 #include "user_error.hpp"
@@ -85,21 +86,11 @@ TEST(InletCalibration, RunUsesReportsAndResumesTheCalibratedSigma) {
   const auto scene = tmp.write("fast.toml", text);
   const std::vector<std::string> sets = {"time.duration=0.004", "time.production_start=0.002",
                                          "output.sample_every=20"};
-  const auto options = [&](const char* dir) {
-    RunOptions o;
-    o.scene_file = scene;
-    o.out_dir = tmp.path() / dir;
-    o.overrides = sets;
-    o.quiet = true;
-    return o;
-  };
-  ASSERT_EQ(run_scene(options("straight")), 0);
-  RunOptions first = options("split");
-  first.stop_after_steps = 3001;
-  ASSERT_EQ(run_scene(first), 0);
-  RunOptions second = options("split");
-  second.resume = true;
-  ASSERT_EQ(run_scene(second), 0);
+  granshock::testing::run_straight_and_split(
+      [&](const char* dir) {
+        return granshock::testing::run_options(scene, tmp.path() / dir, sets);
+      },
+      3001);
 
   std::ifstream in(tmp.path() / "straight" / "summary.json");
   const nlohmann::json j = nlohmann::json::parse(in);

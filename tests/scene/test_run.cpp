@@ -47,13 +47,9 @@ TEST(RunResume, InterruptedAndResumedEqualsUninterruptedBitwise) {
   TempDir tmp;
   const auto scene = tmp.write("small.toml", small_scene(true));
   const std::vector<std::string> sets = {"time.duration=0.004", "time.production_start=0.002"};
-  ASSERT_EQ(run_scene(run_options(scene, tmp.path() / "straight", sets)), 0);
-  RunOptions first = run_options(scene, tmp.path() / "split", sets);
-  first.stop_after_steps = 7001;  // not a checkpoint step (those are multiples of 20 000)
-  ASSERT_EQ(run_scene(first), 0);
-  RunOptions second = run_options(scene, tmp.path() / "split", sets);
-  second.resume = true;
-  ASSERT_EQ(run_scene(second), 0);
+  // Stopped at 7001, not a checkpoint step (those are multiples of 20 000).
+  granshock::testing::run_straight_and_split(
+      [&](const char* dir) { return run_options(scene, tmp.path() / dir, sets); }, 7001);
 
   CheckpointExtras ea, eb;
   const SolverState a = read_checkpoint(tmp.path() / "straight" / "checkpoint.h5", ea);
