@@ -226,11 +226,18 @@ assert abs(ref["dt_over_tc"] - 0.01) < 1e-6, ref["dt_over_tc"]
 soft = [c for c in t["cases"] if c["case"] == "soft-1000"][0]
 assert soft["speedup"] > 1, soft["speedup"]
 assert t["noise"]["L2.phi"] > 0, t["noise"]
-# The settings --accuracy chooses from, read from each case's resolved scene.
+# The settings --accuracy chooses from, read from the resolved scene of each case.
 assert soft["softening"] == 1000.0 and soft["changed"] == "contact.softening time.dt", soft
 single = [c for c in t["cases"] if c["case"] == "single"][0]
 assert single["precision"] == "single" and single["changed"] == "numerics.precision", single
 assert [c for c in t["cases"] if c["case"] == "scene"][0]["changed"] == ""
+# The noise of delta/D is at least the combined block errors of the two seeds runs (one
+# pair of seeds can agree by chance).
+import math, os
+errs = [json.load(open(os.path.join(os.path.dirname(sys.argv[1]), n, "summary.json")))
+        ["detachment"]["temperature_jump"]["delta_over_D_err"] for n in ("scene", "seed-2")]
+if None not in errs:
+    assert t["noise"]["delta_over_D.temperature_jump"] >= math.hypot(*errs) - 1e-15, (t["noise"], errs)
 ' "$out/trade.json" || fail "trade.json: the reference, the speed-up, the noise or a setting is wrong"
   # The table feeds --accuracy: a budget the table cannot certify falls back to the
   # reference's dt = t_c/100, and says so.
