@@ -43,13 +43,13 @@ int run_process(const std::vector<std::string>& args, bool quiet) {
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
+}  // namespace
+
 fs::path program_directory() {
   std::error_code ec;
   const fs::path self = fs::read_symlink("/proc/self/exe", ec);
   return ec ? fs::path() : self.parent_path();
 }
-
-}  // namespace
 
 fs::path plotting_python() {
   const char* env = std::getenv("GRANSHOCK_PYTHON");
@@ -81,8 +81,8 @@ void run_figure_script(const fs::path& script, const std::vector<std::string>& s
   args.insert(args.end(), script_args.begin(), script_args.end());
   const int status = run_process(args, false);
   if (status != 0)
-    throw UserError(script.filename().string() + " failed (exit status " +
-                    std::to_string(status) + ") drawing the figures; its message is above");
+    throw UserError(script.filename().string() + " failed (exit status " + std::to_string(status) +
+                    ") drawing the figures; its message is above");
 }
 
 void require_plotting_python() {

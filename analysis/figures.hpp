@@ -11,6 +11,10 @@
 
 namespace granshock {
 
+// The directory of the running program (empty where /proc cannot tell): an installed
+// granshock finds its data in ../share/granshock from there.
+std::filesystem::path program_directory();
+
 // The interpreter the figures use.
 std::filesystem::path plotting_python();
 

@@ -66,6 +66,13 @@ void add_collide_command(CLI::App& app, granshock::CollisionOptions& o, std::str
       ->check(CLI::IsMember({"x", "y"}));
 }
 
+// --stop-after-steps of run and study: CLI11's message when it is not a positive count.
+std::string positive_step_count(const std::string& steps) {
+  return std::strtol(steps.c_str(), nullptr, 10) >= 1
+             ? std::string()
+             : std::string("must be a positive number of steps");
+}
+
 void add_run_command(CLI::App& app, granshock::RunOptions& o) {
   auto* cmd = app.add_subcommand("run", "simulate a bow-shock scene and write its run directory");
   cmd->add_option("scene", o.scene_file, "scene file (TOML)")->required();
@@ -80,11 +87,7 @@ void add_run_command(CLI::App& app, granshock::RunOptions& o) {
   cmd->add_flag("--force", o.force, "run even when dt is past the stable limit");
   cmd->add_option("--stop-after-steps", o.stop_after_steps,
                   "write a checkpoint and stop after this many steps (for batch-job time limits)")
-      ->check([](const std::string& steps) {
-        return std::strtol(steps.c_str(), nullptr, 10) >= 1
-                   ? std::string()
-                   : std::string("must be a positive number of steps");
-      });
+      ->check(positive_step_count);
   cmd->add_flag("--quiet", o.quiet, "no progress lines");
   cmd->add_flag("--dry-run", o.dry_run,
                 "check the scene and the output directory, print the resolved scene, write "
@@ -131,11 +134,7 @@ void add_study_command(CLI::App& app, granshock::StudyOptions& o) {
   cmd->add_option("--stop-after-steps", o.stop_after_steps,
                   "the running case writes a checkpoint and stops after this many steps, and "
                   "the study with it")
-      ->check([](const std::string& steps) {
-        return std::strtol(steps.c_str(), nullptr, 10) >= 1
-                   ? std::string()
-                   : std::string("must be a positive number of steps");
-      });
+      ->check(positive_step_count);
   cmd->add_flag("--quiet", o.quiet, "no progress lines from the runs");
 }
 

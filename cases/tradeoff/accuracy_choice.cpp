@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <set>
 
+#include "figures.hpp"
 #include "run_checks.hpp"
 #include "scene_file.hpp"
 #include "tradeoff_paths.hpp"
@@ -109,10 +110,10 @@ SettingChoice choose_setting(const AccuracyTable& table, double budget) {
 
 fs::path default_accuracy_table() {
   std::vector<fs::path> candidates;
-  std::error_code ec;
-  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
-  if (!ec) candidates.push_back(self.parent_path() / ".." / GRANSHOCK_ACCURACY_TABLE_INSTALLED);
+  if (const fs::path dir = program_directory(); !dir.empty())
+    candidates.push_back(dir / ".." / GRANSHOCK_ACCURACY_TABLE_INSTALLED);
   candidates.push_back(GRANSHOCK_ACCURACY_TABLE_SOURCE);
+  std::error_code ec;
   for (const fs::path& p : candidates)
     if (fs::is_regular_file(p, ec)) return p;
   std::vector<std::string> tried;
