@@ -28,6 +28,11 @@ class Communicator {
   static constexpr int kNone = -1;
   virtual std::vector<char> send_receive(const std::vector<char>& bytes, int dest,
                                          int source) const = 0;
+  // Every rank's bytes concatenated in rank order: on `root` only (empty elsewhere), or on
+  // every rank (insertion's overlap test, docs/parallel.md).
+  virtual std::vector<char> gather(const std::vector<char>& bytes, int root) const = 0;
+  virtual std::vector<char> all_gather(const std::vector<char>& bytes) const = 0;
+  bool is_root() const { return rank() == 0; }
 };
 
 // One process owns everything: every reduction returns its argument.
@@ -45,6 +50,8 @@ class SingleProcess final : public Communicator {
     // Rank 0 to itself (a periodic face of a single slab).
     return dest == 0 && source == 0 ? bytes : std::vector<char>();
   }
+  std::vector<char> gather(const std::vector<char>& bytes, int) const override { return bytes; }
+  std::vector<char> all_gather(const std::vector<char>& bytes) const override { return bytes; }
 
   static const SingleProcess& instance() {
     static const SingleProcess one;

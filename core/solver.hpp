@@ -94,13 +94,21 @@ class Solver {
   virtual void restore_field_sums(const std::vector<double>& grid,
                                   const std::vector<double>& profile) = 0;
 
+  // Several processes (docs/parallel.md): export_state is collective and returns the whole
+  // state, as one process would hold it, on rank 0 (the scalars alone elsewhere);
+  // import_state takes the whole state on every rank, whatever the number of ranks that
+  // wrote it.
   virtual SolverState export_state() const = 0;
   // Continues from a checkpoint's state; a state that does not fit this solver (another
   // dimension, unknown species, a neighbour list its positions do not give, ...) is
   // refused with InvalidCheckpoint (core/checkpoint_checks.hpp) before anything changes.
   virtual void import_state(const SolverState& state) = 0;
 
-  virtual std::size_t size() const = 0;
+  virtual std::size_t size() const = 0;  // the particles this process owns
+  virtual long global_size() const = 0;  // on every process (collective)
+  // Every process's particles on rank 0 (collective; empty elsewhere), in the order one
+  // process would hold them.
+  virtual HostParticles gathered_particles() const = 0;
   virtual long steps_done() const = 0;
   virtual long list_builds() const = 0;
   virtual double time() const = 0;

@@ -71,4 +71,46 @@ std::vector<char> MpiCommunicator::send_receive(const std::vector<char>& bytes, 
   return received;
 }
 
+std::vector<char> MpiCommunicator::gather(const std::vector<char>& bytes, int root) const {
+  return gather_to(bytes, root, false);
+}
+
+std::vector<char> MpiCommunicator::all_gather(const std::vector<char>& bytes) const {
+  return gather_to(bytes, 0, true);
+}
+
+// The sizes first (to every rank, or to the root), then the bytes at their offsets.
+std::vector<char> MpiCommunicator::gather_to(const std::vector<char>& bytes, int root,
+                                             bool everywhere) const {
+  if (bytes.size() > std::size_t(INT_MAX))
+    throw std::runtime_error("a gathered message of more than 2 GiB");
+  const int count = int(bytes.size());
+  std::vector<int> counts(std::size_t(size_), 0), offsets(std::size_t(size_), 0);
+  if (everywhere) {
+    require(MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, comm_),
+            "MPI_Allgather (sizes)");
+  } else {
+    require(MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, root, comm_),
+            "MPI_Gather (sizes)");
+  }
+  long total = 0;
+  for (int r = 0; r < size_; ++r) {
+    offsets[std::size_t(r)] = int(total);
+    total += counts[std::size_t(r)];
+  }
+  if (total > long(INT_MAX)) throw std::runtime_error("a gathered message of more than 2 GiB");
+  const bool receives = everywhere || rank_ == root;
+  std::vector<char> out(receives ? std::size_t(total) : 0);
+  if (everywhere) {
+    require(MPI_Allgatherv(bytes.data(), count, MPI_BYTE, out.data(), counts.data(), offsets.data(),
+                           MPI_BYTE, comm_),
+            "MPI_Allgatherv");
+  } else {
+    require(MPI_Gatherv(bytes.data(), count, MPI_BYTE, out.data(), counts.data(), offsets.data(),
+                        MPI_BYTE, root, comm_),
+            "MPI_Gatherv");
+  }
+  return out;
+}
+
 }  // namespace granshock

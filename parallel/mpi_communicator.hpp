@@ -22,8 +22,11 @@ class MpiCommunicator final : public Communicator {
   void sum_in_place(std::vector<double>& values) const override;
   std::vector<char> send_receive(const std::vector<char>& bytes, int dest,
                                  int source) const override;
+  std::vector<char> gather(const std::vector<char>& bytes, int root) const override;
+  std::vector<char> all_gather(const std::vector<char>& bytes) const override;
 
  private:
+  std::vector<char> gather_to(const std::vector<char>& bytes, int root, bool everywhere) const;
   MPI_Comm comm_;
   int rank_ = 0;
   int size_ = 1;

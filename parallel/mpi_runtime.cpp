@@ -34,6 +34,11 @@ MpiRuntime::MpiRuntime(int& argc, char**& argv) {
   MPI_Comm_size(MPI_COMM_WORLD, &size_);
 }
 
+void MpiRuntime::abort(int code) const {
+  if (active_) MPI_Abort(MPI_COMM_WORLD, code);
+  std::exit(code);
+}
+
 MpiRuntime::~MpiRuntime() {
   if (active_) MPI_Finalize();
 }

@@ -18,6 +18,9 @@ class MpiRuntime {
   bool active() const { return active_; }  // MPI was started (a launcher started us)
   int rank() const { return rank_; }
   int size() const { return size_; }
+  // Ends every process of the job with `code` (a failure that the other ranks cannot know
+  // of: they would wait for this one in their next collective operation).
+  [[noreturn]] void abort(int code) const;
 
   // Whether a launcher started this process: Open MPI (OMPI_COMM_WORLD_SIZE), PMIx
   // (PMIX_RANK), MPICH/Hydra and Slurm's PMI (PMI_SIZE).

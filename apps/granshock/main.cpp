@@ -1,4 +1,5 @@
 // granshock: the command-line program (docs/design.md, "The command-line contract").
+#include <fmt/format.h>
 #include <CLI/CLI.hpp>
 #include <Kokkos_Core.hpp>
 #include <csignal>
@@ -12,9 +13,11 @@
 
 #include "build_info.hpp"
 #include "device/kokkos_runtime.hpp"
+#include "failure_agreement.hpp"
 #include "fields_command.hpp"
 #include "hdf5_runtime.hpp"
 #include "head_on_collision.hpp"
+#include "mpi_communicator.hpp"
 #include "mpi_runtime.hpp"
 #include "run_command.hpp"
 #include "study_command.hpp"
@@ -223,21 +226,41 @@ int main(int argc, char** argv) {
               << "--help)\n";
     return 2;
   }
-  // Several processes would each run the whole scene into the same directory. Every rank
-  // decides alike and returns, so none waits for another; rank 0 alone says why.
-  if (mpi->size() > 1 && !info->parsed()) {
+  // Only `run` divides a scene among processes; the other commands would each do the whole
+  // job N times into the same place. Every rank decides alike and returns, so none waits
+  // for another; rank 0 alone says why.
+  const bool several = mpi->size() > 1;
+  if (several && !info->parsed() && !app.got_subcommand("run")) {
     if (mpi->rank() == 0)
       std::cerr << "granshock: error: started as " << mpi->size()
-                << " MPI processes, but a scene runs in one process (domain decomposition is "
-                   "not available yet: docs/parallel.md); run without mpirun and set the "
-                   "threads with OMP_NUM_THREADS\n";
+                << " MPI processes, but `granshock " << app.get_subcommands()[0]->get_name()
+                << "` runs in one process (only `granshock run` divides a scene among processes: "
+                   "docs/parallel.md); run it without mpirun and set the threads with "
+                   "OMP_NUM_THREADS\n";
     return 2;
   }
+  // How a failure ends the program (failure_agreement.hpp): on several processes, rank 0
+  // says what every rank met alike, any rank says what only it met, and a failure the
+  // other ranks have not agreed on ends the whole job, so that none waits for this one.
+  const auto leave = [&](int code, const std::string& message, bool every_rank_alike) {
+    if (!several) {
+      std::cerr << message << "\n";
+      return code;
+    }
+    if (mpi->rank() == 0 || !every_rank_alike)
+      std::cerr << (mpi->rank() == 0 ? "" : fmt::format("[rank {}] ", mpi->rank())) << message
+                << "\n";
+    if (!granshock::failure_agreed() && !(every_rank_alike && code == 4)) {
+      std::cerr.flush();
+      mpi->abort(code);
+    }
+    return code;
+  };
   try {
     if (app.got_subcommand("run")) {
-      if (run.overwrite && run.resume)
-        throw granshock::UserError("--overwrite and --resume exclude each other");
-      return granshock::run_scene(run);
+      if (!several) return granshock::run_scene(run);
+      const granshock::MpiCommunicator world;
+      return granshock::run_scene(run, world);
     }
     if (app.got_subcommand("fields")) return granshock::fields_command(field_dirs, field_out);
     if (app.got_subcommand("study")) return granshock::study_command(study);
@@ -257,19 +280,20 @@ int main(int argc, char** argv) {
         std::cerr << "granshock: warning: " << result.overlap.message << "\n";
       std::cout << granshock::to_json(result) << "\n";
     }
+  } catch (const granshock::PeerFailed&) {
+    return 2;  // another rank failed and said why
   } catch (const granshock::NumericalFailure& e) {
-    std::cerr << "granshock: error: " << e.what() << "\n";
-    return 4;
+    // From global sums: every rank meets it at the same step.
+    return leave(4, std::string("granshock: error: ") + e.what(), true);
   } catch (const granshock::UserError& e) {
-    std::cerr << "granshock: error: " << one_line(e.what()) << "\n";
-    return 2;
+    return leave(2, "granshock: error: " + one_line(e.what()), true);
   } catch (const std::bad_alloc& e) {
-    std::cerr << "granshock: error: not enough memory (" << one_line(e.what())
-              << "); make the scene smaller\n";
-    return 2;
+    return leave(
+        2,
+        "granshock: error: not enough memory (" + one_line(e.what()) + "); make the scene smaller",
+        false);
   } catch (const std::exception& e) {
-    std::cerr << "granshock: internal error: " << e.what() << "\n";
-    return 3;
+    return leave(3, std::string("granshock: internal error: ") + e.what(), false);
   }
   return 0;
 }

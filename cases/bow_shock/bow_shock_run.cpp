@@ -4,11 +4,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <iostream>
 
 #include "atomic_file.hpp"
 #include "checkpoint_checks.hpp"
 #include "checkpoint_file.hpp"
+#include "failure_agreement.hpp"
 #include "field_sums_file.hpp"
 #include "fields_command.hpp"
 #include "interrupt.hpp"
@@ -34,42 +36,25 @@ long every_seconds(double interval, double duration, double dt) {
 
 }  // namespace
 
-BowShockRun::BowShockRun(const RunOptions& o, LoadedScene loaded)
+BowShockRun::BowShockRun(const RunOptions& o, LoadedScene loaded, const Communicator& comm)
     : options_(o),
+      comm_(comm),
+      root_(comm.is_root()),
       loaded_(std::move(loaded)),
       scene_(loaded_.scene),
       inflow_(scene_),
       sampling_(scene_) {}
 
 int BowShockRun::execute() {
-  dir_ = run_directory_of(options_, scene_);
-  std::vector<std::string> warnings = check_scene_before_run(scene_, options_.force);
-  const DirectoryMode mode = options_.resume      ? DirectoryMode::resume
-                             : options_.overwrite ? DirectoryMode::overwrite
-                                                  : DirectoryMode::create;
-  RunDirectory::check(dir_, mode);
-  // Again with a calibrated damping or sigma: the time-step guard depends on the damping
-  // ratio and on the fastest impact.
-  const bool damping_calibrated = calibrate_restitution();
-  if (calibrate_inflow() || damping_calibrated)
-    warnings = check_scene_before_run(scene_, options_.force);
-  for (const std::string& w : warnings) std::cerr << "granshock: warning: " << w << "\n";
-
-  total_steps_ = scene_.total_steps();
-  series_.every =
-      every_seconds(scene_.run.series_interval_s, scene_.run.duration_s, scene_.setup.dt);
-  snapshots_.every =
-      every_seconds(scene_.run.snapshot_interval_s, scene_.run.duration_s, scene_.setup.dt);
-  checkpoints_.every =
-      every_seconds(scene_.run.checkpoint_interval_s, scene_.run.duration_s, scene_.setup.dt);
-  solver_ = make_solver(scene_.setup, scene_.capacity_estimate());
-  solver_->configure_sampling(sampling_.layout());
-  samples_.assign(std::size_t(sampling_.blocks()), 0);
-
-  // Every check is done: from here on the run owns the directory (and holds its lock).
-  run_directory_.emplace(RunDirectory::claim(dir_, mode));
+  // Failures up to here are the same on every rank, or rank 0's alone (its files): all
+  // ranks agree on them before the first collective step (docs/parallel.md, "Errors").
+  agree_on_failure(comm_, [&] { prepare(); });
+  agree_on_failure(comm_, [&] {
+    if (options_.resume) read_checkpoint_and_check();
+    open_run_file();
+  });
   if (options_.resume) {
-    resume();
+    agree_on_failure(comm_, [&] { resume(); });
   } else {
     start_fresh();
   }
@@ -91,12 +76,55 @@ int BowShockRun::execute() {
   }
 }
 
+// The scene's checks and calibrations, the solver and the claim on the run directory.
+void BowShockRun::prepare() {
+  dir_ = run_directory_of(options_, scene_);
+  std::vector<std::string> warnings = check_scene_before_run(scene_, options_.force);
+  mode_ = options_.resume      ? DirectoryMode::resume
+          : options_.overwrite ? DirectoryMode::overwrite
+                               : DirectoryMode::create;
+  RunDirectory::check(dir_, mode_);
+  // Again with a calibrated damping or sigma: the time-step guard depends on the damping
+  // ratio and on the fastest impact.
+  const bool damping_calibrated = calibrate_restitution();
+  if (calibrate_inflow() || damping_calibrated)
+    warnings = check_scene_before_run(scene_, options_.force);
+  if (root_)
+    for (const std::string& w : warnings) std::cerr << "granshock: warning: " << w << "\n";
+
+  total_steps_ = scene_.total_steps();
+  series_.every =
+      every_seconds(scene_.run.series_interval_s, scene_.run.duration_s, scene_.setup.dt);
+  snapshots_.every =
+      every_seconds(scene_.run.snapshot_interval_s, scene_.run.duration_s, scene_.setup.dt);
+  checkpoints_.every =
+      every_seconds(scene_.run.checkpoint_interval_s, scene_.run.duration_s, scene_.setup.dt);
+  solver_ = make_solver(scene_.setup, scene_.capacity_estimate(), Backend::default_space, &comm_);
+  solver_->configure_sampling(sampling_.layout());
+  samples_.assign(std::size_t(sampling_.blocks()), 0);
+  // Every check is done: from here on the run owns the directory (and holds its lock);
+  // every rank has checked it before rank 0 claims it.
+  comm_.any(false);
+  if (root_) run_directory_.emplace(RunDirectory::claim(dir_, mode_));
+}
+
+// Rank 0's run.h5: a new one, or the one a checkpoint continues.
+void BowShockRun::open_run_file() {
+  if (!root_) return;
+  if (options_.resume) {
+    run_file_.emplace(RunFile::open_for_resume(dir_ / "run.h5", checkpoint_state_.step));
+  } else {
+    run_file_.emplace(
+        RunFile::create(dir_ / "run.h5", loaded_.as_given, loaded_.resolved, scene_.setup.dim));
+  }
+}
+
 // contact.restitution_mode = "discrete" (docs/contact_model.md, "Restitution at the chosen
 // time step"): a pure function of the scene, so a resumed run finds the same damping.
 bool BowShockRun::calibrate_restitution() {
   if (scene_.setup.contacts.restitution_mode != RestitutionMode::discrete) return false;
   const RestitutionCalibration c = apply_restitution_mode(loaded_.scene.setup);
-  if (!options_.quiet)
+  if (!options_.quiet && root_)
     for (const PairCalibration& p : c.pairs)
       std::cerr << fmt::format(
           "granshock: restitution of {} calibrated at dt = {:.3g} s, {:g} m/s: beta {:.5f} "
@@ -112,7 +140,7 @@ bool BowShockRun::calibrate_restitution() {
 // run.h5 and the checkpoint) carries it.
 bool BowShockRun::calibrate_inflow() {
   if (scene_.inflow.mach_at != MachReference::inlet_bins) return false;
-  if (!options_.quiet)
+  if (!options_.quiet && root_)
     std::cerr << fmt::format(
         "granshock: calibrating sigma so that Ma over the two inlet bin rows is {:g} "
         "(inflow.mach_at = \"inlet_bins\")\n",
@@ -121,6 +149,7 @@ bool BowShockRun::calibrate_inflow() {
   loaded_.scene.inflow.sigma = calibration_->sigma;
   loaded_.resolved = scene_to_toml(loaded_.scene);
   const InletMach& last = calibration_->chosen();
+  if (!root_) return true;
   if (!calibration_->converged)
     std::cerr << fmt::format(
         "granshock: warning: the inflow calibration did not converge in {} runs: sigma = {:.4g} "
@@ -148,28 +177,39 @@ int BowShockRun::advance_to_end() {
     next = std::min(next, sampling_.next_after(step));
     if (options_.stop_after_steps > 0)
       next = std::min(next, first_step_ + options_.stop_after_steps);
-    particle_steps_ += double(solver_->size()) * double(next - step);
+    next = agreed_next_step(next);
+    particle_steps_ += double(solver_->global_size()) * double(next - step);
     solver_->advance(next - step);
     step = next;
     actions_at(step);
     warn_if_inflow_falls_short();
-    if (meter_->due() && !options_.quiet)
-      meter_->report(step, step * scene_.setup.dt, long(solver_->size()),
-                     solver_->diagnostics().contacts, particle_steps_, inflow_note());
-    if (interrupt_signal() != 0) {
+    // Collective: every rank takes part in the counts rank 0 reports.
+    if (comm_.any(meter_->due() && !options_.quiet)) {
+      const long particles = solver_->global_size();
+      const long contacts = solver_->diagnostics().contacts;
+      if (root_)
+        meter_->report(step, step * scene_.setup.dt, particles, contacts, particle_steps_,
+                       inflow_note());
+    }
+    // A signal reaches the ranks at different moments: the highest one seen stops all.
+    const int signal = int(comm_.max(double(interrupt_signal())));
+    if (signal != 0) {
       write_checkpoint_now();
       finish(false);
-      std::cerr << fmt::format(
-          "granshock: interrupted at step {}; checkpoint written, continue with --resume\n", step);
-      return 128 + interrupt_signal();
+      if (root_)
+        std::cerr << fmt::format(
+            "granshock: interrupted at step {}; checkpoint written, continue with --resume\n",
+            step);
+      return 128 + signal;
     }
     if (options_.stop_after_steps > 0 && step >= first_step_ + options_.stop_after_steps &&
         step < total_steps_) {
       write_checkpoint_now();
       finish(false);
-      std::cerr << fmt::format(
-          "granshock: stopped after {} steps at step {}; continue with --resume\n",
-          options_.stop_after_steps, step);
+      if (root_)
+        std::cerr << fmt::format(
+            "granshock: stopped after {} steps at step {}; continue with --resume\n",
+            options_.stop_after_steps, step);
       return 0;
     }
   }
@@ -177,20 +217,24 @@ int BowShockRun::advance_to_end() {
   return 0;
 }
 
+// The slices end where the wall clock says (ProgressMeter::steps_per), which differs from
+// rank to rank: all take the earliest end.
+long BowShockRun::agreed_next_step(long step) {
+  if (comm_.size() == 1) return step;
+  return long(-comm_.max(-double(step)));
+}
+
 void BowShockRun::start_fresh() {
-  run_file_.emplace(
-      RunFile::create(dir_ / "run.h5", loaded_.as_given, loaded_.resolved, scene_.setup.dim));
   solver_->set_particles(HostParticles{});
   inflow_.prefill(*solver_);
   actions_at(0);
 }
 
-// Everything is checked before anything changes: a refused checkpoint leaves the run
-// directory as it was.
-void BowShockRun::resume() {
+// Every rank reads the whole checkpoint (docs/parallel.md: N ranks resume what M wrote).
+void BowShockRun::read_checkpoint_and_check() {
   const fs::path path = dir_ / "checkpoint.h5";
-  CheckpointExtras extras;
-  const SolverState state = read_checkpoint(path, extras);
+  checkpoint_state_ = read_checkpoint(path, checkpoint_extras_);
+  const CheckpointExtras& extras = checkpoint_extras_;
   if (extras.scene_resolved != loaded_.resolved) {
     const std::vector<std::string> keys = differing_keys(extras.scene_resolved, loaded_.resolved);
     throw UserError(fmt::format(
@@ -200,15 +244,25 @@ void BowShockRun::resume() {
         dir_.string()));
   }
   try {
-    solver_->import_state(state);
-    check_run(state, extras, run_fit(scene_, inflow_, sampling_, state.step));
+    check_run(checkpoint_state_, extras,
+              run_fit(scene_, inflow_, sampling_, checkpoint_state_.step));
   } catch (const InvalidCheckpoint& e) {
     throw refuse_checkpoint(path, e);
   }
-  restore_run_state(extras, *solver_, inflow_, samples_);
-  wall_before_ = extras.wall_seconds_so_far;
-  last_checkpoint_step_ = state.step;
-  run_file_.emplace(RunFile::open_for_resume(dir_ / "run.h5", state.step));
+}
+
+// Everything is checked before anything changes: a refused checkpoint leaves the run
+// directory as it was.
+void BowShockRun::resume() {
+  try {
+    solver_->import_state(checkpoint_state_);
+  } catch (const InvalidCheckpoint& e) {
+    throw refuse_checkpoint(dir_ / "checkpoint.h5", e);
+  }
+  restore_run_state(checkpoint_extras_, *solver_, inflow_, samples_);
+  wall_before_ = checkpoint_extras_.wall_seconds_so_far;
+  last_checkpoint_step_ = checkpoint_state_.step;
+  checkpoint_state_ = SolverState{};  // the solver holds it now
 }
 
 // Everything that happens at a step boundary, in a fixed order (a checkpoint at step s
@@ -225,24 +279,26 @@ void BowShockRun::actions_at(long step) {
   if (checkpoints_.due(step) || step == total_steps_) write_checkpoint_now();
 }
 
+// Collective: every rank forms the row (global sums), rank 0 writes it.
 void BowShockRun::write_series_row(long step) {
   const Diagnostics d = solver_->diagnostics();
   const RemovalCounts removed = solver_->removed();
   TimeSeriesRow row;
   row.step = step;
   row.time = step * scene_.setup.dt;
-  row.particles = long(solver_->size());
+  row.particles = solver_->global_size();
   row.kinetic_energy = d.kinetic_energy + d.rotational_energy;
   row.temperature = mixture_temperature(scene_, solver_->species_moments());
   row.contacts = d.contacts;
-  check_health(scene_, step, d, solver_->size());
+  check_health(scene_, step, d, std::size_t(row.particles));
   row.inserted = inflow_.inserted();
   row.deleted_outlet = removed.high[1];
   row.deleted_inlet = removed.low[1];
+  if (!root_) return;
   run_file_->append_time_series(row);
   if (!warned_energy_) {
     const std::string energy =
-        energy_warning(scene_, row.kinetic_energy, solver_->size(), row.time);
+        energy_warning(scene_, row.kinetic_energy, std::size_t(row.particles), row.time);
     warned_energy_ = !energy.empty();
     if (warned_energy_) std::cerr << "granshock: warning: " << energy << "\n";
   }
@@ -254,7 +310,9 @@ void BowShockRun::write_series_row(long step) {
 }
 
 void BowShockRun::write_snapshot(long step) {
-  run_file_->append_snapshot(step, step * scene_.setup.dt, solver_->particles());
+  const HostParticles particles = solver_->gathered_particles();
+  if (!root_) return;
+  run_file_->append_snapshot(step, step * scene_.setup.dt, particles);
   write_particles_xdmf(dir_ / "run.xmf", "run.h5", run_file_->frames(), run_file_->dim(),
                        run_file_->particle_capacity());
 }
@@ -265,9 +323,11 @@ void BowShockRun::write_checkpoint_now() {
   const double wall = wall_before_ + (meter_ ? meter_->elapsed_s() : 0.0);
   const CheckpointExtras extras =
       pack_run_state(loaded_.resolved, *solver_, inflow_, samples_, wall);
-  run_file_->flush();
-  write_checkpoint(dir_ / "checkpoint.h5", solver_->export_state(), extras);
+  const SolverState state = solver_->export_state();
   last_checkpoint_step_ = step;
+  if (!root_) return;
+  run_file_->flush();
+  write_checkpoint(dir_ / "checkpoint.h5", state, extras);
 }
 
 void BowShockRun::finish(bool completed) {
@@ -280,12 +340,14 @@ void BowShockRun::finish(bool completed) {
   sums.production_end = scene_.run.duration_s;
   sums.sample_every = scene_.run.sample_every;
   sums.y_end = scene_.setup.box.hi[1];
-  write_field_sums(*run_file_, sums);
-  run_file_->flush();
   const double wall = wall_before_ + meter_->elapsed_s();
   const long steps = solver_->steps_done();
   nlohmann::json j = run_summary(scene_, *solver_, inflow_, calibration_ ? &*calibration_ : nullptr,
                                  completed, {wall, meter_->elapsed_s(), particle_steps_});
+  j["processes"] = processes_summary();
+  if (!root_) return;
+  write_field_sums(*run_file_, sums);
+  run_file_->flush();
   if (!options_.accuracy_choice.is_null()) j["accuracy_choice"] = options_.accuracy_choice;
   write_file_atomically(dir_ / "summary.json", j.dump(2) + "\n");
   if (completed && run_file_) {
@@ -300,7 +362,20 @@ void BowShockRun::finish(bool completed) {
         "particle-steps/s, "
         "{} particles at the end; results in {}\n",
         scene_.name, steps, steps * scene_.setup.dt, wall,
-        j["particle_steps_per_second"].get<double>(), solver_->size(), dir_.string());
+        j["particle_steps_per_second"].get<double>(), j["particles_final"].get<long>(),
+        dir_.string());
+}
+
+// summary.json "processes": how many, and the particles each rank owns at the end (the
+// load balance of the slabs; collective).
+nlohmann::json BowShockRun::processes_summary() const {
+  const long mine = long(solver_->size());
+  std::vector<char> bytes(sizeof mine);
+  std::memcpy(bytes.data(), &mine, sizeof mine);
+  const std::vector<char> all = comm_.gather(bytes, 0);
+  std::vector<long> per_rank(all.size() / sizeof mine);
+  std::memcpy(per_rank.data(), all.data(), all.size());
+  return {{"count", comm_.size()}, {"particles_per_rank", per_rank}};
 }
 
 // docs/scene_format.md, "The inflow": a strip that cannot take what the inflow asks for
@@ -309,6 +384,7 @@ void BowShockRun::finish(bool completed) {
 void BowShockRun::warn_if_inflow_falls_short() {
   if (warned_inflow_ || !inflow_.falls_short()) return;
   warned_inflow_ = true;
+  if (!root_) return;
   std::cerr << fmt::format(
       "granshock: warning: the inflow falls short: {:.0f} of {:.0f} requested particles "
       "({:.1f}%) found no room in the insertion strip by t = {:.4g} s; phi_inf will be below "

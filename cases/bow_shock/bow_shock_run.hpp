@@ -2,7 +2,8 @@
 // directory, the solver, the inflow and the field sampling, driven step by step to the
 // end, a signal or --stop-after-steps, with the outputs of docs/output_format.md at their
 // intervals (time series, snapshots, checkpoints) and the summary and field analysis at
-// the end.
+// the end. On several processes (docs/parallel.md) every rank runs this same loop over
+// its slab; global quantities go through the Communicator and rank 0 alone writes.
 #pragma once
 
 #include <filesystem>
@@ -11,6 +12,10 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
+#include "checkpoint_extras.hpp"
+#include "communicator.hpp"
 #include "inflow.hpp"
 #include "inlet_calibration.hpp"
 #include "progress_meter.hpp"
@@ -25,7 +30,8 @@ namespace granshock {
 
 class BowShockRun {
  public:
-  BowShockRun(const RunOptions& options, LoadedScene loaded);
+  BowShockRun(const RunOptions& options, LoadedScene loaded,
+              const Communicator& comm = SingleProcess::instance());
   // The process exit code (run_command.hpp).
   int execute();
 
@@ -36,11 +42,16 @@ class BowShockRun {
     long next_after(long step) const { return (step / every + 1) * every; }
   };
 
+  void prepare();
+  void open_run_file();
   int advance_to_end();
+  long agreed_next_step(long step);
   bool calibrate_inflow();       // true when it changed sigma (inflow.mach_at = "inlet_bins")
   bool calibrate_restitution();  // true when it set the damping (restitution_mode = "discrete")
   void start_fresh();
+  void read_checkpoint_and_check();
   void resume();
+  nlohmann::json processes_summary() const;
   void actions_at(long step);
   void write_series_row(long step);
   void write_snapshot(long step);
@@ -50,9 +61,14 @@ class BowShockRun {
   std::string inflow_note() const;
 
   const RunOptions& options_;
+  const Communicator& comm_;
+  const bool root_;  // rank 0: writes the files and speaks
   LoadedScene loaded_;
   const Scene& scene_;
   std::filesystem::path dir_;
+  DirectoryMode mode_ = DirectoryMode::create;
+  SolverState checkpoint_state_;  // --resume: read and checked, until the solver takes it
+  CheckpointExtras checkpoint_extras_;
   InflowController inflow_;
   SamplingPlan sampling_;
   std::unique_ptr<Solver> solver_;

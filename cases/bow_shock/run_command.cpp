@@ -3,13 +3,16 @@
 #include <fmt/format.h>
 
 #include <iostream>
+#include <optional>
 
 #include "accuracy_choice.hpp"
 #include "bow_shock_run.hpp"
+#include "failure_agreement.hpp"
 #include "models/restitution_calibration.hpp"
 #include "run_checks.hpp"
 #include "run_directory.hpp"
 #include "scene_file.hpp"
+#include "user_error.hpp"
 
 namespace granshock {
 
@@ -44,7 +47,7 @@ namespace {
 
 // --accuracy: the chosen settings become --set overrides after the user's own, so that the
 // resolved scene (run.h5, resume) records them; the choice is said before anything runs.
-RunOptions with_accuracy_choice(const RunOptions& given) {
+RunOptions with_accuracy_choice(const RunOptions& given, bool speaks) {
   if (given.accuracy.empty()) return given;
   RunOptions o = given;
   const AccuracyChoice choice =
@@ -52,7 +55,7 @@ RunOptions with_accuracy_choice(const RunOptions& given) {
   o.overrides.insert(o.overrides.end(), choice.overrides.begin(), choice.overrides.end());
   o.accuracy_choice = choice.record;
   // On --dry-run stdout is a scene file: the report goes there as TOML comments.
-  for (const std::string& line : choice.report)
+  for (const std::string& line : speaks ? choice.report : std::vector<std::string>())
     (o.dry_run ? std::cout : std::cerr)
         << (o.dry_run ? "# accuracy: " : "granshock: accuracy: ") << line << "\n";
   return o;
@@ -60,9 +63,15 @@ RunOptions with_accuracy_choice(const RunOptions& given) {
 
 }  // namespace
 
-int run_scene(const RunOptions& given) {
-  const RunOptions o = with_accuracy_choice(given);
+int run_scene(const RunOptions& given, const Communicator& comm) {
+  RunOptions o;
+  agree_on_failure(comm, [&] {
+    if (given.overwrite && given.resume)
+      throw UserError("--overwrite and --resume exclude each other");
+    o = with_accuracy_choice(given, comm.is_root());
+  });
   if (o.dry_run) {
+    if (!comm.is_root()) return 0;
     const RunCheck c = check_run(o);
     for (const std::string& w : c.warnings) std::cerr << "granshock: warning: " << w << "\n";
     // A TOML comment, so that the output stays a scene file.
@@ -72,7 +81,9 @@ int run_scene(const RunOptions& given) {
     std::cout << "# " << c.time_step << "\n" << c.resolved_scene;
     return 0;
   }
-  BowShockRun run(o, load_scene_file(o.scene_file, o.overrides));
+  std::optional<LoadedScene> loaded;
+  agree_on_failure(comm, [&] { loaded = load_scene_file(o.scene_file, o.overrides); });
+  BowShockRun run(o, std::move(*loaded), comm);
   return run.execute();
 }
 

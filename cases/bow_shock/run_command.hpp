@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
+#include "communicator.hpp"
 #include "run_observables.hpp"  // NumericalFailure
 #include "scene.hpp"
 
@@ -47,6 +48,8 @@ std::filesystem::path run_directory_of(const RunOptions& options, const Scene& s
 
 // Returns the process exit code: 0 done (or stopped by --stop-after-steps), 130/143
 // interrupted by SIGINT/SIGTERM after writing a checkpoint. Throws UserError for bad input.
-int run_scene(const RunOptions& options);
+// On several processes (`comm`, docs/parallel.md) every rank calls it alike; rank 0 writes
+// and speaks.
+int run_scene(const RunOptions& options, const Communicator& comm = SingleProcess::instance());
 
 }  // namespace granshock

@@ -80,7 +80,7 @@ nlohmann::json run_summary(const Scene& s, const Solver& solver, const InflowCon
   j["steps"] = steps;
   j["simulated_time"] = steps * s.setup.dt;
   j["wall_seconds"] = times.wall_seconds;
-  j["particles_final"] = solver.size();
+  j["particles_final"] = solver.global_size();
   j["inserted"] = inflow.inserted();
   j["inflow"] = inflow_summary(inflow);
   j["deleted"] = removed.total();

@@ -5,9 +5,11 @@
 #pragma once
 
 #include <Kokkos_Core.hpp>
+#include <cstring>
 #include <stdexcept>
 #include <vector>
 
+#include "communicator.hpp"
 #include "device/box_geometry.hpp"
 #include "device/counter_rng.hpp"
 #include "device/device_lambda.hpp"
@@ -61,7 +63,10 @@ class ParticlePopulation {
   // needs, so later rounds change nothing there. Candidates use the largest diameter of
   // the scene, so no species can overlap; the obstacle keeps them one diameter away.
   // Returns how many were placed (at the end of the store).
-  int insert(Store& p, const InsertionRequest& rq) {
+  // Several processes (`everyone`): each tests the candidates against the particles near
+  // the region on every rank (gathered), so every rank places the same particles, and
+  // keeps those of its slab afterwards (SlabExchange::keep_own).
+  int insert(Store& p, const InsertionRequest& rq, const Communicator* everyone = nullptr) {
     if (rq.count <= 0) return 0;
     if (rq.number_fraction.size() != cumulative_.extent(0))
       throw std::invalid_argument("insert: one number fraction per species is required");
@@ -72,7 +77,7 @@ class ParticlePopulation {
     for (int round = 0; round < kInsertionRounds && p.n - n_before < rq.count; ++round) {
       const int wanted = rq.count - (p.n - n_before);
       const int m = 2 * wanted + 32;
-      const int placed = insert_round(p, rq, p.n - n_before, wanted, m, first_candidate);
+      const int placed = insert_round(p, rq, p.n - n_before, wanted, m, first_candidate, everyone);
       first_candidate += m;
       p.n += placed;
       if (placed == 0) break;
@@ -87,7 +92,7 @@ class ParticlePopulation {
   // event's stream. Returns how many it placed at [p.n, p.n + placed). Public because it
   // launches KOKKOS_LAMBDAs (nvcc).
   int insert_round(const Store& p, const InsertionRequest& rq, int placed, int wanted, int m,
-                   long first_candidate) {
+                   long first_candidate, const Communicator* everyone) {
     const int n = p.n;
     const Real dmax = max_diameter_;
     const Position x0 = Position(rq.x_range[0]), y0 = Position(rq.y_range[0]);
@@ -97,16 +102,19 @@ class ParticlePopulation {
     const auto x = p.x;
 
     // Particles that could touch a candidate: those within one diameter of the region.
-    Kokkos::View<int*, Mem> near("insert_near", n > 0 ? n : 1);
+    // The test below is a logical and over them, so their order does not matter.
+    Kokkos::View<Position* [Dim], Mem> near("insert_near", n > 0 ? n : 1);
     int n_near = 0;
     Kokkos::parallel_scan(
         "insert::near", Policy(0, n),
         KOKKOS_LAMBDA(const int i, int& running, const bool final) {
           const bool close = x(i, 1) > y0 - dmax && x(i, 1) < y0 + wy + dmax;
-          if (final && close) near(running) = i;
+          if (final && close)
+            for (int d = 0; d < Dim; ++d) near(running, d) = x(i, d);
           running += close ? 1 : 0;
         },
         n_near);
+    if (everyone != nullptr && everyone->size() > 1) near = gathered(near, n_near, *everyone);
 
     const CounterRng rng{rq.seed};
     const std::uint64_t pos_stream = InsertionStreams::position(rq.event);
@@ -130,7 +138,7 @@ class ParticlePopulation {
           bool ok = !obstacle.keeps_out(ck[0], ck[1], dmax);
           for (int e = 0; e < n_near && ok; ++e) {
             Vec<Dim, Position> dx;
-            for (int d = 0; d < Dim; ++d) dx[d] = ck[d] - x(near(e), d);
+            for (int d = 0; d < Dim; ++d) dx[d] = ck[d] - near(e, d);
             dx = box.minimum_image(dx);
             ok = dot(dx, dx) >= d2;
           }
@@ -183,6 +191,29 @@ class ParticlePopulation {
           }
         });
     return take;
+  }
+
+  // The first `count` rows of every rank's `near`, concatenated; count becomes the total.
+  static Kokkos::View<Position* [Dim], Mem> gathered(const Kokkos::View<Position* [Dim], Mem>& near,
+                                                     int& count, const Communicator& everyone) {
+    const auto mine = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), near);
+    std::vector<char> bytes(sizeof(Position) * Dim * std::size_t(count));
+    for (int e = 0; e < count; ++e)
+      for (int d = 0; d < Dim; ++d) {
+        const Position value = mine(e, d);
+        std::memcpy(bytes.data() + sizeof(Position) * (std::size_t(e) * Dim + d), &value,
+                    sizeof value);
+      }
+    const std::vector<char> all = everyone.all_gather(bytes);
+    count = int(all.size() / (sizeof(Position) * Dim));
+    Kokkos::View<Position* [Dim], Mem> out("insert_near_all", count > 0 ? count : 1);
+    auto host = Kokkos::create_mirror_view(out);
+    for (int e = 0; e < count; ++e)
+      for (int d = 0; d < Dim; ++d)
+        std::memcpy(&host(e, d), all.data() + sizeof(Position) * (std::size_t(e) * Dim + d),
+                    sizeof(Position));
+    Kokkos::deep_copy(out, host);
+    return out;
   }
 
   // Deletes the particles beyond an open face (a stable compaction through `permute`),

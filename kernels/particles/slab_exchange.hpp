@@ -18,6 +18,7 @@
 #pragma once
 
 #include <Kokkos_Core.hpp>
+#include <algorithm>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -140,6 +141,22 @@ class SlabExchange {
                                              comm_.send_receive(to_upper, upper_, lower_)})
       unpack_all(p, arrived, grow);
     return p.n;
+  }
+
+  // Insertion on several processes: every rank placed the same new particles at rows
+  // [first, p.n); keeps those whose row is this slab's (population.hpp, insert).
+  template <class Permutation>
+  void keep_own(Store& p, Permutation& permute, int first) {
+    auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.x);
+    Kokkos::View<int*, Kokkos::HostSpace> order_host("keep_own_order", std::max(p.n, 1));
+    int kept = 0;
+    for (int i = 0; i < p.n; ++i)
+      if (i < first || slabs_.owner_of_row(grid_.coord(kAxis, x(i, kAxis))) == comm_.rank())
+        order_host(kept++) = i;
+    if (kept == p.n) return;
+    auto order = Kokkos::create_mirror_view_and_copy(Mem(), order_host);
+    permute.apply(p, order, kept);
+    p.n = kept;
   }
 
   // Appends the neighbours' boundary rows after the owned particles, which must be sorted

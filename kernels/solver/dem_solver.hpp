@@ -20,6 +20,7 @@
 #include "neighbours/cell_sort.hpp"
 #include "neighbours/pair_loop.hpp"
 #include "neighbours/verlet_list.hpp"
+#include "particle_bytes.hpp"
 #include "particles/particle_store.hpp"
 #include "particles/population.hpp"
 #include "particles/slab_exchange.hpp"
@@ -222,23 +223,42 @@ class DemSolver final : public Solver {
   }
 
   std::size_t size() const override { return std::size_t(p_.n); }
+  long global_size() const override { return comm_.sum(long(p_.n)); }
+  HostParticles gathered_particles() const override {
+    if (!slabs_) return particles();
+    HostParticles all;
+    append_particles(comm_.gather(pack_particles(particles()), 0), all);
+    return all;
+  }
   long steps_done() const override { return steps_; }
   long list_builds() const override { return builds_; }
   double time() const override { return double(steps_) * setup_.dt; }
   std::string variant() const override { return V::name() + "/" + ExecSpace::name(); }
 
+  // Several processes: every rank places the same particles (population.hpp) and keeps
+  // its slab's; the count returned is the whole event's, the same on every rank. New
+  // particles overwrite the ghost rows, so a caller that defers the rebuild
+  // (rebuild_lists = false) must rebuild before the next step, as it must anyway.
   int insert(const InsertionRequest& request) override {
-    if (slabs_ && request.count > 0)
-      throw std::logic_error("insertion on several processes is not built yet (docs/parallel.md)");
-    const int placed = population_.insert(p_, request);
+    const int before = p_.n;
+    const int placed = population_.insert(p_, request, slabs_ ? &comm_ : nullptr);
+    if (slabs_ && placed > 0) slabs_->keep_own(p_, permutation_, before);
     if (request.count > 0 && request.rebuild_lists) rebuild_lists();
     return placed;
   }
   RemovalCounts remove_escaped() override {
     rebuild_lists();
-    return population_.removed();
+    return removed();
   }
-  RemovalCounts removed() const override { return population_.removed(); }
+  RemovalCounts removed() const override {
+    RemovalCounts r = population_.removed();
+    if (slabs_)
+      for (int d = 0; d < 3; ++d) {
+        r.low[d] = comm_.sum(r.low[d]);
+        r.high[d] = comm_.sum(r.high[d]);
+      }
+    return r;
+  }
   int next_id() const override { return population_.next_id(); }
 
   void configure_sampling(const FieldSampling& f) override {
@@ -302,27 +322,45 @@ class DemSolver final : public Solver {
     comm_.sum_in_place(sums);
     return sums;
   }
+  // The sums are global (field_sums adds over ranks): rank 0 takes them, the others zero.
   void restore_field_sums(const std::vector<double>& grid,
                           const std::vector<double>& profile) override {
-    grid_sums_.from_host(grid);
-    if (!profile_sums_.empty()) profile_sums_.from_host(profile);
+    const bool mine = !slabs_ || comm_.is_root();
+    grid_sums_.from_host(mine ? grid : std::vector<double>(grid.size(), 0.0));
+    if (!profile_sums_.empty())
+      profile_sums_.from_host(mine ? profile : std::vector<double>(profile.size(), 0.0));
   }
 
+  // Several processes: the whole state on rank 0, every rank's particles in rank order,
+  // which is the global cell order (slabs are ranges of y-major cells), with the list one
+  // process would hold, built from the reference positions as its last rebuild did; the
+  // other ranks get the scalars only. The result is the one-process state, bit for bit.
   SolverState export_state() const override {
-    if (slabs_)
-      throw std::logic_error(
-          "checkpoints of several processes are not built yet (docs/parallel.md)");
     SolverState s;
     s.dim = Dim;
     s.step = steps_;
     s.next_id = population_.next_id();
     state_io::export_particles(p_, s);
-    state_io::to_host(list_.offsets, p_.n + 1, s.neighbour_offsets);
-    state_io::to_host(list_.neighbours, list_.total, s.neighbours);
     s.list_builds = builds_;
-    s.removed_low = population_.removed().low;
-    s.removed_high = population_.removed().high;
-    return s;
+    const RemovalCounts gone = removed();
+    s.removed_low = gone.low;
+    s.removed_high = gone.high;
+    if (!slabs_) {
+      state_io::to_host(list_.offsets, p_.n + 1, s.neighbour_offsets);
+      state_io::to_host(list_.neighbours, list_.total, s.neighbours);
+      return s;
+    }
+    SolverState all = select_particles(s, {});
+    append_particles(comm_.gather(pack_particles(s), 0), all);
+    if (!comm_.is_root()) return all;
+    state_io::ReferenceLists lists = state_io::lists_from_reference<Dim, Real, ExecSpace>(
+        all, grid_, box_, table_.radius, skin_);
+    for (std::size_t k = 0; k < lists.order.size(); ++k)
+      if (lists.order[k] != int(k))
+        throw std::logic_error("the gathered particles are out of the global cell order");
+    all.neighbour_offsets = std::move(lists.offsets);
+    all.neighbours = std::move(lists.neighbours);
+    return all;
   }
 
   // Refuses (InvalidCheckpoint, nothing changed) a state that does not fit this solver.
@@ -333,12 +371,43 @@ class DemSolver final : public Solver {
     state_io::check_lists<Dim, Real, ExecSpace>(s, grid_, box_, population_.escape_test(),
                                                 table_.radius, skin_);
     check_contacts(s, f);
+    const RemovalCounts gone{s.removed_low, s.removed_high};
+    steps_ = s.step;
+    builds_ = s.list_builds;
+    if (slabs_) {
+      import_own_part(s);
+      population_.restore(s.next_id, comm_.is_root() ? gone : RemovalCounts{});
+      return;
+    }
     if (int(s.size()) > p_.capacity()) p_.allocate(int(s.size()) + int(s.size()) / 4);
     state_io::import_particles(p_, s);
     list_.assign(s.neighbour_offsets, s.neighbours);
-    steps_ = s.step;
-    builds_ = s.list_builds;
-    population_.restore(s.next_id, RemovalCounts{s.removed_low, s.removed_high});
+    population_.restore(s.next_id, gone);
+  }
+
+  // Several processes, from the whole state: the particles whose reference position is in
+  // this slab (where the last rebuild left them), the ghosts and the list as that rebuild
+  // made them (from reference positions), then the ghosts' current motion. Public because
+  // it launches kernels (nvcc).
+  void import_own_part(const SolverState& s) {
+    std::vector<int> rows;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      const Position y = Position(s.reference_position[i * Dim + 1]);
+      if (slabs_->slabs().owner_of_row(grid_.coord(1, y)) == comm_.rank()) rows.push_back(int(i));
+    }
+    const SolverState own = select_particles(s, rows);
+    if (int(own.size()) > p_.capacity()) p_.allocate(int(own.size()) + int(own.size()) / 4);
+    state_io::import_particles(p_, own);
+    const auto grow = [this](int capacity) {
+      ParticlePopulation<V, ExecSpace>::grow(p_, capacity);
+    };
+    std::swap(p_.x, p_.x_ref);  // the rebuild's positions, for ghosts, cells and the list
+    sort_.sort(grid_, p_.x, p_.id, p_.n);
+    slabs_->append_ghosts(p_, sort_.cell_start, ghost_start_, grow);
+    list_.build(grid_, box_, sort_.cell_start, p_.x, p_.species, table_.radius, skin_, p_.n,
+                GhostCells<Mem>{ghost_start_, p_.n});
+    std::swap(p_.x, p_.x_ref);
+    slabs_->update_ghosts(p_);
   }
 
   // Public because it launches a KOKKOS_LAMBDA: nvcc rejects an extended lambda whose

@@ -77,6 +77,48 @@ void import_particles(Store& p, const SolverState& s) {
   p.n = n;
 }
 
+// The cell order and Verlet list that sorting and building from a state's reference
+// positions give (as a rebuild does): what a state must hold (check_lists), and what a
+// state gathered from several processes gets (DemSolver::export_state).
+struct ReferenceLists {
+  std::vector<int> order;  // order[k]: the state row that comes k-th in cell order
+  std::vector<int> offsets;
+  std::vector<int> neighbours;
+};
+
+template <int Dim, class Real, class ExecSpace, class RadiusView>
+ReferenceLists lists_from_reference(const SolverState& s, const CellGrid<Dim, Position>& grid,
+                                    const BoxGeometry<Dim, Position>& box, const RadiusView& radius,
+                                    Real skin) {
+  using Mem = typename ExecSpace::memory_space;
+  const int n = int(s.size());
+  ReferenceLists out;
+  out.offsets.assign(1, 0);
+  if (n == 0) return out;
+  Kokkos::View<Position* [Dim], Mem> xr("reference_x", n);
+  Kokkos::View<int*, Mem> species("reference_species", n), id("reference_id", n);
+  auto h_xr = Kokkos::create_mirror_view(xr);
+  auto h_species = Kokkos::create_mirror_view(species);
+  auto h_id = Kokkos::create_mirror_view(id);
+  for (int i = 0; i < n; ++i) {
+    for (int d = 0; d < Dim; ++d)
+      h_xr(i, d) = Position(s.reference_position[std::size_t(i) * Dim + d]);
+    h_species(i) = s.species[std::size_t(i)];
+    h_id(i) = s.id[std::size_t(i)];
+  }
+  Kokkos::deep_copy(xr, h_xr);
+  Kokkos::deep_copy(species, h_species);
+  Kokkos::deep_copy(id, h_id);
+  CellSort<Dim, Position, ExecSpace> sort;
+  sort.sort(grid, xr, id, n);
+  to_host(sort.order, n, out.order);
+  VerletList<Dim, Real, ExecSpace> list;
+  list.build(grid, box, sort.cell_start, xr, species, radius, skin, n);
+  to_host(list.offsets, n + 1, out.offsets);
+  to_host(list.neighbours, list.total, out.neighbours);
+  return out;
+}
+
 // Refuses (InvalidCheckpoint) a state whose lists this solver would not have built.
 // Positions are Position (double) in every variant (device/position.hpp); the other
 // arrays of a single-precision solver hold floats.
@@ -84,7 +126,6 @@ template <int Dim, class Real, class ExecSpace, class RadiusView>
 void check_lists(const SolverState& s, const CellGrid<Dim, Position>& grid,
                  const BoxGeometry<Dim, Position>& box, const EscapeTest<Dim, Position>& escape,
                  const RadiusView& radius, Real skin) {
-  using Mem = typename ExecSpace::memory_space;
   const int n = int(s.size());
   auto fail = [](const std::string& what) { throw InvalidCheckpoint(what); };
   if constexpr (!std::is_same_v<Real, double>) {
@@ -95,11 +136,6 @@ void check_lists(const SolverState& s, const CellGrid<Dim, Position>& grid,
           fail(fmt::format("/state: {} is not a value of this single-precision solver", v));
   }
   const Real rebuild_d2 = Real(0.25) * skin * skin;  // as in DemSolver::advance
-  Kokkos::View<Position* [Dim], Mem> xr("check_x_ref", std::max(n, 1));
-  Kokkos::View<int*, Mem> species("check_species", std::max(n, 1)), id("check_id", std::max(n, 1));
-  auto h_xr = Kokkos::create_mirror_view(xr);
-  auto h_species = Kokkos::create_mirror_view(species);
-  auto h_id = Kokkos::create_mirror_view(id);
   for (int i = 0; i < n; ++i) {
     Real d2 = 0;
     for (int d = 0; d < Dim; ++d) {
@@ -112,7 +148,6 @@ void check_lists(const SolverState& s, const CellGrid<Dim, Position>& grid,
             fmt::format("/state/reference_position[{}] = {} is outside the box on axis {}, "
                         "where a rebuild leaves none",
                         k, double(ref), d));
-      h_xr(i, d) = ref;
       const Real moved = Real(Position(s.position[k]) - ref);
       d2 += moved * moved;
     }
@@ -121,38 +156,28 @@ void check_lists(const SolverState& s, const CellGrid<Dim, Position>& grid,
           fmt::format("/state/position[{}]: particle {} is more than half the skin from its "
                       "reference position; the solver would have rebuilt its lists",
                       std::size_t(i) * Dim, s.id[std::size_t(i)]));
-    h_species(i) = s.species[std::size_t(i)];
-    h_id(i) = s.id[std::size_t(i)];
   }
   if (n == 0) return;
-  Kokkos::deep_copy(xr, h_xr);
-  Kokkos::deep_copy(species, h_species);
-  Kokkos::deep_copy(id, h_id);
-  CellSort<Dim, Position, ExecSpace> sort;
-  sort.sort(grid, xr, id, n);
-  const auto order = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sort.order);
+  const ReferenceLists built =
+      lists_from_reference<Dim, Real, ExecSpace>(s, grid, box, radius, skin);
   for (int k = 0; k < n; ++k)
-    if (order(k) != k)
+    if (built.order[std::size_t(k)] != k)
       fail(
           fmt::format("/state/id: particle {} at row {} is out of the cell order of "
                       "/state/reference_position",
                       s.id[std::size_t(k)], k));
-  VerletList<Dim, Real, ExecSpace> list;
-  list.build(grid, box, sort.cell_start, xr, species, radius, skin, n);
-  const auto offsets = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), list.offsets);
-  const auto neighbours = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), list.neighbours);
   for (int i = 0; i <= n; ++i)
-    if (offsets(i) != s.neighbour_offsets[std::size_t(i)])
+    if (built.offsets[std::size_t(i)] != s.neighbour_offsets[std::size_t(i)])
       fail(
           fmt::format("/state/neighbour_offsets[{}] = {}, but the list built from "
                       "/state/reference_position gives {}",
-                      i, s.neighbour_offsets[std::size_t(i)], offsets(i)));
-  for (int k = 0; k < list.total; ++k)
-    if (neighbours(k) != s.neighbours[std::size_t(k)])
+                      i, s.neighbour_offsets[std::size_t(i)], built.offsets[std::size_t(i)]));
+  for (std::size_t k = 0; k < built.neighbours.size(); ++k)
+    if (built.neighbours[k] != s.neighbours[k])
       fail(
           fmt::format("/state/neighbours[{}] = {}, but the list built from "
                       "/state/reference_position gives {}",
-                      k, s.neighbours[std::size_t(k)], neighbours(k)));
+                      k, s.neighbours[k], built.neighbours[k]));
 }
 
 // What a solver of this variant expects of a state (core/checkpoint_checks.hpp).

@@ -104,3 +104,107 @@ TEST(DecomposedSolver, OpenAxisWithEmptySlabsIsBitwiseTheSameAsOneProcess) {
   EXPECT_EQ(comm.sum(unknown), 0L) << "particles kept that one process deleted";
   EXPECT_EQ(comm.sum(differing), 0L) << "components differing from one process (all ranks)";
 }
+
+namespace {
+
+// Every array of two states, bit for bit (the scalars too).
+long differing_entries(const SolverState& a, const SolverState& b) {
+  long differing = 0;
+  const auto count = [&](const auto& x, const auto& y) {
+    if (x.size() != y.size()) return void(differing += 1000000);
+    for (std::size_t k = 0; k < x.size(); ++k)
+      if (std::memcmp(&x[k], &y[k], sizeof x[k]) != 0) ++differing;
+  };
+  count(a.position, b.position);
+  count(a.velocity, b.velocity);
+  count(a.force, b.force);
+  count(a.angular_velocity, b.angular_velocity);
+  count(a.torque, b.torque);
+  count(a.species, b.species);
+  count(a.id, b.id);
+  count(a.history_partner, b.history_partner);
+  count(a.history_spring, b.history_spring);
+  count(a.history_obstacle_spring, b.history_obstacle_spring);
+  count(a.reference_position, b.reference_position);
+  count(a.neighbour_offsets, b.neighbour_offsets);
+  count(a.neighbours, b.neighbours);
+  if (a.step != b.step || a.next_id != b.next_id || a.list_builds != b.list_builds ||
+      a.removed_low != b.removed_low || a.removed_high != b.removed_high)
+    ++differing;
+  return differing;
+}
+
+InsertionRequest inflow_event(const SolverSetup& setup, std::uint64_t event, long before) {
+  InsertionRequest rq;
+  rq.x_range = {setup.box.lo[0], setup.box.hi[0]};
+  // The lower 60 % of the box: on 2 to 4 ranks the strip spans several slabs.
+  rq.y_range = {setup.box.lo[1], setup.box.lo[1] + 0.6 * setup.box.length(1)};
+  rq.count = 150;
+  rq.number_fraction = {0.5, 0.5};
+  rq.mean_velocity = {0, 2.0};
+  rq.sigma_m_per_s = 0.5;
+  rq.seed = 3;
+  rq.event = event;
+  rq.inserted_before = before;
+  return rq;
+}
+
+}  // namespace
+
+// Insertion events whose strip spans several slabs, with friction (contact histories),
+// then the checkpoint state: rank 0's gathered state is the one-process state bit for bit
+// (order, lists and all), and a solver on slabs that imports it goes on as one process.
+TEST(DecomposedSolver, InsertionAndCheckpointStateAreThoseOfOneProcess) {
+  const MpiCommunicator comm;
+  SolverSetup setup = paper_mixture(0.5);
+  setup.contacts = ContactSettings::uniform(2, 0.5, 0.5);
+  const GasSpec spec{600, 0.15, 2.0, 9};
+  size_periodic_box(setup, spec);
+  HostParticles gas = make_homogeneous_gas(setup, spec);
+  setup.box.hi[1] = setup.box.lo[1] + 2 * setup.box.length(1);
+  setup.box.periodic[1] = false;
+  setup.delete_outside = true;
+  setup.dt = 1e-7;
+
+  const auto one = make_solver(setup, 2000);
+  const auto slabs = make_solver(setup, 2000, Backend::default_space, &comm);
+  one->set_particles(gas);
+  slabs->set_particles(gas);
+  long inserted = 0;
+  for (std::uint64_t event = 0; event < 3; ++event) {
+    const InsertionRequest rq = inflow_event(setup, event, inserted);
+    const int placed_one = one->insert(rq);
+    const int placed = slabs->insert(rq);
+    EXPECT_EQ(placed, placed_one) << "event " << event << ", rank " << comm.rank();
+    EXPECT_GT(placed, 0);
+    inserted += placed;
+    one->advance(1500);
+    slabs->advance(1500);
+  }
+  EXPECT_EQ(slabs->global_size(), long(one->size()));
+  EXPECT_EQ(slabs->removed().total(), one->removed().total());
+  EXPECT_GT(one->removed().total(), 0) << "particles should have left through y = 0";
+
+  const SolverState state = one->export_state();
+  const SolverState gathered = slabs->export_state();
+  if (comm.rank() == 0) {
+    EXPECT_EQ(gathered.size(), state.size());
+    EXPECT_EQ(differing_entries(gathered, state), 0) << "rank 0's gathered state";
+  } else {
+    EXPECT_EQ(gathered.size(), 0U) << "only rank 0 gathers";
+  }
+
+  const auto resumed = make_solver(setup, 2000, Backend::default_space, &comm);
+  resumed->import_state(state);
+  EXPECT_EQ(resumed->global_size(), long(state.size()));
+  one->advance(3000);
+  resumed->advance(3000);
+  const SolverState after = one->export_state(), after_resumed = resumed->export_state();
+  if (comm.rank() == 0) {
+    EXPECT_EQ(differing_entries(after_resumed, after), 0);
+  }
+  const HostParticles all = resumed->gathered_particles();
+  if (comm.rank() == 0) {
+    EXPECT_EQ(all.id, one->particles().id) << "gathered in one process's order";
+  }
+}

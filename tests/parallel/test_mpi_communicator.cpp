@@ -1,7 +1,13 @@
-// MpiCommunicator (parallel/mpi_communicator.hpp) under mpirun: every reduction against
-// its value computed in closed form from the rank numbers, on every rank.
+// MpiCommunicator (parallel/mpi_communicator.hpp) under mpirun: every reduction and gather
+// against its value computed in closed form from the rank numbers, on every rank; and the
+// agreement on a failure (core/failure_agreement.hpp).
 #include <gtest/gtest.h>
 
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "failure_agreement.hpp"
 #include "mpi_communicator.hpp"
 #include "mpi_runtime.hpp"
 
@@ -33,4 +39,58 @@ TEST(MpiCommunicator, SumInPlaceAddsEveryRanksArray) {
   comm.sum_in_place(values);
   for (std::size_t k = 0; k < values.size(); ++k)
     ASSERT_EQ(values[k], double(k) * n * (n + 1) / 2) << "element " << k;
+}
+
+namespace {
+
+// Rank r sends r + 1 bytes of value r: the result is every rank's bytes in rank order.
+std::vector<char> bytes_of_every_rank(int n) {
+  std::vector<char> expected;
+  for (int k = 0; k < n; ++k) expected.insert(expected.end(), std::size_t(k + 1), char(k));
+  return expected;
+}
+
+}  // namespace
+
+TEST(MpiCommunicator, GatherConcatenatesInRankOrderOnTheRootOnly) {
+  const MpiCommunicator comm;
+  const int r = comm.rank(), n = comm.size();
+  const std::vector<char> mine(std::size_t(r + 1), char(r));
+  const std::vector<char> gathered = comm.gather(mine, 0);
+  if (r == 0) {
+    EXPECT_EQ(gathered, bytes_of_every_rank(n));
+  } else {
+    EXPECT_TRUE(gathered.empty());
+  }
+  EXPECT_EQ(comm.all_gather(mine), bytes_of_every_rank(n));
+  // A rank with nothing to send (an empty slab) takes part all the same.
+  const std::vector<char> some = r == 1 ? std::vector<char>() : mine;
+  std::vector<char> expected = bytes_of_every_rank(n);
+  expected.erase(expected.begin() + 1, expected.begin() + 3);  // rank 1's two bytes
+  EXPECT_EQ(comm.all_gather(some), expected);
+}
+
+// core/failure_agreement.hpp: a step that fails on rank 1 alone.
+TEST(FailureAgreement, TheLowestFailingRankSpeaksTheOthersLeaveQuietly) {
+  const MpiCommunicator comm;
+  const int r = comm.rank();
+  failure_agreed() = false;
+  EXPECT_NO_THROW(agree_on_failure(comm, [] {}));
+  EXPECT_FALSE(failure_agreed());
+  const auto fail_on = [&](int failing) {
+    return [&comm, failing] {
+      if (comm.rank() >= failing) throw std::runtime_error("rank " + std::to_string(comm.rank()));
+    };
+  };
+  try {
+    agree_on_failure(comm, fail_on(1));
+    FAIL() << "rank " << r << " went on after rank 1 failed";
+  } catch (const PeerFailed&) {
+    EXPECT_NE(r, 1) << "rank 1 failed first: it says why";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(r, 1);
+    EXPECT_STREQ(e.what(), "rank 1");
+  }
+  EXPECT_TRUE(failure_agreed());
+  failure_agreed() = false;
 }

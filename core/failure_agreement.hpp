@@ -1,0 +1,48 @@
+// Failing together on several processes (docs/parallel.md, "Errors"). A step that can
+// fail on some ranks and not on others (rank 0's files, a lock) is run through
+// agree_on_failure before the next collective operation, so that no rank is left waiting
+// in one: if any rank failed, the lowest failing rank rethrows its own error (the one
+// message the user sees) and every other rank throws PeerFailed, which exits quietly.
+// Failures after the last agreement end the job through MPI_Abort (apps/granshock).
+#pragma once
+
+#include <exception>
+#include <stdexcept>
+#include <string>
+
+#include "communicator.hpp"
+
+namespace granshock {
+
+class PeerFailed : public std::runtime_error {
+ public:
+  explicit PeerFailed(int rank)
+      : std::runtime_error("rank " + std::to_string(rank) + " failed and said why") {}
+};
+
+// True once agree_on_failure has rethrown this rank's error: every rank knows of the
+// failure and leaves without waiting for another.
+inline bool& failure_agreed() {
+  static bool agreed = false;
+  return agreed;
+}
+
+template <class Step>
+void agree_on_failure(const Communicator& comm, Step&& step) {
+  if (comm.size() == 1) return step();
+  std::exception_ptr failure;
+  try {
+    step();
+  } catch (...) {
+    failure = std::current_exception();
+  }
+  // max(size - rank) over the failing ranks names the lowest of them; 0: none failed.
+  const int n = comm.size();
+  const int highest = int(comm.max(failure ? double(n - comm.rank()) : 0.0));
+  if (highest == 0) return;
+  failure_agreed() = true;
+  if (comm.rank() == n - highest) std::rethrow_exception(failure);
+  throw PeerFailed(n - highest);
+}
+
+}  // namespace granshock

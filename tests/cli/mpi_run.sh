@@ -1,0 +1,75 @@
+#!/bin/bash
+# `mpirun -np N granshock run` against one process (docs/parallel.md), on the default
+# scene shortened to 0.02 s (3,800 particles, 100,000 steps).
+# Usage: mpi_run.sh MPIEXEC GRANSHOCK SCENE WORK MODE [RANKS]
+#   reference   the one-process run, into WORK/one (the fixture of the others)
+#   ranks N     the run on N processes: bitwise the same state (compare_runs.py)
+#   resume      stopped on 2 processes half way, resumed on 3: the same as one process
+#   errors      bad input said once, by one rank, exit code 2, no rank left waiting; other
+#               commands than `run` refused under mpirun
+set -u
+mpiexec=$1 granshock=$2 scene=$3 work=$4 mode=$5
+here=$(cd "$(dirname "$0")" && pwd)
+short=(--quiet --set time.duration=0.02 --set time.production_start=0.01)
+mpi() { "$mpiexec" --oversubscribe -np "$@"; }
+compare() { /usr/bin/python3 "$here/../parallel/compare_runs.py" "$work/one" "$1" "$2"; }
+fail() { echo "FAIL: $*"; exit 1; }
+
+case $mode in
+reference)
+  rm -rf "$work" && mkdir -p "$work"
+  "$granshock" run "$scene" "${short[@]}" --out "$work/one" || fail "the one-process run"
+  ;;
+ranks)
+  ranks=$6
+  rm -rf "$work/ranks$ranks"
+  mpi "$ranks" "$granshock" run "$scene" "${short[@]}" --out "$work/ranks$ranks" ||
+    fail "the run on $ranks processes"
+  compare "$work/ranks$ranks" "$ranks" || fail "$ranks processes differ from one"
+  ;;
+resume)
+  rm -rf "$work/resumed"
+  mpi 2 "$granshock" run "$scene" "${short[@]}" --out "$work/resumed" --stop-after-steps 50000 \
+    2>"$work/stop.err" || { cat "$work/stop.err"; fail "the first half on 2 processes"; }
+  grep -q "stopped after 50000 steps" "$work/stop.err" || fail "no stop message"
+  mpi 3 "$granshock" run "$scene" "${short[@]}" --out "$work/resumed" --resume ||
+    fail "the resume on 3 processes"
+  compare "$work/resumed" 3 || fail "2 then 3 processes differ from one"
+  ;;
+errors)
+  dir=$(mktemp -d)
+  trap 'rm -rf "$dir"' EXIT
+  # Every rank meets it alike: said once.
+  timeout 120 "$mpiexec" --oversubscribe -np 3 "$granshock" run "$dir/missing.toml" \
+    --out "$dir/run" >"$dir/out" 2>"$dir/err"
+  status=$?
+  cat "$dir/err"
+  [ "$status" -eq 2 ] || fail "a missing scene file: exit status $status, not 2"
+  [ "$(grep -c "error" "$dir/err")" -eq 1 ] || fail "a missing scene file was not said once"
+  [ ! -e "$dir/run" ] || fail "a run directory was created"
+  # An existing run directory without --overwrite.
+  mkdir "$dir/taken" && touch "$dir/taken/summary.json"
+  timeout 120 "$mpiexec" --oversubscribe -np 3 "$granshock" run "$scene" "${short[@]}" \
+    --out "$dir/taken" >"$dir/out" 2>"$dir/err"
+  status=$?
+  cat "$dir/err"
+  [ "$status" -eq 2 ] || fail "an existing directory: exit status $status, not 2"
+  [ "$(grep -c "error" "$dir/err")" -eq 1 ] || fail "an existing directory was not said once"
+  # Commands other than run would do their whole job N times: refused, said once.
+  timeout 120 "$mpiexec" --oversubscribe -np 2 "$granshock" fields "$dir/taken" \
+    >"$dir/out" 2>"$dir/err"
+  status=$?
+  cat "$dir/err"
+  [ "$status" -eq 2 ] || fail "fields under mpirun: exit status $status, not 2"
+  [ "$(grep -c "started as 2 MPI processes" "$dir/err")" -eq 1 ] ||
+    fail "fields under mpirun: the reason was not said once"
+  # Without a launcher nothing changes; info reports the processes under one.
+  "$granshock" info | grep -q '"launched": false' || fail "info without mpirun"
+  mpi 2 "$granshock" info >"$dir/info" 2>&1
+  [ "$(grep -c '"processes": 2' "$dir/info")" -eq 1 ] || { cat "$dir/info"; fail "info under mpirun"; }
+  ;;
+*)
+  fail "unknown mode $mode"
+  ;;
+esac
+echo "PASS"
