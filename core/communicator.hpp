@@ -8,6 +8,8 @@
 // send_receive.
 #pragma once
 
+#include <cstring>
+#include <type_traits>
 #include <vector>
 
 namespace granshock {
@@ -34,6 +36,18 @@ class Communicator {
   virtual std::vector<char> all_gather(const std::vector<char>& bytes) const = 0;
   bool is_root() const { return rank() == 0; }
 };
+
+// Every rank's `value` on rank 0, in rank order (empty elsewhere): per-rank reports.
+template <class T>
+std::vector<T> gather_to_root(const Communicator& comm, T value) {
+  static_assert(std::is_trivially_copyable_v<T>);
+  std::vector<char> bytes(sizeof value);
+  std::memcpy(bytes.data(), &value, sizeof value);
+  const std::vector<char> all = comm.gather(bytes, 0);
+  std::vector<T> out(all.size() / sizeof value);
+  std::memcpy(static_cast<void*>(out.data()), all.data(), all.size());
+  return out;
+}
 
 // One process owns everything: every reduction returns its argument.
 class SingleProcess final : public Communicator {

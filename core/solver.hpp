@@ -62,6 +62,19 @@ struct RemovalCounts {
   long total() const { return low[0] + low[1] + low[2] + high[0] + high[1] + high[2]; }
 };
 
+// Several processes (docs/parallel.md): what exchanging particles with the neighbouring
+// slabs has cost this process so far.
+struct HaloStats {
+  double seconds = 0;  // wall time in migration, ghost and halo exchanges (waits included)
+  // Wall time in the per-step global maximum that decides a list rebuild: where a rank
+  // waits for the slowest one (load imbalance) and pays the reduction's latency.
+  double sync_seconds = 0;
+  long exchanges = 0;     // send-receive pairs
+  double bytes_sent = 0;  // to the neighbours
+  long ghosts = 0;        // ghosts held since the last list rebuild
+  long rebalances = 0;    // times the slab boundaries moved (balance by particles)
+};
+
 class Solver {
  public:
   virtual ~Solver() = default;
@@ -103,6 +116,11 @@ class Solver {
   // dimension, unknown species, a neighbour list its positions do not give, ...) is
   // refused with InvalidCheckpoint (core/checkpoint_checks.hpp) before anything changes.
   virtual void import_state(const SolverState& state) = 0;
+
+  // Several processes: slab boundaries balanced by particle count at list rebuilds (off:
+  // equal slabs); the exchange's cost so far. One process: nothing to balance, no cost.
+  virtual void balance_slabs_by_particles(bool on) = 0;
+  virtual HaloStats halo_stats() const = 0;
 
   virtual std::size_t size() const = 0;  // the particles this process owns
   virtual long global_size() const = 0;  // on every process (collective)

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <iostream>
 
 #include "atomic_file.hpp"
@@ -101,6 +100,7 @@ void BowShockRun::prepare() {
       every_seconds(scene_.run.checkpoint_interval_s, scene_.run.duration_s, scene_.setup.dt);
   solver_ = make_solver(scene_.setup, scene_.capacity_estimate(), Backend::default_space, &comm_);
   solver_->configure_sampling(sampling_.layout());
+  solver_->balance_slabs_by_particles(options_.balance == "particles");
   samples_.assign(std::size_t(sampling_.blocks()), 0);
   // Every check is done: from here on the run owns the directory (and holds its lock);
   // every rank has checked it before rank 0 claims it.
@@ -324,10 +324,12 @@ void BowShockRun::write_checkpoint_now() {
   const CheckpointExtras extras =
       pack_run_state(loaded_.resolved, *solver_, inflow_, samples_, wall);
   const SolverState state = solver_->export_state();
+  if (root_) {
+    run_file_->flush();
+    write_checkpoint(dir_ / "checkpoint.h5", state, extras);
+  }
+  // After the write: a failed one leaves the last good checkpoint's step for the message.
   last_checkpoint_step_ = step;
-  if (!root_) return;
-  run_file_->flush();
-  write_checkpoint(dir_ / "checkpoint.h5", state, extras);
 }
 
 void BowShockRun::finish(bool completed) {
@@ -344,7 +346,8 @@ void BowShockRun::finish(bool completed) {
   const long steps = solver_->steps_done();
   nlohmann::json j = run_summary(scene_, *solver_, inflow_, calibration_ ? &*calibration_ : nullptr,
                                  completed, {wall, meter_->elapsed_s(), particle_steps_});
-  j["processes"] = processes_summary();
+  // Several processes: how the work was shared (one process: nothing to say).
+  if (comm_.size() > 1) j["processes"] = processes_summary();
   if (!root_) return;
   write_field_sums(*run_file_, sums);
   run_file_->flush();
@@ -369,13 +372,16 @@ void BowShockRun::finish(bool completed) {
 // summary.json "processes": how many, and the particles each rank owns at the end (the
 // load balance of the slabs; collective).
 nlohmann::json BowShockRun::processes_summary() const {
-  const long mine = long(solver_->size());
-  std::vector<char> bytes(sizeof mine);
-  std::memcpy(bytes.data(), &mine, sizeof mine);
-  const std::vector<char> all = comm_.gather(bytes, 0);
-  std::vector<long> per_rank(all.size() / sizeof mine);
-  std::memcpy(per_rank.data(), all.data(), all.size());
-  return {{"count", comm_.size()}, {"particles_per_rank", per_rank}};
+  const HaloStats halo = solver_->halo_stats();
+  const double wall = meter_->elapsed_s();
+  return {{"count", comm_.size()},
+          {"balance", options_.balance},
+          {"particles_per_rank", gather_to_root(comm_, long(solver_->size()))},
+          {"ghosts_per_rank", gather_to_root(comm_, halo.ghosts)},
+          {"halo_share_per_rank", gather_to_root(comm_, wall > 0 ? halo.seconds / wall : 0.0)},
+          {"sync_share_per_rank", gather_to_root(comm_, wall > 0 ? halo.sync_seconds / wall : 0.0)},
+          {"halo_bytes_sent_per_rank", gather_to_root(comm_, halo.bytes_sent)},
+          {"rebalances", halo.rebalances}};
 }
 
 // docs/scene_format.md, "The inflow": a strip that cannot take what the inflow asks for

@@ -22,11 +22,12 @@ struct RunOptions {
   std::vector<std::string> overrides;
   bool overwrite = false;
   bool resume = false;
-  bool force = false;         // run past the stable time step
-  long stop_after_steps = 0;  // > 0: checkpoint and stop after this many steps (batch jobs)
-  bool quiet = false;         // no progress lines
-  bool dry_run = false;       // check the scene and the directory, print the resolved scene
-  std::string accuracy;       // an error budget ("2%"): settings from a measured table
+  bool force = false;             // run past the stable time step
+  long stop_after_steps = 0;      // > 0: checkpoint and stop after this many steps (batch jobs)
+  bool quiet = false;             // no progress lines
+  std::string balance = "equal";  // several processes: "equal" or "particles" slabs
+  bool dry_run = false;           // check the scene and the directory, print the resolved scene
+  std::string accuracy;           // an error budget ("2%"): settings from a measured table
   std::filesystem::path accuracy_table;  // that table; empty: default_accuracy_table()
   nlohmann::json accuracy_choice;        // what run_scene chose for `accuracy`; null without
 };

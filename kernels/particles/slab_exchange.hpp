@@ -19,6 +19,7 @@
 
 #include <Kokkos_Core.hpp>
 #include <algorithm>
+#include <chrono>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -29,6 +30,7 @@
 #include "domain.hpp"
 #include "neighbours/cell_grid.hpp"
 #include "slab_decomposition.hpp"
+#include "solver.hpp"  // HaloStats
 
 namespace granshock {
 
@@ -100,7 +102,11 @@ class SlabExchange {
         grid_(grid),
         slabs_(SlabDecomposition::equal(comm.size(), box.lo[kAxis], box.length(kAxis),
                                         grid.ncell[kAxis], box.periodic[kAxis] ? 2 : 1,
-                                        box.periodic[kAxis])) {
+                                        box.periodic[kAxis])),
+        box_lo_(box.lo[kAxis]),
+        box_length_(box.length(kAxis)),
+        min_rows_(box.periodic[kAxis] ? 2 : 1),
+        periodic_(box.periodic[kAxis]) {
     const int r = comm.rank(), n = comm.size();
     const bool periodic = box.periodic[kAxis];
     lower_ = r > 0 ? r - 1 : (periodic ? n - 1 : Communicator::kNone);
@@ -109,37 +115,51 @@ class SlabExchange {
 
   const SlabDecomposition& slabs() const { return slabs_; }
   int ghosts() const { return ghosts_; }
+  const HaloStats& stats() const { return stats_; }
+
+  // Slab boundaries balanced by particle count at list rebuilds (docs/parallel.md, "Load
+  // balance"); off: equal slabs of rows throughout.
+  void balance_by_particles(bool on) { balance_ = on; }
 
   // Hands the owned particles whose row is now another slab's to it and appends those
   // that arrived; returns the new owned count. `grow(capacity)` enlarges the store.
+  // Between rebuilds a particle moves less than a row, so one exchange with the adjacent
+  // slabs does; after a rebalance one may be several slabs away, and passes repeat
+  // (forwarding through the slabs between) until every particle is home.
   template <class Permutation, class Grow>
   int migrate(Store& p, Permutation& permute, Grow&& grow) {
-    auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.x);
-    std::vector<int> keep, down, up;
+    const Timer timer(stats_);
+    const bool moved_cuts = balance_ && rebalance(p);
     const int me = comm_.rank();
-    for (int i = 0; i < p.n; ++i) {
-      const int owner = slabs_.owner_of_row(grid_.coord(kAxis, x(i, kAxis)));
-      if (owner == me) {
-        keep.push_back(i);
-      } else if (owner == lower_) {
-        down.push_back(i);
-      } else if (owner == upper_) {
-        up.push_back(i);
-      } else {
-        throw std::logic_error("a particle crossed more than one slab between list rebuilds");
+    for (int pass = 0;; ++pass) {
+      auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.x);
+      std::vector<int> keep, down, up;
+      for (int i = 0; i < p.n; ++i) {
+        const int owner = slabs_.owner_of_row(grid_.coord(kAxis, x(i, kAxis)));
+        if (owner == me) {
+          keep.push_back(i);
+        } else if (owner == lower_ || (moved_cuts && owner < me)) {
+          down.push_back(i);
+        } else if (owner == upper_ || (moved_cuts && owner > me)) {
+          up.push_back(i);
+        } else {
+          throw std::logic_error("a particle crossed more than one slab between list rebuilds");
+        }
       }
+      if (pass > 0 && !comm_.any(int(keep.size()) < p.n)) break;
+      const std::vector<char> to_lower = pack_all(p, down), to_upper = pack_all(p, up);
+      if (int(keep.size()) < p.n) {
+        Kokkos::View<int*, Kokkos::HostSpace> order_host("keep_order", keep.size());
+        for (std::size_t k = 0; k < keep.size(); ++k) order_host(k) = keep[k];
+        auto order = Kokkos::create_mirror_view_and_copy(Mem(), order_host);
+        permute.apply(p, order, int(keep.size()));
+        p.n = int(keep.size());
+      }
+      for (const std::vector<char>& arrived :
+           {exchange(to_lower, lower_, upper_), exchange(to_upper, upper_, lower_)})
+        unpack_all(p, arrived, grow);
+      if (!moved_cuts) break;
     }
-    const std::vector<char> to_lower = pack_all(p, down), to_upper = pack_all(p, up);
-    if (int(keep.size()) < p.n) {
-      Kokkos::View<int*, Kokkos::HostSpace> order_host("keep_order", keep.size());
-      for (std::size_t k = 0; k < keep.size(); ++k) order_host(k) = keep[k];
-      auto order = Kokkos::create_mirror_view_and_copy(Mem(), order_host);
-      permute.apply(p, order, int(keep.size()));
-      p.n = int(keep.size());
-    }
-    for (const std::vector<char>& arrived : {comm_.send_receive(to_lower, lower_, upper_),
-                                             comm_.send_receive(to_upper, upper_, lower_)})
-      unpack_all(p, arrived, grow);
     return p.n;
   }
 
@@ -174,10 +194,9 @@ class SlabExchange {
     send_down_ = row_range(slabs_.first_row(comm_.rank()));
     send_up_ = row_range(slabs_.end_row(comm_.rank()) - 1);
     // Down first: from the slab above, its lowest row (the row above this slab).
-    const std::vector<char> from_upper =
-        comm_.send_receive(pack_ghost(p, send_down_), lower_, upper_);
-    const std::vector<char> from_lower =
-        comm_.send_receive(pack_ghost(p, send_up_), upper_, lower_);
+    const Timer timer(stats_);
+    const std::vector<char> from_upper = exchange(pack_ghost(p, send_down_), lower_, upper_);
+    const std::vector<char> from_lower = exchange(pack_ghost(p, send_up_), upper_, lower_);
     // In increasing cell order: the row below this slab first unless it wrapped to the top.
     const int rows = grid_.ncell[kAxis];
     const int below = (slabs_.first_row(comm_.rank()) - 1 + rows) % rows;
@@ -191,16 +210,16 @@ class SlabExchange {
                       : std::vector<const std::vector<char>*>{&from_upper, &from_lower})
       at += unpack_ghost(p, *bytes, at);
     ghosts_ = at - p.n;
+    stats_.ghosts = ghosts_;
     index_ghost_cells(p, ghost_start);
     return ghosts_;
   }
 
   // After a position update without a rebuild: the ghosts' new state from their owners.
   void update_ghosts(Store& p) {
-    const std::vector<char> from_upper =
-        comm_.send_receive(pack_motion(p, send_down_), lower_, upper_);
-    const std::vector<char> from_lower =
-        comm_.send_receive(pack_motion(p, send_up_), upper_, lower_);
+    const Timer timer(stats_);
+    const std::vector<char> from_upper = exchange(pack_motion(p, send_down_), lower_, upper_);
+    const std::vector<char> from_lower = exchange(pack_motion(p, send_up_), upper_, lower_);
     int at = p.n;
     for (const std::vector<char>* bytes :
          below_first_ ? std::vector<const std::vector<char>*>{&from_lower, &from_upper}
@@ -212,6 +231,52 @@ class SlabExchange {
   }
 
  private:
+  // Adds the wall time of one exchange (packing, transport and waiting for the neighbour
+  // included) to the statistics.
+  struct Timer {
+    HaloStats& stats;
+    std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+    explicit Timer(HaloStats& s) : stats(s) {}
+    ~Timer() {
+      stats.seconds +=
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+  };
+
+  std::vector<char> exchange(const std::vector<char>& bytes, int dest, int source) {
+    ++stats_.exchanges;
+    if (dest != Communicator::kNone) stats_.bytes_sent += double(bytes.size());
+    return comm_.send_receive(bytes, dest, source);
+  }
+
+  // New cuts that balance the particles per row over the ranks (every rank computes the
+  // same from the same global histogram), taken when they lighten the heaviest slab by
+  // more than kWorthwhile of its count. Returns whether the cuts moved.
+  static constexpr double kWorthwhile = 0.05;
+  bool rebalance(const Store& p) {
+    auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.x);
+    const int rows = grid_.ncell[kAxis];
+    std::vector<double> histogram(std::size_t(rows), 0.0);
+    for (int i = 0; i < p.n; ++i) histogram[std::size_t(grid_.coord(kAxis, x(i, kAxis)))] += 1;
+    comm_.sum_in_place(histogram);  // counts below 2^53: exact in double
+    const std::vector<long> per_row(histogram.begin(), histogram.end());
+    const auto heaviest = [&](const SlabDecomposition& d) {
+      long most = 0;
+      for (int r = 0; r < d.ranks(); ++r) {
+        long in_slab = 0;
+        for (int row = d.first_row(r); row < d.end_row(r); ++row) in_slab += per_row[row];
+        most = std::max(most, in_slab);
+      }
+      return most;
+    };
+    const SlabDecomposition candidate = SlabDecomposition::balanced(
+        comm_.size(), box_lo_, box_length_, per_row, min_rows_, periodic_);
+    if (double(heaviest(candidate)) >= (1 - kWorthwhile) * double(heaviest(slabs_))) return false;
+    slabs_ = candidate;
+    ++stats_.rebalances;
+    return true;
+  }
+
   // Every per-particle array travels with a migrating particle.
   template <class F>
   static void for_all(Store& p, F&& f) {
@@ -327,6 +392,11 @@ class SlabExchange {
   const Communicator& comm_;
   Grid grid_;
   SlabDecomposition slabs_;
+  double box_lo_, box_length_;
+  int min_rows_;
+  bool periodic_;
+  bool balance_ = false;
+  HaloStats stats_;
   int lower_ = Communicator::kNone, upper_ = Communicator::kNone;
   std::pair<int, int> send_down_{0, 0}, send_up_{0, 0};  // storage ranges of the boundary rows
   bool below_first_ = true;

@@ -11,6 +11,7 @@
 
 #include <Kokkos_Core.hpp>
 #include <algorithm>
+#include <chrono>
 #include <optional>
 #include <stdexcept>
 
@@ -137,7 +138,7 @@ class DemSolver final : public Solver {
     const Real rebuild_d2 = Real(0.25) * skin_ * skin_;  // (skin/2)^2
     Real moved2 = integrator_.first_half(p_, table_);
     for (long s = 0; s < steps; ++s) {
-      if (Real(comm_.max(double(moved2))) > rebuild_d2) {
+      if (Real(global_max(moved2)) > rebuild_d2) {
         rebuild_lists();
       } else if (slabs_) {
         slabs_->update_ghosts(p_);
@@ -224,6 +225,15 @@ class DemSolver final : public Solver {
 
   std::size_t size() const override { return std::size_t(p_.n); }
   long global_size() const override { return comm_.sum(long(p_.n)); }
+  void balance_slabs_by_particles(bool on) override {
+    if (slabs_) slabs_->balance_by_particles(on);
+  }
+  HaloStats halo_stats() const override {
+    if (!slabs_) return HaloStats{};
+    HaloStats h = slabs_->stats();
+    h.sync_seconds = sync_seconds_;
+    return h;
+  }
   HostParticles gathered_particles() const override {
     if (!slabs_) return particles();
     HostParticles all;
@@ -435,6 +445,16 @@ class DemSolver final : public Solver {
     return out;
   }
 
+  // The largest displacement over every process (timed on several: halo_stats).
+  double global_max(Real local) {
+    if (!slabs_) return double(local);
+    const auto start = std::chrono::steady_clock::now();
+    const double largest = comm_.max(double(local));
+    sync_seconds_ +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return largest;
+  }
+
   static const SolverSetup& validated(const SolverSetup& s) {
     if (s.species.empty()) throw UserError("a scene needs at least one species");
     if (!(s.max_diameter() > 0)) throw UserError("particle diameters must be > 0");
@@ -477,6 +497,7 @@ class DemSolver final : public Solver {
   typename Store::ScalarView omega_next_;
   long steps_ = 0;
   long builds_ = 0;
+  double sync_seconds_ = 0;
 };
 
 }  // namespace granshock

@@ -2,8 +2,10 @@
 # `mpirun -np N granshock run` against one process (docs/parallel.md), on the default
 # scene shortened to 0.02 s (3,800 particles, 100,000 steps).
 # Usage: mpi_run.sh MPIEXEC GRANSHOCK SCENE WORK MODE [RANKS]
-#   reference   the one-process run, into WORK/one (the fixture of the others)
+#   reference   the one-process runs, into WORK/one and WORK/one_big (a 60 d obstacle):
+#               the fixture of the others
 #   ranks N     the run on N processes: bitwise the same state (compare_runs.py)
+#   balanced N  the large obstacle with --balance particles: bitwise, and the cuts moved
 #   resume      stopped on 2 processes half way, resumed on 3: the same as one process
 #   errors      bad input said once, by one rank, exit code 2, no rank left waiting; other
 #               commands than `run` refused under mpirun
@@ -12,13 +14,18 @@ mpiexec=$1 granshock=$2 scene=$3 work=$4 mode=$5
 here=$(cd "$(dirname "$0")" && pwd)
 short=(--quiet --set time.duration=0.02 --set time.production_start=0.01)
 mpi() { "$mpiexec" --oversubscribe -np "$@"; }
-compare() { /usr/bin/python3 "$here/../parallel/compare_runs.py" "$work/one" "$1" "$2"; }
+# compare DIR RANKS [ONE_PROCESS_DIR]
+compare() { /usr/bin/python3 "$here/../parallel/compare_runs.py" "${3:-$work/one}" "$1" "$2"; }
+# An obstacle of 60 d: the middle slabs hold fewer particles than the others.
+big=(--set 'obstacle.diameter="60 d"')
 fail() { echo "FAIL: $*"; exit 1; }
 
 case $mode in
 reference)
   rm -rf "$work" && mkdir -p "$work"
   "$granshock" run "$scene" "${short[@]}" --out "$work/one" || fail "the one-process run"
+  "$granshock" run "$scene" "${short[@]}" "${big[@]}" --out "$work/one_big" ||
+    fail "the one-process run with the large obstacle"
   ;;
 ranks)
   ranks=$6
@@ -26,6 +33,20 @@ ranks)
   mpi "$ranks" "$granshock" run "$scene" "${short[@]}" --out "$work/ranks$ranks" ||
     fail "the run on $ranks processes"
   compare "$work/ranks$ranks" "$ranks" || fail "$ranks processes differ from one"
+  ;;
+balanced)
+  # Slab boundaries moved by particle count: the same bits, and the cuts did move.
+  ranks=$6
+  rm -rf "$work/balanced$ranks"
+  mpi "$ranks" "$granshock" run "$scene" "${short[@]}" "${big[@]}" --out "$work/balanced$ranks" \
+    --balance particles || fail "the balanced run on $ranks processes"
+  compare "$work/balanced$ranks" "$ranks" "$work/one_big" ||
+    fail "balanced slabs differ from one process"
+  /usr/bin/python3 -c 'import json, sys
+p = json.load(open(sys.argv[1]))["processes"]
+print("rebalances:", p["rebalances"], "balance:", p["balance"])
+sys.exit(0 if p["rebalances"] > 0 and p["balance"] == "particles" else 1)' \
+    "$work/balanced$ranks/summary.json" || fail "the slab boundaries never moved"
   ;;
 resume)
   rm -rf "$work/resumed"
