@@ -5,7 +5,7 @@
 // field sums (sum in place) are global reductions. The single-process implementation is
 // the identity. Halo exchange and migration of particles, the seam's device half, live
 // beside the particle store (kernels/particles/slab_exchange.hpp) and travel through
-// send_receive.
+// exchange_with_neighbours.
 #pragma once
 
 #include <cstring>
@@ -13,6 +13,15 @@
 #include <vector>
 
 namespace granshock {
+
+// What Communicator::exchange_with_neighbours brings from each side, and what it is told
+// to expect (-1: unknown, a size message first).
+struct NeighbourBytes {
+  std::vector<char> lower, upper;
+};
+struct ExpectedBytes {
+  long from_lower = -1, from_upper = -1;
+};
 
 class Communicator {
  public:
@@ -24,12 +33,18 @@ class Communicator {
   virtual long sum(long local) const = 0;
   virtual bool any(bool local) const = 0;
   virtual void sum_in_place(std::vector<double>& values) const = 0;
-  // Sends `bytes` to rank `dest` and returns what rank `source` sent to this one, in one
-  // exchange (the transport of migration and ghosts, docs/parallel.md). kNone as `dest`
-  // sends nothing; as `source` it receives nothing (an open face).
+  // The transport of migration, ghosts and halo (docs/parallel.md): sends `to_lower` to
+  // rank `lower` and `to_upper` to rank `upper` and receives what each of them sent this
+  // way, all four at once (one round trip; lower and upper may be the same rank). kNone
+  // as a neighbour: an open face, nothing sent or received. The sizes of what arrives
+  // are exchanged first unless the caller knows them (`expected`, in bytes: the halo
+  // between rebuilds, whose ghost counts are fixed).
   static constexpr int kNone = -1;
-  virtual std::vector<char> send_receive(const std::vector<char>& bytes, int dest,
-                                         int source) const = 0;
+  using FromNeighbours = NeighbourBytes;
+  using Expected = ExpectedBytes;
+  virtual FromNeighbours exchange_with_neighbours(const std::vector<char>& to_lower, int lower,
+                                                  const std::vector<char>& to_upper, int upper,
+                                                  Expected expected = {}) const = 0;
   // Every rank's bytes concatenated in rank order: on `root` only (empty elsewhere), or on
   // every rank (insertion's overlap test, docs/parallel.md).
   virtual std::vector<char> gather(const std::vector<char>& bytes, int root) const = 0;
@@ -59,10 +74,14 @@ class SingleProcess final : public Communicator {
   long sum(long local) const override { return local; }
   bool any(bool local) const override { return local; }
   void sum_in_place(std::vector<double>&) const override {}
-  std::vector<char> send_receive(const std::vector<char>& bytes, int dest,
-                                 int source) const override {
-    // Rank 0 to itself (a periodic face of a single slab).
-    return dest == 0 && source == 0 ? bytes : std::vector<char>();
+  // Rank 0 with itself as neighbour (a periodic face of a single slab): what it sends up
+  // arrives from below, and what it sends down arrives from above.
+  FromNeighbours exchange_with_neighbours(const std::vector<char>& to_lower, int lower,
+                                          const std::vector<char>& to_upper, int upper,
+                                          Expected) const override {
+    FromNeighbours in;
+    if (lower == 0 && upper == 0) in = {to_upper, to_lower};
+    return in;
   }
   std::vector<char> gather(const std::vector<char>& bytes, int) const override { return bytes; }
   std::vector<char> all_gather(const std::vector<char>& bytes) const override { return bytes; }

@@ -53,22 +53,40 @@ void MpiCommunicator::sum_in_place(std::vector<double>& values) const {
   }
 }
 
-std::vector<char> MpiCommunicator::send_receive(const std::vector<char>& bytes, int dest,
-                                                int source) const {
-  const int to = dest == kNone ? MPI_PROC_NULL : dest;
-  const int from = source == kNone ? MPI_PROC_NULL : source;
-  if (bytes.size() > std::size_t(INT_MAX))
-    throw std::runtime_error("a halo message of more than 2 GiB");
-  // The size first, then the bytes: the receiver allocates what it is sent.
-  int count = int(bytes.size()), incoming = 0;
-  require(MPI_Sendrecv(&count, 1, MPI_INT, to, 1, &incoming, 1, MPI_INT, from, 1, comm_,
-                       MPI_STATUS_IGNORE),
-          "MPI_Sendrecv (size)");
-  std::vector<char> received(static_cast<std::size_t>(incoming));
-  require(MPI_Sendrecv(bytes.data(), count, MPI_BYTE, to, 2, received.data(), incoming, MPI_BYTE,
-                       from, 2, comm_, MPI_STATUS_IGNORE),
-          "MPI_Sendrecv (bytes)");
-  return received;
+// Tags tell the direction apart when the lower and upper neighbour are the same rank
+// (two slabs on a periodic axis): what travels down is received from above.
+Communicator::FromNeighbours MpiCommunicator::exchange_with_neighbours(
+    const std::vector<char>& to_lower, int lower, const std::vector<char>& to_upper, int upper,
+    Expected expected) const {
+  enum Tag { size_down = 11, size_up = 12, bytes_down = 21, bytes_up = 22 };
+  const int below = lower == kNone ? MPI_PROC_NULL : lower;
+  const int above = upper == kNone ? MPI_PROC_NULL : upper;
+  for (const std::vector<char>* out : {&to_lower, &to_upper})
+    if (out->size() > std::size_t(INT_MAX))
+      throw std::runtime_error("a halo message of more than 2 GiB");
+  long from_lower = lower == kNone ? 0 : expected.from_lower;
+  long from_upper = upper == kNone ? 0 : expected.from_upper;
+  MPI_Request requests[4];
+  if (from_lower < 0 || from_upper < 0) {
+    long down = long(to_lower.size()), up = long(to_upper.size());
+    from_lower = from_upper = 0;  // stays 0 from MPI_PROC_NULL
+    MPI_Irecv(&from_lower, 1, MPI_LONG, below, size_up, comm_, &requests[0]);
+    MPI_Irecv(&from_upper, 1, MPI_LONG, above, size_down, comm_, &requests[1]);
+    MPI_Isend(&down, 1, MPI_LONG, below, size_down, comm_, &requests[2]);
+    MPI_Isend(&up, 1, MPI_LONG, above, size_up, comm_, &requests[3]);
+    require(MPI_Waitall(4, requests, MPI_STATUSES_IGNORE), "MPI_Waitall (sizes)");
+  }
+  FromNeighbours in;
+  in.lower.resize(std::size_t(from_lower));
+  in.upper.resize(std::size_t(from_upper));
+  MPI_Irecv(in.lower.data(), int(from_lower), MPI_BYTE, below, bytes_up, comm_, &requests[0]);
+  MPI_Irecv(in.upper.data(), int(from_upper), MPI_BYTE, above, bytes_down, comm_, &requests[1]);
+  MPI_Isend(to_lower.data(), int(to_lower.size()), MPI_BYTE, below, bytes_down, comm_,
+            &requests[2]);
+  MPI_Isend(to_upper.data(), int(to_upper.size()), MPI_BYTE, above, bytes_up, comm_,
+            &requests[3]);
+  require(MPI_Waitall(4, requests, MPI_STATUSES_IGNORE), "MPI_Waitall (bytes)");
+  return in;
 }
 
 std::vector<char> MpiCommunicator::gather(const std::vector<char>& bytes, int root) const {

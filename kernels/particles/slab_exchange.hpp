@@ -13,8 +13,9 @@
 // process; ghosts carry the owner's coordinates, so the minimum image is formed alike.
 //
 // Transport is through host copies (free on host backends; whole arrays on a GPU, a cost
-// to remove when the GPU build uses it) and Communicator::send_receive: one exchange down
-// and one up per rebuild (migration, ghosts) and per step (halo).
+// to remove when the GPU build uses it) and Communicator::exchange_with_neighbours: both
+// directions in one round trip, per rebuild (migration, ghosts) and per step (halo, whose
+// sizes are known from the rebuild).
 #pragma once
 
 #include <Kokkos_Core.hpp>
@@ -155,9 +156,9 @@ class SlabExchange {
         permute.apply(p, order, int(keep.size()));
         p.n = int(keep.size());
       }
-      for (const std::vector<char>& arrived :
-           {exchange(to_lower, lower_, upper_), exchange(to_upper, upper_, lower_)})
-        unpack_all(p, arrived, grow);
+      const Communicator::FromNeighbours arrived = exchange(to_lower, to_upper);
+      unpack_all(p, arrived.lower, grow);
+      unpack_all(p, arrived.upper, grow);
       if (!moved_cuts) break;
     }
     return p.n;
@@ -193,16 +194,19 @@ class SlabExchange {
     };
     send_down_ = row_range(slabs_.first_row(comm_.rank()));
     send_up_ = row_range(slabs_.end_row(comm_.rank()) - 1);
-    // Down first: from the slab above, its lowest row (the row above this slab).
+    // This slab's lowest row goes down, its highest up; from above comes the row above it.
     const Timer timer(stats_);
-    const std::vector<char> from_upper = exchange(pack_ghost(p, send_down_), lower_, upper_);
-    const std::vector<char> from_lower = exchange(pack_ghost(p, send_up_), upper_, lower_);
+    const Communicator::FromNeighbours in =
+        exchange(pack_ghost(p, send_down_), pack_ghost(p, send_up_));
+    const std::vector<char>&from_lower = in.lower, &from_upper = in.upper;
+    from_lower_ = count_ghosts(from_lower);
+    from_upper_ = count_ghosts(from_upper);
     // In increasing cell order: the row below this slab first unless it wrapped to the top.
     const int rows = grid_.ncell[kAxis];
     const int below = (slabs_.first_row(comm_.rank()) - 1 + rows) % rows;
     const int above = slabs_.end_row(comm_.rank()) % rows;
     below_first_ = below < above;
-    const int needed = p.n + count_ghosts(from_upper) + count_ghosts(from_lower);
+    const int needed = p.n + from_lower_ + from_upper_;
     if (needed > p.capacity()) grow(needed + needed / 4);
     int at = p.n;
     for (const std::vector<char>* bytes :
@@ -216,10 +220,14 @@ class SlabExchange {
   }
 
   // After a position update without a rebuild: the ghosts' new state from their owners.
+  // The ghost counts are those of the rebuild, so the sizes need no message of their own.
   void update_ghosts(Store& p) {
     const Timer timer(stats_);
-    const std::vector<char> from_upper = exchange(pack_motion(p, send_down_), lower_, upper_);
-    const std::vector<char> from_lower = exchange(pack_motion(p, send_up_), upper_, lower_);
+    const long each = long(motion_bytes());
+    const Communicator::FromNeighbours in =
+        exchange(pack_motion(p, send_down_), pack_motion(p, send_up_),
+                 Communicator::Expected{from_lower_ * each, from_upper_ * each});
+    const std::vector<char>&from_lower = in.lower, &from_upper = in.upper;
     int at = p.n;
     for (const std::vector<char>* bytes :
          below_first_ ? std::vector<const std::vector<char>*>{&from_lower, &from_upper}
@@ -243,10 +251,13 @@ class SlabExchange {
     }
   };
 
-  std::vector<char> exchange(const std::vector<char>& bytes, int dest, int source) {
+  Communicator::FromNeighbours exchange(const std::vector<char>& to_lower,
+                                        const std::vector<char>& to_upper,
+                                        Communicator::Expected expected = {}) {
     ++stats_.exchanges;
-    if (dest != Communicator::kNone) stats_.bytes_sent += double(bytes.size());
-    return comm_.send_receive(bytes, dest, source);
+    if (lower_ != Communicator::kNone) stats_.bytes_sent += double(to_lower.size());
+    if (upper_ != Communicator::kNone) stats_.bytes_sent += double(to_upper.size());
+    return comm_.exchange_with_neighbours(to_lower, lower_, to_upper, upper_, expected);
   }
 
   // New cuts that balance the particles per row over the ranks (every rank computes the
@@ -360,6 +371,10 @@ class SlabExchange {
     return int(bytes.size() /
                bytes_per_particle(empty, [](Store& s, auto&& f) { for_ghost(s, f); }));
   }
+  static std::size_t motion_bytes() {
+    Store empty;
+    return bytes_per_particle(empty, [](Store& s, auto&& f) { for_motion(s, f); });
+  }
   int unpack_ghost(Store& p, const std::vector<char>& bytes, int first) const {
     return unpack_rows(p, bytes, first, [](Store& s, auto&& f) { for_ghost(s, f); });
   }
@@ -401,6 +416,7 @@ class SlabExchange {
   std::pair<int, int> send_down_{0, 0}, send_up_{0, 0};  // storage ranges of the boundary rows
   bool below_first_ = true;
   int ghosts_ = 0;
+  int from_lower_ = 0, from_upper_ = 0;  // ghosts from each neighbour at the last rebuild
 };
 
 }  // namespace granshock
