@@ -45,10 +45,14 @@ BowShockRun::BowShockRun(const RunOptions& o, LoadedScene loaded, const Communic
       sampling_(scene_) {}
 
 int BowShockRun::execute() {
-  // Failures up to here are the same on every rank, or rank 0's alone (its files): all
-  // ranks agree on them before the first collective step (docs/parallel.md, "Errors").
+  // Failures up to here are the same on every rank, or rank 0's alone (its directory and
+  // files): all ranks agree on them before the first collective step (docs/parallel.md,
+  // "Errors"). No step inside an agreement may itself be collective: a rank that failed
+  // before it would meet the agreement's reduction instead.
   agree_on_failure(comm_, [&] { prepare(); });
   agree_on_failure(comm_, [&] {
+    // Every check is done: from here on the run owns the directory (and holds its lock).
+    if (root_) run_directory_.emplace(RunDirectory::claim(dir_, mode_));
     if (options_.resume) read_checkpoint_and_check();
     open_run_file();
   });
@@ -75,14 +79,15 @@ int BowShockRun::execute() {
   }
 }
 
-// The scene's checks and calibrations, the solver and the claim on the run directory.
+// The scene's checks and calibrations, the directory's check and the solver.
 void BowShockRun::prepare() {
   dir_ = run_directory_of(options_, scene_);
   std::vector<std::string> warnings = check_scene_before_run(scene_, options_.force);
   mode_ = options_.resume      ? DirectoryMode::resume
           : options_.overwrite ? DirectoryMode::overwrite
                                : DirectoryMode::create;
-  RunDirectory::check(dir_, mode_);
+  // Rank 0's alone: probing the lock from several ranks at once would see each other.
+  if (root_) RunDirectory::check(dir_, mode_);
   // Again with a calibrated damping or sigma: the time-step guard depends on the damping
   // ratio and on the fastest impact.
   const bool damping_calibrated = calibrate_restitution();
@@ -102,10 +107,6 @@ void BowShockRun::prepare() {
   solver_->configure_sampling(sampling_.layout());
   solver_->balance_slabs_by_particles(options_.balance == "particles");
   samples_.assign(std::size_t(sampling_.blocks()), 0);
-  // Every check is done: from here on the run owns the directory (and holds its lock);
-  // every rank has checked it before rank 0 claims it.
-  comm_.any(false);
-  if (root_) run_directory_.emplace(RunDirectory::claim(dir_, mode_));
 }
 
 // Rank 0's run.h5: a new one, or the one a checkpoint continues.

@@ -76,6 +76,19 @@ errors)
   cat "$dir/err"
   [ "$status" -eq 2 ] || fail "an existing directory: exit status $status, not 2"
   [ "$(grep -c "error" "$dir/err")" -eq 1 ] || fail "an existing directory was not said once"
+  # A run directory locked by another run: rank 0 alone probes the lock, fails alone
+  # before the first collective step, and the others leave with it (failure_agreement.hpp).
+  cp -r "$work/one" "$dir/locked"
+  exec 9<"$dir/locked/.granshock-run"  # this shell holds the lock, as a running run would
+  flock -x 9
+  timeout 120 "$mpiexec" --oversubscribe -np 3 "$granshock" run "$scene" "${short[@]}" \
+    --out "$dir/locked" --resume >"$dir/out" 2>"$dir/err"
+  status=$?
+  exec 9<&-
+  cat "$dir/err"
+  [ "$status" -eq 2 ] || fail "a locked directory: exit status $status, not 2"
+  [ "$(grep -c "in use by another granshock run" "$dir/err")" -eq 1 ] ||
+    fail "a locked directory was not said once"
   # Commands other than run would do their whole job N times: refused, said once.
   timeout 120 "$mpiexec" --oversubscribe -np 2 "$granshock" fields "$dir/taken" \
     >"$dir/out" 2>"$dir/err"
