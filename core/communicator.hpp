@@ -32,6 +32,7 @@ class Communicator {
   virtual double sum(double local) const = 0;
   virtual long sum(long local) const = 0;
   virtual bool any(bool local) const = 0;
+  bool all(bool local) const { return !any(!local); }
   virtual void sum_in_place(std::vector<double>& values) const = 0;
   // The transport of migration, ghosts and halo (docs/parallel.md): sends `to_lower` to
   // rank `lower` and `to_upper` to rank `upper` and receives what each of them sent this

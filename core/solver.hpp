@@ -75,6 +75,11 @@ struct HaloStats {
   long rebalances = 0;    // times the slab boundaries moved (balance by particles)
 };
 
+// Where slab boundaries lie on several processes (docs/parallel.md, "Load balance"):
+// equal slabs of cell rows, or moved at list rebuilds to balance the particle count or the
+// measured compute time. The choice never changes the results, only who computes what.
+enum class SlabBalance { equal, particles, work };
+
 class Solver {
  public:
   virtual ~Solver() = default;
@@ -117,9 +122,9 @@ class Solver {
   // refused with InvalidCheckpoint (core/checkpoint_checks.hpp) before anything changes.
   virtual void import_state(const SolverState& state) = 0;
 
-  // Several processes: slab boundaries balanced by particle count at list rebuilds (off:
-  // equal slabs); the exchange's cost so far. One process: nothing to balance, no cost.
-  virtual void balance_slabs_by_particles(bool on) = 0;
+  // Several processes: how slab boundaries move at list rebuilds (SlabBalance); the
+  // exchange's cost so far. One process: nothing to balance, no cost.
+  virtual void balance_slabs(SlabBalance balance) = 0;
   virtual HaloStats halo_stats() const = 0;
 
   virtual std::size_t size() const = 0;  // the particles this process owns

@@ -35,7 +35,7 @@ echo "warming up: $warmup steps of $scene in one process (dt = $dt s)" >&2
 OMP_NUM_THREADS=2 run_nice "$granshock" run "$scene" --out "$work/warm" --quiet "${times[@]}" \
   --stop-after-steps "$warmup" >&2
 
-configs=(threads2 ranks2_equal ranks2_particles)
+configs=(threads2 ranks2_equal ranks2_particles ranks2_work)
 for ((r = 1; r <= repeats; r++)); do
   for c in "${configs[@]}"; do
     out=$work/$c.$r
@@ -68,8 +68,10 @@ for c in configs:
         return [statistics.median(s["processes"][key][k] for s in runs[c])
                 for k in range(p.get("count", 1))] if p.get("count", 1) > 1 else []
     share, sync = shares("halo_share_per_rank"), shares("sync_share_per_rank")
-    label = {"threads2": "1 process x 2 threads", "ranks2_equal": "2 processes x 1 thread, equal slabs",
-             "ranks2_particles": "2 processes x 1 thread, balanced slabs"}[c]
+    label = {"threads2": "1 process x 2 threads",
+             "ranks2_equal": "2 processes x 1 thread, equal slabs",
+             "ranks2_particles": "2 processes x 1 thread, balanced by particles",
+             "ranks2_work": "2 processes x 1 thread, balanced by work"}[c]
     print(f"| {label} | {statistics.median(rate):.3g} | {ratio:.3f} | "
           f"{', '.join(f'{x:.1%}' for x in share) or '-'} | "
           f"{', '.join(f'{x:.1%}' for x in sync) or '-'} | {p.get('particles_per_rank', '-')} | "

@@ -93,9 +93,10 @@ void add_run_command(CLI::App& app, granshock::RunOptions& o) {
       ->check(positive_step_count);
   cmd->add_flag("--quiet", o.quiet, "no progress lines");
   cmd->add_option("--balance", o.balance,
-                  "under mpirun: slab boundaries 'equal' (rows) or balanced by 'particles' at "
-                  "list rebuilds (docs/parallel.md); the results are the same bit for bit")
-      ->check(CLI::IsMember({"equal", "particles"}));
+                  "under mpirun: slab boundaries 'equal' (rows), or moved at list rebuilds to "
+                  "balance the 'particles' or the measured 'work' (docs/parallel.md); the "
+                  "results are the same bit for bit")
+      ->check(CLI::IsMember({"equal", "particles", "work"}));
   cmd->add_flag("--dry-run", o.dry_run,
                 "check the scene and the output directory, print the resolved scene, write "
                 "nothing");

@@ -105,7 +105,9 @@ void BowShockRun::prepare() {
       every_seconds(scene_.run.checkpoint_interval_s, scene_.run.duration_s, scene_.setup.dt);
   solver_ = make_solver(scene_.setup, scene_.capacity_estimate(), Backend::default_space, &comm_);
   solver_->configure_sampling(sampling_.layout());
-  solver_->balance_slabs_by_particles(options_.balance == "particles");
+  solver_->balance_slabs(options_.balance == "work"        ? SlabBalance::work
+                         : options_.balance == "particles" ? SlabBalance::particles
+                                                           : SlabBalance::equal);
   samples_.assign(std::size_t(sampling_.blocks()), 0);
 }
 

@@ -21,6 +21,7 @@
 #include <Kokkos_Core.hpp>
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -47,10 +48,24 @@ int width(const View& v) {
   }
 }
 
+// Rows stored one after another in host memory (LayoutRight, or one value per row): a
+// range of rows is one block of bytes. A GPU's View (LayoutLeft) is copied value by value.
+template <class View>
+constexpr bool rows_are_contiguous() {
+  return Kokkos::SpaceAccessibility<Kokkos::HostSpace, typename View::memory_space>::accessible &&
+         (View::rank == 1 || std::is_same_v<typename View::array_layout, Kokkos::LayoutRight>);
+}
+
 template <class View>
 void append(std::vector<char>& out, const View& v, int begin, int end) {
   using T = typename View::non_const_value_type;
   const int w = width(v);
+  if constexpr (rows_are_contiguous<View>()) {
+    if (end <= begin) return;
+    const char* from = reinterpret_cast<const char*>(v.data() + std::size_t(begin) * w);
+    out.insert(out.end(), from, from + std::size_t(end - begin) * w * sizeof(T));
+    return;
+  }
   for (int i = begin; i < end; ++i)
     for (int c = 0; c < w; ++c) {
       T value;
@@ -69,6 +84,11 @@ template <class View>
 std::size_t extract(const View& v, const char* in, int first, int count) {
   using T = typename View::non_const_value_type;
   const int w = width(v);
+  if constexpr (rows_are_contiguous<View>()) {
+    const std::size_t bytes = std::size_t(count) * w * sizeof(T);
+    if (bytes > 0) std::memcpy(static_cast<void*>(v.data() + std::size_t(first) * w), in, bytes);
+    return bytes;
+  }
   std::size_t at = 0;
   for (int i = first; i < first + count; ++i)
     for (int c = 0; c < w; ++c) {
@@ -118,9 +138,15 @@ class SlabExchange {
   int ghosts() const { return ghosts_; }
   const HaloStats& stats() const { return stats_; }
 
-  // Slab boundaries balanced by particle count at list rebuilds (docs/parallel.md, "Load
-  // balance"); off: equal slabs of rows throughout.
-  void balance_by_particles(bool on) { balance_ = on; }
+  // Slab boundaries moved at list rebuilds (docs/parallel.md, "Load balance"): equal
+  // slabs of rows throughout, or balanced by particle count, or by measured work (each
+  // particle weighs its rank's compute time per particle-step since the last check).
+  void set_balance(SlabBalance balance) { balance_ = balance; }
+  // The compute time (halo and waits excluded) of `particle_steps` on this rank.
+  void account_work(double seconds, double particle_steps) {
+    work_seconds_ += seconds;
+    work_particle_steps_ += particle_steps;
+  }
 
   // Hands the owned particles whose row is now another slab's to it and appends those
   // that arrived; returns the new owned count. `grow(capacity)` enlarges the store.
@@ -130,7 +156,7 @@ class SlabExchange {
   template <class Permutation, class Grow>
   int migrate(Store& p, Permutation& permute, Grow&& grow) {
     const Timer timer(stats_);
-    const bool moved_cuts = balance_ && rebalance(p);
+    const bool moved_cuts = balance_ != SlabBalance::equal && rebalance(p);
     const int me = comm_.rank();
     for (int pass = 0;; ++pass) {
       auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.x);
@@ -260,16 +286,31 @@ class SlabExchange {
     return comm_.exchange_with_neighbours(to_lower, lower_, to_upper, upper_, expected);
   }
 
-  // New cuts that balance the particles per row over the ranks (every rank computes the
-  // same from the same global histogram), taken when they lighten the heaviest slab by
-  // more than kWorthwhile of its count. Returns whether the cuts moved.
+  // New cuts that balance the weight per row over the ranks (every rank computes the same
+  // from the same global histogram), taken when they lighten the heaviest slab by more
+  // than kWorthwhile of its weight. A particle weighs 1, or (balance by work) its rank's
+  // compute time per particle-step in whole picoseconds, so that the histogram sums
+  // integers, exactly and alike on every rank. Returns whether the cuts moved.
+  // Timings are noisy: the balance by work looks at kWorkWindow rebuilds' worth at a time
+  // (rebuilds happen at the same steps on every rank, so all count alike).
   static constexpr double kWorthwhile = 0.05;
+  static constexpr int kWorkWindow = 10;
   bool rebalance(const Store& p) {
+    double weight = 1;
+    if (balance_ == SlabBalance::work) {
+      if (++rebuilds_since_check_ < kWorkWindow) return false;
+      rebuilds_since_check_ = 0;
+      // Until every rank has measured some work, nothing to balance by.
+      const bool measured = work_particle_steps_ > 0 && work_seconds_ > 0;
+      if (!comm_.all(measured)) return false;
+      weight = std::max(1.0, std::round(work_seconds_ / work_particle_steps_ * 1e12));
+      work_seconds_ = work_particle_steps_ = 0;
+    }
     auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.x);
     const int rows = grid_.ncell[kAxis];
     std::vector<double> histogram(std::size_t(rows), 0.0);
-    for (int i = 0; i < p.n; ++i) histogram[std::size_t(grid_.coord(kAxis, x(i, kAxis)))] += 1;
-    comm_.sum_in_place(histogram);  // counts below 2^53: exact in double
+    for (int i = 0; i < p.n; ++i) histogram[std::size_t(grid_.coord(kAxis, x(i, kAxis)))] += weight;
+    comm_.sum_in_place(histogram);  // integer sums below 2^53: exact in double
     const std::vector<long> per_row(histogram.begin(), histogram.end());
     const auto heaviest = [&](const SlabDecomposition& d) {
       long most = 0;
@@ -410,7 +451,9 @@ class SlabExchange {
   double box_lo_, box_length_;
   int min_rows_;
   bool periodic_;
-  bool balance_ = false;
+  SlabBalance balance_ = SlabBalance::equal;
+  double work_seconds_ = 0, work_particle_steps_ = 0;  // since the last rebalance check
+  int rebuilds_since_check_ = 0;
   HaloStats stats_;
   int lower_ = Communicator::kNone, upper_ = Communicator::kNone;
   std::pair<int, int> send_down_{0, 0}, send_up_{0, 0};  // storage ranges of the boundary rows

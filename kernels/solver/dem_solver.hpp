@@ -135,6 +135,7 @@ class DemSolver final : public Solver {
   // half, so between calls x, v and f belong to the same step, as with separate halves.
   void advance(long steps) override {
     if (steps <= 0) return;
+    const WorkClock work = start_work_clock();
     const Real rebuild_d2 = Real(0.25) * skin_ * skin_;  // (skin/2)^2
     Real moved2 = integrator_.first_half(p_, table_);
     for (long s = 0; s < steps; ++s) {
@@ -153,6 +154,7 @@ class DemSolver final : public Solver {
     }
     // Ghosts as their owners end the call (the sampling's virial reads their velocities).
     if (slabs_) slabs_->update_ghosts(p_);
+    stop_work_clock(work, steps);
     if constexpr (V::friction) {
       int overflow = 0;
       Kokkos::deep_copy(overflow, history_overflow_);
@@ -225,8 +227,8 @@ class DemSolver final : public Solver {
 
   std::size_t size() const override { return std::size_t(p_.n); }
   long global_size() const override { return comm_.sum(long(p_.n)); }
-  void balance_slabs_by_particles(bool on) override {
-    if (slabs_) slabs_->balance_by_particles(on);
+  void balance_slabs(SlabBalance balance) override {
+    if (slabs_) slabs_->set_balance(balance);
   }
   HaloStats halo_stats() const override {
     if (!slabs_) return HaloStats{};
@@ -443,6 +445,24 @@ class DemSolver final : public Solver {
       if (!all.angular_velocity.empty()) out.angular_velocity.push_back(all.angular_velocity[i]);
     }
     return out;
+  }
+
+  // Several processes: this rank's compute time in advance() (halo and waits excluded),
+  // for the balance by work.
+  struct WorkClock {
+    std::chrono::steady_clock::time_point start;
+    double halo = 0, sync = 0;
+  };
+  WorkClock start_work_clock() const {
+    if (!slabs_) return {};
+    return {std::chrono::steady_clock::now(), slabs_->stats().seconds, sync_seconds_};
+  }
+  void stop_work_clock(const WorkClock& c, long steps) {
+    if (!slabs_) return;
+    const double wall =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - c.start).count();
+    const double waits = (slabs_->stats().seconds - c.halo) + (sync_seconds_ - c.sync);
+    slabs_->account_work(std::max(0.0, wall - waits), double(p_.n) * double(steps));
   }
 
   // The largest displacement over every process (timed on several: halo_stats).

@@ -5,7 +5,8 @@
 #   reference   the one-process runs, into WORK/one and WORK/one_big (a 60 d obstacle):
 #               the fixture of the others
 #   ranks N     the run on N processes: bitwise the same state (compare_runs.py)
-#   balanced N  the large obstacle with --balance particles: bitwise, and the cuts moved
+#   balanced N BY  the large obstacle with --balance BY (particles, work): bitwise, and
+#               (particles) the cuts moved
 #   resume      stopped on 2 processes half way, resumed on 3: the same as one process
 #   errors      bad input said once, by one rank, exit code 2, no rank left waiting; other
 #               commands than `run` refused under mpirun
@@ -35,18 +36,19 @@ ranks)
   compare "$work/ranks$ranks" "$ranks" || fail "$ranks processes differ from one"
   ;;
 balanced)
-  # Slab boundaries moved by particle count: the same bits, and the cuts did move.
-  ranks=$6
-  rm -rf "$work/balanced$ranks"
-  mpi "$ranks" "$granshock" run "$scene" "${short[@]}" "${big[@]}" --out "$work/balanced$ranks" \
-    --balance particles || fail "the balanced run on $ranks processes"
-  compare "$work/balanced$ranks" "$ranks" "$work/one_big" ||
-    fail "balanced slabs differ from one process"
+  # Slab boundaries moved by particle count or measured work: the same bits, and (by
+  # particle count, which does not depend on timings) the cuts did move.
+  ranks=$6 by=$7
+  out=$work/balanced_$by$ranks
+  rm -rf "$out"
+  mpi "$ranks" "$granshock" run "$scene" "${short[@]}" "${big[@]}" --out "$out" \
+    --balance "$by" || fail "the run balanced by $by on $ranks processes"
+  compare "$out" "$ranks" "$work/one_big" || fail "slabs balanced by $by differ from one process"
   /usr/bin/python3 -c 'import json, sys
 p = json.load(open(sys.argv[1]))["processes"]
 print("rebalances:", p["rebalances"], "balance:", p["balance"])
-sys.exit(0 if p["rebalances"] > 0 and p["balance"] == "particles" else 1)' \
-    "$work/balanced$ranks/summary.json" || fail "the slab boundaries never moved"
+sys.exit(0 if p["balance"] == sys.argv[2] and (p["rebalances"] > 0 or sys.argv[2] == "work") else 1)' \
+    "$out/summary.json" "$by" || fail "the slab boundaries never moved"
   ;;
 resume)
   rm -rf "$work/resumed"
