@@ -65,7 +65,11 @@ struct RemovalCounts {
 // Several processes (docs/parallel.md): what exchanging particles with the neighbouring
 // slabs has cost this process so far.
 struct HaloStats {
-  double seconds = 0;  // wall time in migration, ghost and halo exchanges (waits included)
+  // Wall time (packing and waits included) in the halo updates between rebuilds, and in
+  // the migration and ghost set-up at rebuilds (which scan the owned particles and the
+  // global cell grid).
+  double seconds = 0;
+  double rebuild_seconds = 0;
   // Wall time in the per-step global maximum that decides a list rebuild: where a rank
   // waits for the slowest one (load imbalance) and pays the reduction's latency.
   double sync_seconds = 0;
@@ -73,6 +77,7 @@ struct HaloStats {
   double bytes_sent = 0;  // to the neighbours
   long ghosts = 0;        // ghosts held since the last list rebuild
   long rebalances = 0;    // times the slab boundaries moved (balance by particles)
+  double exchange_seconds() const { return seconds + rebuild_seconds; }
 };
 
 // Where slab boundaries lie on several processes (docs/parallel.md, "Load balance"):

@@ -56,10 +56,14 @@ work, repeats, steps, warmup, configs = sys.argv[1], int(sys.argv[2]), sys.argv[
 runs = {c: [json.load(open(f"{work}/{c}.{r}/summary.json")) for r in range(1, repeats + 1)]
         for c in configs}
 base = [s["particle_steps_per_second"] for s in runs["threads2"]]
-print(f"{steps} steps timed after {warmup}; medians of {repeats} repeats, interleaved\n")
+print(f"{steps} steps timed after {warmup}; medians of {repeats} repeats, interleaved")
+print("(each configuration's particle-steps/s per repeat: "
+      + "; ".join(f"{c}: " + ", ".join(f"{s['particle_steps_per_second']:.3g}" for s in runs[c])
+                  for c in configs) + ")\n")
 print("| configuration | particle-steps/s | ratio to 1 x 2 threads | halo share (per rank) "
-      "| per-step max share | particles per rank | ghosts per rank | rebalances |")
-print("|---|---|---|---|---|---|---|---|")
+      "| exchange at rebuilds | per-step max share | particles per rank | ghosts per rank "
+      "| rebalances |")
+print("|---|---|---|---|---|---|---|---|---|")
 for c in configs:
     rate = [s["particle_steps_per_second"] for s in runs[c]]
     ratio = statistics.median(x / b for x, b in zip(rate, base))
@@ -68,12 +72,14 @@ for c in configs:
         return [statistics.median(s["processes"][key][k] for s in runs[c])
                 for k in range(p.get("count", 1))] if p.get("count", 1) > 1 else []
     share, sync = shares("halo_share_per_rank"), shares("sync_share_per_rank")
+    rebuild = shares("rebuild_exchange_share_per_rank")
     label = {"threads2": "1 process x 2 threads",
              "ranks2_equal": "2 processes x 1 thread, equal slabs",
              "ranks2_particles": "2 processes x 1 thread, balanced by particles",
              "ranks2_work": "2 processes x 1 thread, balanced by work"}[c]
     print(f"| {label} | {statistics.median(rate):.3g} | {ratio:.3f} | "
           f"{', '.join(f'{x:.1%}' for x in share) or '-'} | "
+          f"{', '.join(f'{x:.1%}' for x in rebuild) or '-'} | "
           f"{', '.join(f'{x:.1%}' for x in sync) or '-'} | {p.get('particles_per_rank', '-')} | "
           f"{p.get('ghosts_per_rank', '-')} | {p.get('rebalances', '-')} |")
 PY

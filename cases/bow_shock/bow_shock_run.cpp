@@ -382,6 +382,8 @@ nlohmann::json BowShockRun::processes_summary() const {
           {"particles_per_rank", gather_to_root(comm_, long(solver_->size()))},
           {"ghosts_per_rank", gather_to_root(comm_, halo.ghosts)},
           {"halo_share_per_rank", gather_to_root(comm_, wall > 0 ? halo.seconds / wall : 0.0)},
+          {"rebuild_exchange_share_per_rank",
+           gather_to_root(comm_, wall > 0 ? halo.rebuild_seconds / wall : 0.0)},
           {"sync_share_per_rank", gather_to_root(comm_, wall > 0 ? halo.sync_seconds / wall : 0.0)},
           {"halo_bytes_sent_per_rank", gather_to_root(comm_, halo.bytes_sent)},
           {"rebalances", halo.rebalances}};

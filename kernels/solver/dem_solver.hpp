@@ -455,13 +455,13 @@ class DemSolver final : public Solver {
   };
   WorkClock start_work_clock() const {
     if (!slabs_) return {};
-    return {std::chrono::steady_clock::now(), slabs_->stats().seconds, sync_seconds_};
+    return {std::chrono::steady_clock::now(), slabs_->stats().exchange_seconds(), sync_seconds_};
   }
   void stop_work_clock(const WorkClock& c, long steps) {
     if (!slabs_) return;
     const double wall =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - c.start).count();
-    const double waits = (slabs_->stats().seconds - c.halo) + (sync_seconds_ - c.sync);
+    const double waits = (slabs_->stats().exchange_seconds() - c.halo) + (sync_seconds_ - c.sync);
     slabs_->account_work(std::max(0.0, wall - waits), double(p_.n) * double(steps));
   }
 

@@ -1,0 +1,109 @@
+"""The cost model of docs/scaling.md: time per step of one rank of N, slabs along y.
+
+    T(N) = c_p * n / N * (1 + imbalance)              compute on the rank's particles
+         + a_h + b_h * g                                halo: per exchange + per ghost
+         + a_r * ceil(log2 N)                           the per-step global maximum
+         + c_cell * ncell / k                           the global cell grid, per rebuild
+    g = 2 * (particles per cell row)                    two boundary rows, any N
+    E(N) = c_p * n / (N * T(N))                         parallel efficiency
+
+Constants measured on this machine (2 cores, Open MPI's shared memory) are read from
+measured.json; the network's latency and bandwidth, which this machine cannot measure,
+are stated assumptions (NETWORK below). Prints Markdown tables: the model against the
+measured 2-rank points, then the projections. Usage: /usr/bin/python3 model.py
+"""
+import json
+import math
+import os
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+M = json.load(open(os.path.join(HERE, "measured.json")))
+
+# Assumed for a cluster (InfiniBand HDR class): a neighbour round trip of 3 us plus bytes
+# over 10 GB/s, and 2 us per level of a tree allreduce. Not measured here.
+NETWORK = {"round_trip_s": 3e-6, "bytes_per_s": 10e9, "allreduce_level_s": 2e-6}
+BYTES_PER_GHOST_STEP = 32  # x and v, 2 doubles each (frictionless; +8 with spin)
+
+
+def scene(width_d, length_d, phi, shocked_factor=2.0):
+    """Particles, cell rows and columns, and particles per row of a box at phi (1 d
+    spheres, cell = 1.3 d); rows near the shock hold about shocked_factor times more."""
+    cell = 1.3
+    per_area = phi / (math.pi / 4)
+    rows, cols = int(length_d / cell), int(width_d / cell)
+    return {
+        "n": per_area * width_d * length_d,
+        "rows": rows,
+        "ncell": rows * cols,
+        "per_row": per_area * width_d * cell * shocked_factor,
+    }
+
+
+def step_time(s, ranks, network):
+    c = M["constants"]
+    g = 2 * s["per_row"]
+    compute = c["compute_s_per_particle_step"] * s["n"] / ranks * (1 + c["imbalance"])
+    if network:
+        halo = (NETWORK["round_trip_s"] + c["halo_pack_s_per_ghost"] * g
+                + g * BYTES_PER_GHOST_STEP / NETWORK["bytes_per_s"])
+        reduce = NETWORK["allreduce_level_s"] * math.ceil(math.log2(max(ranks, 2)))
+    else:
+        halo = c["halo_fixed_s"] + c["halo_s_per_ghost"] * g
+        reduce = c["allreduce_s"]
+    grid = c["cell_scan_s_per_cell"] * s["ncell"] / c["steps_per_rebuild"]
+    return compute, halo, reduce, grid
+
+
+def efficiency(s, ranks, network=True):
+    parts = step_time(s, ranks, network)
+    ideal = M["constants"]["compute_s_per_particle_step"] * s["n"] / ranks
+    return ideal / sum(parts), parts
+
+
+def main():
+    print("Model against the measured 2-rank points (shared memory, this machine):\n")
+    print("| scene | measured ratio to 1 x 2 threads | model | halo per step measured / model |")
+    print("|---|---|---|---|")
+    for point in M["points"]:
+        s = scene(point["width_d"], point["length_d"], 0.1, point["shocked_factor"])
+        s["n"] = point["particles"]
+        s["per_row"] = point["ghosts_per_rank"] / 2
+        compute, halo, reduce, grid = step_time(s, 2, network=False)
+        model_rate = s["n"] / (compute + halo + reduce + grid)
+        print(f"| {point['name']} | {point['ratio']:.3f} | "
+              f"{model_rate / point['threads2_rate']:.3f} | "
+              f"{point['halo_s_per_step'] * 1e6:.2f} us / {halo * 1e6:.2f} us |")
+    cases = [("paper case (500 d x 500 d, 31,600 particles)", scene(500, 500, 0.1)),
+             ("100x channel (5,000 d x 5,000 d, 3.2 million)", scene(5000, 5000, 0.1))]
+    print("\nProjected parallel efficiency on a cluster (slabs along y; a slab is at least "
+          "one cell row):\n")
+    ranks = [2, 8, 64, 256, 1024, 4096]
+    print("| scene | rows | " + " | ".join(f"{r} ranks" for r in ranks) + " |")
+    print("|---|---|" + "---|" * len(ranks))
+    for name, s in cases:
+        cells = []
+        for r in ranks:
+            if r > s["rows"]:
+                cells.append(f"- (> {s['rows']} rows)")
+                continue
+            e, _ = efficiency(s, r)
+            cells.append(f"{e:.0%}")
+        print(f"| {name} | {s['rows']} | " + " | ".join(cells) + " |")
+    print("\nWhere a step's time goes at 64 and 1024 ranks (microseconds: compute, halo, "
+          "allreduce, global grid scan):\n")
+    for name, s in cases:
+        for r in (64, 1024):
+            if r > s["rows"]:
+                continue
+            e, parts = efficiency(s, r)
+            print(f"- {name}, {r} ranks: " + ", ".join(f"{p * 1e6:.1f}" for p in parts)
+                  + f" (efficiency {e:.0%})")
+    print("\nThe same without the global grid scan (a local cell grid per rank, not built):\n")
+    for name, s in cases:
+        s = dict(s, ncell=0)
+        print(f"- {name}: " + ", ".join(
+            f"{r} ranks {efficiency(s, r)[0]:.0%}" for r in ranks if r <= s["rows"]))
+
+
+if __name__ == "__main__":
+    main()
