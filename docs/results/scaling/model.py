@@ -3,7 +3,7 @@
     T(N) = c_p * n / N * (1 + imbalance)              compute on the rank's particles
          + a_h + b_h * g                                halo: per exchange + per ghost
          + a_r * ceil(log2 N)                           the per-step global maximum
-         + c_cell * ncell / k                           the global cell grid, per rebuild
+         + (c_sort + c_x) * ncell / k                   the global cell grid, per rebuild
     g = 2 * (particles per cell row)                    two boundary rows, any N
     E(N) = c_p * n / (N * T(N))                         parallel efficiency
 
@@ -50,7 +50,8 @@ def step_time(s, ranks, network):
     else:
         halo = c["halo_fixed_s"] + c["halo_s_per_ghost"] * g
         reduce = c["allreduce_s"]
-    grid = c["cell_scan_s_per_cell"] * s["ncell"] / c["steps_per_rebuild"]
+    grid = ((c["cell_sort_s_per_cell"] + c["exchange_s_per_cell"]) * s["ncell"]
+            / c["steps_per_rebuild"])
     return compute, halo, reduce, grid
 
 
@@ -61,18 +62,22 @@ def efficiency(s, ranks, network=True):
 
 
 def main():
-    print("Model against the measured 2-rank points (shared memory, this machine):\n")
-    print("| scene | measured ratio to 1 x 2 threads | model | halo per step measured / model |")
-    print("|---|---|---|---|")
-    for point in M["points"]:
-        s = scene(point["width_d"], point["length_d"], 0.1, point["shocked_factor"])
-        s["n"] = point["particles"]
-        s["per_row"] = point["ghosts_per_rank"] / 2
-        compute, halo, reduce, grid = step_time(s, 2, network=False)
-        model_rate = s["n"] / (compute + halo + reduce + grid)
-        print(f"| {point['name']} | {point['ratio']:.3f} | "
-              f"{model_rate / point['threads2_rate']:.3f} | "
-              f"{point['halo_s_per_step'] * 1e6:.2f} us / {halo * 1e6:.2f} us |")
+    print("The model's terms against the measured 2-rank points (shared memory, this "
+          "machine; compute from each run's own compute share):\n")
+    print("| scene | wall per step measured | model | halo measured / model "
+          "| exchange at rebuilds measured / model (global grid) |")
+    print("|---|---|---|---|---|")
+    c = M["constants"]
+    for p in M["points"]:
+        wall = p["wall_s_per_step"]
+        compute = p["compute_share"] * wall
+        halo = c["halo_fixed_s"] + c["halo_s_per_ghost"] * p["ghosts_per_rank"]
+        # The cell sort's share of the global grid is inside the measured compute.
+        grid = c["exchange_s_per_cell"] * p["ncell"] / p["steps_per_rebuild"]
+        model = compute + halo + grid + p["per_step_max_share"] * wall
+        print(f"| {p['name']} | {wall * 1e6:.1f} us | {model * 1e6:.1f} us | "
+              f"{p['halo_share'] * wall * 1e6:.2f} / {halo * 1e6:.2f} us | "
+              f"{p['rebuild_exchange_share'] * wall * 1e6:.2f} / {grid * 1e6:.2f} us |")
     cases = [("paper case (500 d x 500 d, 31,600 particles)", scene(500, 500, 0.1)),
              ("100x channel (5,000 d x 5,000 d, 3.2 million)", scene(5000, 5000, 0.1))]
     print("\nProjected parallel efficiency on a cluster (slabs along y; a slab is at least "
