@@ -64,19 +64,19 @@ void append(std::vector<char>& out, const View& v, int begin, int end) {
     if (end <= begin) return;
     const char* from = reinterpret_cast<const char*>(v.data() + std::size_t(begin) * w);
     out.insert(out.end(), from, from + std::size_t(end - begin) * w * sizeof(T));
-    return;
-  }
-  for (int i = begin; i < end; ++i)
-    for (int c = 0; c < w; ++c) {
-      T value;
-      if constexpr (View::rank == 1) {
-        value = v(i);
-      } else {
-        value = v(i, c);
+  } else {
+    for (int i = begin; i < end; ++i)
+      for (int c = 0; c < w; ++c) {
+        T value;
+        if constexpr (View::rank == 1) {
+          value = v(i);
+        } else {
+          value = v(i, c);
+        }
+        const char* bytes = reinterpret_cast<const char*>(&value);
+        out.insert(out.end(), bytes, bytes + sizeof(T));
       }
-      const char* bytes = reinterpret_cast<const char*>(&value);
-      out.insert(out.end(), bytes, bytes + sizeof(T));
-    }
+  }
 }
 
 // Reads `count` rows into v starting at row `first`; returns the bytes consumed.
@@ -84,23 +84,23 @@ template <class View>
 std::size_t extract(const View& v, const char* in, int first, int count) {
   using T = typename View::non_const_value_type;
   const int w = width(v);
-  if constexpr (rows_are_contiguous<View>()) {
-    const std::size_t bytes = std::size_t(count) * w * sizeof(T);
-    if (bytes > 0) std::memcpy(static_cast<void*>(v.data() + std::size_t(first) * w), in, bytes);
-    return bytes;
-  }
   std::size_t at = 0;
-  for (int i = first; i < first + count; ++i)
-    for (int c = 0; c < w; ++c) {
-      T value;
-      std::memcpy(&value, in + at, sizeof(T));
-      at += sizeof(T);
-      if constexpr (View::rank == 1) {
-        v(i) = value;
-      } else {
-        v(i, c) = value;
+  if constexpr (rows_are_contiguous<View>()) {
+    at = std::size_t(count) * w * sizeof(T);
+    if (at > 0) std::memcpy(static_cast<void*>(v.data() + std::size_t(first) * w), in, at);
+  } else {
+    for (int i = first; i < first + count; ++i)
+      for (int c = 0; c < w; ++c) {
+        T value;
+        std::memcpy(&value, in + at, sizeof(T));
+        at += sizeof(T);
+        if constexpr (View::rank == 1) {
+          v(i) = value;
+        } else {
+          v(i, c) = value;
+        }
       }
-    }
+  }
   return at;
 }
 
