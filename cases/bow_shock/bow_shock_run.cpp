@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <iostream>
 
@@ -26,6 +27,18 @@ namespace granshock {
 namespace fs = std::filesystem;
 
 namespace {
+
+// Adds the wall time of one output (gather and write) to a total and counts it.
+struct OutputTimer {
+  double& seconds;
+  long& count;
+  std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+  OutputTimer(double& s, long& n) : seconds(s), count(n) {}
+  ~OutputTimer() {
+    seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    ++count;
+  }
+};
 
 // Intervals longer than the run act once, at its end: clamping them to the duration keeps
 // the step count in range (run_checks.hpp bounds duration / dt).
@@ -313,6 +326,7 @@ void BowShockRun::write_series_row(long step) {
 }
 
 void BowShockRun::write_snapshot(long step) {
+  const OutputTimer timer(output_.snapshot_seconds, output_.snapshots);
   const HostParticles particles = solver_->gathered_particles();
   if (!root_) return;
   run_file_->append_snapshot(step, step * scene_.setup.dt, particles);
@@ -323,6 +337,7 @@ void BowShockRun::write_snapshot(long step) {
 void BowShockRun::write_checkpoint_now() {
   const long step = solver_->steps_done();
   if (step == last_checkpoint_step_) return;
+  const OutputTimer timer(output_.checkpoint_seconds, output_.checkpoints);
   const double wall = wall_before_ + (meter_ ? meter_->elapsed_s() : 0.0);
   const CheckpointExtras extras =
       pack_run_state(loaded_.resolved, *solver_, inflow_, samples_, wall);
@@ -377,16 +392,23 @@ void BowShockRun::finish(bool completed) {
 nlohmann::json BowShockRun::processes_summary() const {
   const HaloStats halo = solver_->halo_stats();
   const double wall = meter_->elapsed_s();
-  return {{"count", comm_.size()},
-          {"balance", options_.balance},
-          {"particles_per_rank", gather_to_root(comm_, long(solver_->size()))},
-          {"ghosts_per_rank", gather_to_root(comm_, halo.ghosts)},
-          {"halo_share_per_rank", gather_to_root(comm_, wall > 0 ? halo.seconds / wall : 0.0)},
-          {"rebuild_exchange_share_per_rank",
-           gather_to_root(comm_, wall > 0 ? halo.rebuild_seconds / wall : 0.0)},
-          {"sync_share_per_rank", gather_to_root(comm_, wall > 0 ? halo.sync_seconds / wall : 0.0)},
-          {"halo_bytes_sent_per_rank", gather_to_root(comm_, halo.bytes_sent)},
-          {"rebalances", halo.rebalances}};
+  return {
+      {"count", comm_.size()},
+      {"balance", options_.balance},
+      {"particles_per_rank", gather_to_root(comm_, long(solver_->size()))},
+      {"ghosts_per_rank", gather_to_root(comm_, halo.ghosts)},
+      {"halo_share_per_rank", gather_to_root(comm_, wall > 0 ? halo.seconds / wall : 0.0)},
+      {"rebuild_exchange_share_per_rank",
+       gather_to_root(comm_, wall > 0 ? halo.rebuild_seconds / wall : 0.0)},
+      {"sync_share_per_rank", gather_to_root(comm_, wall > 0 ? halo.sync_seconds / wall : 0.0)},
+      {"halo_bytes_sent_per_rank", gather_to_root(comm_, halo.bytes_sent)},
+      {"rebalances", halo.rebalances},
+      // Gathered output (docs/scaling.md): rank 0's seconds per snapshot and checkpoint,
+      // gather and write included.
+      {"snapshot_seconds_each",
+       output_.snapshots > 0 ? output_.snapshot_seconds / double(output_.snapshots) : 0.0},
+      {"checkpoint_seconds_each",
+       output_.checkpoints > 0 ? output_.checkpoint_seconds / double(output_.checkpoints) : 0.0}};
 }
 
 // docs/scene_format.md, "The inflow": a strip that cannot take what the inflow asks for

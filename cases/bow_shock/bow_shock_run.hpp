@@ -85,6 +85,10 @@ class BowShockRun {
   bool warned_backflow_ = false;  // particles leaving through the inlet (run_observables.hpp)
   bool warned_energy_ = false;    // energy created by the integration (run_observables.hpp)
   std::optional<InletCalibration> calibration_;
+  struct OutputCost {
+    double snapshot_seconds = 0, checkpoint_seconds = 0;
+    long snapshots = 0, checkpoints = 0;
+  } output_;
 };
 
 }  // namespace granshock
