@@ -4,7 +4,8 @@
 # Usage: mpi_run.sh MPIEXEC GRANSHOCK SCENE WORK MODE [RANKS]
 #   reference   the one-process runs, into WORK/one and WORK/one_big (a 60 d obstacle):
 #               the fixture of the others
-#   ranks N     the run on N processes: bitwise the same state (compare_runs.py)
+#   ranks N [T] the run on N processes of T threads (default 1): bitwise the same state
+#               (compare_runs.py)
 #   balanced N BY  the large obstacle with --balance BY (particles, work): bitwise, and
 #               (particles) the cuts moved
 #   resume      stopped on 2 processes half way, resumed on 3: the same as one process
@@ -29,11 +30,13 @@ reference)
     fail "the one-process run with the large obstacle"
   ;;
 ranks)
-  ranks=$6
-  rm -rf "$work/ranks$ranks"
-  mpi "$ranks" "$granshock" run "$scene" "${short[@]}" --out "$work/ranks$ranks" ||
-    fail "the run on $ranks processes"
-  compare "$work/ranks$ranks" "$ranks" || fail "$ranks processes differ from one"
+  # Hybrid: THREADS OpenMP threads in each process (default 1).
+  ranks=$6 threads=${7:-1}
+  out=$work/ranks${ranks}x$threads
+  rm -rf "$out"
+  OMP_NUM_THREADS=$threads mpi "$ranks" "$granshock" run "$scene" "${short[@]}" --out "$out" ||
+    fail "the run on $ranks processes x $threads threads"
+  compare "$out" "$ranks" || fail "$ranks processes x $threads threads differ from one"
   ;;
 balanced)
   # Slab boundaries moved by particle count or measured work: the same bits, and (by
