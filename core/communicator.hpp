@@ -41,11 +41,9 @@ class Communicator {
   // are exchanged first unless the caller knows them (`expected`, in bytes: the halo
   // between rebuilds, whose ghost counts are fixed).
   static constexpr int kNone = -1;
-  using FromNeighbours = NeighbourBytes;
-  using Expected = ExpectedBytes;
-  virtual FromNeighbours exchange_with_neighbours(const std::vector<char>& to_lower, int lower,
+  virtual NeighbourBytes exchange_with_neighbours(const std::vector<char>& to_lower, int lower,
                                                   const std::vector<char>& to_upper, int upper,
-                                                  Expected expected = {}) const = 0;
+                                                  ExpectedBytes expected = {}) const = 0;
   // Every rank's bytes concatenated in rank order: on `root` only (empty elsewhere), or on
   // every rank (insertion's overlap test, docs/parallel.md).
   virtual std::vector<char> gather(const std::vector<char>& bytes, int root) const = 0;
@@ -77,10 +75,10 @@ class SingleProcess final : public Communicator {
   void sum_in_place(std::vector<double>&) const override {}
   // Rank 0 with itself as neighbour (a periodic face of a single slab): what it sends up
   // arrives from below, and what it sends down arrives from above.
-  FromNeighbours exchange_with_neighbours(const std::vector<char>& to_lower, int lower,
+  NeighbourBytes exchange_with_neighbours(const std::vector<char>& to_lower, int lower,
                                           const std::vector<char>& to_upper, int upper,
-                                          Expected) const override {
-    FromNeighbours in;
+                                          ExpectedBytes) const override {
+    NeighbourBytes in;
     if (lower == 0 && upper == 0) in = {to_upper, to_lower};
     return in;
   }

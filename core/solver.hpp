@@ -73,10 +73,9 @@ struct HaloStats {
   // Wall time in the per-step global maximum that decides a list rebuild: where a rank
   // waits for the slowest one (load imbalance) and pays the reduction's latency.
   double sync_seconds = 0;
-  long exchanges = 0;     // send-receive pairs
   double bytes_sent = 0;  // to the neighbours
   long ghosts = 0;        // ghosts held since the last list rebuild
-  long rebalances = 0;    // times the slab boundaries moved (balance by particles)
+  long rebalances = 0;    // times the slab boundaries moved (--balance particles, work)
   double exchange_seconds() const { return seconds + rebuild_seconds; }
 };
 

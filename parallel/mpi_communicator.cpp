@@ -55,9 +55,10 @@ void MpiCommunicator::sum_in_place(std::vector<double>& values) const {
 
 // Tags tell the direction apart when the lower and upper neighbour are the same rank
 // (two slabs on a periodic axis): what travels down is received from above.
-Communicator::FromNeighbours MpiCommunicator::exchange_with_neighbours(
-    const std::vector<char>& to_lower, int lower, const std::vector<char>& to_upper, int upper,
-    Expected expected) const {
+NeighbourBytes MpiCommunicator::exchange_with_neighbours(const std::vector<char>& to_lower,
+                                                         int lower,
+                                                         const std::vector<char>& to_upper,
+                                                         int upper, ExpectedBytes expected) const {
   enum Tag { size_down = 11, size_up = 12, bytes_down = 21, bytes_up = 22 };
   const int below = lower == kNone ? MPI_PROC_NULL : lower;
   const int above = upper == kNone ? MPI_PROC_NULL : upper;
@@ -76,15 +77,14 @@ Communicator::FromNeighbours MpiCommunicator::exchange_with_neighbours(
     MPI_Isend(&up, 1, MPI_LONG, above, size_up, comm_, &requests[3]);
     require(MPI_Waitall(4, requests, MPI_STATUSES_IGNORE), "MPI_Waitall (sizes)");
   }
-  FromNeighbours in;
+  NeighbourBytes in;
   in.lower.resize(std::size_t(from_lower));
   in.upper.resize(std::size_t(from_upper));
   MPI_Irecv(in.lower.data(), int(from_lower), MPI_BYTE, below, bytes_up, comm_, &requests[0]);
   MPI_Irecv(in.upper.data(), int(from_upper), MPI_BYTE, above, bytes_down, comm_, &requests[1]);
   MPI_Isend(to_lower.data(), int(to_lower.size()), MPI_BYTE, below, bytes_down, comm_,
             &requests[2]);
-  MPI_Isend(to_upper.data(), int(to_upper.size()), MPI_BYTE, above, bytes_up, comm_,
-            &requests[3]);
+  MPI_Isend(to_upper.data(), int(to_upper.size()), MPI_BYTE, above, bytes_up, comm_, &requests[3]);
   require(MPI_Waitall(4, requests, MPI_STATUSES_IGNORE), "MPI_Waitall (bytes)");
   return in;
 }

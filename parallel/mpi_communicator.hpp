@@ -20,9 +20,9 @@ class MpiCommunicator final : public Communicator {
   long sum(long local) const override;
   bool any(bool local) const override;
   void sum_in_place(std::vector<double>& values) const override;
-  FromNeighbours exchange_with_neighbours(const std::vector<char>& to_lower, int lower,
+  NeighbourBytes exchange_with_neighbours(const std::vector<char>& to_lower, int lower,
                                           const std::vector<char>& to_upper, int upper,
-                                          Expected expected) const override;
+                                          ExpectedBytes expected) const override;
   std::vector<char> gather(const std::vector<char>& bytes, int root) const override;
   std::vector<char> all_gather(const std::vector<char>& bytes) const override;
 

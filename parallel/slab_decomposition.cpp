@@ -25,11 +25,12 @@ void check(int ranks, int rows, int min_rows) {
 }  // namespace
 
 SlabDecomposition::SlabDecomposition(double lo, double length, std::vector<int> first_row,
-                                     bool periodic)
+                                     int min_rows, bool periodic)
     : lo_(lo),
       length_(length),
       inv_row_width_(first_row.back() / length),
       first_row_(std::move(first_row)),
+      min_rows_(min_rows),
       periodic_(periodic) {}
 
 SlabDecomposition SlabDecomposition::equal(int ranks, double lo, double length, int rows,
@@ -37,7 +38,7 @@ SlabDecomposition SlabDecomposition::equal(int ranks, double lo, double length, 
   check(ranks, rows, min_rows);
   std::vector<int> first(ranks + 1, 0);
   for (int r = 0; r < ranks; ++r) first[r + 1] = first[r] + rows / ranks + (r < rows % ranks);
-  return {lo, length, first, periodic};
+  return {lo, length, first, min_rows, periodic};
 }
 
 SlabDecomposition SlabDecomposition::balanced(int ranks, double lo, double length,
@@ -60,7 +61,15 @@ SlabDecomposition SlabDecomposition::balanced(int ranks, double lo, double lengt
       if (distance(b) < distance(best)) best = b;
     first[k] = best;
   }
-  return {lo, length, first, periodic};
+  return {lo, length, first, min_rows, periodic};
+}
+
+long SlabDecomposition::heaviest(const std::vector<long>& count_per_row) const {
+  long most = 0;
+  for (int r = 0; r < ranks(); ++r)
+    most = std::max(most, std::accumulate(count_per_row.begin() + first_row_[r],
+                                          count_per_row.begin() + first_row_[r + 1], 0L));
+  return most;
 }
 
 long SlabDecomposition::row_of(double coordinate) const {

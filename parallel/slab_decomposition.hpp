@@ -23,6 +23,13 @@ class SlabDecomposition {
                                     const std::vector<long>& count_per_row, int min_rows,
                                     bool periodic);
 
+  // The same axis cut anew by `count_per_row`, as balanced() with this one's minimum.
+  SlabDecomposition rebalanced(const std::vector<long>& count_per_row) const {
+    return balanced(ranks(), lo_, length_, count_per_row, min_rows_, periodic_);
+  }
+  // The largest total of `count_per_row` over the rows of one slab.
+  long heaviest(const std::vector<long>& count_per_row) const;
+
   int ranks() const { return int(first_row_.size()) - 1; }
   int rows() const { return first_row_.back(); }
   int first_row(int rank) const { return first_row_[rank]; }
@@ -44,11 +51,13 @@ class SlabDecomposition {
   std::vector<int> neighbours(int rank) const;
 
  private:
-  SlabDecomposition(double lo, double length, std::vector<int> first_row, bool periodic);
+  SlabDecomposition(double lo, double length, std::vector<int> first_row, int min_rows,
+                    bool periodic);
   double lo_ = 0;
   double length_ = 1;
   double inv_row_width_ = 1;    // rows / length, as the cell grid computes it
   std::vector<int> first_row_;  // ranks + 1 entries; first_row_[0] = 0
+  int min_rows_ = 1;
   bool periodic_ = false;
 };
 

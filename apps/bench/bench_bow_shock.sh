@@ -20,7 +20,7 @@
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 root=$(cd "$here/../.." && pwd)
-source "$here/lammps/common.sh"  # find_granshock, run_nice
+source "$here/lammps/common.sh"  # find_granshock, run_nice, timed_leg_times
 steps=${1:-20000}
 warmup=${2:-500000}
 scene=$root/scenes/default.toml
@@ -36,9 +36,7 @@ out=${KEEP:-$work/run}
 export OMP_NUM_THREADS=${THREADS:-2} OMP_PROC_BIND=${OMP_PROC_BIND:-false} \
   OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-active}
 
-dt=$(/usr/bin/python3 -c 'import sys, tomllib; print(repr(tomllib.load(open(sys.argv[1], "rb"))["time"]["dt"]))' "$scene")
-times=(--set "time.duration=$(/usr/bin/python3 -c "print(repr(($warmup + $steps) * $dt))")"
-  --set "time.production_start=$(/usr/bin/python3 -c "print(repr($warmup * $dt))")")
+timed_leg_times "$scene" "$warmup" "$steps"  # sets dt and times
 echo "granshock $granshock, $OMP_NUM_THREADS thread(s): $steps steps timed after $warmup" \
   "(dt = $dt s)" >&2
 if ((warmup > 0)); then

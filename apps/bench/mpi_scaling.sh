@@ -15,7 +15,7 @@
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 root=$(cd "$here/../.." && pwd)
-source "$here/lammps/common.sh"  # find_granshock, run_nice
+source "$here/lammps/common.sh"  # find_granshock, run_nice, timed_leg_times
 steps=${1:-20000}
 warmup=${2:-500000}
 repeats=${3:-5}
@@ -28,9 +28,7 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 # Spinning threads, as apps/bench/bench_gas and bench_bow_shock.sh time them.
 export OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-active} OMP_PROC_BIND=${OMP_PROC_BIND:-false}
 
-dt=$(/usr/bin/python3 -c 'import sys, tomllib; print(repr(tomllib.load(open(sys.argv[1], "rb"))["time"]["dt"]))' "$scene")
-times=(--set "time.duration=$(/usr/bin/python3 -c "print(repr(($warmup + $steps) * $dt))")"
-  --set "time.production_start=$(/usr/bin/python3 -c "print(repr($warmup * $dt))")")
+timed_leg_times "$scene" "$warmup" "$steps"  # sets dt and times
 echo "warming up: $warmup steps of $scene in one process (dt = $dt s)" >&2
 OMP_NUM_THREADS=2 run_nice "$granshock" run "$scene" --out "$work/warm" --quiet "${times[@]}" \
   --stop-after-steps "$warmup" >&2

@@ -244,18 +244,17 @@ int main(int argc, char** argv) {
                    "OMP_NUM_THREADS\n";
     return 2;
   }
-  // How a failure ends the program (failure_agreement.hpp): on several processes, rank 0
-  // says what every rank met alike, any rank says what only it met, and a failure the
-  // other ranks have not agreed on ends the whole job, so that none waits for this one.
-  const auto leave = [&](int code, const std::string& message, bool every_rank_alike) {
-    if (!several) {
-      std::cerr << message << "\n";
-      return code;
-    }
-    if (mpi->rank() == 0 || !every_rank_alike)
+  // How a failure ends the program on several processes (failure_agreement.hpp). A
+  // failure every rank meets at the same step (from global sums) is said by rank 0 and
+  // ends every rank alike. Any other is said by the rank that met it (after an agreement,
+  // the others threw PeerFailed and stay quiet); unless agreed on, it ends the whole job,
+  // so that no rank waits for this one in a collective operation.
+  const auto leave = [&](int code, const std::string& message, bool met_by_every_rank) {
+    const bool speaks = !several || (met_by_every_rank ? mpi->rank() == 0 : true);
+    if (speaks)
       std::cerr << (mpi->rank() == 0 ? "" : fmt::format("[rank {}] ", mpi->rank())) << message
                 << "\n";
-    if (!granshock::failure_agreed() && !(every_rank_alike && code == 4)) {
+    if (several && !met_by_every_rank && !granshock::failure_agreed()) {
       std::cerr.flush();
       mpi->abort(code);
     }
@@ -291,7 +290,7 @@ int main(int argc, char** argv) {
     // From global sums: every rank meets it at the same step.
     return leave(4, std::string("granshock: error: ") + e.what(), true);
   } catch (const granshock::UserError& e) {
-    return leave(2, "granshock: error: " + one_line(e.what()), true);
+    return leave(2, "granshock: error: " + one_line(e.what()), false);
   } catch (const std::bad_alloc& e) {
     return leave(
         2,

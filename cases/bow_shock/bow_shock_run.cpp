@@ -236,7 +236,6 @@ int BowShockRun::advance_to_end() {
 // The slices end where the wall clock says (ProgressMeter::steps_per), which differs from
 // rank to rank: all take the earliest end.
 long BowShockRun::agreed_next_step(long step) {
-  if (comm_.size() == 1) return step;
   return long(-comm_.max(-double(step)));
 }
 

@@ -20,6 +20,7 @@
 
 #include <Kokkos_Core.hpp>
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstring>
@@ -123,20 +124,17 @@ class SlabExchange {
         grid_(grid),
         slabs_(SlabDecomposition::equal(comm.size(), box.lo[kAxis], box.length(kAxis),
                                         grid.ncell[kAxis], box.periodic[kAxis] ? 2 : 1,
-                                        box.periodic[kAxis])),
-        box_lo_(box.lo[kAxis]),
-        box_length_(box.length(kAxis)),
-        min_rows_(box.periodic[kAxis] ? 2 : 1),
-        periodic_(box.periodic[kAxis]) {
+                                        box.periodic[kAxis])) {
     const int r = comm.rank(), n = comm.size();
     const bool periodic = box.periodic[kAxis];
     lower_ = r > 0 ? r - 1 : (periodic ? n - 1 : Communicator::kNone);
     upper_ = r + 1 < n ? r + 1 : (periodic ? 0 : Communicator::kNone);
   }
 
-  const SlabDecomposition& slabs() const { return slabs_; }
-  int ghosts() const { return ghosts_; }
   const HaloStats& stats() const { return stats_; }
+  // The rank owning a y coordinate: by its cell row, as the cell sort computes it.
+  int owner_of(Position y) const { return slabs_.owner_of_row(grid_.coord(kAxis, y)); }
+  bool owns(Position y) const { return owner_of(y) == comm_.rank(); }
 
   // Slab boundaries moved at list rebuilds (docs/parallel.md, "Load balance"): equal
   // slabs of rows throughout, or balanced by particle count, or by measured work (each
@@ -162,7 +160,7 @@ class SlabExchange {
       auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.x);
       std::vector<int> keep, down, up;
       for (int i = 0; i < p.n; ++i) {
-        const int owner = slabs_.owner_of_row(grid_.coord(kAxis, x(i, kAxis)));
+        const int owner = owner_of(x(i, kAxis));
         if (owner == me) {
           keep.push_back(i);
         } else if (owner == lower_ || (moved_cuts && owner < me)) {
@@ -182,7 +180,7 @@ class SlabExchange {
         permute.apply(p, order, int(keep.size()));
         p.n = int(keep.size());
       }
-      const Communicator::FromNeighbours arrived = exchange(to_lower, to_upper);
+      const NeighbourBytes arrived = exchange(to_lower, to_upper);
       unpack_all(p, arrived.lower, grow);
       unpack_all(p, arrived.upper, grow);
       if (!moved_cuts) break;
@@ -198,8 +196,7 @@ class SlabExchange {
     Kokkos::View<int*, Kokkos::HostSpace> order_host("keep_own_order", std::max(p.n, 1));
     int kept = 0;
     for (int i = 0; i < p.n; ++i)
-      if (i < first || slabs_.owner_of_row(grid_.coord(kAxis, x(i, kAxis))) == comm_.rank())
-        order_host(kept++) = i;
+      if (i < first || owns(x(i, kAxis))) order_host(kept++) = i;
     if (kept == p.n) return;
     auto order = Kokkos::create_mirror_view_and_copy(Mem(), order_host);
     permute.apply(p, order, kept);
@@ -222,11 +219,9 @@ class SlabExchange {
     send_up_ = row_range(slabs_.end_row(comm_.rank()) - 1);
     // This slab's lowest row goes down, its highest up; from above comes the row above it.
     const Timer timer(stats_.rebuild_seconds);
-    const Communicator::FromNeighbours in =
-        exchange(pack_ghost(p, send_down_), pack_ghost(p, send_up_));
-    const std::vector<char>&from_lower = in.lower, &from_upper = in.upper;
-    from_lower_ = count_ghosts(from_lower);
-    from_upper_ = count_ghosts(from_upper);
+    const NeighbourBytes in = exchange(pack_ghost(p, send_down_), pack_ghost(p, send_up_));
+    from_lower_ = count_ghosts(in.lower);
+    from_upper_ = count_ghosts(in.upper);
     // In increasing cell order: the row below this slab first unless it wrapped to the top.
     const int rows = grid_.ncell[kAxis];
     const int below = (slabs_.first_row(comm_.rank()) - 1 + rows) % rows;
@@ -235,10 +230,7 @@ class SlabExchange {
     const int needed = p.n + from_lower_ + from_upper_;
     if (needed > p.capacity()) grow(needed + needed / 4);
     int at = p.n;
-    for (const std::vector<char>* bytes :
-         below_first_ ? std::vector<const std::vector<char>*>{&from_lower, &from_upper}
-                      : std::vector<const std::vector<char>*>{&from_upper, &from_lower})
-      at += unpack_ghost(p, *bytes, at);
+    for (const std::vector<char>* bytes : in_cell_order(in)) at += unpack_ghost(p, *bytes, at);
     ghosts_ = at - p.n;
     stats_.ghosts = ghosts_;
     index_ghost_cells(p, ghost_start);
@@ -250,15 +242,10 @@ class SlabExchange {
   void update_ghosts(Store& p) {
     const Timer timer(stats_.seconds);
     const long each = long(motion_bytes());
-    const Communicator::FromNeighbours in =
-        exchange(pack_motion(p, send_down_), pack_motion(p, send_up_),
-                 Communicator::Expected{from_lower_ * each, from_upper_ * each});
-    const std::vector<char>&from_lower = in.lower, &from_upper = in.upper;
+    const NeighbourBytes in = exchange(pack_motion(p, send_down_), pack_motion(p, send_up_),
+                                       ExpectedBytes{from_lower_ * each, from_upper_ * each});
     int at = p.n;
-    for (const std::vector<char>* bytes :
-         below_first_ ? std::vector<const std::vector<char>*>{&from_lower, &from_upper}
-                      : std::vector<const std::vector<char>*>{&from_upper, &from_lower})
-      at += unpack_motion(p, *bytes, at);
+    for (const std::vector<char>* bytes : in_cell_order(in)) at += unpack_motion(p, *bytes, at);
     if (at != p.n + ghosts_)
       throw std::logic_error("a halo update brought " + std::to_string(at - p.n) +
                              " ghosts, the rebuild " + std::to_string(ghosts_));
@@ -276,10 +263,15 @@ class SlabExchange {
     }
   };
 
-  Communicator::FromNeighbours exchange(const std::vector<char>& to_lower,
-                                        const std::vector<char>& to_upper,
-                                        Communicator::Expected expected = {}) {
-    ++stats_.exchanges;
+  // The ghost rows as they go after the owned particles: the row below this slab first,
+  // unless it wrapped to the top (append_ghosts).
+  std::array<const std::vector<char>*, 2> in_cell_order(const NeighbourBytes& in) const {
+    if (below_first_) return {&in.lower, &in.upper};
+    return {&in.upper, &in.lower};
+  }
+
+  NeighbourBytes exchange(const std::vector<char>& to_lower, const std::vector<char>& to_upper,
+                          ExpectedBytes expected = {}) {
     if (lower_ != Communicator::kNone) stats_.bytes_sent += double(to_lower.size());
     if (upper_ != Communicator::kNone) stats_.bytes_sent += double(to_upper.size());
     return comm_.exchange_with_neighbours(to_lower, lower_, to_upper, upper_, expected);
@@ -311,18 +303,9 @@ class SlabExchange {
     for (int i = 0; i < p.n; ++i) histogram[std::size_t(grid_.coord(kAxis, x(i, kAxis)))] += weight;
     comm_.sum_in_place(histogram);  // integer sums below 2^53: exact in double
     const std::vector<long> per_row(histogram.begin(), histogram.end());
-    const auto heaviest = [&](const SlabDecomposition& d) {
-      long most = 0;
-      for (int r = 0; r < d.ranks(); ++r) {
-        long in_slab = 0;
-        for (int row = d.first_row(r); row < d.end_row(r); ++row) in_slab += per_row[row];
-        most = std::max(most, in_slab);
-      }
-      return most;
-    };
-    const SlabDecomposition candidate = SlabDecomposition::balanced(
-        comm_.size(), box_lo_, box_length_, per_row, min_rows_, periodic_);
-    if (double(heaviest(candidate)) >= (1 - kWorthwhile) * double(heaviest(slabs_))) return false;
+    const SlabDecomposition candidate = slabs_.rebalanced(per_row);
+    if (double(candidate.heaviest(per_row)) >= (1 - kWorthwhile) * double(slabs_.heaviest(per_row)))
+      return false;
     slabs_ = candidate;
     ++stats_.rebalances;
     return true;
@@ -447,9 +430,6 @@ class SlabExchange {
   const Communicator& comm_;
   Grid grid_;
   SlabDecomposition slabs_;
-  double box_lo_, box_length_;
-  int min_rows_;
-  bool periodic_;
   SlabBalance balance_ = SlabBalance::equal;
   double work_seconds_ = 0, work_particle_steps_ = 0;  // since the last rebalance check
   int rebuilds_since_check_ = 0;

@@ -262,13 +262,17 @@ class DemSolver final : public Solver {
     rebuild_lists();
     return removed();
   }
+  // Several processes: each counts its own deletions; one sum over ranks (exact: counts).
   RemovalCounts removed() const override {
     RemovalCounts r = population_.removed();
-    if (slabs_)
-      for (int d = 0; d < 3; ++d) {
-        r.low[d] = comm_.sum(r.low[d]);
-        r.high[d] = comm_.sum(r.high[d]);
-      }
+    if (!slabs_) return r;
+    std::vector<double> counts{r.low.begin(), r.low.end()};
+    counts.insert(counts.end(), r.high.begin(), r.high.end());
+    comm_.sum_in_place(counts);
+    for (int d = 0; d < 3; ++d) {
+      r.low[d] = long(counts[d]);
+      r.high[d] = long(counts[3 + d]);
+    }
     return r;
   }
   int next_id() const override { return population_.next_id(); }
@@ -404,8 +408,7 @@ class DemSolver final : public Solver {
   void import_own_part(const SolverState& s) {
     std::vector<int> rows;
     for (std::size_t i = 0; i < s.size(); ++i) {
-      const Position y = Position(s.reference_position[i * Dim + 1]);
-      if (slabs_->slabs().owner_of_row(grid_.coord(1, y)) == comm_.rank()) rows.push_back(int(i));
+      if (slabs_->owns(Position(s.reference_position[i * Dim + 1]))) rows.push_back(int(i));
     }
     const SolverState own = select_particles(s, rows);
     if (int(own.size()) > p_.capacity()) p_.allocate(int(own.size()) + int(own.size()) / 4);
@@ -438,9 +441,7 @@ class DemSolver final : public Solver {
   HostParticles mine(const HostParticles& all) const {
     HostParticles out;
     for (std::size_t i = 0; i < all.size(); ++i) {
-      if (slabs_->slabs().owner_of_row(grid_.coord(1, Position(all.position[i][1]))) !=
-          comm_.rank())
-        continue;
+      if (!slabs_->owns(Position(all.position[i][1]))) continue;
       out.add(all.position[i], all.velocity[i], all.species[i], all.id[i]);
       if (!all.angular_velocity.empty()) out.angular_velocity.push_back(all.angular_velocity[i]);
     }

@@ -104,21 +104,19 @@ TEST(MpiCommunicator, NeighbourExchangeOnARingAndALine) {
   const auto down_of = [](int k) { return std::vector<char>(std::size_t(k + 1), char(10 * k)); };
   const auto up_of = [](int k) { return std::vector<char>(std::size_t(k + 2), char(10 * k + 1)); };
   const int below = (r - 1 + n) % n, above = (r + 1) % n;
-  const Communicator::FromNeighbours ring =
-      comm.exchange_with_neighbours(down_of(r), below, up_of(r), above);
+  const NeighbourBytes ring = comm.exchange_with_neighbours(down_of(r), below, up_of(r), above);
   EXPECT_EQ(ring.lower, up_of(below)) << "from below comes what it sent up";
   EXPECT_EQ(ring.upper, down_of(above));
   // Known sizes (the halo between rebuilds): no size messages, the same bytes.
-  const Communicator::Expected sizes{long(up_of(below).size()), long(down_of(above).size())};
-  const Communicator::FromNeighbours known =
+  const ExpectedBytes sizes{long(up_of(below).size()), long(down_of(above).size())};
+  const NeighbourBytes known =
       comm.exchange_with_neighbours(down_of(r), below, up_of(r), above, sizes);
   EXPECT_EQ(known.lower, ring.lower);
   EXPECT_EQ(known.upper, ring.upper);
   // A line: rank 0 has nothing below, the last rank nothing above.
   const int lower = r > 0 ? r - 1 : Communicator::kNone;
   const int upper = r + 1 < n ? r + 1 : Communicator::kNone;
-  const Communicator::FromNeighbours line =
-      comm.exchange_with_neighbours(down_of(r), lower, up_of(r), upper);
+  const NeighbourBytes line = comm.exchange_with_neighbours(down_of(r), lower, up_of(r), upper);
   EXPECT_EQ(line.lower, r > 0 ? up_of(r - 1) : std::vector<char>());
   EXPECT_EQ(line.upper, r + 1 < n ? down_of(r + 1) : std::vector<char>());
 }

@@ -101,3 +101,18 @@ TEST(SlabDecomposition, TooManyProcessesForTheBoxIsAUserError) {
         << e.what();
   }
 }
+
+// What the solver's rebalance compares (kernels/particles/slab_exchange.hpp): the heaviest
+// slab under the present cuts and under cuts made anew, with the same axis and minimum.
+TEST(SlabDecomposition, RebalancedKeepsTheAxisAndLightensTheHeaviestSlab) {
+  const auto equal = SlabDecomposition::equal(2, 0.0, 8.0, 8, 2, true);
+  const std::vector<long> counts{9, 9, 9, 9, 1, 1, 1, 1};  // the wake: nearly empty rows
+  EXPECT_EQ(equal.heaviest(counts), 36);                   // rows 0-3
+  const SlabDecomposition moved = equal.rebalanced(counts);
+  EXPECT_EQ(moved.first_row(1), 2);  // 18 and 22: the boundary nearest 20
+  EXPECT_EQ(moved.heaviest(counts), 22);
+  EXPECT_DOUBLE_EQ(moved.lower(1), 2.0);  // the same axis: rows 1 long from 0
+  // The minimum of 2 rows (a periodic axis) still holds when the counts pull harder.
+  const SlabDecomposition edge = equal.rebalanced({100, 0, 0, 0, 0, 0, 0, 0});
+  EXPECT_EQ(edge.first_row(1), 2);
+}

@@ -41,6 +41,15 @@ run_nice() {
   nice -n "${NICE:-10}" "$@"
 }
 
+# A timed leg of granshock's SCENE: WARMUP steps, then STEPS timed ones with field sampling
+# from the warm-up's end. Sets dt (the scene's time step) and times (the --set options).
+timed_leg_times() {
+  local scene=$1 warmup=$2 steps=$3
+  dt=$(/usr/bin/python3 -c 'import sys, tomllib; print(repr(tomllib.load(open(sys.argv[1], "rb"))["time"]["dt"]))' "$scene")
+  times=(--set "time.duration=$(/usr/bin/python3 -c "print(repr(($warmup + $steps) * $dt))")"
+    --set "time.production_start=$(/usr/bin/python3 -c "print(repr($warmup * $dt))")")
+}
+
 # mpirun for RANKS processes of one thread each, niced. Open MPI refuses root without
 # --allow-run-as-root and more ranks than cores without --oversubscribe.
 lammps_mpirun() {
