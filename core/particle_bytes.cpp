@@ -59,6 +59,16 @@ void take(const std::vector<char>& in, std::size_t& at, std::vector<T>& v) {
   at += n * sizeof(T);
 }
 
+// Replaces `to` by the rows of `from` (a vector of n particles' values, width each).
+template <class T>
+void select_rows(const std::vector<T>& from, std::size_t n, const std::vector<int>& rows,
+                 std::vector<T>& to) {
+  const std::size_t width = n == 0 ? 0 : from.size() / n;
+  to.clear();
+  for (const int r : rows)
+    to.insert(to.end(), from.begin() + long(r * width), from.begin() + long((r + 1) * width));
+}
+
 }  // namespace
 
 std::vector<char> pack_particles(const SolverState& s) {
@@ -83,17 +93,17 @@ void append_particles(const std::vector<char>& parts, HostParticles& into) {
 
 SolverState select_particles(const SolverState& s, const std::vector<int>& rows) {
   SolverState out = s;
-  const std::size_t n = s.size();
-  for_each_vector(
-      [&](const auto& from, auto& to) {
-        const std::size_t width = n == 0 ? 0 : from.size() / n;
-        to.clear();
-        for (const int r : rows)
-          to.insert(to.end(), from.begin() + long(r * width), from.begin() + long((r + 1) * width));
-      },
-      s, out);
+  for_each_vector([&](const auto& from, auto& to) { select_rows(from, s.size(), rows, to); }, s,
+                  out);
   out.neighbour_offsets.clear();
   out.neighbours.clear();
+  return out;
+}
+
+HostParticles select_particles(const HostParticles& p, const std::vector<int>& rows) {
+  HostParticles out;
+  for_each_host_vector([&](const auto& from, auto& to) { select_rows(from, p.size(), rows, to); },
+                       p, out);
   return out;
 }
 

@@ -18,7 +18,8 @@ void append_particles(const std::vector<char>& parts, SolverState& into);
 void append_particles(const std::vector<char>& parts, HostParticles& into);
 
 // The particles `rows` of s (in that order) with s's scalars; neighbour lists are left
-// empty (they index the whole state).
+// empty (they index the whole state). Also of host particles (a gathered snapshot).
 SolverState select_particles(const SolverState& s, const std::vector<int>& rows);
+HostParticles select_particles(const HostParticles& p, const std::vector<int>& rows);
 
 }  // namespace granshock

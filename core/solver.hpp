@@ -84,6 +84,15 @@ struct HaloStats {
 // measured compute time. The choice never changes the results, only who computes what.
 enum class SlabBalance { equal, particles, work };
 
+// How several processes divide the box (docs/parallel.md): slabs of cell rows along x
+// (across the flow, through the periodic faces) or along y (along the flow), and how
+// their boundaries move. Neither choice changes the results.
+enum class SlabAxis { x = 0, y = 1 };
+struct Decomposition {
+  SlabAxis axis = SlabAxis::y;
+  SlabBalance balance = SlabBalance::equal;
+};
+
 class Solver {
  public:
   virtual ~Solver() = default;
@@ -126,9 +135,10 @@ class Solver {
   // refused with InvalidCheckpoint (core/checkpoint_checks.hpp) before anything changes.
   virtual void import_state(const SolverState& state) = 0;
 
-  // Several processes: how slab boundaries move at list rebuilds (SlabBalance); the
-  // exchange's cost so far. One process: nothing to balance, no cost.
-  virtual void balance_slabs(SlabBalance balance) = 0;
+  // Several processes: the slabs' axis and how their boundaries move at list rebuilds,
+  // chosen before any particle is placed; the exchange's cost so far. One process:
+  // nothing to divide, no cost.
+  virtual void decompose(const Decomposition& decomposition) = 0;
   virtual HaloStats halo_stats() const = 0;
 
   virtual std::size_t size() const = 0;  // the particles this process owns

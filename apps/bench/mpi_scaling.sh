@@ -9,7 +9,9 @@
 #
 # Usage: mpi_scaling.sh [STEPS] [WARMUP_STEPS] [REPEATS] [SCENE]
 #   (defaults 20000, 500000 = 0.1 s of the default scene, 5, scenes/default.toml)
-# Environment: GRANSHOCK (binary), MPIEXEC (default mpirun), NICE (default 10).
+# Environment: GRANSHOCK (binary), MPIEXEC (default mpirun), NICE (default 10), CONFIGS
+#   (default: threads2 and ranks2_{y,x}_{equal,work}, and ranks2_y_particles; a
+#   configuration ranks2_AXIS_BALANCE runs with --slabs AXIS --balance BALANCE).
 # Output: a Markdown table on stdout (medians; ratios to one process per repeat, then
 # their median), progress on stderr.
 set -euo pipefail
@@ -33,7 +35,8 @@ echo "warming up: $warmup steps of $scene in one process (dt = $dt s)" >&2
 OMP_NUM_THREADS=2 run_nice "$granshock" run "$scene" --out "$work/warm" --quiet "${times[@]}" \
   --stop-after-steps "$warmup" >&2
 
-configs=(threads2 ranks2_equal ranks2_particles ranks2_work)
+read -r -a configs <<<"${CONFIGS:-threads2 ranks2_y_equal ranks2_y_particles ranks2_y_work ranks2_x_equal ranks2_x_work}"
+[ "${configs[0]}" = threads2 ] || { echo "mpi_scaling.sh: CONFIGS must start with threads2" >&2; exit 2; }
 for ((r = 1; r <= repeats; r++)); do
   for c in "${configs[@]}"; do
     out=$work/$c.$r
@@ -41,8 +44,11 @@ for ((r = 1; r <= repeats; r++)); do
     case $c in
     threads2) OMP_NUM_THREADS=2 run_nice "$granshock" run "$scene" --out "$out" --resume \
       --quiet "${times[@]}" >&2 ;;
-    ranks2_*) OMP_NUM_THREADS=1 run_nice "$mpiexec" -np 2 --bind-to core "$granshock" run \
-      "$scene" --out "$out" --resume --quiet --balance "${c#ranks2_}" "${times[@]}" >&2 ;;
+    ranks2_*_*)
+      axis=${c#ranks2_} && axis=${axis%_*}
+      OMP_NUM_THREADS=1 run_nice "$mpiexec" -np 2 --bind-to core "$granshock" run "$scene" \
+        --out "$out" --resume --quiet --slabs "$axis" --balance "${c##*_}" "${times[@]}" >&2 ;;
+    *) echo "mpi_scaling.sh: unknown configuration $c" >&2; exit 2 ;;
     esac
     echo "repeat $r, $c: $(/usr/bin/python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["particle_steps_per_second"])' "$out/summary.json") particle-steps/s" >&2
   done
@@ -71,10 +77,12 @@ for c in configs:
                 for k in range(p.get("count", 1))] if p.get("count", 1) > 1 else []
     share, sync = shares("halo_share_per_rank"), shares("sync_share_per_rank")
     rebuild = shares("rebuild_exchange_share_per_rank")
-    label = {"threads2": "1 process x 2 threads",
-             "ranks2_equal": "2 processes x 1 thread, equal slabs",
-             "ranks2_particles": "2 processes x 1 thread, balanced by particles",
-             "ranks2_work": "2 processes x 1 thread, balanced by work"}[c]
+    if c == "threads2":
+        label = "1 process x 2 threads"
+    else:
+        axis, balance = c.split("_")[1:]
+        label = (f"2 processes x 1 thread, slabs along {axis}, "
+                 + ("equal" if balance == "equal" else f"balanced by {balance}"))
     print(f"| {label} | {statistics.median(rate):.3g} | {ratio:.3f} | "
           f"{', '.join(f'{x:.1%}' for x in share) or '-'} | "
           f"{', '.join(f'{x:.1%}' for x in rebuild) or '-'} | "

@@ -97,6 +97,11 @@ void add_run_command(CLI::App& app, granshock::RunOptions& o) {
                   "balance the 'particles' or the measured 'work' (docs/parallel.md); the "
                   "results are the same bit for bit")
       ->check(CLI::IsMember({"equal", "particles", "work"}));
+  cmd->add_option("--slabs", o.slabs,
+                  "under mpirun: each process owns a slab of cell rows along 'y' (the flow) or "
+                  "'x' (across it, through the periodic faces; docs/parallel.md); the results "
+                  "are the same bit for bit")
+      ->check(CLI::IsMember({"x", "y"}));
   cmd->add_flag("--dry-run", o.dry_run,
                 "check the scene and the output directory, print the resolved scene, write "
                 "nothing");

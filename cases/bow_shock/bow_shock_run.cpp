@@ -118,9 +118,12 @@ void BowShockRun::prepare() {
       every_seconds(scene_.run.checkpoint_interval_s, scene_.run.duration_s, scene_.setup.dt);
   solver_ = make_solver(scene_.setup, scene_.capacity_estimate(), Backend::default_space, &comm_);
   solver_->configure_sampling(sampling_.layout());
-  solver_->balance_slabs(options_.balance == "work"        ? SlabBalance::work
-                         : options_.balance == "particles" ? SlabBalance::particles
-                                                           : SlabBalance::equal);
+  Decomposition decomposition;
+  decomposition.axis = options_.slabs == "x" ? SlabAxis::x : SlabAxis::y;
+  decomposition.balance = options_.balance == "work"        ? SlabBalance::work
+                          : options_.balance == "particles" ? SlabBalance::particles
+                                                            : SlabBalance::equal;
+  solver_->decompose(decomposition);
   samples_.assign(std::size_t(sampling_.blocks()), 0);
 }
 
@@ -393,6 +396,7 @@ nlohmann::json BowShockRun::processes_summary() const {
   const double wall = meter_->elapsed_s();
   return {
       {"count", comm_.size()},
+      {"slabs_along", options_.slabs},
       {"balance", options_.balance},
       {"particles_per_rank", gather_to_root(comm_, long(solver_->size()))},
       {"ghosts_per_rank", gather_to_root(comm_, halo.ghosts)},

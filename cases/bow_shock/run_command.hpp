@@ -26,6 +26,7 @@ struct RunOptions {
   long stop_after_steps = 0;      // > 0: checkpoint and stop after this many steps (batch jobs)
   bool quiet = false;             // no progress lines
   std::string balance = "equal";  // several processes: "equal", "particles" or "work"
+  std::string slabs = "y";        // several processes: slabs along "x" or "y"
   bool dry_run = false;           // check the scene and the directory, print the resolved scene
   std::string accuracy;           // an error budget ("2%"): settings from a measured table
   std::filesystem::path accuracy_table;  // that table; empty: default_accuracy_table()

@@ -1,16 +1,19 @@
-// Domain decomposition in slabs of cell rows along y (docs/parallel.md): the exchange half
-// of the communication seam for several processes (particle_exchange.hpp is the one-process
-// half). At each list rebuild, particles whose cell row belongs to another slab migrate to
-// it, and each slab sends its lowest and highest cell rows to the slabs below and above as
-// ghosts, appended after the owned particles. A row is at least one interaction range
-// (largest diameter + skin) wide, so the ghosts are every partner a Verlet list can hold.
-// Between rebuilds the ghosts' positions, velocities (and spins) are refreshed from their
-// owners after every position update.
+// Domain decomposition in slabs of cell rows along x or y (docs/parallel.md): the exchange
+// half of the communication seam for several processes (particle_exchange.hpp is the
+// one-process half). A "row" here is a layer of cells along the slab axis: a row of the
+// grid for slabs along y, a column for slabs along x. At each list rebuild, particles whose
+// row belongs to another slab migrate to it, and each slab sends its lowest and highest
+// rows to the slabs below and above as ghosts, appended after the owned particles. A row
+// is at least one interaction range (largest diameter + skin) wide, so the ghosts are
+// every partner a Verlet list can hold. Between rebuilds the ghosts' positions,
+// velocities (and spins) are refreshed from their owners after every position update.
 //
 // Bitwise the same as one process: every rank sorts into the global cell grid, owned cells
-// and ghost cells are disjoint (slab cuts are row boundaries), and ghosts arrive in their
-// owner's (cell, id) order, so a particle's list partners come in the same order as in one
-// process; ghosts carry the owner's coordinates, so the minimum image is formed alike.
+// and ghost cells are disjoint (slab cuts are row boundaries), and the ghost block is in
+// increasing cell order with each cell in its owner's (cell, id) order: the two incoming
+// rows are merged cell by cell (for slabs along x they interleave, one cell of each per
+// grid row). So a particle's list partners come in the same order as in one process;
+// ghosts carry the owner's coordinates, so the minimum image is formed alike.
 //
 // Transport is through host copies (free on host backends; whole arrays on a GPU, a cost
 // to remove when the GPU build uses it) and Communicator::exchange_with_neighbours: both
@@ -107,34 +110,46 @@ std::size_t extract(const View& v, const char* in, int first, int count) {
 
 }  // namespace row_bytes
 
+// A run of the ghost block: `count` consecutive particles of one neighbour's message, from
+// its `first`-th (from: 0 the lower neighbour's, 1 the upper's).
+struct GhostRun {
+  int from = 0;
+  int first = 0;
+  int count = 0;
+};
+
 template <int Dim, class Store, class ExecSpace>
 class SlabExchange {
  public:
-  static constexpr int kAxis = 1;  // y: along the flow
   using Mem = typename ExecSpace::memory_space;
   using Grid = CellGrid<Dim, Position>;
 
-  // Equal slabs of the grid's rows; two rows at least where y is periodic, so that the
-  // rows below and above a slab are two different rows.
-  // Rows are contiguous ranges of the flat cell index only in 2-D (y-major cells).
-  static_assert(Dim == 2, "slabs along y: 2-D cell grids only (docs/parallel.md)");
+  // Nothing here is 2-D but the solvers built (docs/design.md, "Dimension").
+  static_assert(Dim == 2, "slabs of 2-D cell grids only: no 3-D solver is built");
 
-  SlabExchange(const Communicator& comm, const Grid& grid, const Box& box)
+  // Equal slabs of the grid's rows along `axis`; two rows at least where that axis is
+  // periodic, so that the rows below and above a slab are two different rows.
+  SlabExchange(const Communicator& comm, const Grid& grid, const Box& box, int axis)
       : comm_(comm),
         grid_(grid),
-        slabs_(SlabDecomposition::equal(comm.size(), box.lo[kAxis], box.length(kAxis),
-                                        grid.ncell[kAxis], box.periodic[kAxis] ? 2 : 1,
-                                        box.periodic[kAxis])) {
+        axis_(axis),
+        slabs_(SlabDecomposition::equal(comm.size(), box.lo[axis], box.length(axis),
+                                        grid.ncell[axis], box.periodic[axis] ? 2 : 1,
+                                        box.periodic[axis])) {
     const int r = comm.rank(), n = comm.size();
-    const bool periodic = box.periodic[kAxis];
+    const bool periodic = box.periodic[axis];
     lower_ = r > 0 ? r - 1 : (periodic ? n - 1 : Communicator::kNone);
     upper_ = r + 1 < n ? r + 1 : (periodic ? 0 : Communicator::kNone);
   }
 
   const HaloStats& stats() const { return stats_; }
-  // The rank owning a y coordinate: by its cell row, as the cell sort computes it.
-  int owner_of(Position y) const { return slabs_.owner_of_row(grid_.coord(kAxis, y)); }
-  bool owns(Position y) const { return owner_of(y) == comm_.rank(); }
+  int axis() const { return axis_; }
+  // The rank owning a coordinate along the slab axis: by its cell row, as the cell sort
+  // computes it.
+  int owner_of(Position coordinate) const {
+    return slabs_.owner_of_row(grid_.coord(axis_, coordinate));
+  }
+  bool owns(Position coordinate) const { return owner_of(coordinate) == comm_.rank(); }
 
   // Slab boundaries moved at list rebuilds (docs/parallel.md, "Load balance"): equal
   // slabs of rows throughout, or balanced by particle count, or by measured work (each
@@ -160,7 +175,7 @@ class SlabExchange {
       auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.x);
       std::vector<int> keep, down, up;
       for (int i = 0; i < p.n; ++i) {
-        const int owner = owner_of(x(i, kAxis));
+        const int owner = owner_of(x(i, axis_));
         if (owner == me) {
           keep.push_back(i);
         } else if (owner == lower_ || (moved_cuts && owner < me)) {
@@ -196,7 +211,7 @@ class SlabExchange {
     Kokkos::View<int*, Kokkos::HostSpace> order_host("keep_own_order", std::max(p.n, 1));
     int kept = 0;
     for (int i = 0; i < p.n; ++i)
-      if (i < first || owns(x(i, kAxis))) order_host(kept++) = i;
+      if (i < first || owns(x(i, axis_))) order_host(kept++) = i;
     if (kept == p.n) return;
     auto order = Kokkos::create_mirror_view_and_copy(Mem(), order_host);
     permute.apply(p, order, kept);
@@ -204,34 +219,25 @@ class SlabExchange {
   }
 
   // Appends the neighbours' boundary rows after the owned particles, which must be sorted
-  // by cell (the cell sort's permutation applied: a row is one contiguous range), and
-  // returns how many. `ghost_start` receives the ghosts' cell offsets (ncell + 1,
-  // relative to p.n) for the list build.
+  // by cell (the cell sort's permutation applied: a cell is one contiguous range), and
+  // returns how many, in increasing cell order. `ghost_start` receives the ghosts' cell
+  // offsets (ncell + 1, relative to p.n) for the list build.
   template <class StartView, class Grow>
   int append_ghosts(Store& p, const StartView& cell_start, Kokkos::View<int*, Mem>& ghost_start,
                     Grow&& grow) {
     auto start = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), cell_start);
-    const int per_row = grid_.total() / grid_.ncell[kAxis];
-    const auto row_range = [&](int row) {
-      return std::pair<int, int>{start(row * per_row), start((row + 1) * per_row)};
-    };
-    send_down_ = row_range(slabs_.first_row(comm_.rank()));
-    send_up_ = row_range(slabs_.end_row(comm_.rank()) - 1);
+    send_down_ = storage_ranges(start, slabs_.first_row(comm_.rank()));
+    send_up_ = storage_ranges(start, slabs_.end_row(comm_.rank()) - 1);
     // This slab's lowest row goes down, its highest up; from above comes the row above it.
     const Timer timer(stats_.rebuild_seconds);
     const NeighbourBytes in = exchange(pack_ghost(p, send_down_), pack_ghost(p, send_up_));
     from_lower_ = count_ghosts(in.lower);
     from_upper_ = count_ghosts(in.upper);
-    // In increasing cell order: the row below this slab first unless it wrapped to the top.
-    const int rows = grid_.ncell[kAxis];
-    const int below = (slabs_.first_row(comm_.rank()) - 1 + rows) % rows;
-    const int above = slabs_.end_row(comm_.rank()) % rows;
-    below_first_ = below < above;
-    const int needed = p.n + from_lower_ + from_upper_;
+    ghosts_ = from_lower_ + from_upper_;
+    const int needed = p.n + ghosts_;
     if (needed > p.capacity()) grow(needed + needed / 4);
-    int at = p.n;
-    for (const std::vector<char>* bytes : in_cell_order(in)) at += unpack_ghost(p, *bytes, at);
-    ghosts_ = at - p.n;
+    merge_ = merged_by_cell(in);
+    unpack_merged(p, in, [](Store& s, auto&& f) { for_ghost(s, f); });
     stats_.ghosts = ghosts_;
     index_ghost_cells(p, ghost_start);
     return ghosts_;
@@ -244,11 +250,11 @@ class SlabExchange {
     const long each = long(motion_bytes());
     const NeighbourBytes in = exchange(pack_motion(p, send_down_), pack_motion(p, send_up_),
                                        ExpectedBytes{from_lower_ * each, from_upper_ * each});
-    int at = p.n;
-    for (const std::vector<char>* bytes : in_cell_order(in)) at += unpack_motion(p, *bytes, at);
-    if (at != p.n + ghosts_)
-      throw std::logic_error("a halo update brought " + std::to_string(at - p.n) +
+    if (long(in.lower.size() + in.upper.size()) != long(ghosts_) * each)
+      throw std::logic_error("a halo update brought " +
+                             std::to_string((in.lower.size() + in.upper.size()) / each) +
                              " ghosts, the rebuild " + std::to_string(ghosts_));
+    unpack_merged(p, in, [](Store& s, auto&& f) { for_motion(s, f); });
   }
 
  private:
@@ -263,11 +269,95 @@ class SlabExchange {
     }
   };
 
-  // The ghost rows as they go after the owned particles: the row below this slab first,
-  // unless it wrapped to the top (append_ghosts).
-  std::array<const std::vector<char>*, 2> in_cell_order(const NeighbourBytes& in) const {
-    if (below_first_) return {&in.lower, &in.upper};
-    return {&in.upper, &in.lower};
+  // The storage ranges of the owned particles (sorted by cell; `start` their cell offsets)
+  // in cell row `row` along the slab axis, in increasing cell order: one range for slabs
+  // along y (a grid row is consecutive cells), one per grid row along x.
+  template <class HostStart>
+  std::vector<std::pair<int, int>> storage_ranges(const HostStart& start, int row) const {
+    int stride = 1;  // between cells adjacent along the axis (CellGrid::flat)
+    for (int d = 0; d < axis_; ++d) stride *= grid_.ncell[d];
+    const int period = stride * grid_.ncell[axis_];  // from a row's cells to its next ones
+    std::vector<std::pair<int, int>> out;
+    for (int first = row * stride; first < grid_.total(); first += period) {
+      const int begin = start(first), end = start(first + stride);
+      if (end == begin) continue;
+      if (!out.empty() && out.back().second == begin) {
+        out.back().second = end;
+      } else {
+        out.emplace_back(begin, end);
+      }
+    }
+    return out;
+  }
+
+  // The cells of the particles in one ghost message: the position is a ghost's first
+  // array (for_ghost), Dim values per particle.
+  static_assert(std::is_same_v<typename Store::PositionView::non_const_value_type, Position>);
+  std::vector<int> cells_in(const std::vector<char>& bytes, int count) const {
+    std::vector<int> cells(std::size_t(std::max(count, 0)));
+    for (int k = 0; k < count; ++k) {
+      int c[Dim];
+      for (int d = 0; d < Dim; ++d) {
+        Position x;
+        std::memcpy(&x, bytes.data() + (std::size_t(k) * Dim + d) * sizeof(Position), sizeof x);
+        c[d] = grid_.coord(d, x);
+      }
+      cells[std::size_t(k)] = grid_.flat(c);
+    }
+    return cells;
+  }
+
+  // The two incoming rows merged into increasing cell order, as runs of consecutive
+  // particles of one message. Each arrives in its owner's cell order and their cells are
+  // disjoint, so the merge keeps each cell in its owner's (cell, id) order.
+  std::vector<GhostRun> merged_by_cell(const NeighbourBytes& in) const {
+    const std::array<std::vector<int>, 2> cells{cells_in(in.lower, from_lower_),
+                                                cells_in(in.upper, from_upper_)};
+    const std::array<int, 2> count{from_lower_, from_upper_};
+    std::array<int, 2> next{0, 0};
+    std::vector<GhostRun> runs;
+    while (next[0] < count[0] || next[1] < count[1]) {
+      int from = next[0] < count[0] ? 0 : 1;
+      if (next[0] < count[0] && next[1] < count[1]) {
+        const int lower_cell = cells[0][std::size_t(next[0])];
+        const int upper_cell = cells[1][std::size_t(next[1])];
+        if (lower_cell == upper_cell)
+          throw std::logic_error("a cell among the ghosts of both neighbours");
+        from = lower_cell < upper_cell ? 0 : 1;
+      }
+      if (!runs.empty() && runs.back().from == from) {
+        ++runs.back().count;
+      } else {
+        runs.push_back({from, next[std::size_t(from)], 1});
+      }
+      ++next[std::size_t(from)];
+    }
+    return runs;
+  }
+
+  // Writes the ghosts of both messages after the owned particles, in the merged order.
+  // A message holds the arrays one after another, `count` rows each (pack_ranges).
+  template <class ForArrays>
+  void unpack_merged(Store& p, const NeighbourBytes& in, ForArrays&& arrays) const {
+    if (ghosts_ == 0) return;
+    const std::array<const std::vector<char>*, 2> bytes{&in.lower, &in.upper};
+    const std::array<int, 2> count{from_lower_, from_upper_};
+    std::array<std::size_t, 2> array_start{0, 0};  // the current array's bytes in each message
+    arrays(p, [&](auto& view) {
+      using T = typename std::decay_t<decltype(view)>::non_const_value_type;
+      const std::size_t row = sizeof(T) * std::size_t(row_bytes::width(view));
+      auto host = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), view);
+      int at = p.n;
+      for (const GhostRun& r : merge_) {
+        const std::size_t from = std::size_t(r.from);
+        row_bytes::extract(host,
+                           bytes[from]->data() + array_start[from] + std::size_t(r.first) * row, at,
+                           r.count);
+        at += r.count;
+      }
+      for (const std::size_t from : {0, 1}) array_start[from] += std::size_t(count[from]) * row;
+      Kokkos::deep_copy(view, host);
+    });
   }
 
   NeighbourBytes exchange(const std::vector<char>& to_lower, const std::vector<char>& to_upper,
@@ -298,9 +388,9 @@ class SlabExchange {
       work_seconds_ = work_particle_steps_ = 0;
     }
     auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.x);
-    const int rows = grid_.ncell[kAxis];
+    const int rows = grid_.ncell[axis_];
     std::vector<double> histogram(std::size_t(rows), 0.0);
-    for (int i = 0; i < p.n; ++i) histogram[std::size_t(grid_.coord(kAxis, x(i, kAxis)))] += weight;
+    for (int i = 0; i < p.n; ++i) histogram[std::size_t(grid_.coord(axis_, x(i, axis_)))] += weight;
     comm_.sum_in_place(histogram);  // integer sums below 2^53: exact in double
     const std::vector<long> per_row(histogram.begin(), histogram.end());
     const SlabDecomposition candidate = slabs_.rebalanced(per_row);
@@ -353,11 +443,12 @@ class SlabExchange {
     return out;
   }
   template <class ForArrays>
-  static std::vector<char> pack_range(Store& p, std::pair<int, int> range, ForArrays&& arrays) {
+  static std::vector<char> pack_ranges(Store& p, const std::vector<std::pair<int, int>>& ranges,
+                                       ForArrays&& arrays) {
     std::vector<char> out;
     arrays(p, [&](auto& view) {
       auto host = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), view);
-      row_bytes::append(out, host, range.first, range.second);
+      for (const auto& [begin, end] : ranges) row_bytes::append(out, host, begin, end);
     });
     return out;
   }
@@ -386,8 +477,8 @@ class SlabExchange {
     if (p.n + count > p.capacity()) grow(p.n + count + (p.n + count) / 4);
     p.n += unpack_rows(p, bytes, p.n, arrays);
   }
-  std::vector<char> pack_ghost(Store& p, std::pair<int, int> range) const {
-    return pack_range(p, range, [](Store& s, auto&& f) { for_ghost(s, f); });
+  std::vector<char> pack_ghost(Store& p, const std::vector<std::pair<int, int>>& ranges) const {
+    return pack_ranges(p, ranges, [](Store& s, auto&& f) { for_ghost(s, f); });
   }
   int count_ghosts(const std::vector<char>& bytes) {
     Store empty;
@@ -398,18 +489,11 @@ class SlabExchange {
     Store empty;
     return bytes_per_particle(empty, [](Store& s, auto&& f) { for_motion(s, f); });
   }
-  int unpack_ghost(Store& p, const std::vector<char>& bytes, int first) const {
-    return unpack_rows(p, bytes, first, [](Store& s, auto&& f) { for_ghost(s, f); });
-  }
-  std::vector<char> pack_motion(Store& p, std::pair<int, int> range) const {
-    return pack_range(p, range, [](Store& s, auto&& f) { for_motion(s, f); });
-  }
-  int unpack_motion(Store& p, const std::vector<char>& bytes, int first) const {
-    return unpack_rows(p, bytes, first, [](Store& s, auto&& f) { for_motion(s, f); });
+  std::vector<char> pack_motion(Store& p, const std::vector<std::pair<int, int>>& ranges) const {
+    return pack_ranges(p, ranges, [](Store& s, auto&& f) { for_motion(s, f); });
   }
 
-  // Cell offsets of the ghost block: ghosts are in increasing cell order (each row in
-  // its owner's cell order, the lower row first).
+  // Cell offsets of the ghost block: ghosts are in increasing cell order (merged_by_cell).
   void index_ghost_cells(Store& p, Kokkos::View<int*, Mem>& ghost_start) const {
     const int ncell = grid_.total();
     if (int(ghost_start.extent(0)) != ncell + 1)
@@ -429,14 +513,17 @@ class SlabExchange {
 
   const Communicator& comm_;
   Grid grid_;
+  int axis_;  // of the slabs: 0 x, 1 y
   SlabDecomposition slabs_;
   SlabBalance balance_ = SlabBalance::equal;
   double work_seconds_ = 0, work_particle_steps_ = 0;  // since the last rebalance check
   int rebuilds_since_check_ = 0;
   HaloStats stats_;
   int lower_ = Communicator::kNone, upper_ = Communicator::kNone;
-  std::pair<int, int> send_down_{0, 0}, send_up_{0, 0};  // storage ranges of the boundary rows
-  bool below_first_ = true;
+  // The storage ranges of the boundary rows, and the ghost block's runs (merged_by_cell),
+  // as the last rebuild found them.
+  std::vector<std::pair<int, int>> send_down_, send_up_;
+  std::vector<GhostRun> merge_;
   int ghosts_ = 0;
   int from_lower_ = 0, from_upper_ = 0;  // ghosts from each neighbour at the last rebuild
 };

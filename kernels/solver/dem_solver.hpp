@@ -12,6 +12,8 @@
 #include <Kokkos_Core.hpp>
 #include <algorithm>
 #include <chrono>
+#include <cstring>
+#include <numeric>
 #include <optional>
 #include <stdexcept>
 
@@ -65,7 +67,7 @@ class DemSolver final : public Solver {
     integrator_.dt = Real(setup.dt);
     for (int d = 0; d < Dim; ++d) integrator_.gravity[d] = Real(setup.gravity[d]);
     p_.allocate(int(std::max<std::size_t>(capacity, 1)));
-    if (comm.size() > 1) slabs_.emplace(comm, grid_, setup.box);
+    if (comm.size() > 1) slabs_.emplace(comm, grid_, setup.box, int(Decomposition{}.axis));
   }
 
   // Several processes: each keeps the particles of its slab (every rank is given all).
@@ -227,8 +229,14 @@ class DemSolver final : public Solver {
 
   std::size_t size() const override { return std::size_t(p_.n); }
   long global_size() const override { return comm_.sum(long(p_.n)); }
-  void balance_slabs(SlabBalance balance) override {
-    if (slabs_) slabs_->set_balance(balance);
+  void decompose(const Decomposition& d) override {
+    if (!slabs_) return;
+    if (slabs_->axis() != int(d.axis)) {
+      if (p_.n > 0 || builds_ > 0)
+        throw std::logic_error("the slab axis is chosen before any particle is placed");
+      slabs_.emplace(comm_, grid_, setup_.box, int(d.axis));
+    }
+    slabs_->set_balance(d.balance);
   }
   HaloStats halo_stats() const override {
     if (!slabs_) return HaloStats{};
@@ -236,11 +244,14 @@ class DemSolver final : public Solver {
     h.sync_seconds = sync_seconds_;
     return h;
   }
+  // Rank by rank, each rank's particles are in cell order (of their reference positions,
+  // the last rebuild's sort); merged by cell they are in one process's order.
   HostParticles gathered_particles() const override {
     if (!slabs_) return particles();
     HostParticles all;
     append_particles(comm_.gather(pack_particles(particles()), 0), all);
-    return all;
+    const std::vector<int> cells = gathered_values(reference_cells());
+    return comm_.is_root() ? select_particles(all, in_cell_order(cells)) : all;
   }
   long steps_done() const override { return steps_; }
   long list_builds() const override { return builds_; }
@@ -347,10 +358,10 @@ class DemSolver final : public Solver {
       profile_sums_.from_host(mine ? profile : std::vector<double>(profile.size(), 0.0));
   }
 
-  // Several processes: the whole state on rank 0, every rank's particles in rank order,
-  // which is the global cell order (slabs are ranges of y-major cells), with the list one
-  // process would hold, built from the reference positions as its last rebuild did; the
-  // other ranks get the scalars only. The result is the one-process state, bit for bit.
+  // Several processes: the whole state on rank 0, every rank's particles merged into the
+  // global cell order (of the reference positions, as gathered_particles), with the list
+  // one process would hold, built from the reference positions as its last rebuild did;
+  // the other ranks get the scalars only. The result is the one-process state, bit for bit.
   SolverState export_state() const override {
     SolverState s;
     s.dim = Dim;
@@ -368,7 +379,9 @@ class DemSolver final : public Solver {
     }
     SolverState all = select_particles(s, {});
     append_particles(comm_.gather(pack_particles(s), 0), all);
+    const std::vector<int> cells = gathered_values(reference_cells());
     if (!comm_.is_root()) return all;
+    all = select_particles(all, in_cell_order(cells));
     state_io::ReferenceLists lists = state_io::lists_from_reference<Dim, Real, ExecSpace>(
         all, grid_, box_, table_.radius, skin_);
     for (std::size_t k = 0; k < lists.order.size(); ++k)
@@ -408,7 +421,8 @@ class DemSolver final : public Solver {
   void import_own_part(const SolverState& s) {
     std::vector<int> rows;
     for (std::size_t i = 0; i < s.size(); ++i) {
-      if (slabs_->owns(Position(s.reference_position[i * Dim + 1]))) rows.push_back(int(i));
+      const Position along = Position(s.reference_position[i * Dim + std::size_t(slabs_->axis())]);
+      if (slabs_->owns(along)) rows.push_back(int(i));
     }
     const SolverState own = select_particles(s, rows);
     if (int(own.size()) > p_.capacity()) p_.allocate(int(own.size()) + int(own.size()) / 4);
@@ -441,11 +455,36 @@ class DemSolver final : public Solver {
   HostParticles mine(const HostParticles& all) const {
     HostParticles out;
     for (std::size_t i = 0; i < all.size(); ++i) {
-      if (!slabs_->owns(Position(all.position[i][1]))) continue;
+      if (!slabs_->owns(Position(all.position[i][std::size_t(slabs_->axis())]))) continue;
       out.add(all.position[i], all.velocity[i], all.species[i], all.id[i]);
       if (!all.angular_velocity.empty()) out.angular_velocity.push_back(all.angular_velocity[i]);
     }
     return out;
+  }
+
+  // The cell of each owned particle's reference position: its place in the last sort.
+  std::vector<int> reference_cells() const {
+    auto x_ref = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p_.x_ref);
+    std::vector<int> cells(std::size_t(p_.n));
+    for (int i = 0; i < p_.n; ++i) cells[std::size_t(i)] = grid_.cell_of(x_ref, i);
+    return cells;
+  }
+  // Every rank's values on rank 0, in rank order (empty elsewhere).
+  std::vector<int> gathered_values(const std::vector<int>& mine) const {
+    const char* bytes = reinterpret_cast<const char*>(mine.data());
+    const std::vector<char> all = comm_.gather({bytes, bytes + mine.size() * sizeof(int)}, 0);
+    std::vector<int> out(all.size() / sizeof(int));
+    if (!out.empty()) std::memcpy(out.data(), all.data(), out.size() * sizeof(int));
+    return out;
+  }
+  // The rows by increasing cell, rows of one cell in their given order: rank by rank,
+  // each in its own cell order, merge into the global cell order (a cell has one owner).
+  static std::vector<int> in_cell_order(const std::vector<int>& cells) {
+    std::vector<int> rows(cells.size());
+    std::iota(rows.begin(), rows.end(), 0);
+    std::stable_sort(rows.begin(), rows.end(),
+                     [&](int a, int b) { return cells[std::size_t(a)] < cells[std::size_t(b)]; });
+    return rows;
   }
 
   // Several processes: this rank's compute time in advance() (halo and waits excluded),

@@ -4,11 +4,12 @@
 # Usage: mpi_run.sh MPIEXEC GRANSHOCK SCENE WORK MODE [RANKS]
 #   reference   the one-process runs, into WORK/one and WORK/one_big (a 60 d obstacle):
 #               the fixture of the others
-#   ranks N [T] the run on N processes of T threads (default 1): bitwise the same state
-#               (compare_runs.py)
-#   balanced N BY  the large obstacle with --balance BY (particles, work): bitwise, and
-#               (particles) the cuts moved
-#   resume      stopped on 2 processes half way, resumed on 3: the same as one process
+#   ranks N [T] [AXIS]  the run on N processes of T threads (default 1), slabs along AXIS
+#               (--slabs, default y): bitwise the same state (compare_runs.py)
+#   balanced N BY [AXIS]  the large obstacle with --balance BY (particles, work): bitwise,
+#               and (particles) the cuts moved
+#   resume [A B]  stopped on 2 processes half way (slabs along A, default y), resumed on 3
+#               (along B, default A): the same as one process
 #   errors      bad input said once, by one rank, exit code 2, no rank left waiting; other
 #               commands than `run` refused under mpirun
 set -u
@@ -31,21 +32,24 @@ reference)
   ;;
 ranks)
   # Hybrid: THREADS OpenMP threads in each process (default 1).
-  ranks=$6 threads=${7:-1}
-  out=$work/ranks${ranks}x$threads
+  ranks=$6 threads=${7:-1} axis=${8:-y}
+  out=$work/ranks${ranks}x${threads}_$axis
   rm -rf "$out"
-  OMP_NUM_THREADS=$threads mpi "$ranks" "$granshock" run "$scene" "${short[@]}" --out "$out" ||
-    fail "the run on $ranks processes x $threads threads"
-  compare "$out" "$ranks" || fail "$ranks processes x $threads threads differ from one"
+  OMP_NUM_THREADS=$threads mpi "$ranks" "$granshock" run "$scene" "${short[@]}" --out "$out" \
+    --slabs "$axis" || fail "the run on $ranks processes x $threads threads along $axis"
+  compare "$out" "$ranks" || fail "$ranks processes x $threads threads along $axis differ from one"
+  /usr/bin/python3 -c 'import json, sys
+sys.exit(0 if json.load(open(sys.argv[1]))["processes"]["slabs_along"] == sys.argv[2] else 1)' \
+    "$out/summary.json" "$axis" || fail "summary.json does not say slabs along $axis"
   ;;
 balanced)
   # Slab boundaries moved by particle count or measured work: the same bits, and (by
   # particle count, which does not depend on timings) the cuts did move.
-  ranks=$6 by=$7
-  out=$work/balanced_$by$ranks
+  ranks=$6 by=$7 axis=${8:-y}
+  out=$work/balanced_$by${ranks}_$axis
   rm -rf "$out"
   mpi "$ranks" "$granshock" run "$scene" "${short[@]}" "${big[@]}" --out "$out" \
-    --balance "$by" || fail "the run balanced by $by on $ranks processes"
+    --balance "$by" --slabs "$axis" || fail "the run balanced by $by on $ranks processes"
   compare "$out" "$ranks" "$work/one_big" || fail "slabs balanced by $by differ from one process"
   /usr/bin/python3 -c 'import json, sys
 p = json.load(open(sys.argv[1]))["processes"]
@@ -54,13 +58,17 @@ sys.exit(0 if p["balance"] == sys.argv[2] and (p["rebalances"] > 0 or sys.argv[2
     "$out/summary.json" "$by" || fail "the slab boundaries never moved"
   ;;
 resume)
-  rm -rf "$work/resumed"
-  mpi 2 "$granshock" run "$scene" "${short[@]}" --out "$work/resumed" --stop-after-steps 50000 \
-    2>"$work/stop.err" || { cat "$work/stop.err"; fail "the first half on 2 processes"; }
+  # A checkpoint holds the one-process state, whatever slabs wrote it.
+  first=${6:-y} second=${7:-${6:-y}}
+  out=$work/resumed_${first}_$second
+  rm -rf "$out"
+  mpi 2 "$granshock" run "$scene" "${short[@]}" --out "$out" --stop-after-steps 50000 \
+    --slabs "$first" 2>"$work/stop.err" ||
+    { cat "$work/stop.err"; fail "the first half on 2 processes"; }
   grep -q "stopped after 50000 steps" "$work/stop.err" || fail "no stop message"
-  mpi 3 "$granshock" run "$scene" "${short[@]}" --out "$work/resumed" --resume ||
+  mpi 3 "$granshock" run "$scene" "${short[@]}" --out "$out" --resume --slabs "$second" ||
     fail "the resume on 3 processes"
-  compare "$work/resumed" 3 || fail "2 then 3 processes differ from one"
+  compare "$out" 3 || fail "2 (along $first) then 3 processes (along $second) differ from one"
   ;;
 errors)
   dir=$(mktemp -d)

@@ -1,11 +1,14 @@
 // The solver on several processes (kernels/particles/slab_exchange.hpp), under mpirun: a
 // dense periodic gas, advanced on slabs with migration, ghosts and the halo, against the
 // same gas advanced by one process on every rank. Each rank compares the particles it owns
-// with the one-process run's particles of the same id, bitwise (docs/parallel.md).
+// with the one-process run's particles of the same id, bitwise (docs/parallel.md). Every
+// case runs on slabs along y and along x (where the ghost rows interleave by cell).
 #include <gtest/gtest.h>
 
 #include <cstring>
 #include <map>
+#include <memory>
+#include <string>
 
 #include "homogeneous_gas.hpp"
 #include "mpi_communicator.hpp"
@@ -19,9 +22,27 @@ bool same_bits(double a, double b) {
   return std::memcmp(&a, &b, sizeof a) == 0;
 }
 
+class DecomposedSolver : public ::testing::TestWithParam<SlabAxis> {
+ protected:
+  // A solver on slabs along the test's axis (one process: the plain solver).
+  std::unique_ptr<Solver> on_slabs(const SolverSetup& setup, std::size_t capacity,
+                                   const Communicator& comm) const {
+    auto solver = make_solver(setup, capacity, Backend::default_space, &comm);
+    Decomposition d;
+    d.axis = GetParam();
+    solver->decompose(d);
+    return solver;
+  }
+};
+
 }  // namespace
 
-TEST(DecomposedSolver, DenseGasIsBitwiseTheSameAsOneProcess) {
+INSTANTIATE_TEST_SUITE_P(SlabsAlong, DecomposedSolver, ::testing::Values(SlabAxis::y, SlabAxis::x),
+                         [](const ::testing::TestParamInfo<SlabAxis>& axis) {
+                           return std::string(axis.param == SlabAxis::x ? "x" : "y");
+                         });
+
+TEST_P(DecomposedSolver, DenseGasIsBitwiseTheSameAsOneProcess) {
   const MpiCommunicator comm;
   SolverSetup setup = paper_mixture(0.5);
   // phi = 0.3 at 2 m/s: about 1.3 contacts per particle, and particles cross slab faces
@@ -32,7 +53,7 @@ TEST(DecomposedSolver, DenseGasIsBitwiseTheSameAsOneProcess) {
   const HostParticles gas = make_homogeneous_gas(setup, spec);
 
   const auto one = make_solver(setup, gas.size());  // one process, on this rank
-  const auto slabs = make_solver(setup, gas.size(), Backend::default_space, &comm);
+  const auto slabs = on_slabs(setup, gas.size(), comm);
   one->set_particles(gas);
   slabs->set_particles(gas);
   EXPECT_EQ(comm.sum(long(slabs->size())), long(gas.size()));
@@ -57,10 +78,10 @@ TEST(DecomposedSolver, DenseGasIsBitwiseTheSameAsOneProcess) {
   EXPECT_EQ(comm.sum(differing), 0L) << "components differing from one process (all ranks)";
 }
 
-// An open y axis with the gas in its lower half only: the upper slabs start empty (as the
-// wake of the obstacle nearly is), particles leave through the open faces and are deleted
-// by the rank that owns them, and the rest is bitwise as in one process.
-TEST(DecomposedSolver, OpenAxisWithEmptySlabsIsBitwiseTheSameAsOneProcess) {
+// An open y axis with the gas in its lower half only: the upper slabs along y start empty
+// (as the wake of the obstacle nearly is), particles leave through the open faces and are
+// deleted by the rank that owns them, and the rest is bitwise as in one process.
+TEST_P(DecomposedSolver, OpenAxisWithEmptySlabsIsBitwiseTheSameAsOneProcess) {
   const MpiCommunicator comm;
   SolverSetup setup = paper_mixture(0.5);
   const GasSpec spec{1000, 0.3, 2.0, 5};
@@ -73,10 +94,10 @@ TEST(DecomposedSolver, OpenAxisWithEmptySlabsIsBitwiseTheSameAsOneProcess) {
   setup.dt = 1e-7;
 
   const auto one = make_solver(setup, gas.size());
-  const auto slabs = make_solver(setup, gas.size(), Backend::default_space, &comm);
+  const auto slabs = on_slabs(setup, gas.size(), comm);
   one->set_particles(gas);
   slabs->set_particles(gas);
-  if (comm.size() >= 3) {
+  if (GetParam() == SlabAxis::y && comm.size() >= 3) {
     // The top slab holds nothing at the start.
     EXPECT_EQ(comm.sum(comm.rank() == comm.size() - 1 ? long(slabs->size()) : 0L), 0L);
   }
@@ -107,31 +128,38 @@ TEST(DecomposedSolver, OpenAxisWithEmptySlabsIsBitwiseTheSameAsOneProcess) {
 
 namespace {
 
-// Every array of two states, bit for bit (the scalars too).
-long differing_entries(const SolverState& a, const SolverState& b) {
-  long differing = 0;
-  const auto count = [&](const auto& x, const auto& y) {
-    if (x.size() != y.size()) return void(differing += 1000000);
+// The arrays of two states that differ bit for bit (the scalars too), by name, with the
+// count of differing entries: empty when they are the same.
+std::string differing_entries(const SolverState& a, const SolverState& b) {
+  std::string out;
+  const auto count = [&](const char* name, const auto& x, const auto& y) {
+    if (x.size() != y.size()) {
+      out += std::string(name) + ": " + std::to_string(x.size()) + " entries against " +
+             std::to_string(y.size()) + "; ";
+      return;
+    }
+    long differing = 0;
     for (std::size_t k = 0; k < x.size(); ++k)
       if (std::memcmp(&x[k], &y[k], sizeof x[k]) != 0) ++differing;
+    if (differing > 0) out += std::string(name) + ": " + std::to_string(differing) + " differ; ";
   };
-  count(a.position, b.position);
-  count(a.velocity, b.velocity);
-  count(a.force, b.force);
-  count(a.angular_velocity, b.angular_velocity);
-  count(a.torque, b.torque);
-  count(a.species, b.species);
-  count(a.id, b.id);
-  count(a.history_partner, b.history_partner);
-  count(a.history_spring, b.history_spring);
-  count(a.history_obstacle_spring, b.history_obstacle_spring);
-  count(a.reference_position, b.reference_position);
-  count(a.neighbour_offsets, b.neighbour_offsets);
-  count(a.neighbours, b.neighbours);
+  count("position", a.position, b.position);
+  count("velocity", a.velocity, b.velocity);
+  count("force", a.force, b.force);
+  count("angular_velocity", a.angular_velocity, b.angular_velocity);
+  count("torque", a.torque, b.torque);
+  count("species", a.species, b.species);
+  count("id", a.id, b.id);
+  count("history_partner", a.history_partner, b.history_partner);
+  count("history_spring", a.history_spring, b.history_spring);
+  count("history_obstacle_spring", a.history_obstacle_spring, b.history_obstacle_spring);
+  count("reference_position", a.reference_position, b.reference_position);
+  count("neighbour_offsets", a.neighbour_offsets, b.neighbour_offsets);
+  count("neighbours", a.neighbours, b.neighbours);
   if (a.step != b.step || a.next_id != b.next_id || a.list_builds != b.list_builds ||
       a.removed_low != b.removed_low || a.removed_high != b.removed_high)
-    ++differing;
-  return differing;
+    out += "scalars; ";
+  return out;
 }
 
 InsertionRequest inflow_event(const SolverSetup& setup, std::uint64_t event, long before) {
@@ -154,7 +182,7 @@ InsertionRequest inflow_event(const SolverSetup& setup, std::uint64_t event, lon
 // Insertion events whose strip spans several slabs, with friction (contact histories),
 // then the checkpoint state: rank 0's gathered state is the one-process state bit for bit
 // (order, lists and all), and a solver on slabs that imports it goes on as one process.
-TEST(DecomposedSolver, InsertionAndCheckpointStateAreThoseOfOneProcess) {
+TEST_P(DecomposedSolver, InsertionAndCheckpointStateAreThoseOfOneProcess) {
   const MpiCommunicator comm;
   SolverSetup setup = paper_mixture(0.5);
   setup.contacts = ContactSettings::uniform(2, 0.5, 0.5);
@@ -167,7 +195,7 @@ TEST(DecomposedSolver, InsertionAndCheckpointStateAreThoseOfOneProcess) {
   setup.dt = 1e-7;
 
   const auto one = make_solver(setup, 2000);
-  const auto slabs = make_solver(setup, 2000, Backend::default_space, &comm);
+  const auto slabs = on_slabs(setup, 2000, comm);
   one->set_particles(gas);
   slabs->set_particles(gas);
   long inserted = 0;
@@ -189,19 +217,19 @@ TEST(DecomposedSolver, InsertionAndCheckpointStateAreThoseOfOneProcess) {
   const SolverState gathered = slabs->export_state();
   if (comm.rank() == 0) {
     EXPECT_EQ(gathered.size(), state.size());
-    EXPECT_EQ(differing_entries(gathered, state), 0) << "rank 0's gathered state";
+    EXPECT_EQ(differing_entries(gathered, state), "") << "rank 0's gathered state";
   } else {
     EXPECT_EQ(gathered.size(), 0U) << "only rank 0 gathers";
   }
 
-  const auto resumed = make_solver(setup, 2000, Backend::default_space, &comm);
+  const auto resumed = on_slabs(setup, 2000, comm);
   resumed->import_state(state);
   EXPECT_EQ(resumed->global_size(), long(state.size()));
   one->advance(3000);
   resumed->advance(3000);
   const SolverState after = one->export_state(), after_resumed = resumed->export_state();
   if (comm.rank() == 0) {
-    EXPECT_EQ(differing_entries(after_resumed, after), 0);
+    EXPECT_EQ(differing_entries(after_resumed, after), "");
   }
   const HostParticles all = resumed->gathered_particles();
   if (comm.rank() == 0) {

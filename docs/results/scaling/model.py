@@ -1,4 +1,5 @@
-"""The cost model of docs/scaling.md: time per step of one rank of N, slabs along y.
+"""The cost model of docs/scaling.md: time per step of one rank of N, slabs (along x or y:
+the scenes here are square, so both give the same terms).
 
     T(N) = c_p * n / N * (1 + imbalance)              compute on the rank's particles
          + a_h + b_h * g                                halo: per exchange + per ghost
@@ -6,6 +7,11 @@
          + (c_sort + c_x) * ncell / k                   the global cell grid, per rebuild
     g = 2 * (particles per cell row)                    two boundary rows, any N
     E(N) = c_p * n / (N * T(N))                         parallel efficiency
+
+Two layouts that are not built are projected beside it, to say whether they would pay: a
+cell grid of the rank's own part and its halo only (ncell shrinks with N), and a 2-D
+process grid of px x py ranks (g = 2 rows of the subdomain's width + 2 columns of its
+height + 4 corner cells; eight neighbours, so six more messages per exchange).
 
 Constants measured on this machine (2 cores, Open MPI's shared memory) are read from
 measured.json; the network's latency and bandwidth, which this machine cannot measure,
@@ -23,6 +29,9 @@ M = json.load(open(os.path.join(HERE, "measured.json")))
 # over 10 GB/s, and 2 us per level of a tree allreduce. Not measured here.
 NETWORK = {"round_trip_s": 3e-6, "bytes_per_s": 10e9, "allreduce_level_s": 2e-6}
 BYTES_PER_GHOST_STEP = 32  # x and v, 2 doubles each (frictionless; +8 with spin)
+# Assumed: each message beyond a slab's two costs 0.5 us more (posting, matching), so a
+# 2-D grid's exchange with eight neighbours costs 3 us more than a slab's. Not measured.
+EXTRA_MESSAGE_S = 0.5e-6
 
 
 def scene(width_d, length_d, phi, shocked_factor=2.0):
@@ -34,29 +43,55 @@ def scene(width_d, length_d, phi, shocked_factor=2.0):
     return {
         "n": per_area * width_d * length_d,
         "rows": rows,
+        "cols": cols,
         "ncell": rows * cols,
         "per_row": per_area * width_d * cell * shocked_factor,
+        "per_cell": per_area * cell * cell * shocked_factor,
     }
 
 
-def step_time(s, ranks, network):
+def process_grid(ranks):
+    """The most nearly square px x py = ranks."""
+    px = max(d for d in range(1, int(math.isqrt(ranks)) + 1) if ranks % d == 0)
+    return px, ranks // px
+
+
+def fits(s, ranks, layout):
+    """Whether every subdomain is at least one cell row (and column) wide."""
+    if layout == "grid2d":
+        px, py = process_grid(ranks)
+        return px <= s["cols"] and py <= s["rows"]
+    return ranks <= s["rows"]
+
+
+def step_time(s, ranks, network, layout="slabs", local_grid=False):
     c = M["constants"]
-    g = 2 * s["per_row"]
+    extra_messages = 0
+    if layout == "grid2d":
+        px, py = process_grid(ranks)
+        g = (2 * s["per_cell"] * (s["cols"] / px) + 2 * s["per_cell"] * (s["rows"] / py)
+             + 4 * s["per_cell"])
+        own_cells = (s["cols"] / px + 2) * (s["rows"] / py + 2)
+        extra_messages = 6
+    else:
+        g = 2 * s["per_row"]
+        own_cells = s["cols"] * (s["rows"] / ranks + 2)
     compute = c["compute_s_per_particle_step"] * s["n"] / ranks * (1 + c["imbalance"])
     if network:
-        halo = (NETWORK["round_trip_s"] + c["halo_pack_s_per_ghost"] * g
-                + g * BYTES_PER_GHOST_STEP / NETWORK["bytes_per_s"])
+        halo = (NETWORK["round_trip_s"] + extra_messages * EXTRA_MESSAGE_S
+                + c["halo_pack_s_per_ghost"] * g + g * BYTES_PER_GHOST_STEP / NETWORK["bytes_per_s"])
         reduce = NETWORK["allreduce_level_s"] * math.ceil(math.log2(max(ranks, 2)))
     else:
         halo = c["halo_fixed_s"] + c["halo_s_per_ghost"] * g
         reduce = c["allreduce_s"]
-    grid = ((c["cell_sort_s_per_cell"] + c["exchange_s_per_cell"]) * s["ncell"]
+    ncell = own_cells if local_grid else s["ncell"]
+    grid = ((c["cell_sort_s_per_cell"] + c["exchange_s_per_cell"]) * ncell
             / c["steps_per_rebuild"])
     return compute, halo, reduce, grid
 
 
-def efficiency(s, ranks, network=True):
-    parts = step_time(s, ranks, network)
+def efficiency(s, ranks, network=True, layout="slabs", local_grid=False):
+    parts = step_time(s, ranks, network, layout, local_grid)
     ideal = M["constants"]["compute_s_per_particle_step"] * s["n"] / ranks
     return ideal / sum(parts), parts
 
@@ -103,11 +138,19 @@ def main():
             e, parts = efficiency(s, r)
             print(f"- {name}, {r} ranks: " + ", ".join(f"{p * 1e6:.1f}" for p in parts)
                   + f" (efficiency {e:.0%})")
-    print("\nThe same without the global grid scan (a local cell grid per rank, not built):\n")
+    print("\nDoes another layout pay? Efficiency by layout (built: slabs with the global grid; "
+          "the others are projections of layouts not built):\n")
+    layouts = [("slabs, global cell grid (built)", "slabs", False),
+               ("slabs, local cell grid", "slabs", True),
+               ("2-D process grid, global cell grid", "grid2d", False),
+               ("2-D process grid, local cell grid", "grid2d", True)]
+    print("| scene | layout | " + " | ".join(f"{r} ranks" for r in ranks) + " |")
+    print("|---|---|" + "---|" * len(ranks))
     for name, s in cases:
-        s = dict(s, ncell=0)
-        print(f"- {name}: " + ", ".join(
-            f"{r} ranks {efficiency(s, r)[0]:.0%}" for r in ranks if r <= s["rows"]))
+        for label, layout, local in layouts:
+            cells = [f"{efficiency(s, r, True, layout, local)[0]:.0%}" if fits(s, r, layout)
+                     else "-" for r in ranks]
+            print(f"| {name} | {label} | " + " | ".join(cells) + " |")
 
 
 if __name__ == "__main__":
