@@ -124,7 +124,8 @@ class SlabExchange {
   using Mem = typename ExecSpace::memory_space;
   using Grid = CellGrid<Dim, Position>;
 
-  // Nothing here is 2-D but the solvers built (docs/design.md, "Dimension").
+  // The exchange takes any axis of the flat cell index, but only 2-D solvers are built
+  // (docs/design.md, "Dimension"), so only 2-D is compiled and tested.
   static_assert(Dim == 2, "slabs of 2-D cell grids only: no 3-D solver is built");
 
   // Equal slabs of the grid's rows along `axis`; two rows at least where that axis is

@@ -1,0 +1,214 @@
+// granshock_bench_parallel_output: is gathering a snapshot to rank 0 faster than writing it
+// collectively with parallel HDF5 at granshock's sizes (docs/scaling.md, "Output")?
+//
+// Under `mpirun -np N`, a snapshot of P particles split evenly over the ranks (position
+// and velocity, 3 doubles each; species and id, one int each: what run.h5 stores per
+// particle) is written to a new HDF5 file, REPEATS times each way, the two interleaved:
+//   gathered:   MPI_Gatherv of each array to rank 0, which writes the file alone (what
+//               granshock does);
+//   collective: every rank opens the file through MPI-IO (H5Pset_fapl_mpio) and writes
+//               its rows of each dataset in one collective transfer.
+// A time is from a barrier before the first call to a barrier after the file is closed,
+// file creation included. Prints one Markdown row per particle count: the medians and
+// their ratio (collective / gathered: above 1, gathering is faster).
+//
+// Both write contiguous datasets of a fresh file; run.h5 appends to chunked datasets, which
+// both would do alike. Usage:
+//   mpirun -np N granshock_bench_parallel_output [--particles 31600,3200000] [--repeats 7]
+//     [--dir DIR]
+#include <hdf5.h>
+#include <mpi.h>
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "hdf5_handle.hpp"
+
+namespace {
+
+using granshock::h5::checked;
+using granshock::h5::Handle;
+
+// This rank's share of a snapshot: rows [first, first + count) of P.
+struct Share {
+  long total = 0, first = 0, count = 0;
+  std::vector<double> position, velocity;  // count x 3
+  std::vector<int> species, id;
+};
+
+Share make_share(long total, int rank, int ranks) {
+  Share s;
+  s.total = total;
+  s.first = total * rank / ranks;
+  s.count = total * (rank + 1) / ranks - s.first;
+  for (long i = 0; i < s.count; ++i) {
+    const double x = double(s.first + i);
+    s.position.insert(s.position.end(), {x * 1e-3, x * 2e-3, 0.0});
+    s.velocity.insert(s.velocity.end(), {1.0 / (1 + x), -x * 1e-6, 0.0});
+    s.species.push_back(int((s.first + i) % 2));
+    s.id.push_back(int(s.first + i));
+  }
+  return s;
+}
+
+void require(bool ok, const std::string& what) {
+  if (!ok) throw std::runtime_error(what + " failed");
+}
+
+// A dataset of total x width values of `type` in `file`.
+Handle create_dataset(hid_t file, const char* name, hid_t type, long total, int width) {
+  const std::array<hsize_t, 2> dims{hsize_t(total), hsize_t(width)};
+  const Handle space = checked(H5Screate_simple(width == 1 ? 1 : 2, dims.data(), nullptr), H5Sclose,
+                               "H5Screate_simple");
+  return checked(H5Dcreate2(file, name, type, space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                 H5Dclose, std::string("H5Dcreate2 ") + name);
+}
+
+// Rank 0 gathers every array and writes the file alone; `gather_seconds` receives the
+// gathers' share (rank 0's clock).
+void write_gathered(const Share& s, const std::string& path, int rank, int ranks,
+                    double& gather_seconds) {
+  const double start = MPI_Wtime();
+  std::vector<int> counts(static_cast<std::size_t>(ranks), 0);
+  const int mine = int(s.count);
+  MPI_Gather(&mine, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
+  const auto gather = [&](const auto& values, MPI_Datatype type, int width) {
+    std::vector<std::decay_t<decltype(values[0])>> all(rank == 0 ? std::size_t(s.total * width)
+                                                                 : 0);
+    std::vector<int> c(counts), o(counts.size(), 0);
+    int at = 0;
+    for (int r = 0; r < ranks; ++r) {
+      c[std::size_t(r)] = counts[std::size_t(r)] * width;
+      o[std::size_t(r)] = at;
+      at += c[std::size_t(r)];
+    }
+    MPI_Gatherv(values.data(), mine * width, type, all.data(), c.data(), o.data(), type, 0,
+                MPI_COMM_WORLD);
+    return all;
+  };
+  const std::vector<double> position = gather(s.position, MPI_DOUBLE, 3);
+  const std::vector<double> velocity = gather(s.velocity, MPI_DOUBLE, 3);
+  const std::vector<int> species = gather(s.species, MPI_INT, 1);
+  const std::vector<int> id = gather(s.id, MPI_INT, 1);
+  gather_seconds = MPI_Wtime() - start;
+  if (rank != 0) return;
+  const Handle file = checked(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT),
+                              H5Fclose, "H5Fcreate");
+  const auto write = [&](const char* name, hid_t type, int width, const void* data) {
+    const Handle d = create_dataset(file.get(), name, type, s.total, width);
+    require(H5Dwrite(d.get(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) >= 0, "H5Dwrite");
+  };
+  write("position", H5T_NATIVE_DOUBLE, 3, position.data());
+  write("velocity", H5T_NATIVE_DOUBLE, 3, velocity.data());
+  write("species", H5T_NATIVE_INT, 1, species.data());
+  write("id", H5T_NATIVE_INT, 1, id.data());
+}
+
+// Every rank writes its rows through MPI-IO, collectively.
+void write_collective(const Share& s, const std::string& path) {
+  const Handle access = checked(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "H5Pcreate");
+  require(H5Pset_fapl_mpio(access.get(), MPI_COMM_WORLD, MPI_INFO_NULL) >= 0, "H5Pset_fapl_mpio");
+  const Handle file = checked(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get()),
+                              H5Fclose, "H5Fcreate (MPI-IO)");
+  const Handle transfer = checked(H5Pcreate(H5P_DATASET_XFER), H5Pclose, "H5Pcreate");
+  require(H5Pset_dxpl_mpio(transfer.get(), H5FD_MPIO_COLLECTIVE) >= 0, "H5Pset_dxpl_mpio");
+  const auto write = [&](const char* name, hid_t type, int width, const void* data) {
+    const Handle d = create_dataset(file.get(), name, type, s.total, width);
+    const Handle in_file = checked(H5Dget_space(d.get()), H5Sclose, "H5Dget_space");
+    const std::array<hsize_t, 2> start{hsize_t(s.first), 0},
+        count{hsize_t(s.count), hsize_t(width)};
+    require(H5Sselect_hyperslab(in_file.get(), H5S_SELECT_SET, start.data(), nullptr, count.data(),
+                                nullptr) >= 0,
+            "H5Sselect_hyperslab");
+    const Handle in_memory = checked(H5Screate_simple(width == 1 ? 1 : 2, count.data(), nullptr),
+                                     H5Sclose, "H5Screate_simple");
+    require(H5Dwrite(d.get(), type, in_memory.get(), in_file.get(), transfer.get(), data) >= 0,
+            "H5Dwrite (collective)");
+  };
+  write("position", H5T_NATIVE_DOUBLE, 3, s.position.data());
+  write("velocity", H5T_NATIVE_DOUBLE, 3, s.velocity.data());
+  write("species", H5T_NATIVE_INT, 1, s.species.data());
+  write("id", H5T_NATIVE_INT, 1, s.id.data());
+}
+
+template <class Write>
+double timed(Write&& write) {
+  MPI_Barrier(MPI_COMM_WORLD);
+  const double start = MPI_Wtime();
+  write();
+  MPI_Barrier(MPI_COMM_WORLD);
+  return MPI_Wtime() - start;
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  MPI_Init(&argc, &argv);
+  int rank = 0, ranks = 1;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+  std::vector<long> particles{31600, 3200000};
+  int repeats = 7;
+  std::string dir = std::filesystem::temp_directory_path().string();
+  CLI::App app{"parallel HDF5 against gathering to rank 0, for one snapshot"};
+  app.add_option("--particles", particles, "particle counts")->delimiter(',');
+  app.add_option("--repeats", repeats, "writes of each kind per count (interleaved)")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--dir", dir, "where the files go (removed after each write)")
+      ->check(CLI::ExistingDirectory);
+  int status = 0;
+  try {
+    app.parse(argc, argv);
+    granshock::h5::silence_error_printing();
+    // One name for every rank: rank 0's process id.
+    long pid = long(getpid());
+    MPI_Bcast(&pid, 1, MPI_LONG, 0, MPI_COMM_WORLD);
+    const std::string path = dir + "/granshock_output_bench_" + std::to_string(pid) + ".h5";
+    if (rank == 0) {
+      std::printf("%d processes, %d repeats each (interleaved), files in %s; medians\n\n", ranks,
+                  repeats, dir.c_str());
+      std::printf(
+          "| particles | MB | gathered to rank 0 (s) | of which the gathers (s) | "
+          "collective parallel HDF5 (s) | collective / gathered |\n"
+          "|---|---|---|---|---|---|\n");
+    }
+    for (const long total : particles) {
+      const Share share = make_share(total, rank, ranks);
+      std::vector<double> gathered, gathers, collective;
+      for (int r = 0; r < repeats; ++r) {
+        double gather_seconds = 0;
+        gathered.push_back(
+            timed([&] { write_gathered(share, path, rank, ranks, gather_seconds); }));
+        gathers.push_back(gather_seconds);
+        if (rank == 0) std::filesystem::remove(path);
+        collective.push_back(timed([&] { write_collective(share, path); }));
+        MPI_Barrier(MPI_COMM_WORLD);
+        if (rank == 0) std::filesystem::remove(path);
+      }
+      if (rank == 0)
+        std::printf("| %ld | %.1f | %.4f | %.4f | %.4f | %.2f |\n", total,
+                    double(total) * (6 * sizeof(double) + 2 * sizeof(int)) / 1e6, median(gathered),
+                    median(gathers), median(collective), median(collective) / median(gathered));
+    }
+  } catch (const CLI::ParseError& e) {
+    status = rank == 0 ? app.exit(e) : 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "granshock_bench_parallel_output (rank %d): %s\n", rank, e.what());
+    MPI_Abort(MPI_COMM_WORLD, 1);
+  }
+  MPI_Finalize();
+  return status;
+}
