@@ -37,6 +37,7 @@
 #include "neighbours/cell_grid.hpp"
 #include "slab_decomposition.hpp"
 #include "solver.hpp"  // HaloStats
+#include "user_error.hpp"
 
 namespace granshock {
 
@@ -134,13 +135,28 @@ class SlabExchange {
       : comm_(comm),
         grid_(grid),
         axis_(axis),
-        slabs_(SlabDecomposition::equal(comm.size(), box.lo[axis], box.length(axis),
-                                        grid.ncell[axis], box.periodic[axis] ? 2 : 1,
-                                        box.periodic[axis])) {
+        slabs_(equal_slabs(comm.size(), grid, box, axis)) {
     const int r = comm.rank(), n = comm.size();
     const bool periodic = box.periodic[axis];
     lower_ = r > 0 ? r - 1 : (periodic ? n - 1 : Communicator::kNone);
     upper_ = r + 1 < n ? r + 1 : (periodic ? 0 : Communicator::kNone);
+  }
+
+  // Equal slabs, or a user error naming the axis when the box is too narrow across it for
+  // the process count.
+  static SlabDecomposition equal_slabs(int ranks, const Grid& grid, const Box& box, int axis) {
+    const int rows = grid.ncell[axis], min_rows = box.periodic[axis] ? 2 : 1;
+    if (long(ranks) * min_rows > rows) {
+      const std::string name = axis == 0 ? "x" : "y", layers = axis == 0 ? "columns" : "rows";
+      throw UserError(std::to_string(ranks) + " MPI processes with slabs along " + name +
+                      " need " + std::to_string(long(ranks) * min_rows) + " cell " + layers +
+                      " (at least " + std::to_string(min_rows) + " per slab" +
+                      (min_rows > 1 ? ", " + name + " being periodic" : std::string()) +
+                      "), and the box has " + std::to_string(rows) + ": run on at most " +
+                      std::to_string(rows / min_rows) + " processes, or slab the other axis");
+    }
+    return SlabDecomposition::equal(ranks, box.lo[axis], box.length(axis), rows, min_rows,
+                                    box.periodic[axis]);
   }
 
   const HaloStats& stats() const { return stats_; }

@@ -10,7 +10,8 @@
 #               and (particles) the cuts moved
 #   resume [A B]  stopped on 2 processes half way (slabs along A, default y), resumed on 3
 #               (along B, default A): the same as one process
-#   errors      bad input said once, by one rank, exit code 2, no rank left waiting; other
+#   errors      bad input (a scene, a directory, a box too narrow for the slabs) said once,
+#               by one rank, exit code 2, no rank left waiting; other
 #               commands than `run` refused under mpirun
 set -u
 mpiexec=$1 granshock=$2 scene=$3 work=$4 mode=$5
@@ -102,6 +103,18 @@ errors)
   [ "$status" -eq 2 ] || fail "a locked directory: exit status $status, not 2"
   [ "$(grep -c "in use by another granshock run" "$dir/err")" -eq 1 ] ||
     fail "a locked directory was not said once"
+  # Slabs along x in a box too narrow across x for 3 processes (4 cell columns, at least 2
+  # per slab through the periodic faces): said once, naming the axis, nothing created.
+  timeout 120 "$mpiexec" --oversubscribe -np 3 "$granshock" run "$scene" "${short[@]}" \
+    --out "$dir/narrow" --slabs x --set 'domain.width="6 d"' --set 'obstacle.diameter="3 d"' \
+    --set 'obstacle.centre=["3 d", "120 d"]' --set 'numerics.bin_size="1 d"' \
+    >"$dir/out" 2>"$dir/err"
+  status=$?
+  cat "$dir/err"
+  [ "$status" -eq 2 ] || fail "a box too narrow for slabs along x: exit status $status, not 2"
+  [ "$(grep -c "with slabs along x need 6 cell columns" "$dir/err")" -eq 1 ] ||
+    fail "a box too narrow for slabs along x was not said once, naming the axis"
+  [ ! -e "$dir/narrow" ] || fail "a run directory was created for a box too narrow"
   # Commands other than run would do their whole job N times: refused, said once.
   timeout 120 "$mpiexec" --oversubscribe -np 2 "$granshock" fields "$dir/taken" \
     >"$dir/out" 2>"$dir/err"
