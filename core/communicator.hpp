@@ -51,16 +51,20 @@ class Communicator {
   bool is_root() const { return rank() == 0; }
 };
 
+// Every rank's `values` on rank 0, concatenated in rank order (empty elsewhere).
+template <class T>
+std::vector<T> gather_to_root(const Communicator& comm, const std::vector<T>& values) {
+  static_assert(std::is_trivially_copyable_v<T>);
+  const char* bytes = reinterpret_cast<const char*>(values.data());
+  const std::vector<char> all = comm.gather({bytes, bytes + values.size() * sizeof(T)}, 0);
+  std::vector<T> out(all.size() / sizeof(T));
+  if (!out.empty()) std::memcpy(static_cast<void*>(out.data()), all.data(), all.size());
+  return out;
+}
 // Every rank's `value` on rank 0, in rank order (empty elsewhere): per-rank reports.
 template <class T>
 std::vector<T> gather_to_root(const Communicator& comm, T value) {
-  static_assert(std::is_trivially_copyable_v<T>);
-  std::vector<char> bytes(sizeof value);
-  std::memcpy(bytes.data(), &value, sizeof value);
-  const std::vector<char> all = comm.gather(bytes, 0);
-  std::vector<T> out(all.size() / sizeof value);
-  std::memcpy(static_cast<void*>(out.data()), all.data(), all.size());
-  return out;
+  return gather_to_root(comm, std::vector<T>{value});
 }
 
 // One process owns everything: every reduction returns its argument.

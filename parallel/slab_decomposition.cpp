@@ -13,39 +13,44 @@ namespace granshock {
 
 namespace {
 
-void check(int ranks, int rows, int min_rows) {
+void check(int ranks, int axis, int rows, int min_rows, bool periodic) {
   if (ranks < 1) throw std::invalid_argument("a decomposition needs at least one rank");
-  if (long(ranks) * min_rows > rows)
-    throw UserError(fmt::format(
-        "{} MPI processes need {} cell rows of slabs at least {} rows wide each, and the box "
-        "has {}: run on at most {} processes",
-        ranks, long(ranks) * min_rows, min_rows, rows, rows / std::max(min_rows, 1)));
+  if (axis != 0 && axis != 1) throw std::invalid_argument("slabs along x (0) or y (1)");
+  if (long(ranks) * min_rows <= rows) return;
+  const char* name = axis == 0 ? "x" : "y";
+  throw UserError(fmt::format(
+      "{} MPI processes with slabs along {} need {} cell {} (at least {} per slab{}), and the "
+      "box has {}: run on at most {} processes, or slab the other axis",
+      ranks, name, long(ranks) * min_rows, axis == 0 ? "columns" : "rows", min_rows,
+      periodic && min_rows > 1 ? fmt::format(", {} being periodic", name) : "", rows,
+      rows / std::max(min_rows, 1)));
 }
 
 }  // namespace
 
-SlabDecomposition::SlabDecomposition(double lo, double length, std::vector<int> first_row,
+SlabDecomposition::SlabDecomposition(int axis, double lo, double length, std::vector<int> first_row,
                                      int min_rows, bool periodic)
-    : lo_(lo),
+    : axis_(axis),
+      lo_(lo),
       length_(length),
       inv_row_width_(first_row.back() / length),
       first_row_(std::move(first_row)),
       min_rows_(min_rows),
       periodic_(periodic) {}
 
-SlabDecomposition SlabDecomposition::equal(int ranks, double lo, double length, int rows,
+SlabDecomposition SlabDecomposition::equal(int ranks, int axis, double lo, double length, int rows,
                                            int min_rows, bool periodic) {
-  check(ranks, rows, min_rows);
+  check(ranks, axis, rows, min_rows, periodic);
   std::vector<int> first(ranks + 1, 0);
   for (int r = 0; r < ranks; ++r) first[r + 1] = first[r] + rows / ranks + (r < rows % ranks);
-  return {lo, length, first, min_rows, periodic};
+  return {axis, lo, length, first, min_rows, periodic};
 }
 
-SlabDecomposition SlabDecomposition::balanced(int ranks, double lo, double length,
+SlabDecomposition SlabDecomposition::balanced(int ranks, int axis, double lo, double length,
                                               const std::vector<long>& count_per_row, int min_rows,
                                               bool periodic) {
   const int rows = int(count_per_row.size());
-  check(ranks, rows, min_rows);
+  check(ranks, axis, rows, min_rows, periodic);
   std::vector<long> before(rows + 1, 0);  // particles in rows [0, k)
   std::partial_sum(count_per_row.begin(), count_per_row.end(), before.begin() + 1);
   const long total = before.back();
@@ -61,7 +66,7 @@ SlabDecomposition SlabDecomposition::balanced(int ranks, double lo, double lengt
       if (distance(b) < distance(best)) best = b;
     first[k] = best;
   }
-  return {lo, length, first, min_rows, periodic};
+  return {axis, lo, length, first, min_rows, periodic};
 }
 
 long SlabDecomposition::heaviest(const std::vector<long>& count_per_row) const {

@@ -37,7 +37,6 @@
 #include "neighbours/cell_grid.hpp"
 #include "slab_decomposition.hpp"
 #include "solver.hpp"  // HaloStats
-#include "user_error.hpp"
 
 namespace granshock {
 
@@ -134,37 +133,21 @@ class SlabExchange {
   SlabExchange(const Communicator& comm, const Grid& grid, const Box& box, int axis)
       : comm_(comm),
         grid_(grid),
-        axis_(axis),
-        slabs_(equal_slabs(comm.size(), grid, box, axis)) {
+        slabs_(SlabDecomposition::equal(comm.size(), axis, box.lo[axis], box.length(axis),
+                                        grid.ncell[axis], box.periodic[axis] ? 2 : 1,
+                                        box.periodic[axis])) {
     const int r = comm.rank(), n = comm.size();
     const bool periodic = box.periodic[axis];
     lower_ = r > 0 ? r - 1 : (periodic ? n - 1 : Communicator::kNone);
     upper_ = r + 1 < n ? r + 1 : (periodic ? 0 : Communicator::kNone);
   }
 
-  // Equal slabs, or a user error naming the axis when the box is too narrow across it for
-  // the process count.
-  static SlabDecomposition equal_slabs(int ranks, const Grid& grid, const Box& box, int axis) {
-    const int rows = grid.ncell[axis], min_rows = box.periodic[axis] ? 2 : 1;
-    if (long(ranks) * min_rows > rows) {
-      const std::string name = axis == 0 ? "x" : "y", layers = axis == 0 ? "columns" : "rows";
-      throw UserError(std::to_string(ranks) + " MPI processes with slabs along " + name +
-                      " need " + std::to_string(long(ranks) * min_rows) + " cell " + layers +
-                      " (at least " + std::to_string(min_rows) + " per slab" +
-                      (min_rows > 1 ? ", " + name + " being periodic" : std::string()) +
-                      "), and the box has " + std::to_string(rows) + ": run on at most " +
-                      std::to_string(rows / min_rows) + " processes, or slab the other axis");
-    }
-    return SlabDecomposition::equal(ranks, box.lo[axis], box.length(axis), rows, min_rows,
-                                    box.periodic[axis]);
-  }
-
   const HaloStats& stats() const { return stats_; }
-  int axis() const { return axis_; }
+  int axis() const { return slabs_.axis(); }
   // The rank owning a coordinate along the slab axis: by its cell row, as the cell sort
   // computes it.
   int owner_of(Position coordinate) const {
-    return slabs_.owner_of_row(grid_.coord(axis_, coordinate));
+    return slabs_.owner_of_row(grid_.coord(axis(), coordinate));
   }
   bool owns(Position coordinate) const { return owner_of(coordinate) == comm_.rank(); }
 
@@ -192,7 +175,7 @@ class SlabExchange {
       auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.x);
       std::vector<int> keep, down, up;
       for (int i = 0; i < p.n; ++i) {
-        const int owner = owner_of(x(i, axis_));
+        const int owner = owner_of(x(i, axis()));
         if (owner == me) {
           keep.push_back(i);
         } else if (owner == lower_ || (moved_cuts && owner < me)) {
@@ -228,7 +211,7 @@ class SlabExchange {
     Kokkos::View<int*, Kokkos::HostSpace> order_host("keep_own_order", std::max(p.n, 1));
     int kept = 0;
     for (int i = 0; i < p.n; ++i)
-      if (i < first || owns(x(i, axis_))) order_host(kept++) = i;
+      if (i < first || owns(x(i, axis()))) order_host(kept++) = i;
     if (kept == p.n) return;
     auto order = Kokkos::create_mirror_view_and_copy(Mem(), order_host);
     permute.apply(p, order, kept);
@@ -292,8 +275,8 @@ class SlabExchange {
   template <class HostStart>
   std::vector<std::pair<int, int>> storage_ranges(const HostStart& start, int row) const {
     int stride = 1;  // between cells adjacent along the axis (CellGrid::flat)
-    for (int d = 0; d < axis_; ++d) stride *= grid_.ncell[d];
-    const int period = stride * grid_.ncell[axis_];  // from a row's cells to its next ones
+    for (int d = 0; d < axis(); ++d) stride *= grid_.ncell[d];
+    const int period = stride * grid_.ncell[axis()];  // from a row's cells to its next ones
     std::vector<std::pair<int, int>> out;
     for (int first = row * stride; first < grid_.total(); first += period) {
       const int begin = start(first), end = start(first + stride);
@@ -405,9 +388,10 @@ class SlabExchange {
       work_seconds_ = work_particle_steps_ = 0;
     }
     auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.x);
-    const int rows = grid_.ncell[axis_];
+    const int rows = grid_.ncell[axis()];
     std::vector<double> histogram(std::size_t(rows), 0.0);
-    for (int i = 0; i < p.n; ++i) histogram[std::size_t(grid_.coord(axis_, x(i, axis_)))] += weight;
+    for (int i = 0; i < p.n; ++i)
+      histogram[std::size_t(grid_.coord(axis(), x(i, axis())))] += weight;
     comm_.sum_in_place(histogram);  // integer sums below 2^53: exact in double
     const std::vector<long> per_row(histogram.begin(), histogram.end());
     const SlabDecomposition candidate = slabs_.rebalanced(per_row);
@@ -451,15 +435,6 @@ class SlabExchange {
   }
 
   template <class ForArrays>
-  static std::vector<char> pack_rows(Store& p, const std::vector<int>& rows, ForArrays&& arrays) {
-    std::vector<char> out;
-    arrays(p, [&](auto& view) {
-      auto host = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), view);
-      for (const int i : rows) row_bytes::append(out, host, i, i + 1);
-    });
-    return out;
-  }
-  template <class ForArrays>
   static std::vector<char> pack_ranges(Store& p, const std::vector<std::pair<int, int>>& ranges,
                                        ForArrays&& arrays) {
     std::vector<char> out;
@@ -484,8 +459,17 @@ class SlabExchange {
     return count;
   }
 
+  // The particles at storage rows `rows` (increasing), consecutive rows as one range.
   std::vector<char> pack_all(Store& p, const std::vector<int>& rows) const {
-    return pack_rows(p, rows, [](Store& s, auto&& f) { for_all(s, f); });
+    std::vector<std::pair<int, int>> ranges;
+    for (const int i : rows) {
+      if (!ranges.empty() && ranges.back().second == i) {
+        ++ranges.back().second;
+      } else {
+        ranges.emplace_back(i, i + 1);
+      }
+    }
+    return pack_ranges(p, ranges, [](Store& s, auto&& f) { for_all(s, f); });
   }
   template <class Grow>
   void unpack_all(Store& p, const std::vector<char>& bytes, Grow& grow) const {
@@ -530,7 +514,6 @@ class SlabExchange {
 
   const Communicator& comm_;
   Grid grid_;
-  int axis_;  // of the slabs: 0 x, 1 y
   SlabDecomposition slabs_;
   SlabBalance balance_ = SlabBalance::equal;
   double work_seconds_ = 0, work_particle_steps_ = 0;  // since the last rebalance check

@@ -12,7 +12,6 @@
 #include <Kokkos_Core.hpp>
 #include <algorithm>
 #include <chrono>
-#include <cstring>
 #include <numeric>
 #include <optional>
 #include <stdexcept>
@@ -250,7 +249,7 @@ class DemSolver final : public Solver {
     if (!slabs_) return particles();
     HostParticles all;
     append_particles(comm_.gather(pack_particles(particles()), 0), all);
-    const std::vector<int> cells = gathered_values(reference_cells());
+    const std::vector<int> cells = gather_to_root(comm_, reference_cells());
     return comm_.is_root() ? select_particles(all, in_cell_order(cells)) : all;
   }
   long steps_done() const override { return steps_; }
@@ -379,7 +378,7 @@ class DemSolver final : public Solver {
     }
     SolverState all = select_particles(s, {});
     append_particles(comm_.gather(pack_particles(s), 0), all);
-    const std::vector<int> cells = gathered_values(reference_cells());
+    const std::vector<int> cells = gather_to_root(comm_, reference_cells());
     if (!comm_.is_root()) return all;
     all = select_particles(all, in_cell_order(cells));
     state_io::ReferenceLists lists = state_io::lists_from_reference<Dim, Real, ExecSpace>(
@@ -468,14 +467,6 @@ class DemSolver final : public Solver {
     std::vector<int> cells(std::size_t(p_.n));
     for (int i = 0; i < p_.n; ++i) cells[std::size_t(i)] = grid_.cell_of(x_ref, i);
     return cells;
-  }
-  // Every rank's values on rank 0, in rank order (empty elsewhere).
-  std::vector<int> gathered_values(const std::vector<int>& mine) const {
-    const char* bytes = reinterpret_cast<const char*>(mine.data());
-    const std::vector<char> all = comm_.gather({bytes, bytes + mine.size() * sizeof(int)}, 0);
-    std::vector<int> out(all.size() / sizeof(int));
-    if (!out.empty()) std::memcpy(out.data(), all.data(), out.size() * sizeof(int));
-    return out;
   }
   // The rows by increasing cell, rows of one cell in their given order: rank by rank,
   // each in its own cell order, merge into the global cell order (a cell has one owner).

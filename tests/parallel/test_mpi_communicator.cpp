@@ -70,6 +70,23 @@ TEST(MpiCommunicator, GatherConcatenatesInRankOrderOnTheRootOnly) {
   EXPECT_EQ(comm.all_gather(some), expected);
 }
 
+// gather_to_root (core/communicator.hpp): typed values, one or several per rank (rank r
+// sends r values r, none from rank 0), concatenated in rank order on rank 0.
+TEST(MpiCommunicator, GatherToRootKeepsTypedValuesInRankOrder) {
+  const MpiCommunicator comm;
+  const int r = comm.rank(), n = comm.size();
+  const std::vector<long> one = gather_to_root(comm, long(10 * r));
+  const std::vector<double> several = gather_to_root(comm, std::vector<double>(std::size_t(r), r));
+  std::vector<long> one_expected;
+  std::vector<double> several_expected;
+  for (int k = 0; k < n; ++k) {
+    one_expected.push_back(10 * k);
+    several_expected.insert(several_expected.end(), std::size_t(k), double(k));
+  }
+  EXPECT_EQ(one, r == 0 ? one_expected : std::vector<long>());
+  EXPECT_EQ(several, r == 0 ? several_expected : std::vector<double>());
+}
+
 // core/failure_agreement.hpp: a step that fails on rank 1 alone.
 TEST(FailureAgreement, TheLowestFailingRankSpeaksTheOthersLeaveQuietly) {
   const MpiCommunicator comm;

@@ -13,7 +13,7 @@
 using namespace granshock;
 
 TEST(SlabDecomposition, EqualSlabsCoverEveryRowOnce) {
-  const auto s = SlabDecomposition::equal(3, 0.0, 1.0, 10, 2, false);
+  const auto s = SlabDecomposition::equal(3, 1, 0.0, 1.0, 10, 2, false);
   ASSERT_EQ(s.ranks(), 3);
   EXPECT_EQ(s.first_row(0), 0);
   EXPECT_EQ(s.end_row(0), 4);  // 10 = 4 + 3 + 3
@@ -31,7 +31,7 @@ TEST(SlabDecomposition, OwnerFollowsTheCellGridToTheLastBit) {
   box.periodic = {true, false, false};
   const auto grid = CellGrid<2, double>::make(box, 0.5 / 151.5);
   ASSERT_EQ(grid.ncell[1], 151);
-  const auto s = SlabDecomposition::equal(4, 0.0, 0.5, grid.ncell[1], 1, false);
+  const auto s = SlabDecomposition::equal(4, 1, 0.0, 0.5, grid.ncell[1], 1, false);
   // Every row boundary and its neighbouring doubles: the owner is the slab of the grid's row.
   for (int row = 0; row <= 151; ++row) {
     const double at = row * (0.5 / 151);
@@ -51,7 +51,7 @@ TEST(SlabDecomposition, BalancedCutsEqualiseTheParticleCounts) {
   // A wake: rows 60-99 nearly empty, the rest uniform.
   std::vector<long> count(100, 50);
   for (int r = 60; r < 100; ++r) count[r] = 1;
-  const auto s = SlabDecomposition::balanced(4, 0.0, 1.0, count, 3, false);
+  const auto s = SlabDecomposition::balanced(4, 1, 0.0, 1.0, count, 3, false);
   const long total = std::accumulate(count.begin(), count.end(), 0L);
   for (int r = 0; r < 4; ++r) {
     const long held =
@@ -62,7 +62,7 @@ TEST(SlabDecomposition, BalancedCutsEqualiseTheParticleCounts) {
     }
   }
   // Equal slabs would give ranks 0 and 1 1250 particles each and rank 3 25.
-  const auto equal = SlabDecomposition::equal(4, 0.0, 1.0, 100, 3, false);
+  const auto equal = SlabDecomposition::equal(4, 1, 0.0, 1.0, 100, 3, false);
   EXPECT_EQ(equal.first_row(3), 75);
   EXPECT_LT(s.first_row(3), 75);
 }
@@ -71,33 +71,43 @@ TEST(SlabDecomposition, BalancedRespectsTheMinimumWidth) {
   // Everything in one row: the cuts cannot all sit there.
   std::vector<long> count(20, 0);
   count[10] = 1000;
-  const auto s = SlabDecomposition::balanced(3, 0.0, 1.0, count, 4, false);
+  const auto s = SlabDecomposition::balanced(3, 1, 0.0, 1.0, count, 4, false);
   for (int r = 0; r < 3; ++r) EXPECT_GE(s.end_row(r) - s.first_row(r), 4) << r;
   EXPECT_EQ(s.end_row(2), 20);
   // The same input gives the same cuts (every rank computes them).
-  const auto again = SlabDecomposition::balanced(3, 0.0, 1.0, count, 4, false);
+  const auto again = SlabDecomposition::balanced(3, 1, 0.0, 1.0, count, 4, false);
   for (int r = 0; r <= 3; ++r)
     EXPECT_EQ(s.first_row(std::min(r, 2)), again.first_row(std::min(r, 2)));
 }
 
 TEST(SlabDecomposition, NeighboursOnOpenAndPeriodicAxes) {
-  const auto open = SlabDecomposition::equal(4, 0.0, 1.0, 40, 1, false);
+  const auto open = SlabDecomposition::equal(4, 1, 0.0, 1.0, 40, 1, false);
   EXPECT_EQ(open.neighbours(0), std::vector<int>({1}));
   EXPECT_EQ(open.neighbours(2), std::vector<int>({1, 3}));
-  const auto periodic = SlabDecomposition::equal(4, 0.0, 1.0, 40, 1, true);
+  const auto periodic = SlabDecomposition::equal(4, 1, 0.0, 1.0, 40, 1, true);
   EXPECT_EQ(periodic.neighbours(0), std::vector<int>({3, 1}));
-  const auto two = SlabDecomposition::equal(2, 0.0, 1.0, 40, 1, true);
+  const auto two = SlabDecomposition::equal(2, 1, 0.0, 1.0, 40, 1, true);
   EXPECT_EQ(two.neighbours(0), std::vector<int>({1}));  // left and right: the same rank, once
-  const auto one = SlabDecomposition::equal(1, 0.0, 1.0, 40, 1, true);
+  const auto one = SlabDecomposition::equal(1, 1, 0.0, 1.0, 40, 1, true);
   EXPECT_TRUE(one.neighbours(0).empty());
 }
 
 TEST(SlabDecomposition, TooManyProcessesForTheBoxIsAUserError) {
   try {
-    SlabDecomposition::equal(8, 0.0, 1.0, 20, 3, false);
+    SlabDecomposition::equal(8, 1, 0.0, 1.0, 20, 3, false);
     FAIL() << "no error";
   } catch (const UserError& e) {
     EXPECT_NE(std::string(e.what()).find("run on at most 6 processes"), std::string::npos)
+        << e.what();
+  }
+  // The message names the axis and its layers: columns across x.
+  try {
+    SlabDecomposition::equal(3, 0, 0.0, 1.0, 4, 2, true);
+    FAIL() << "no error";
+  } catch (const UserError& e) {
+    EXPECT_NE(std::string(e.what()).find("with slabs along x need 6 cell columns (at least 2 per "
+                                         "slab, x being periodic), and the box has 4"),
+              std::string::npos)
         << e.what();
   }
 }
@@ -105,7 +115,7 @@ TEST(SlabDecomposition, TooManyProcessesForTheBoxIsAUserError) {
 // What the solver's rebalance compares (kernels/particles/slab_exchange.hpp): the heaviest
 // slab under the present cuts and under cuts made anew, with the same axis and minimum.
 TEST(SlabDecomposition, RebalancedKeepsTheAxisAndLightensTheHeaviestSlab) {
-  const auto equal = SlabDecomposition::equal(2, 0.0, 8.0, 8, 2, true);
+  const auto equal = SlabDecomposition::equal(2, 1, 0.0, 8.0, 8, 2, true);
   const std::vector<long> counts{9, 9, 9, 9, 1, 1, 1, 1};  // the wake: nearly empty rows
   EXPECT_EQ(equal.heaviest(counts), 36);                   // rows 0-3
   const SlabDecomposition moved = equal.rebalanced(counts);
