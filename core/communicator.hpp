@@ -61,6 +61,16 @@ std::vector<T> gather_to_root(const Communicator& comm, const std::vector<T>& va
   if (!out.empty()) std::memcpy(static_cast<void*>(out.data()), all.data(), all.size());
   return out;
 }
+// Every rank's `values` on every rank, concatenated in rank order.
+template <class T>
+std::vector<T> gather_to_all(const Communicator& comm, const std::vector<T>& values) {
+  static_assert(std::is_trivially_copyable_v<T>);
+  const char* bytes = reinterpret_cast<const char*>(values.data());
+  const std::vector<char> all = comm.all_gather({bytes, bytes + values.size() * sizeof(T)});
+  std::vector<T> out(all.size() / sizeof(T));
+  if (!out.empty()) std::memcpy(static_cast<void*>(out.data()), all.data(), all.size());
+  return out;
+}
 // Every rank's `value` on rank 0, in rank order (empty elsewhere): per-rank reports.
 template <class T>
 std::vector<T> gather_to_root(const Communicator& comm, T value) {

@@ -13,6 +13,7 @@
 #include "bin_layout.hpp"
 #include "communicator.hpp"
 #include "host_particles.hpp"
+#include "snapshot_part.hpp"
 #include "solver_setup.hpp"
 #include "solver_state.hpp"
 
@@ -143,9 +144,9 @@ class Solver {
 
   virtual std::size_t size() const = 0;  // the particles this process owns
   virtual long global_size() const = 0;  // on every process (collective)
-  // Every process's particles on rank 0 (collective; empty elsewhere), in the order one
-  // process would hold them.
-  virtual HostParticles gathered_particles() const = 0;
+  // This process's part of a snapshot, with the rows it fills in one process's order
+  // (collective; one process: all of them, rows [0, n)).
+  virtual SnapshotPart snapshot_part() const = 0;
   virtual long steps_done() const = 0;
   virtual long list_builds() const = 0;
   virtual double time() const = 0;

@@ -49,6 +49,9 @@ class Handle {
 
   hid_t get() const { return id_; }
   bool valid() const { return id_ >= 0; }
+  // Lets go without closing: for a file opened by several processes at once, whose close
+  // waits for all of them, after a failure on this one alone (the job is about to end).
+  void abandon() { id_ = H5I_INVALID_HID; }
 
   // Closes now and reports HDF5's status: closing a file is where buffered data reaches
   // the disk, so callers that must know it arrived check the result.

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <system_error>
 #include <utility>
@@ -84,6 +85,10 @@ void create_time_element(hid_t file, const std::string& group_path, hid_t stored
             "setting the chunk shape");
   if (fill != nullptr)
     h5::check(H5Pset_fill_value(props.get(), fill_type, fill), "setting a fill value");
+  // Parallel HDF5 writes only to chunks that exist: each frame's are made (filled) when
+  // the dataset grows to hold it, before any process writes its rows.
+  if (per_particle)
+    h5::check(H5Pset_alloc_time(props.get(), H5D_ALLOC_TIME_EARLY), "setting the allocation");
   if (per_particle && kSnapshotDeflate > 0 && H5Zfilter_avail(H5Z_FILTER_DEFLATE) > 0) {
     // Shuffling groups the bytes of equal significance (sign and exponent bytes of
     // nearby values agree), which gzip then compresses: 3.0 instead of 3.4 MB.
@@ -112,6 +117,35 @@ void extend_and_write(hid_t dataset, const std::vector<hsize_t>& new_dims,
       h5::dataspace(H5Screate_simple(static_cast<int>(count.size()), count.data(), nullptr),
                     "creating a dataspace");
   h5::check(H5Dwrite(dataset, memory_type, memory_space.get(), file_space.get(), H5P_DEFAULT, data),
+            "writing a dataset");
+}
+
+// Writes one frame of a per-particle dataset (frame x capacity [x width]) after growing it
+// to `new_dims`: the local rows `data` to the file rows `rows`, in order. `transfer`:
+// H5P_DEFAULT for one process alone, or a collective transfer on a file every process
+// opened (open_collectively), where a process with no rows still takes part.
+void write_frame_rows(hid_t dataset, const std::vector<hsize_t>& new_dims, hsize_t frame,
+                      const std::vector<FileRows>& rows, hid_t memory_type, const void* data,
+                      hid_t transfer) {
+  h5::check(H5Dset_extent(dataset, new_dims.data()), "extending a dataset");
+  const hsize_t width = new_dims.size() == 3 ? new_dims[2] : 1;
+  Handle file_space = h5::dataspace(H5Dget_space(dataset), "reading a dataspace");
+  h5::check(H5Sselect_none(file_space.get()), "clearing a selection");
+  hsize_t local = 0;
+  for (const FileRows& r : rows) {
+    const hsize_t start[3] = {frame, hsize_t(r.first), 0};
+    const hsize_t count[3] = {1, hsize_t(r.count), width};
+    h5::check(H5Sselect_hyperslab(file_space.get(), local == 0 ? H5S_SELECT_SET : H5S_SELECT_OR,
+                                  start, nullptr, count, nullptr),
+              "selecting a hyperslab");
+    local += hsize_t(r.count);
+  }
+  if (local == 0 && transfer == H5P_DEFAULT) return;
+  const hsize_t memory_dims[2] = {std::max<hsize_t>(local, 1), width};
+  Handle memory_space = h5::dataspace(H5Screate_simple(width > 1 ? 2 : 1, memory_dims, nullptr),
+                                      "creating a dataspace");
+  if (local == 0) h5::check(H5Sselect_none(memory_space.get()), "clearing a selection");
+  h5::check(H5Dwrite(dataset, memory_type, memory_space.get(), file_space.get(), transfer, data),
             "writing a dataset");
 }
 
@@ -222,6 +256,16 @@ Handle open_existing(const fs::path& path, unsigned flags, const char* doing) {
                     "': not a granshock run file");
   }
   return file;
+}
+
+// Whether the snapshot datasets make a frame's chunks when they grow to it, as parallel
+// HDF5 needs (create_time_element); files from before collective output do not.
+bool snapshot_chunks_made_early(hid_t file) {
+  Handle set = h5::open_dataset(file, std::string(kParticles) + "/position/value");
+  Handle props = h5::plist(H5Dget_create_plist(set.get()), "reading dataset properties");
+  H5D_alloc_time_t when = H5D_ALLOC_TIME_DEFAULT;
+  h5::check(H5Pget_alloc_time(props.get(), &when), "reading the allocation time");
+  return when == H5D_ALLOC_TIME_EARLY;
 }
 
 int read_dim(hid_t file) {
@@ -335,6 +379,32 @@ RunFile RunFile::open_for_resume(const fs::path& path, long checkpoint_step) {
   return RunFile(path, std::move(file), dim);
 }
 
+RunFile RunFile::open_for_append(const fs::path& path) {
+  Handle file = open_existing(path, H5F_ACC_RDWR, "write");
+  const int dim = h5::naming_file_in_errors(path, "opening", [&] { return read_dim(file.get()); });
+  return RunFile(path, std::move(file), dim);
+}
+
+RunFile RunFile::open_collectively(const fs::path& path, MPI_Comm comm) {
+  h5::silence_error_printing();
+  return h5::naming_file_in_errors(path, "opening (parallel HDF5)", [&] {
+    Handle access = h5::plist(H5Pcreate(H5P_FILE_ACCESS), "creating file access properties");
+    h5::check(H5Pset_fapl_mpio(access.get(), comm, MPI_INFO_NULL), "choosing MPI-IO");
+    Handle file = h5::file(H5Fopen(path.c_str(), H5F_ACC_RDWR, access.get()), "H5Fopen");
+    // Every process sees the same file, so all refuse alike.
+    if (!snapshot_chunks_made_early(file.get()))
+      throw UserError("'" + path.string() +
+                      "' was written by an earlier granshock, whose snapshots parallel HDF5 "
+                      "cannot append to: resume this run on one process");
+    const int dim = read_dim(file.get());
+    RunFile shared(path, std::move(file), dim);
+    shared.transfer_ = h5::plist(H5Pcreate(H5P_DATASET_XFER), "creating transfer properties");
+    h5::check(H5Pset_dxpl_mpio(shared.transfer_.get(), H5FD_MPIO_COLLECTIVE),
+              "choosing collective transfers");
+    return shared;
+  });
+}
+
 RunFile RunFile::open_read_only(const fs::path& path) {
   Handle file = open_existing(path, H5F_ACC_RDONLY, "read");
   const int dim = h5::naming_file_in_errors(path, "reading", [&] { return read_dim(file.get()); });
@@ -342,19 +412,36 @@ RunFile RunFile::open_read_only(const fs::path& path) {
 }
 
 void RunFile::append_snapshot(long step, double time, const HostParticles& p) {
+  const long n = long(p.size());
+  const long frame = write_snapshot_rows(
+      step, p, n > 0 ? std::vector<FileRows>{{0, n}} : std::vector<FileRows>{}, n);
+  complete_snapshot(frame, step, time, n);
+}
+
+long RunFile::write_snapshot_rows(long step, const HostParticles& p,
+                                  const std::vector<FileRows>& rows, long total) {
   const std::size_t n = p.size();
   if (p.velocity.size() != n || p.species.size() != n || p.id.size() != n) {
-    throw std::invalid_argument("RunFile::append_snapshot: particle arrays differ in length");
+    throw std::invalid_argument("RunFile: snapshot particle arrays differ in length");
   }
-  h5::naming_file_in_errors(path_, "writing", [&] {
+  long covered = 0;
+  for (const FileRows& r : rows) {
+    if (r.first < 0 || r.count <= 0 || r.first + r.count > total)
+      throw std::invalid_argument("RunFile: snapshot rows outside the frame");
+    covered += r.count;
+  }
+  if (covered != long(n))
+    throw std::invalid_argument("RunFile: snapshot rows do not cover the particles");
+  return h5::naming_file_in_errors(path_, "writing", [&] {
     const hid_t f = file_.get();
     const std::string all = kParticles;
     const SeriesEnd end = series_end(f, all + "/count");
     require_increasing(end, step, "snapshot");
     const hsize_t frame = end.entries;
-    const hsize_t rows = static_cast<hsize_t>(n);
-    const hsize_t capacity = std::max(static_cast<hsize_t>(particle_capacity()), rows);
+    const hsize_t capacity =
+        std::max(static_cast<hsize_t>(particle_capacity()), static_cast<hsize_t>(total));
     const hsize_t d = static_cast<hsize_t>(dim_);
+    const hid_t transfer = transfer_.valid() ? transfer_.get() : H5P_DEFAULT;
 
     // Quasi-2-D stores x, y only: copy the first dim components into one block.
     std::vector<double> block(n * static_cast<std::size_t>(dim_));
@@ -363,26 +450,68 @@ void RunFile::append_snapshot(long step, double time, const HostParticles& p) {
       for (std::size_t i = 0; i < n; ++i) {
         for (std::size_t c = 0; c < width; ++c) block[i * width + c] = v[i][c];
       }
-      const std::string group = all + "/" + name;
-      Handle set = h5::open_dataset(f, group + "/value");
-      extend_and_write(set.get(), {frame + 1, capacity, d}, {frame, 0, 0}, {1, rows, d},
-                       H5T_NATIVE_DOUBLE, block.data());
-      append_step_time(f, group, frame, step, time);
+      Handle set = h5::open_dataset(f, all + "/" + name + "/value");
+      write_frame_rows(set.get(), {frame + 1, capacity, d}, frame, rows, H5T_NATIVE_DOUBLE,
+                       block.data(), transfer);
     };
     auto write_scalars = [&](const char* name, const std::vector<int>& v) {
-      const std::string group = all + "/" + name;
-      Handle set = h5::open_dataset(f, group + "/value");
-      extend_and_write(set.get(), {frame + 1, capacity}, {frame, 0}, {1, rows}, H5T_NATIVE_INT,
-                       v.data());
-      append_step_time(f, group, frame, step, time);
+      Handle set = h5::open_dataset(f, all + "/" + name + "/value");
+      write_frame_rows(set.get(), {frame + 1, capacity}, frame, rows, H5T_NATIVE_INT, v.data(),
+                       transfer);
     };
     write_vectors("position", p.position);
     write_vectors("velocity", p.velocity);
     write_scalars("species", p.species);
     write_scalars("id", p.id);
-    // count last: frames() lists a frame once all of its data is there.
-    append_scalar<long>(f, all + "/count", frame, step, time, static_cast<long>(n));
+    return long(frame);
   });
+}
+
+void RunFile::complete_snapshot(long frame, long step, double time, long total) {
+  if (transfer_.valid()) throw std::logic_error("RunFile: a snapshot is completed by one process");
+  h5::naming_file_in_errors(path_, "writing", [&] {
+    const hid_t f = file_.get();
+    const std::string all = kParticles;
+    const SeriesEnd end = series_end(f, all + "/count");
+    if (hsize_t(frame) != end.entries)
+      throw std::logic_error("RunFile: the snapshot completed is not the next frame");
+    require_increasing(end, step, "snapshot");
+    const hsize_t index = hsize_t(frame);
+    for (const char* name : {"position", "velocity", "species", "id"})
+      append_step_time(f, all + "/" + name, index, step, time);
+    // count last: frames() lists a frame once all of its data is there.
+    append_scalar<long>(f, all + "/count", index, step, time, total);
+  });
+}
+
+bool RunFile::collective_pays(long total) {
+  return total > long(kParticleChunk);
+}
+
+void RunFile::append_snapshot_collectively(const std::filesystem::path& path, MPI_Comm comm,
+                                           long step, double time, const SnapshotPart& part,
+                                           std::optional<RunFile>& root_file) {
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  if ((rank == 0) != root_file.has_value())
+    throw std::logic_error("RunFile: rank 0 alone holds the run file between snapshots");
+  // Parallel HDF5 opens the file on every process: rank 0's own handle closes first.
+  root_file.reset();
+  long frame = 0;
+  {
+    RunFile shared = open_collectively(path, comm);
+    try {
+      frame = shared.write_snapshot_rows(step, part.particles, part.rows, part.total);
+    } catch (...) {
+      // The others may wait in a collective write: closing would wait for them forever.
+      // The failure ends the job (apps/granshock/main.cpp).
+      shared.file_.abandon();
+      throw;
+    }
+  }  // closed (collective) before rank 0 reopens it
+  if (rank != 0) return;
+  root_file.emplace(open_for_append(path));
+  root_file->complete_snapshot(frame, step, time, part.total);
 }
 
 void RunFile::append_time_series(const TimeSeriesRow& row) {

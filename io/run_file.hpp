@@ -4,13 +4,17 @@
 // resumed run continues the same file as if it had never stopped.
 #pragma once
 
+#include <mpi.h>
+
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "hdf5_handle.hpp"
 #include "host_particles.hpp"
 #include "snapshot_frame.hpp"
+#include "snapshot_part.hpp"
 #include "time_series.hpp"
 
 namespace granshock {
@@ -29,6 +33,8 @@ class RunFile {
 
   // Opens for reading only (granshock fields, tests).
   static RunFile open_read_only(const std::filesystem::path& path);
+  // Reopens an existing run file read-write, as it is.
+  static RunFile open_for_append(const std::filesystem::path& path);
 
   RunFile(RunFile&&) noexcept = default;
   RunFile& operator=(RunFile&&) noexcept = default;
@@ -39,6 +45,19 @@ class RunFile {
   // Appends one frame. Steps must increase from frame to frame (resume relies on it);
   // throws std::invalid_argument otherwise or when p's arrays differ in length.
   void append_snapshot(long step, double time, const HostParticles& p);
+
+  // Several processes (docs/parallel.md, "Output"): appends one frame to the run file at
+  // `path` with every process of `comm` writing its part's rows at once (parallel HDF5,
+  // collective). Rank 0 holds the file open in `root_file` between snapshots, the others
+  // nothing: it is closed for the collective write and reopened after, when rank 0 alone
+  // appends the frame's step and count (a frame counts once its count is there).
+  static void append_snapshot_collectively(const std::filesystem::path& path, MPI_Comm comm,
+                                           long step, double time, const SnapshotPart& part,
+                                           std::optional<RunFile>& root_file);
+  // Whether a frame of `total` particles is written faster collectively than gathered to
+  // rank 0 and appended there: once it spans more than one chunk, whose compression the
+  // processes then share (measured on 2 processes, docs/scaling.md "Output").
+  static bool collective_pays(long total);
 
   // Appends one row to every /observables series; the same rule on steps.
   void append_time_series(const TimeSeriesRow& row);
@@ -76,9 +95,17 @@ class RunFile {
 
  private:
   RunFile(std::filesystem::path path, h5::Handle file, int dim);
+  // Every process of `comm` at once, for write_snapshot_rows alone.
+  static RunFile open_collectively(const std::filesystem::path& path, MPI_Comm comm);
+  // A frame's particle data: `p` to the file `rows` of a frame of `total` rows (the next
+  // frame, whose index it returns). complete_snapshot then appends its step, time and count.
+  long write_snapshot_rows(long step, const HostParticles& p, const std::vector<FileRows>& rows,
+                           long total);
+  void complete_snapshot(long frame, long step, double time, long total);
 
   std::filesystem::path path_;
   h5::Handle file_;
+  h5::Handle transfer_;  // collective transfers: a file every process opened; else none
   int dim_ = 2;
 };
 

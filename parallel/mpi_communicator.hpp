@@ -25,6 +25,8 @@ class MpiCommunicator final : public Communicator {
                                           ExpectedBytes expected) const override;
   std::vector<char> gather(const std::vector<char>& bytes, int root) const override;
   std::vector<char> all_gather(const std::vector<char>& bytes) const override;
+  // For libraries that take the communicator itself (parallel HDF5).
+  MPI_Comm native() const { return comm_; }
 
  private:
   std::vector<char> gather_to(const std::vector<char>& bytes, int root, bool everywhere) const;

@@ -9,8 +9,11 @@
 //   collective: every rank opens the file through MPI-IO (H5Pset_fapl_mpio) and writes
 //               its rows of each dataset in one collective transfer.
 // A time is from a barrier before the first call to a barrier after the file is closed,
-// file creation included. Prints one Markdown row per particle count: the medians and
-// their ratio (collective / gathered: above 1, gathering is faster).
+// file creation included. Then the same frames appended to run.h5 files as granshock
+// writes them (RunFile: chunked, compressed), a frame per repeat each way: gathered and
+// appended by rank 0, against RunFile::append_snapshot_collectively (the file closed on
+// rank 0, written by every rank, reopened). Prints one Markdown row per particle count: the medians
+// and their ratio (collective / gathered: above 1, gathering is faster).
 //
 // Both write contiguous datasets of a fresh file; run.h5 appends to chunked datasets, which
 // both would do alike. Usage:
@@ -25,14 +28,19 @@
 #include <array>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "hdf5_handle.hpp"
+#include "run_file.hpp"
 
 namespace {
 
+using granshock::HostParticles;
+using granshock::RunFile;
+using granshock::SnapshotPart;
 using granshock::h5::checked;
 using granshock::h5::Handle;
 
@@ -138,6 +146,53 @@ void write_collective(const Share& s, const std::string& path) {
   write("id", H5T_NATIVE_INT, 1, s.id.data());
 }
 
+// run.h5 as granshock writes it (chunked, compressed, appended frame by frame).
+HostParticles particles_of(const std::vector<double>& position, const std::vector<double>& velocity,
+                           const std::vector<int>& species, const std::vector<int>& id) {
+  HostParticles p;
+  for (std::size_t i = 0; i < species.size(); ++i)
+    p.add({position[3 * i], position[3 * i + 1], position[3 * i + 2]},
+          {velocity[3 * i], velocity[3 * i + 1], velocity[3 * i + 2]}, species[i], id[i]);
+  return p;
+}
+
+// The gathers of write_gathered, then rank 0 appends the frame to its run file.
+void append_gathered(const Share& s, std::optional<RunFile>& file, long step, int rank, int ranks) {
+  std::vector<int> counts(static_cast<std::size_t>(ranks), 0);
+  const int mine = int(s.count);
+  MPI_Gather(&mine, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
+  const auto gather = [&](const auto& values, MPI_Datatype type, int width) {
+    std::vector<std::decay_t<decltype(values[0])>> all(rank == 0 ? std::size_t(s.total * width)
+                                                                 : 0);
+    std::vector<int> c(counts), o(counts.size(), 0);
+    int at = 0;
+    for (int r = 0; r < ranks; ++r) {
+      c[std::size_t(r)] = counts[std::size_t(r)] * width;
+      o[std::size_t(r)] = at;
+      at += c[std::size_t(r)];
+    }
+    MPI_Gatherv(values.data(), mine * width, type, all.data(), c.data(), o.data(), type, 0,
+                MPI_COMM_WORLD);
+    return all;
+  };
+  const std::vector<double> position = gather(s.position, MPI_DOUBLE, 3);
+  const std::vector<double> velocity = gather(s.velocity, MPI_DOUBLE, 3);
+  const std::vector<int> species = gather(s.species, MPI_INT, 1);
+  const std::vector<int> id = gather(s.id, MPI_INT, 1);
+  if (rank == 0)
+    file->append_snapshot(step, double(step), particles_of(position, velocity, species, id));
+}
+
+// granshock's collective append: each rank writes its rows of the frame.
+void append_collective(const Share& s, const std::filesystem::path& path,
+                       std::optional<RunFile>& file, long step) {
+  SnapshotPart part;
+  part.particles = particles_of(s.position, s.velocity, s.species, s.id);
+  if (s.count > 0) part.rows.push_back({s.first, s.count});
+  part.total = s.total;
+  RunFile::append_snapshot_collectively(path, MPI_COMM_WORLD, step, double(step), part, file);
+}
+
 template <class Write>
 double timed(Write&& write) {
   MPI_Barrier(MPI_COMM_WORLD);
@@ -202,6 +257,36 @@ int main(int argc, char** argv) {
         std::printf("| %ld | %.1f | %.4f | %.4f | %.4f | %.2f |\n", total,
                     double(total) * (6 * sizeof(double) + 2 * sizeof(int)) / 1e6, median(gathered),
                     median(gathers), median(collective), median(collective) / median(gathered));
+    }
+    // The same frames appended to run.h5 files, one frame per repeat and way.
+    if (rank == 0)
+      std::printf(
+          "\nrun.h5 (granshock's layout: chunked, shuffle + gzip 1, 2-D), a frame appended per "
+          "repeat\n\n| particles | gathered, rank 0 appends (s) | collective append (s) | "
+          "collective / gathered |\n|---|---|---|---|\n");
+    for (const long total : particles) {
+      const Share share = make_share(total, rank, ranks);
+      const std::filesystem::path gathered_path = path + ".gathered", collective_path = path;
+      std::optional<RunFile> gathered_file, collective_file;
+      if (rank == 0) {
+        gathered_file.emplace(RunFile::create(gathered_path, "", "", 2));
+        collective_file.emplace(RunFile::create(collective_path, "", "", 2));
+      }
+      std::vector<double> gathered, collective;
+      for (int r = 0; r < repeats; ++r) {
+        gathered.push_back(
+            timed([&] { append_gathered(share, gathered_file, r + 1, rank, ranks); }));
+        collective.push_back(
+            timed([&] { append_collective(share, collective_path, collective_file, r + 1); }));
+      }
+      if (rank == 0) {
+        gathered_file.reset();
+        collective_file.reset();
+        std::filesystem::remove(gathered_path);
+        std::filesystem::remove(collective_path);
+        std::printf("| %ld | %.4f | %.4f | %.2f |\n", total, median(gathered), median(collective),
+                    median(collective) / median(gathered));
+      }
     }
   } catch (const CLI::ParseError& e) {
     status = rank == 0 ? app.exit(e) : 2;

@@ -88,6 +88,7 @@ class BowShockRun {
   struct OutputCost {
     double snapshot_seconds = 0, checkpoint_seconds = 0;
     long snapshots = 0, checkpoints = 0;
+    long collective_snapshots = 0;  // of the snapshots (several processes)
   } output_;
 };
 

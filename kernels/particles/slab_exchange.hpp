@@ -27,6 +27,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -151,6 +152,25 @@ class SlabExchange {
   }
   bool owns(Position coordinate) const { return owner_of(coordinate) == comm_.rank(); }
 
+  // Collective. Where this rank's particles, sorted by `cells`, go in one process's order
+  // (that of the flat cell index): each layer of the index across the slabs holds every
+  // rank's cells of it in rank order (core/snapshot_part.hpp). Sets `total` to every
+  // rank's count.
+  std::vector<FileRows> file_rows(const std::vector<int>& cells, long& total) const {
+    const auto [stride, layer] = axis_strides();
+    const int rank = comm_.rank();
+    std::vector<long> counts(std::size_t(grid_.total() / layer), 0);
+    for (const int cell : cells) {
+      const int row = (cell / stride) % grid_.ncell[axis()];
+      if (row < slabs_.first_row(rank) || row >= slabs_.end_row(rank))
+        throw std::logic_error("a particle's reference cell lies outside its process's slab");
+      ++counts[std::size_t(cell / layer)];
+    }
+    const std::vector<long> all = gather_to_all(comm_, counts);
+    total = std::accumulate(all.begin(), all.end(), 0L);
+    return file_rows_by_layer(all, int(counts.size()), rank);
+  }
+
   // Slab boundaries moved at list rebuilds (docs/parallel.md, "Load balance"): equal
   // slabs of rows throughout, or balanced by particle count, or by measured work (each
   // particle weighs its rank's compute time per particle-step since the last check).
@@ -269,14 +289,20 @@ class SlabExchange {
     }
   };
 
+  // In the flat cell index (CellGrid::flat): the step between cells adjacent along the
+  // slab axis, and the layer across the slabs, from a cell row's cells to its next ones.
+  std::pair<int, int> axis_strides() const {
+    int stride = 1;
+    for (int d = 0; d < axis(); ++d) stride *= grid_.ncell[d];
+    return {stride, stride * grid_.ncell[axis()]};
+  }
+
   // The storage ranges of the owned particles (sorted by cell; `start` their cell offsets)
   // in cell row `row` along the slab axis, in increasing cell order: one range for slabs
   // along y (a grid row is consecutive cells), one per grid row along x.
   template <class HostStart>
   std::vector<std::pair<int, int>> storage_ranges(const HostStart& start, int row) const {
-    int stride = 1;  // between cells adjacent along the axis (CellGrid::flat)
-    for (int d = 0; d < axis(); ++d) stride *= grid_.ncell[d];
-    const int period = stride * grid_.ncell[axis()];  // from a row's cells to its next ones
+    const auto [stride, period] = axis_strides();
     std::vector<std::pair<int, int>> out;
     for (int first = row * stride; first < grid_.total(); first += period) {
       const int begin = start(first), end = start(first + stride);

@@ -243,14 +243,21 @@ class DemSolver final : public Solver {
     h.sync_seconds = sync_seconds_;
     return h;
   }
-  // Rank by rank, each rank's particles are in cell order (of their reference positions,
-  // the last rebuild's sort); merged by cell they are in one process's order.
-  HostParticles gathered_particles() const override {
-    if (!slabs_) return particles();
-    HostParticles all;
-    append_particles(comm_.gather(pack_particles(particles()), 0), all);
-    const std::vector<int> cells = gather_to_root(comm_, reference_cells());
-    return comm_.is_root() ? select_particles(all, in_cell_order(cells)) : all;
+  // Several processes: the particles in cell order (of their reference positions, the
+  // last rebuild's sort), which merged over the ranks by cell is one process's order; each
+  // layer of the flat cell index across the slabs (snapshot_part.hpp) one run of rows.
+  SnapshotPart snapshot_part() const override {
+    SnapshotPart part;
+    if (!slabs_) {
+      part.particles = particles();
+      part.total = p_.n;
+      if (p_.n > 0) part.rows.push_back({0, long(p_.n)});
+      return part;
+    }
+    const std::vector<int> cells = reference_cells();
+    part.particles = select_particles(particles(), in_cell_order(cells));
+    part.rows = slabs_->file_rows(cells, part.total);
+    return part;
   }
   long steps_done() const override { return steps_; }
   long list_builds() const override { return builds_; }
@@ -358,7 +365,7 @@ class DemSolver final : public Solver {
   }
 
   // Several processes: the whole state on rank 0, every rank's particles merged into the
-  // global cell order (of the reference positions, as gathered_particles), with the list
+  // global cell order (of the reference positions, as snapshot_part), with the list
   // one process would hold, built from the reference positions as its last rebuild did;
   // the other ranks get the scalars only. The result is the one-process state, bit for bit.
   SolverState export_state() const override {

@@ -4,12 +4,14 @@
 # Usage: mpi_run.sh MPIEXEC GRANSHOCK SCENE WORK MODE [RANKS]
 #   reference   the one-process runs, into WORK/one and WORK/one_big (a 60 d obstacle):
 #               the fixture of the others
-#   ranks N [T] [AXIS]  the run on N processes of T threads (default 1), slabs along AXIS
-#               (--slabs, default y): bitwise the same state (compare_runs.py)
+#   ranks N [T] [AXIS] [OUTPUT]  the run on N processes of T threads (default 1), slabs
+#               along AXIS (--slabs, default y), snapshots OUTPUT (--snapshot-output,
+#               default auto: gathered at this size): bitwise the same (compare_runs.py)
 #   balanced N BY [AXIS]  the large obstacle with --balance BY (particles, work): bitwise,
 #               and (particles) the cuts moved
-#   resume [A B]  stopped on 2 processes half way (slabs along A, default y), resumed on 3
-#               (along B, default A): the same as one process
+#   resume [A B [OUTPUT]]  stopped on 2 processes half way (slabs along A, default y),
+#               resumed on 3 (along B, default A), snapshots OUTPUT on both: the same as one
+#               process
 #   errors      bad input (a scene, a directory, a box too narrow for the slabs) said once,
 #               by one rank, exit code 2, no rank left waiting; other
 #               commands than `run` refused under mpirun
@@ -33,15 +35,22 @@ reference)
   ;;
 ranks)
   # Hybrid: THREADS OpenMP threads in each process (default 1).
-  ranks=$6 threads=${7:-1} axis=${8:-y}
-  out=$work/ranks${ranks}x${threads}_$axis
+  ranks=$6 threads=${7:-1} axis=${8:-y} output=${9:-auto}
+  out=$work/ranks${ranks}x${threads}_${axis}_$output
   rm -rf "$out"
   OMP_NUM_THREADS=$threads mpi "$ranks" "$granshock" run "$scene" "${short[@]}" --out "$out" \
-    --slabs "$axis" || fail "the run on $ranks processes x $threads threads along $axis"
+    --slabs "$axis" --snapshot-output "$output" ||
+    fail "the run on $ranks processes x $threads threads along $axis"
   compare "$out" "$ranks" || fail "$ranks processes x $threads threads along $axis differ from one"
+  # The summary says the slabs and how the snapshots were written (auto: all gathered here).
   /usr/bin/python3 -c 'import json, sys
-sys.exit(0 if json.load(open(sys.argv[1]))["processes"]["slabs_along"] == sys.argv[2] else 1)' \
-    "$out/summary.json" "$axis" || fail "summary.json does not say slabs along $axis"
+p = json.load(open(sys.argv[1]))["processes"]
+collective = p["snapshots_written_collectively"]
+print("snapshots:", p["snapshot_output"], collective, "of them written collectively")
+sys.exit(0 if p["slabs_along"] == sys.argv[2] and p["snapshot_output"] == sys.argv[3] and
+         (collective > 0) == (sys.argv[3] == "collective") else 1)' \
+    "$out/summary.json" "$axis" "$output" ||
+    fail "summary.json does not say slabs along $axis, snapshots $output"
   ;;
 balanced)
   # Slab boundaries moved by particle count or measured work: the same bits, and (by
@@ -60,15 +69,15 @@ sys.exit(0 if p["balance"] == sys.argv[2] and (p["rebalances"] > 0 or sys.argv[2
   ;;
 resume)
   # A checkpoint holds the one-process state, whatever slabs wrote it.
-  first=${6:-y} second=${7:-${6:-y}}
-  out=$work/resumed_${first}_$second
+  first=${6:-y} second=${7:-${6:-y}} output=${8:-auto}
+  out=$work/resumed_${first}_${second}_$output
   rm -rf "$out"
   mpi 2 "$granshock" run "$scene" "${short[@]}" --out "$out" --stop-after-steps 50000 \
-    --slabs "$first" 2>"$work/stop.err" ||
+    --slabs "$first" --snapshot-output "$output" 2>"$work/stop.err" ||
     { cat "$work/stop.err"; fail "the first half on 2 processes"; }
   grep -q "stopped after 50000 steps" "$work/stop.err" || fail "no stop message"
-  mpi 3 "$granshock" run "$scene" "${short[@]}" --out "$out" --resume --slabs "$second" ||
-    fail "the resume on 3 processes"
+  mpi 3 "$granshock" run "$scene" "${short[@]}" --out "$out" --resume --slabs "$second" \
+    --snapshot-output "$output" || fail "the resume on 3 processes"
   compare "$out" 3 || fail "2 (along $first) then 3 processes (along $second) differ from one"
   ;;
 errors)

@@ -231,8 +231,15 @@ TEST_P(DecomposedSolver, InsertionAndCheckpointStateAreThoseOfOneProcess) {
   if (comm.rank() == 0) {
     EXPECT_EQ(differing_entries(after_resumed, after), "");
   }
-  const HostParticles all = resumed->gathered_particles();
+  // The snapshot parts at their file rows: one process's order.
+  const SnapshotPart part = resumed->snapshot_part();
+  EXPECT_EQ(part.total, long(one->size()));
+  const HostParticles all = gather_snapshot(comm, part);
   if (comm.rank() == 0) {
-    EXPECT_EQ(all.id, one->particles().id) << "gathered in one process's order";
+    EXPECT_EQ(all.id, one->particles().id) << "the parts at their rows: one process's order";
+  }
+  const long runs = comm.sum(long(part.rows.size()));
+  if (GetParam() == SlabAxis::x) {
+    EXPECT_GT(runs, 2L * comm.size()) << "along x, a run per grid row";
   }
 }
