@@ -55,8 +55,8 @@ class RunFile {
                                            long step, double time, const SnapshotPart& part,
                                            std::optional<RunFile>& root_file);
   // Whether a frame of `total` particles is written faster collectively than gathered to
-  // rank 0 and appended there: once it spans more than one chunk, whose compression the
-  // processes then share (measured on 2 processes, docs/scaling.md "Output").
+  // rank 0 and appended there: from 24,576 particles (one and a half chunks), whose
+  // compression the processes then share (measured on 2 processes, docs/scaling.md).
   static bool collective_pays(long total);
 
   // Appends one row to every /observables series; the same rule on steps.

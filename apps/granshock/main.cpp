@@ -104,8 +104,8 @@ void add_run_command(CLI::App& app, granshock::RunOptions& o) {
       ->check(CLI::IsMember({"x", "y"}));
   cmd->add_option("--snapshot-output", o.snapshot_output,
                   "under mpirun: snapshots 'gathered' to rank 0, written by every process at "
-                  "once ('collective', parallel HDF5), or 'auto': collective for frames over "
-                  "16,384 particles, as measured faster (docs/parallel.md); the files are the "
+                  "once ('collective', parallel HDF5), or 'auto': collective for frames of "
+                  "24,576 particles or more, as measured faster (docs/parallel.md); the files are the "
                   "same bit for bit")
       ->check(CLI::IsMember({"auto", "gathered", "collective"}));
   cmd->add_flag("--dry-run", o.dry_run,

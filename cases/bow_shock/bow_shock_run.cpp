@@ -328,9 +328,9 @@ void BowShockRun::write_series_row(long step) {
   }
 }
 
-// Several processes (docs/parallel.md, "Output"): a frame larger than a chunk is written
-// by every process at once (parallel HDF5), a smaller one gathered to rank 0, whichever
-// measured faster (docs/scaling.md).
+// Several processes (docs/parallel.md, "Output"): a large frame is written by every
+// process at once (parallel HDF5), a small one gathered to rank 0, whichever measured
+// faster (RunFile::collective_pays, docs/scaling.md).
 void BowShockRun::write_snapshot(long step) {
   const OutputTimer timer(output_.snapshot_seconds, output_.snapshots);
   const double time = step * scene_.setup.dt;

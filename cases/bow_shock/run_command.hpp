@@ -28,7 +28,7 @@ struct RunOptions {
   std::string balance = "equal";  // several processes: "equal", "particles" or "work"
   std::string slabs = "y";        // several processes: slabs along "x" or "y"
   // Several processes: how snapshots reach run.h5, "gathered" to rank 0, "collective"
-  // (parallel HDF5) or "auto" (collective for frames over one chunk: RunFile::collective_pays).
+  // (parallel HDF5) or "auto" (collective for large frames: RunFile::collective_pays).
   std::string snapshot_output = "auto";
   bool dry_run = false;  // check the scene and the directory, print the resolved scene
   std::string accuracy;  // an error budget ("2%"): settings from a measured table
