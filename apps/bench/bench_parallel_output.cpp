@@ -79,11 +79,13 @@ Handle create_dataset(hid_t file, const char* name, hid_t type, long total, int 
                  H5Dclose, std::string("H5Dcreate2 ") + name);
 }
 
-// Rank 0 gathers every array and writes the file alone; `gather_seconds` receives the
-// gathers' share (rank 0's clock).
-void write_gathered(const Share& s, const std::string& path, int rank, int ranks,
-                    double& gather_seconds) {
-  const double start = MPI_Wtime();
+// Every rank's share, concatenated in rank order, on rank 0 (empty elsewhere).
+struct Gathered {
+  std::vector<double> position, velocity;
+  std::vector<int> species, id;
+};
+
+Gathered gather_to_rank_0(const Share& s, int rank, int ranks) {
   std::vector<int> counts(static_cast<std::size_t>(ranks), 0);
   const int mine = int(s.count);
   MPI_Gather(&mine, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
@@ -101,10 +103,16 @@ void write_gathered(const Share& s, const std::string& path, int rank, int ranks
                 MPI_COMM_WORLD);
     return all;
   };
-  const std::vector<double> position = gather(s.position, MPI_DOUBLE, 3);
-  const std::vector<double> velocity = gather(s.velocity, MPI_DOUBLE, 3);
-  const std::vector<int> species = gather(s.species, MPI_INT, 1);
-  const std::vector<int> id = gather(s.id, MPI_INT, 1);
+  return {gather(s.position, MPI_DOUBLE, 3), gather(s.velocity, MPI_DOUBLE, 3),
+          gather(s.species, MPI_INT, 1), gather(s.id, MPI_INT, 1)};
+}
+
+// Rank 0 gathers every array and writes the file alone; `gather_seconds` receives the
+// gathers' share (rank 0's clock).
+void write_gathered(const Share& s, const std::string& path, int rank, int ranks,
+                    double& gather_seconds) {
+  const double start = MPI_Wtime();
+  const Gathered all = gather_to_rank_0(s, rank, ranks);
   gather_seconds = MPI_Wtime() - start;
   if (rank != 0) return;
   const Handle file = checked(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT),
@@ -113,10 +121,10 @@ void write_gathered(const Share& s, const std::string& path, int rank, int ranks
     const Handle d = create_dataset(file.get(), name, type, s.total, width);
     require(H5Dwrite(d.get(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) >= 0, "H5Dwrite");
   };
-  write("position", H5T_NATIVE_DOUBLE, 3, position.data());
-  write("velocity", H5T_NATIVE_DOUBLE, 3, velocity.data());
-  write("species", H5T_NATIVE_INT, 1, species.data());
-  write("id", H5T_NATIVE_INT, 1, id.data());
+  write("position", H5T_NATIVE_DOUBLE, 3, all.position.data());
+  write("velocity", H5T_NATIVE_DOUBLE, 3, all.velocity.data());
+  write("species", H5T_NATIVE_INT, 1, all.species.data());
+  write("id", H5T_NATIVE_INT, 1, all.id.data());
 }
 
 // Every rank writes its rows through MPI-IO, collectively.
@@ -158,29 +166,10 @@ HostParticles particles_of(const std::vector<double>& position, const std::vecto
 
 // The gathers of write_gathered, then rank 0 appends the frame to its run file.
 void append_gathered(const Share& s, std::optional<RunFile>& file, long step, int rank, int ranks) {
-  std::vector<int> counts(static_cast<std::size_t>(ranks), 0);
-  const int mine = int(s.count);
-  MPI_Gather(&mine, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
-  const auto gather = [&](const auto& values, MPI_Datatype type, int width) {
-    std::vector<std::decay_t<decltype(values[0])>> all(rank == 0 ? std::size_t(s.total * width)
-                                                                 : 0);
-    std::vector<int> c(counts), o(counts.size(), 0);
-    int at = 0;
-    for (int r = 0; r < ranks; ++r) {
-      c[std::size_t(r)] = counts[std::size_t(r)] * width;
-      o[std::size_t(r)] = at;
-      at += c[std::size_t(r)];
-    }
-    MPI_Gatherv(values.data(), mine * width, type, all.data(), c.data(), o.data(), type, 0,
-                MPI_COMM_WORLD);
-    return all;
-  };
-  const std::vector<double> position = gather(s.position, MPI_DOUBLE, 3);
-  const std::vector<double> velocity = gather(s.velocity, MPI_DOUBLE, 3);
-  const std::vector<int> species = gather(s.species, MPI_INT, 1);
-  const std::vector<int> id = gather(s.id, MPI_INT, 1);
+  const Gathered all = gather_to_rank_0(s, rank, ranks);
   if (rank == 0)
-    file->append_snapshot(step, double(step), particles_of(position, velocity, species, id));
+    file->append_snapshot(step, double(step),
+                          particles_of(all.position, all.velocity, all.species, all.id));
 }
 
 // granshock's collective append: each rank writes its rows of the frame.
@@ -208,6 +197,66 @@ double median(std::vector<double> v) {
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
+// Plain datasets in a fresh file, gathered against collective: one Markdown table.
+void plain_datasets_table(const std::vector<long>& particles, int repeats, const std::string& path,
+                          int rank, int ranks) {
+  if (rank == 0)
+    std::printf(
+        "| particles | MB | gathered to rank 0 (s) | of which the gathers (s) | "
+        "collective parallel HDF5 (s) | collective / gathered |\n"
+        "|---|---|---|---|---|---|\n");
+  for (const long total : particles) {
+    const Share share = make_share(total, rank, ranks);
+    std::vector<double> gathered, gathers, collective;
+    for (int r = 0; r < repeats; ++r) {
+      double gather_seconds = 0;
+      gathered.push_back(timed([&] { write_gathered(share, path, rank, ranks, gather_seconds); }));
+      gathers.push_back(gather_seconds);
+      if (rank == 0) std::filesystem::remove(path);
+      collective.push_back(timed([&] { write_collective(share, path); }));
+      MPI_Barrier(MPI_COMM_WORLD);
+      if (rank == 0) std::filesystem::remove(path);
+    }
+    if (rank == 0)
+      std::printf("| %ld | %.1f | %.4f | %.4f | %.4f | %.2f |\n", total,
+                  double(total) * (6 * sizeof(double) + 2 * sizeof(int)) / 1e6, median(gathered),
+                  median(gathers), median(collective), median(collective) / median(gathered));
+  }
+}
+
+// The same frames appended to run.h5 files, one frame per repeat and way.
+void run_file_table(const std::vector<long>& particles, int repeats, const std::string& path,
+                    int rank, int ranks) {
+  if (rank == 0)
+    std::printf(
+        "\nrun.h5 (granshock's layout: chunked, shuffle + gzip 1, 2-D), a frame appended per "
+        "repeat\n\n| particles | gathered, rank 0 appends (s) | collective append (s) | "
+        "collective / gathered |\n|---|---|---|---|\n");
+  for (const long total : particles) {
+    const Share share = make_share(total, rank, ranks);
+    const std::filesystem::path gathered_path = path + ".gathered", collective_path = path;
+    std::optional<RunFile> gathered_file, collective_file;
+    if (rank == 0) {
+      gathered_file.emplace(RunFile::create(gathered_path, "", "", 2));
+      collective_file.emplace(RunFile::create(collective_path, "", "", 2));
+    }
+    std::vector<double> gathered, collective;
+    for (int r = 0; r < repeats; ++r) {
+      gathered.push_back(timed([&] { append_gathered(share, gathered_file, r + 1, rank, ranks); }));
+      collective.push_back(
+          timed([&] { append_collective(share, collective_path, collective_file, r + 1); }));
+    }
+    if (rank == 0) {
+      gathered_file.reset();
+      collective_file.reset();
+      std::filesystem::remove(gathered_path);
+      std::filesystem::remove(collective_path);
+      std::printf("| %ld | %.4f | %.4f | %.2f |\n", total, median(gathered), median(collective),
+                  median(collective) / median(gathered));
+    }
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -232,62 +281,11 @@ int main(int argc, char** argv) {
     long pid = long(getpid());
     MPI_Bcast(&pid, 1, MPI_LONG, 0, MPI_COMM_WORLD);
     const std::string path = dir + "/granshock_output_bench_" + std::to_string(pid) + ".h5";
-    if (rank == 0) {
+    if (rank == 0)
       std::printf("%d processes, %d repeats each (interleaved), files in %s; medians\n\n", ranks,
                   repeats, dir.c_str());
-      std::printf(
-          "| particles | MB | gathered to rank 0 (s) | of which the gathers (s) | "
-          "collective parallel HDF5 (s) | collective / gathered |\n"
-          "|---|---|---|---|---|---|\n");
-    }
-    for (const long total : particles) {
-      const Share share = make_share(total, rank, ranks);
-      std::vector<double> gathered, gathers, collective;
-      for (int r = 0; r < repeats; ++r) {
-        double gather_seconds = 0;
-        gathered.push_back(
-            timed([&] { write_gathered(share, path, rank, ranks, gather_seconds); }));
-        gathers.push_back(gather_seconds);
-        if (rank == 0) std::filesystem::remove(path);
-        collective.push_back(timed([&] { write_collective(share, path); }));
-        MPI_Barrier(MPI_COMM_WORLD);
-        if (rank == 0) std::filesystem::remove(path);
-      }
-      if (rank == 0)
-        std::printf("| %ld | %.1f | %.4f | %.4f | %.4f | %.2f |\n", total,
-                    double(total) * (6 * sizeof(double) + 2 * sizeof(int)) / 1e6, median(gathered),
-                    median(gathers), median(collective), median(collective) / median(gathered));
-    }
-    // The same frames appended to run.h5 files, one frame per repeat and way.
-    if (rank == 0)
-      std::printf(
-          "\nrun.h5 (granshock's layout: chunked, shuffle + gzip 1, 2-D), a frame appended per "
-          "repeat\n\n| particles | gathered, rank 0 appends (s) | collective append (s) | "
-          "collective / gathered |\n|---|---|---|---|\n");
-    for (const long total : particles) {
-      const Share share = make_share(total, rank, ranks);
-      const std::filesystem::path gathered_path = path + ".gathered", collective_path = path;
-      std::optional<RunFile> gathered_file, collective_file;
-      if (rank == 0) {
-        gathered_file.emplace(RunFile::create(gathered_path, "", "", 2));
-        collective_file.emplace(RunFile::create(collective_path, "", "", 2));
-      }
-      std::vector<double> gathered, collective;
-      for (int r = 0; r < repeats; ++r) {
-        gathered.push_back(
-            timed([&] { append_gathered(share, gathered_file, r + 1, rank, ranks); }));
-        collective.push_back(
-            timed([&] { append_collective(share, collective_path, collective_file, r + 1); }));
-      }
-      if (rank == 0) {
-        gathered_file.reset();
-        collective_file.reset();
-        std::filesystem::remove(gathered_path);
-        std::filesystem::remove(collective_path);
-        std::printf("| %ld | %.4f | %.4f | %.2f |\n", total, median(gathered), median(collective),
-                    median(collective) / median(gathered));
-      }
-    }
+    plain_datasets_table(particles, repeats, path, rank, ranks);
+    run_file_table(particles, repeats, path, rank, ranks);
   } catch (const CLI::ParseError& e) {
     status = rank == 0 ? app.exit(e) : 2;
   } catch (const std::exception& e) {
