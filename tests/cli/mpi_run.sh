@@ -12,6 +12,8 @@
 #   resume [A B [OUTPUT]]  stopped on 2 processes half way (slabs along A, default y),
 #               resumed on 3 (along B, default A), snapshots OUTPUT on both: the same as one
 #               process
+#   full_disk   the disk fills during a collective snapshot on 2 processes: said once,
+#               no process left waiting, and the run resumes to its end
 #   errors      bad input (a scene, a directory, a box too narrow for the slabs) said once,
 #               by one rank, exit code 2, no rank left waiting; other
 #               commands than `run` refused under mpirun
@@ -136,6 +138,27 @@ errors)
   "$granshock" info | grep -q '"launched": false' || fail "info without mpirun"
   mpi 2 "$granshock" info >"$dir/info" 2>&1
   [ "$(grep -c '"processes": 2' "$dir/info")" -eq 1 ] || { cat "$dir/info"; fail "info under mpirun"; }
+  ;;
+full_disk)
+  # The disk fills during a collective snapshot write (a file-size limit on granshock's
+  # processes, not on mpirun's): said once with the intact checkpoint, exit code 2, no
+  # process left waiting in the collective write; then the run resumes to its end.
+  dir=$(mktemp -d)
+  trap 'rm -rf "$dir"' EXIT
+  tight=(--set output.snapshot_interval=0.0005 --set output.checkpoint_interval=0.002
+         --set 'numerics.bin_size="6 d"' --set output.blocks=2 --snapshot-output collective)
+  timeout 120 "$mpiexec" --oversubscribe -np 2 bash -c 'ulimit -f 1500; exec "$@"' limited \
+    "$granshock" run "$scene" "${short[@]}" "${tight[@]}" --out "$dir/run" >"$dir/out" 2>"$dir/err"
+  status=$?
+  grep "granshock" "$dir/err"
+  [ "$status" -eq 2 ] || fail "a full disk under a collective write: exit status $status, not 2"
+  [ "$(grep -Ec "granshock: error: writing .*run.h5.* failed.*checkpoint.h5 \(step [0-9]+\) is intact" \
+      "$dir/err")" -eq 1 ] || fail "the full disk was not said once with the intact checkpoint"
+  timeout 300 "$mpiexec" --oversubscribe -np 2 "$granshock" run "$scene" "${short[@]}" \
+    "${tight[@]}" --out "$dir/run" --resume || fail "the resume after the full disk"
+  /usr/bin/python3 -c 'import json, sys
+sys.exit(0 if json.load(open(sys.argv[1]))["completed"] else 1)' "$dir/run/summary.json" ||
+    fail "the resumed run did not complete"
   ;;
 *)
   fail "unknown mode $mode"
