@@ -422,8 +422,8 @@ nlohmann::json BowShockRun::processes_summary() const {
       {"sync_share_per_rank", gather_to_root(comm_, wall > 0 ? halo.sync_seconds / wall : 0.0)},
       {"halo_bytes_sent_per_rank", gather_to_root(comm_, halo.bytes_sent)},
       {"rebalances", halo.rebalances},
-      // Output (docs/scaling.md): rank 0's seconds per snapshot (written collectively) and
-      // per checkpoint (gathered to rank 0 and written there).
+      // Output (docs/scaling.md): how snapshots were written, and rank 0's seconds per
+      // snapshot (either way) and per checkpoint (gathered to rank 0, written there).
       {"snapshot_output", options_.snapshot_output},
       {"snapshots_written_collectively", output_.collective_snapshots},
       {"snapshot_seconds_each",
