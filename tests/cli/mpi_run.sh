@@ -148,8 +148,8 @@ full_disk)
   tight=(--set output.snapshot_interval=0.0005 --set output.checkpoint_interval=0.002
          --set 'numerics.bin_size="6 d"' --set output.blocks=2 --snapshot-output collective)
   # Shared memory between the processes would meet the limit too (MPI warns and falls
-  # back): TCP between them keeps the test about granshock's write.
-  timeout 120 "$mpiexec" --oversubscribe --mca btl self,tcp -np 2 \
+  # back): TCP over the loopback between them keeps the test about granshock's write.
+  timeout 120 "$mpiexec" --oversubscribe --mca btl self,tcp --mca btl_tcp_if_include lo -np 2 \
     bash -c 'ulimit -f 1500; exec "$@"' limited \
     "$granshock" run "$scene" "${short[@]}" "${tight[@]}" --out "$dir/run" >"$dir/out" 2>"$dir/err"
   status=$?
