@@ -29,23 +29,27 @@ std::vector<FileRows> file_rows_by_layer(const std::vector<long>& counts, int la
   return rows;
 }
 
+std::vector<int> row_sources(const std::vector<FileRows>& rows, long total, std::size_t parts) {
+  std::vector<int> source(std::size_t(total), -1);
+  int k = 0;
+  for (const FileRows& r : rows)
+    for (long row = r.first; row < r.first + r.count; ++row) {
+      if (row < 0 || row >= total || source[std::size_t(row)] >= 0 || k >= int(parts))
+        throw std::logic_error("the parts' rows do not fill the frame once each");
+      source[std::size_t(row)] = k++;
+    }
+  if (k != total || std::size_t(k) != parts)
+    throw std::logic_error("the parts' rows do not fill the frame once each");
+  return source;
+}
+
 HostParticles gather_snapshot(const Communicator& comm, const SnapshotPart& part) {
   if (comm.size() == 1) return part.particles;
   HostParticles parts;  // rank by rank, each in the order of its rows
   append_particles(comm.gather(pack_particles(part.particles), 0), parts);
   const std::vector<FileRows> rows = gather_to_root(comm, part.rows);
   if (!comm.is_root()) return {};
-  std::vector<int> source(std::size_t(part.total), -1);  // of each file row, in `parts`
-  int k = 0;
-  for (const FileRows& r : rows)
-    for (long row = r.first; row < r.first + r.count; ++row) {
-      if (row < 0 || row >= part.total || source[std::size_t(row)] >= 0 || k >= int(parts.size()))
-        throw std::logic_error("snapshot parts do not fill the frame once each");
-      source[std::size_t(row)] = k++;
-    }
-  if (k != part.total || k != int(parts.size()))
-    throw std::logic_error("snapshot parts do not fill the frame once each");
-  return select_particles(parts, source);
+  return select_particles(parts, row_sources(rows, part.total, parts.size()));
 }
 
 }  // namespace granshock

@@ -33,9 +33,13 @@ struct SnapshotPart {
 // layers give none.
 std::vector<FileRows> file_rows_by_layer(const std::vector<long>& counts, int layers, int rank);
 
+// Where each of a frame's `total` rows comes from: its index in the parts of every rank
+// concatenated in rank order (`parts` particles), given their runs of rows concatenated
+// the same way. Throws std::logic_error when the runs do not fill the frame once each.
+std::vector<int> row_sources(const std::vector<FileRows>& rows, long total, std::size_t parts);
+
 // Collective: every process's part at its rows, the whole frame, on rank 0 (empty
-// elsewhere; one process: its own). Throws std::logic_error when the parts' rows do not
-// fill the frame once each.
+// elsewhere; one process: its own). Throws as row_sources.
 HostParticles gather_snapshot(const Communicator& comm, const SnapshotPart& part);
 
 }  // namespace granshock

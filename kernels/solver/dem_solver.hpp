@@ -364,10 +364,10 @@ class DemSolver final : public Solver {
       profile_sums_.from_host(mine ? profile : std::vector<double>(profile.size(), 0.0));
   }
 
-  // Several processes: the whole state on rank 0, every rank's particles merged into the
-  // global cell order (of the reference positions, as snapshot_part), with the list
-  // one process would hold, built from the reference positions as its last rebuild did;
-  // the other ranks get the scalars only. The result is the one-process state, bit for bit.
+  // Several processes: the whole state on rank 0, every rank's particles at their rows of
+  // one process's order (as snapshot_part), with the list one process would hold, built
+  // from the reference positions as its last rebuild did; the other ranks get the scalars
+  // only. The result is the one-process state, bit for bit.
   SolverState export_state() const override {
     SolverState s;
     s.dim = Dim;
@@ -383,11 +383,14 @@ class DemSolver final : public Solver {
       state_io::to_host(list_.neighbours, list_.total, s.neighbours);
       return s;
     }
+    const std::vector<int> cells = reference_cells();
+    long total = 0;
+    const std::vector<FileRows> rows = gather_to_root(comm_, slabs_->file_rows(cells, total));
     SolverState all = select_particles(s, {});
-    append_particles(comm_.gather(pack_particles(s), 0), all);
-    const std::vector<int> cells = gather_to_root(comm_, reference_cells());
+    append_particles(comm_.gather(pack_particles(select_particles(s, in_cell_order(cells))), 0),
+                     all);
     if (!comm_.is_root()) return all;
-    all = select_particles(all, in_cell_order(cells));
+    all = select_particles(all, row_sources(rows, total, all.size()));
     state_io::ReferenceLists lists = state_io::lists_from_reference<Dim, Real, ExecSpace>(
         all, grid_, box_, table_.radius, skin_);
     for (std::size_t k = 0; k < lists.order.size(); ++k)
@@ -475,8 +478,8 @@ class DemSolver final : public Solver {
     for (int i = 0; i < p_.n; ++i) cells[std::size_t(i)] = grid_.cell_of(x_ref, i);
     return cells;
   }
-  // The rows by increasing cell, rows of one cell in their given order: rank by rank,
-  // each in its own cell order, merge into the global cell order (a cell has one owner).
+  // The rows by increasing cell, rows of one cell in their given order (by id, as the
+  // last sort left them).
   static std::vector<int> in_cell_order(const std::vector<int>& cells) {
     std::vector<int> rows(cells.size());
     std::iota(rows.begin(), rows.end(), 0);

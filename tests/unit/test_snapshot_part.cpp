@@ -62,3 +62,15 @@ TEST(FileRowsByLayer, CountsThatAreNotRanksByLayersAreRefused) {
   EXPECT_THROW(file_rows_by_layer({1, 2, 3}, 2, 0), std::invalid_argument);
   EXPECT_THROW(file_rows_by_layer({1, 2}, 1, 2), std::invalid_argument);
 }
+
+// The source of each row, from every rank's runs concatenated in rank order: rank 0's two
+// particles fill rows 2-3, rank 1's rows 0-1.
+TEST(RowSources, EachRowFromItsRanksPart) {
+  EXPECT_EQ(row_sources({{2, 2}, {0, 2}}, 4, 4), (std::vector<int>{2, 3, 0, 1}));
+}
+
+TEST(RowSources, RowsFilledTwiceOrNotAtAllAreADefect) {
+  EXPECT_THROW(row_sources({{0, 2}, {1, 2}}, 3, 4), std::logic_error);  // row 1 twice
+  EXPECT_THROW(row_sources({{0, 2}}, 3, 2), std::logic_error);          // row 2 empty
+  EXPECT_THROW(row_sources({{0, 3}}, 3, 2), std::logic_error);          // more rows than parts
+}
