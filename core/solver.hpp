@@ -149,6 +149,9 @@ class Solver {
   virtual SnapshotPart snapshot_part() const = 0;
   virtual long steps_done() const = 0;
   virtual long list_builds() const = 0;
+  // Exact displacement passes made because the speed bound of the skin test failed
+  // (kernels/neighbours/rebuild_watch.hpp); a measure of what the bound saves.
+  virtual long exact_list_checks() const = 0;
   virtual double time() const = 0;
   virtual std::string variant() const = 0;  // e.g. "2d/double/frictionless/obstacle/OpenMP"
 };

@@ -27,6 +27,10 @@ struct SolverSetup {
   std::optional<Obstacle> obstacle;
   double dt = 0;
   double skin_m = 0;  // Verlet skin; 0 picks 0.3 of the largest diameter
+  // Measure every particle's displacement every step instead of bounding it by the top
+  // speed (kernels/neighbours/rebuild_watch.hpp): the same rebuild steps, slower; for
+  // tests and benchmarks.
+  bool exact_list_check = false;
   std::array<double, 3> gravity{0, 0, 0};
   Precision precision = Precision::double_precision;
   // Particles beyond the box on an open axis are deleted (inflow/outflow scenes).

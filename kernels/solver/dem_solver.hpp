@@ -21,6 +21,7 @@
 #include "neighbours/cell_grid.hpp"
 #include "neighbours/cell_sort.hpp"
 #include "neighbours/pair_loop.hpp"
+#include "neighbours/rebuild_watch.hpp"
 #include "neighbours/verlet_list.hpp"
 #include "particle_bytes.hpp"
 #include "particles/particle_store.hpp"
@@ -62,7 +63,8 @@ class DemSolver final : public Solver {
         skin_(Real(setup.skin())),
         grid_(CellGrid<Dim, Position>::make(setup.box, setup.max_diameter() + setup.skin())),
         population_(setup, box_, obstacle_),
-        history_overflow_("history_overflow") {
+        history_overflow_("history_overflow"),
+        watch_(0.5 * double(skin_), double(Real(setup.dt))) {
     integrator_.dt = Real(setup.dt);
     for (int d = 0; d < Dim; ++d) integrator_.gravity[d] = Real(setup.gravity[d]);
     p_.allocate(int(std::max<std::size_t>(capacity, 1)));
@@ -137,16 +139,17 @@ class DemSolver final : public Solver {
   void advance(long steps) override {
     if (steps <= 0) return;
     const WorkClock work = start_work_clock();
-    const Real rebuild_d2 = Real(0.25) * skin_ * skin_;  // (skin/2)^2
-    Real moved2 = integrator_.first_half(p_, table_);
+    watch_.measured(global_max(integrator_.first_half(p_, table_)));
     for (long s = 0; s < steps; ++s) {
-      if (Real(global_max(moved2)) > rebuild_d2) {
+      if (list_expired()) {
         rebuild_lists();
       } else if (slabs_) {
         slabs_->update_ghosts(p_);
       }
       if (s + 1 < steps) {
-        moved2 = fused_step();
+        const bool by_speed = !setup_.exact_list_check && watch_.next_drift_by_speed();
+        const double reported = global_max(fused_step(by_speed));
+        by_speed ? watch_.drifted(reported) : watch_.measured(reported);
       } else {
         compute_forces();
         integrator_.second_half(p_, table_);
@@ -165,6 +168,19 @@ class DemSolver final : public Solver {
                                  " simultaneous contacts: the packing is unphysically dense "
                                  "(huge overlaps?); reduce dt or check the scene");
     }
+  }
+
+  // Whether some particle moved more than skin/2 since the last build: proved not by the
+  // watch's bound when it can, else measured (neighbours/rebuild_watch.hpp). The exact
+  // comparison is made in Real, so both ways rebuild at the same steps.
+  bool list_expired() {
+    if (!watch_.exact_known()) {
+      if (watch_.bound_proves_valid()) return false;
+      ++exact_checks_;
+      watch_.measured(global_max(integrator_.largest_displacement2(p_)));
+    }
+    const Real rebuild_d2 = Real(0.25) * skin_ * skin_;  // (skin/2)^2
+    return Real(watch_.exact_d2()) > rebuild_d2;
   }
 
   // Wraps periodic coordinates, hands particles between processes, deletes escaped ones,
@@ -187,6 +203,7 @@ class DemSolver final : public Solver {
       list_.build(grid_, box_, sort_.cell_start, p_.x, p_.species, table_.radius, skin_, p_.n);
     }
     Kokkos::deep_copy(p_.x_ref, p_.x);
+    watch_.rebuilt();
     ++builds_;
   }
 
@@ -197,8 +214,9 @@ class DemSolver final : public Solver {
   }
 
   // Forces at the current positions, then the end of this step and the start of the next
-  // in one pass; returns the largest squared displacement since the last list build.
-  Real fused_step() {
+  // in one pass; returns the largest squared speed of the drift (by_speed) or the largest
+  // squared displacement since the last list build.
+  Real fused_step(bool by_speed) {
     if (int(x_next_.extent(0)) < p_.capacity()) {
       x_next_ = decltype(x_next_)("x_next", p_.capacity());
       v_next_ = decltype(v_next_)("v_next", p_.capacity());
@@ -209,9 +227,12 @@ class DemSolver final : public Solver {
         x_next_,
         v_next_,
         omega_next_,
-        integrator_.gravity};
+        integrator_.gravity,
+        by_speed,
+        p_.n};
     Real moved2 = 0;
-    Kokkos::parallel_reduce("fused_step", Policy(0, p_.n), kernel, Kokkos::Max<Real>(moved2));
+    Kokkos::parallel_reduce("fused_step", Policy(0, kernel.work_items(p_.n)), kernel,
+                            Kokkos::Max<Real>(moved2));
     std::swap(p_.x, x_next_);
     std::swap(p_.v, v_next_);
     if constexpr (V::friction) std::swap(p_.omega, omega_next_);
@@ -261,6 +282,7 @@ class DemSolver final : public Solver {
   }
   long steps_done() const override { return steps_; }
   long list_builds() const override { return builds_; }
+  long exact_list_checks() const override { return exact_checks_; }
   double time() const override { return double(steps_) * setup_.dt; }
   std::string variant() const override { return V::name() + "/" + ExecSpace::name(); }
 
@@ -558,6 +580,8 @@ class DemSolver final : public Solver {
   typename Store::ScalarView omega_next_;
   long steps_ = 0;
   long builds_ = 0;
+  RebuildWatch watch_;
+  long exact_checks_ = 0;  // exact displacement passes after a bound that failed
   double sync_seconds_ = 0;
 };
 

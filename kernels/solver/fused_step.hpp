@@ -7,11 +7,13 @@
 // Each partner's position and velocity are read while other threads move theirs, so the
 // new positions, velocities (and spins) go to second buffers that the solver swaps in
 // afterwards. The arithmetic, operation for operation, is that of the separate halves, so
-// the trajectory is bitwise the same (tests/reference/check_bitwise.sh). The pass also
-// returns the largest squared displacement since the last list build, like first_half().
+// the trajectory is bitwise the same (tests/reference/check_bitwise.sh).
 // Positions are Position (double) in every variant (device/position.hpp). The forces are
 // not stored: advance() ends with the unfused forces and second half, so
 // a caller always finds f, v and x of the same step.
+// What the pass reduces is chosen per step (neighbours/rebuild_watch.hpp): the largest
+// squared displacement since the last list build, or, while a bound on it suffices, the
+// largest squared speed, which spares the load of every particle's reference position.
 #pragma once
 
 #include <Kokkos_Core.hpp>
@@ -35,8 +37,33 @@ struct FusedStepKernel {
   VectorView v_next;
   ScalarView omega_next;  // with friction
   Vec<Dim, Real> gravity;
+  bool report_speed;  // reduce max |v|^2 instead of the displacement since the last build
 
-  KOKKOS_FORCEINLINE_FUNCTION void operator()(const int i, Real& worst) const {
+  int n;  // particles
+
+  // Host backends give each work item a run of particles, so that the running maximum and
+  // the step's constants stay in registers: through the reference `worst` and the
+  // functor's own fields, which the compiler must assume the stores to x_next and v_next
+  // may overwrite, they are reloaded per particle. A device keeps one particle per thread
+  // (neighbouring threads, neighbouring particles: coalesced loads).
+  static constexpr int run_length =
+      Kokkos::SpaceAccessibility<Kokkos::HostSpace, Mem>::accessible ? 64 : 1;
+  static int work_items(int particles) { return (particles + run_length - 1) / run_length; }
+
+  KOKKOS_FORCEINLINE_FUNCTION void operator()(const int run, Real& worst) const {
+    const int first = run * run_length;
+    const int last = first + run_length < n ? first + run_length : n;
+    const Real half = Real(0.5) * forces.dt, step = forces.dt;
+    const Vec<Dim, Real> g = gravity;
+    const bool by_speed = report_speed;
+    Real largest = worst;
+    for (int i = first; i < last; ++i) advance(i, half, step, g, by_speed, largest);
+    if (largest > worst) worst = largest;
+  }
+
+  KOKKOS_FORCEINLINE_FUNCTION void advance(const int i, const Real half, const Real step,
+                                           const Vec<Dim, Real>& g, const bool by_speed,
+                                           Real& worst) const {
     const auto& p = forces.p;
     const Vec<Dim, Position> xi = forces.pairs.position(i);
     const Vec<Dim, Real> vi = forces.velocity(i);
@@ -45,17 +72,20 @@ struct FusedStepKernel {
     forces.total(i, xi, vi, f, torque);
     const int s = p.species(i);
     const Real im = forces.table.inv_mass(s);
-    const Real half = Real(0.5) * forces.dt, step = forces.dt;
     Real d2 = 0;
     for (int d = 0; d < Dim; ++d) {
       Real v = vi[d];
-      v += half * (f[d] * im + gravity[d]);  // second half of this step
-      v += half * (f[d] * im + gravity[d]);  // first half of the next
-      const Position x = xi[d] + step * v;   // the drift: a Real step onto a Position
+      v += half * (f[d] * im + g[d]);       // second half of this step
+      v += half * (f[d] * im + g[d]);       // first half of the next
+      const Position x = xi[d] + step * v;  // the drift: a Real step onto a Position
       v_next(i, d) = v;
       x_next(i, d) = x;
-      const Real moved = Real(x - p.x_ref(i, d));
-      d2 += moved * moved;
+      if (by_speed) {
+        d2 += v * v;
+      } else {
+        const Real moved = Real(x - p.x_ref(i, d));
+        d2 += moved * moved;
+      }
     }
     if constexpr (V::friction) {
       const Real ii = forces.table.inv_inertia(s);

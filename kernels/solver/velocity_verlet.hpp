@@ -59,6 +59,25 @@ struct VelocityVerlet {
     return max_d2;
   }
 
+  // The largest squared displacement from x_ref, as first_half() measures it, without
+  // moving anything (for a rebuild check after a drift that reported speeds).
+  Real largest_displacement2(const Store& p) const {
+    const auto x = p.x, x_ref = p.x_ref;
+    Real max_d2 = 0;
+    Kokkos::parallel_reduce(
+        "verlet::displacement", Policy(0, p.n),
+        KOKKOS_LAMBDA(const int i, Real& worst) {
+          Real d2 = 0;
+          for (int d = 0; d < Dim; ++d) {
+            const Real moved = Real(x(i, d) - x_ref(i, d));
+            d2 += moved * moved;
+          }
+          if (d2 > worst) worst = d2;
+        },
+        Kokkos::Max<Real>(max_d2));
+    return max_d2;
+  }
+
   void second_half(const Store& p, const Table& table) const {
     const Real half = Real(0.5) * dt;
     const auto g = gravity;

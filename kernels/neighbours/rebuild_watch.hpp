@@ -1,0 +1,68 @@
+// When must the Verlet list be rebuilt? Once some particle has moved more than skin/2
+// from its position at the last build (docs/design.md, "The skin test"). Measuring that
+// exactly reads every particle's reference position each step; this watch avoids most of
+// those reads with a bound that needs only the fastest particle's speed of each step:
+//
+//   no particle has moved more than  B = d + sum over the drifts since of dt * max|v|,
+//
+// where d is the largest displacement at the last exact measurement (0 at a build). While
+// B stays below skin/2 (less a margin far above round-off), the exact test would answer
+// "still valid" as well; only when B reaches it is the exact displacement measured. So the
+// list is rebuilt at exactly the steps the exact test gives, and the trajectory is bitwise
+// that of measuring every step (tests/unit/test_backend_agreement.cpp, "RebuildWatch").
+// Host-only bookkeeping: the kernels report max|v|^2 or the exact max displacement^2.
+#pragma once
+
+#include <cmath>
+
+namespace granshock {
+
+class RebuildWatch {
+ public:
+  // rebuild_distance: skin/2; dt: the drift's time step.
+  RebuildWatch(double rebuild_distance, double dt)
+      : limit_(rebuild_distance * (1 - margin)), dt_(dt) {}
+
+  // The largest squared displacement since the last build, measured exactly.
+  void measured(double max_d2) {
+    exact_d2_ = max_d2;
+    bound_ = std::sqrt(max_d2);
+  }
+  // A drift by dt at speeds up to sqrt(max_v2) happened and was not measured.
+  void drifted(double max_v2) {
+    exact_d2_ = unknown;
+    speed_ = std::sqrt(max_v2);
+    bound_ += dt_ * speed_;
+  }
+  void rebuilt() { measured(0); }
+
+  // True when the exact displacement is known for the current positions.
+  bool exact_known() const { return exact_d2_ >= 0; }
+  double exact_d2() const { return exact_d2_; }
+  // True when the bound proves the list still valid: no exact measurement needed.
+  bool bound_proves_valid() const { return bound_ < limit_; }
+  // Whether the next drift should report speeds (the bound) rather than the exact
+  // displacement: only while the bound is far enough from the limit that measuring
+  // exactly afterwards is unlikely. A heuristic: the answer changes the cost, never the
+  // rebuild steps.
+  bool next_drift_by_speed() const { return bound_ + lookahead_steps * dt_ * speed_ < limit_; }
+
+  // Far above the relative round-off of the displacements and speeds (single precision
+  // included), so that B < limit_ implies the computed displacement is below skin/2.
+  static constexpr double margin = 1e-4;
+  // A drift is reported by speed only while this many more steps at the last known top
+  // speed keep the bound below the limit; near the limit every step is measured exactly
+  // instead of paying an extra exact pass after a bound that failed.
+  static constexpr double lookahead_steps = 16;
+
+ private:
+  static constexpr double unknown = -1;
+  double limit_, dt_;
+  double bound_ = 0;
+  double exact_d2_ = 0;
+  // The top speed of the last drift reported by speed (0 before the first: that drift
+  // is then reported by speed, and at worst one exact pass follows).
+  double speed_ = 0;
+};
+
+}  // namespace granshock
