@@ -22,6 +22,16 @@ lmp_version() {
   "$1" -h </dev/null | sed -n 's/^Large-scale Atomic\/Molecular Massively Parallel Simulator - //p'
 }
 
+# Whether a LAMMPS binary has the GRANULAR package (pair_style granular, fix
+# wall/gran/region). The help text is read whole first: in `lmp -h | grep -q` under
+# `set -o pipefail`, grep stops at the first match, lmp dies of SIGPIPE writing the rest,
+# and the pipeline fails although the package is there.
+lmp_has_granular() {
+  local help
+  help=$("$1" -h </dev/null 2>&1) || true
+  grep -qw GRANULAR <<<"$help"
+}
+
 # Prints the granshock binary: $GRANSHOCK, else <repo>/build/apps/granshock/granshock.
 find_granshock() {
   local root

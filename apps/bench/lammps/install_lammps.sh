@@ -25,8 +25,7 @@ apt-get update
 apt-get install -y lammps
 lmp=$(find_lmp)
 echo "installed: $lmp ($(lmp_version "$lmp"))"
-# The scripts need the GRANULAR package (pair_style granular, fix wall/gran/region).
-if ! "$lmp" -h | grep -qw GRANULAR; then
+if ! lmp_has_granular "$lmp"; then
   echo "install_lammps.sh: $lmp lacks the GRANULAR package" >&2
   exit 1
 fi
