@@ -8,6 +8,7 @@
 #pragma once
 
 #include <Kokkos_Core.hpp>
+#include <type_traits>
 #include <vector>
 
 #include "device/box_geometry.hpp"
@@ -109,19 +110,32 @@ class VerletList {
       c[d] = grid.coord(d, xi[d]);
     }
     const Real ri = radius(species(i));
+    const auto candidates = [&](int begin, int end) {
+      for (int j = begin; j < end; ++j) {
+        if (j == i) continue;
+        Vec<Dim, Position> image;
+        for (int d = 0; d < Dim; ++d) image[d] = xi[d] - x(j, d);
+        const Vec<Dim, Real> dx = to_real<Real>(box.minimum_image(image));
+        const Real cut = ri + radius(species(j)) + skin;
+        if (dot(dx, dx) < cut * cut) action(j);
+      }
+    };
+    if constexpr (std::is_same_v<Ghosts, NoGhostCells>) {
+      // Without ghosts, the three cells of a row along x (flat indices f, f + 1, f + 2)
+      // hold adjacent ranges of the sorted particles: unless the row wraps or an open
+      // edge cuts it, they are one range, visited in the same order as cell by cell
+      // (the neighbours' order: x fastest). A third of the cell lookups.
+      if (c[0] >= 1 && c[0] + 1 < grid.ncell[0]) {
+        for (int row = 0; row < CellGrid<Dim, Position>::neighbour_count() / 3; ++row) {
+          const int first = grid.neighbour(c, 3 * row);  // the row's cell at x - 1
+          if (first >= 0) candidates(cell_start(first), cell_start(first + 3));
+        }
+        return;
+      }
+    }
     for (int k = 0; k < CellGrid<Dim, Position>::neighbour_count(); ++k) {
       const int cell = grid.neighbour(c, k);
       if (cell < 0) continue;
-      const auto candidates = [&](int begin, int end) {
-        for (int j = begin; j < end; ++j) {
-          if (j == i) continue;
-          Vec<Dim, Position> image;
-          for (int d = 0; d < Dim; ++d) image[d] = xi[d] - x(j, d);
-          const Vec<Dim, Real> dx = to_real<Real>(box.minimum_image(image));
-          const Real cut = ri + radius(species(j)) + skin;
-          if (dot(dx, dx) < cut * cut) action(j);
-        }
-      };
       candidates(cell_start(cell), cell_start(cell + 1));
       candidates(ghosts.begin(cell), ghosts.end(cell));
     }
