@@ -9,7 +9,7 @@
 // B stays below skin/2 (less a margin far above round-off), the exact test would answer
 // "still valid" as well; only when B reaches it is the exact displacement measured. So the
 // list is rebuilt at exactly the steps the exact test gives, and the trajectory is bitwise
-// that of measuring every step (tests/unit/test_backend_agreement.cpp, "RebuildWatch").
+// that of measuring every step (tests/unit/test_rebuild_watch.cpp).
 // Host-only bookkeeping: the kernels report max|v|^2 or the exact max displacement^2.
 #pragma once
 

@@ -149,7 +149,11 @@ class DemSolver final : public Solver {
       if (s + 1 < steps) {
         const bool by_speed = !setup_.exact_list_check && watch_.next_drift_by_speed();
         const double reported = global_max(fused_step(by_speed));
-        by_speed ? watch_.drifted(reported) : watch_.measured(reported);
+        if (by_speed) {
+          watch_.drifted(reported);
+        } else {
+          watch_.measured(reported);
+        }
       } else {
         compute_forces();
         integrator_.second_half(p_, table_);
