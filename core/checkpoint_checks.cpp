@@ -1,6 +1,7 @@
 // The checks that need nothing but the checkpoint itself.
 #include <algorithm>
 #include <climits>
+#include <cmath>
 
 #include "checkpoint_check_support.hpp"
 
@@ -25,6 +26,11 @@ void check_counters(const SolverState& s) {
   if (s.history_slots < 0 || s.history_slots > 64)
     fail(fmt::format("/state@history_slots = {} is not in [0, 64]", s.history_slots));
   if (s.list_builds < 0) fail(fmt::format("/state@list_builds = {} is negative", s.list_builds));
+  if (!(s.skin >= 0 && std::isfinite(s.skin)))
+    fail(fmt::format("/state@skin = {} is not a length >= 0", s.skin));
+  if (s.last_build_step < 0 || s.last_build_step > s.step)
+    fail(fmt::format("/state@last_build_step = {} is not in [0, step = {}]", s.last_build_step,
+                     s.step));
   for (int d = 0; d < 3; ++d) {
     if (s.removed_low[d] < 0) fail(fmt::format("/state@removed_low[{}] is negative", d));
     if (s.removed_high[d] < 0) fail(fmt::format("/state@removed_high[{}] is negative", d));

@@ -152,6 +152,9 @@ class Solver {
   // Exact displacement passes made because the speed bound of the skin test failed
   // (kernels/neighbours/rebuild_watch.hpp); a measure of what the bound saves.
   virtual long exact_list_checks() const = 0;
+  // The Verlet skin the current list was built with (m): the scene's, or with
+  // SolverSetup::adaptive_skin the last choice of core/skin_model.hpp.
+  virtual double skin() const = 0;
   virtual double time() const = 0;
   virtual std::string variant() const = 0;  // e.g. "2d/double/frictionless/obstacle/OpenMP"
 };

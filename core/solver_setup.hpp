@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <optional>
 #include <vector>
 
@@ -27,6 +28,10 @@ struct SolverSetup {
   std::optional<Obstacle> obstacle;
   double dt = 0;
   double skin_m = 0;  // Verlet skin; 0 picks 0.3 of the largest diameter
+  // Re-choose the skin at each list build that a displacement forced, between
+  // smallest_adaptive_skin() and skin() (core/skin_model.hpp); the cells stay sized for
+  // skin().
+  bool adaptive_skin = false;
   // Measure every particle's displacement every step instead of bounding it by the top
   // speed (kernels/neighbours/rebuild_watch.hpp): the same rebuild steps, slower; for
   // tests and benchmarks.
@@ -38,6 +43,7 @@ struct SolverSetup {
 
   double max_diameter() const;
   double skin() const { return skin_m > 0 ? skin_m : 0.3 * max_diameter(); }
+  double smallest_adaptive_skin() const { return std::fmin(0.05 * max_diameter(), skin()); }
   // Every pair the scene can form, particle-particle and particle-obstacle.
   std::vector<PairProperties> all_pairs() const;
   PairProperties pair(int a, int b) const;

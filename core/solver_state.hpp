@@ -35,6 +35,11 @@ struct SolverState {
   std::vector<int> neighbour_offsets;      // n + 1
   std::vector<int> neighbours;             // neighbour_offsets[n]
   long list_builds = 0;
+  // The skin the list was built with (0: the scene's, as in files from before the
+  // adaptive skin) and the step of that build (adaptive skin: the next choice measures
+  // the displacement per step since then).
+  double skin = 0;
+  long last_build_step = 0;
   // Particles deleted so far through the lower/upper face of each axis.
   std::array<long, 3> removed_low{0, 0, 0};
   std::array<long, 3> removed_high{0, 0, 0};

@@ -80,6 +80,8 @@ void write_state(hid_t file, const SolverState& s) {
   h5::write_dataset(state.get(), "neighbours", s.neighbours,
                     {static_cast<hsize_t>(s.neighbours.size())});
   h5::write_attribute(state.get(), "list_builds", s.list_builds);
+  h5::write_attribute(state.get(), "skin", s.skin);
+  h5::write_attribute(state.get(), "last_build_step", s.last_build_step);
   h5::write_attribute(state.get(), "removed_low",
                       std::vector<long>(s.removed_low.begin(), s.removed_low.end()));
   h5::write_attribute(state.get(), "removed_high",
@@ -122,6 +124,14 @@ class Reader {
       expect_attribute_type<T>(g.get(), name);
       return h5::read_attribute<T>(g.get(), name);
     });
+  }
+  template <class T>
+  T optional_attribute(const char* group, const char* name, T absent) const {
+    {
+      Handle g = h5::open_group(file_, group);
+      if (!h5::has_attribute(g.get(), name)) return absent;
+    }
+    return attribute<T>(group, name);
   }
   template <std::size_t N>
   void axes(const char* group, const char* name, std::array<long, N>& out) const {
@@ -193,6 +203,9 @@ SolverState read_state(const Reader& in) {
   s.neighbour_offsets = in.dataset<int>("/state", "neighbour_offsets");
   s.neighbours = in.dataset<int>("/state", "neighbours");
   s.list_builds = in.attribute<long>("/state", "list_builds");
+  // Files from before the adaptive skin: the scene's skin, and no build step recorded.
+  s.skin = in.optional_attribute<double>("/state", "skin", 0.0);
+  s.last_build_step = in.optional_attribute<long>("/state", "last_build_step", s.step);
   in.axes("/state", "removed_low", s.removed_low);
   in.axes("/state", "removed_high", s.removed_high);
   return s;

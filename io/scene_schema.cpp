@@ -447,6 +447,13 @@ const Key kNumericsKeys[] = {
          fail(r.key(k), fmt::format("{} m", st.s.setup.skin_m), "must be > 0");
      },
      [](const Writing& w, toml::table& t, const std::string& k) { t.insert(k, w.s.setup.skin_m); }},
+    {"adaptive_skin", "bool",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       st.s.setup.adaptive_skin = r.boolean(k, false);
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) {
+       t.insert(k, w.s.setup.adaptive_skin);
+     }},
     {"mass_definition", "string",
      [](TableReader& r, Reading& st, const std::string& k) {
        st.s.mass_definition =

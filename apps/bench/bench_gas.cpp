@@ -43,6 +43,7 @@ struct Options {
   double dt = 5e-7;
   double skin_d = 0;  // Verlet skin in diameters; 0 keeps the solver's default
   bool exact_list_check = false;
+  bool adaptive_skin = false;
   double min_cpu_share = 0.9;
   int retries = 5;
   std::string json_path;
@@ -68,6 +69,7 @@ struct Row {
   double median = 0, min = 0, max = 0;
   double builds_per_1000_steps = 0;
   double exact_checks_per_1000_steps = 0;  // extra displacement passes (rebuild_watch.hpp)
+  double skin_at_end_d = 0;                // the skin of the last list, in diameters
   double contacts_per_particle = 0;
   // Resident memory the solver added, from before make_solver to the end of the warm-up
   // (every array allocated and touched), per particle; and what the process gained over
@@ -136,6 +138,7 @@ Row bench_one(const Options& o, double phi, int n_wanted) {
   setup.dt = o.dt;
   if (o.skin_d > 0) setup.skin_m = o.skin_d * setup.max_diameter();
   setup.exact_list_check = o.exact_list_check;
+  setup.adaptive_skin = o.adaptive_skin;
   setup.precision = o.precision == "single" ? granshock::Precision::single_precision
                                             : granshock::Precision::double_precision;
   granshock::GasSpec spec;
@@ -207,6 +210,7 @@ Row bench_one(const Options& o, double phi, int n_wanted) {
   row.exact_checks_per_1000_steps =
       1000.0 * double(solver->exact_list_checks() - checks_before) / double(timed_steps);
   row.contacts_per_particle = double(solver->diagnostics().contacts) / double(row.particles);
+  row.skin_at_end_d = solver->skin() / setup.max_diameter();
   row.timed_growth_bytes = resident_bytes() - resident_warm;
   return row;
 }
@@ -247,6 +251,7 @@ nlohmann::json to_json(const Row& r) {
           {"max", r.max},
           {"list_builds_per_1000_steps", r.builds_per_1000_steps},
           {"exact_list_checks_per_1000_steps", r.exact_checks_per_1000_steps},
+          {"skin_diameters_at_end", r.skin_at_end_d},
           {"contacts_per_particle", r.contacts_per_particle}};
 }
 
@@ -287,6 +292,9 @@ int main(int argc, char** argv) {
   app.add_flag("--exact-list-check", o.exact_list_check,
                "measure every particle's displacement every step instead of bounding it by "
                "the top speed (the same trajectory; to measure what the bound saves)");
+  app.add_flag("--adaptive-skin", o.adaptive_skin,
+               "let the solver re-choose the skin at each list build, up to --skin "
+               "(core/skin_model.hpp)");
   app.add_option("--min-cpu-share", o.min_cpu_share,
                  "a repeat whose process CPU time is below this share of wall time x threads "
                  "(other processes competed for the cores) is run again")
@@ -318,8 +326,9 @@ int main(int argc, char** argv) {
     std::printf("# CPU: %s\n", cpu_model().c_str());
     std::printf(
         "# paper mixture (steel/aluminium, d = 1 mm), e = %g, dt = %g s, sigma = %g m/s, "
-        "skin %g d, %d repeats of >= %g s each\n",
-        o.restitution, o.dt, o.sigma, skin_d, o.repeats, o.min_seconds);
+        "skin %g d%s, %d repeats of >= %g s each\n",
+        o.restitution, o.dt, o.sigma, skin_d, o.adaptive_skin ? " (adaptive, the largest)" : "",
+        o.repeats, o.min_seconds);
     print_table_header();
     std::fflush(stdout);
 
@@ -328,6 +337,9 @@ int main(int argc, char** argv) {
       for (const int n : o.particles) {
         const Row row = bench_one(o, phi, n);
         print_row(row);
+        if (o.adaptive_skin)
+          std::printf("# phi %g, N %d: adaptive skin at the end %.3f d\n", phi, row.particles,
+                      row.skin_at_end_d);
         const double worst =
             *std::min_element(row.cpu_utilisation.begin(), row.cpu_utilisation.end());
         if (!row.rejected_rates.empty())

@@ -9,7 +9,8 @@
 # Environment: REPEATS (default 5), THREADS (default 2), SECONDS_PER_RUN (default 2),
 #   CASES (default "0.1:32000 0.5:32000 0.1:2000000 0.5:2000000", phi:N),
 #   VARIANT (the reference's variant, default vl_1p), SIGMA (default 0.15 m/s, the
-#   reference's initial velocity spread), SKIN (granshock's skin in d; default: its own).
+#   reference's initial velocity spread), SKIN (granshock's skin in d; default: its own),
+#   ADAPTIVE=1 (granshock re-chooses its skin at each build, up to SKIN: --adaptive-skin).
 set -euo pipefail
 reference=$1
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
@@ -39,6 +40,7 @@ reference_rate() {  # phi n -> particle-steps/s (one run)
 granshock_rate() {  # phi n -> particle-steps/s (one repeat)
   local skin=()
   [[ -n ${SKIN:-} ]] && skin=(--skin "$SKIN")
+  [[ ${ADAPTIVE:-0} == 1 ]] && skin+=(--adaptive-skin)
   "$bench" --phi "$1" --particles "$2" --sigma "$sigma" --repeats 1 --min-seconds "$seconds" \
     "${skin[@]}" --json "$work/g.json" >/dev/null 2>&1
   /usr/bin/python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['results'][0]['median'])" \

@@ -103,6 +103,7 @@ nlohmann::json run_summary(const Scene& s, const Solver& solver, const InflowCon
   j["backend"] = Kokkos::DefaultExecutionSpace::name();
   j["threads"] = Kokkos::DefaultExecutionSpace().concurrency();
   j["list_builds"] = solver.list_builds();
+  j["skin_m"] = solver.skin();  // the last list's: adaptive skins change (core/skin_model.hpp)
   // The rate of this leg only (earlier legs of a resumed run are in wall_seconds).
   j["particle_steps_per_second"] =
       times.leg_seconds > 0 ? times.particle_steps / times.leg_seconds : 0.0;

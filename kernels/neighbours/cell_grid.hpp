@@ -5,6 +5,7 @@
 #pragma once
 
 #include <Kokkos_Core.hpp>
+#include <cmath>
 
 #include "device/box_geometry.hpp"
 #include "device/device_math.hpp"
@@ -34,6 +35,13 @@ struct CellGrid {
                         std::to_string(3 * min_cell_size) + " m)");
     }
     return g;
+  }
+
+  // The geometric mean of the cell sizes (host): the size of a cube of a cell's volume.
+  double mean_cell_size() const {
+    double volume = 1;
+    for (int d = 0; d < Dim; ++d) volume /= double(inv_cell[d]);
+    return std::pow(volume, 1.0 / Dim);
   }
 
   int total() const {

@@ -12,6 +12,7 @@
 #include <Kokkos_Core.hpp>
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <numeric>
 #include <optional>
 #include <stdexcept>
@@ -28,6 +29,7 @@
 #include "particles/population.hpp"
 #include "particles/slab_exchange.hpp"
 #include "sampling/bin_accumulator.hpp"
+#include "skin_model.hpp"
 #include "solver.hpp"
 #include "solver/contact_forces.hpp"
 #include "solver/diagnostics.hpp"
@@ -64,7 +66,9 @@ class DemSolver final : public Solver {
         grid_(CellGrid<Dim, Position>::make(setup.box, setup.max_diameter() + setup.skin())),
         population_(setup, box_, obstacle_),
         history_overflow_("history_overflow"),
-        watch_(0.5 * double(skin_), double(Real(setup.dt))) {
+        watch_(0.5 * double(skin_), double(Real(setup.dt))),
+        skin_model_{Dim, setup.max_diameter(), grid_.mean_cell_size(),
+                    setup.smallest_adaptive_skin(), setup.skin()} {
     integrator_.dt = Real(setup.dt);
     for (int d = 0; d < Dim; ++d) integrator_.gravity[d] = Real(setup.gravity[d]);
     p_.allocate(int(std::max<std::size_t>(capacity, 1)));
@@ -142,6 +146,7 @@ class DemSolver final : public Solver {
     watch_.measured(global_max(integrator_.first_half(p_, table_)));
     for (long s = 0; s < steps; ++s) {
       if (list_expired()) {
+        if (setup_.adaptive_skin) choose_skin();
         rebuild_lists();
       } else if (slabs_) {
         slabs_->update_ghosts(p_);
@@ -209,6 +214,23 @@ class DemSolver final : public Solver {
     Kokkos::deep_copy(p_.x_ref, p_.x);
     watch_.rebuilt();
     ++builds_;
+    last_build_step_ = steps_;
+  }
+
+  // Adaptive skin, before a build that a displacement forced: the skin of least modelled
+  // cost (core/skin_model.hpp) from the interval that ends here. Counts are summed over
+  // processes and the displacement is the global one, so every rank picks the same skin.
+  void choose_skin() {
+    const long steps = steps_ - last_build_step_;
+    const long particles = comm_.sum(long(p_.n)), entries = comm_.sum(long(list_.total));
+    if (steps <= 0 || particles <= 0) return;
+    const SkinSample interval{double(skin_), double(entries) / double(particles),
+                              std::sqrt(watch_.exact_d2()) / double(steps)};
+    use_skin(skin_model_.best(interval));
+  }
+  void use_skin(double skin) {
+    skin_ = Real(skin);
+    watch_ = RebuildWatch(0.5 * double(skin_), double(Real(setup_.dt)));
   }
 
   void compute_forces() {
@@ -287,6 +309,7 @@ class DemSolver final : public Solver {
   long steps_done() const override { return steps_; }
   long list_builds() const override { return builds_; }
   long exact_list_checks() const override { return exact_checks_; }
+  double skin() const override { return double(skin_); }
   double time() const override { return double(steps_) * setup_.dt; }
   std::string variant() const override { return V::name() + "/" + ExecSpace::name(); }
 
@@ -401,6 +424,8 @@ class DemSolver final : public Solver {
     s.next_id = population_.next_id();
     state_io::export_particles(p_, s);
     s.list_builds = builds_;
+    s.skin = double(skin_);
+    s.last_build_step = last_build_step_;
     const RemovalCounts gone = removed();
     s.removed_low = gone.low;
     s.removed_high = gone.high;
@@ -432,12 +457,15 @@ class DemSolver final : public Solver {
     const SolverFit f = state_io::solver_fit<Dim, Real, Store::history_slots>(setup_, V::friction);
     check_state(s);  // as read_checkpoint did: the checks below rely on it
     check_fit(s, f);
+    const Real skin = state_skin(s);
     state_io::check_lists<Dim, Real, ExecSpace>(s, grid_, box_, population_.escape_test(),
-                                                table_.radius, skin_);
+                                                table_.radius, skin);
     check_contacts(s, f);
     const RemovalCounts gone{s.removed_low, s.removed_high};
     steps_ = s.step;
     builds_ = s.list_builds;
+    last_build_step_ = s.last_build_step;
+    use_skin(double(skin));
     if (slabs_) {
       import_own_part(s);
       population_.restore(s.next_id, comm_.is_root() ? gone : RemovalCounts{});
@@ -542,6 +570,21 @@ class DemSolver final : public Solver {
     return largest;
   }
 
+  // The skin a state's list was built with: the scene's unless the skin adapts (files
+  // from before the adaptive skin store 0, the scene's).
+  Real state_skin(const SolverState& s) const {
+    if (s.skin == 0 || Real(s.skin) == Real(setup_.skin())) return Real(setup_.skin());
+    if (!setup_.adaptive_skin)
+      throw InvalidCheckpoint(
+          fmt::format("/state@skin = {} m, but the scene's skin is {} m and does not adapt", s.skin,
+                      setup_.skin()));
+    if (!(s.skin >= setup_.smallest_adaptive_skin() && s.skin <= setup_.skin()))
+      throw InvalidCheckpoint(
+          fmt::format("/state@skin = {} m is not in the adaptive range [{}, {}] m", s.skin,
+                      setup_.smallest_adaptive_skin(), setup_.skin()));
+    return Real(s.skin);
+  }
+
   static const SolverSetup& validated(const SolverSetup& s) {
     if (s.species.empty()) throw UserError("a scene needs at least one species");
     if (!(s.max_diameter() > 0)) throw UserError("particle diameters must be > 0");
@@ -585,7 +628,9 @@ class DemSolver final : public Solver {
   long steps_ = 0;
   long builds_ = 0;
   RebuildWatch watch_;
-  long exact_checks_ = 0;  // exact displacement passes after a bound that failed
+  SkinModel skin_model_;      // adaptive skin only
+  long last_build_step_ = 0;  // steps_ at the last list build
+  long exact_checks_ = 0;     // exact displacement passes after a bound that failed
   double sync_seconds_ = 0;
 };
 

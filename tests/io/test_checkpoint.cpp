@@ -9,6 +9,7 @@
 #include <random>
 
 #include "checkpoint_file.hpp"
+#include "io/checkpoint_edit.hpp"
 #include "io/io_test_support.hpp"
 #include "run_file.hpp"
 #include "user_error.hpp"
@@ -42,6 +43,8 @@ void expect_equal(const SolverState& a, const SolverState& b) {
   EXPECT_EQ(a.neighbour_offsets, b.neighbour_offsets);
   EXPECT_EQ(a.neighbours, b.neighbours);
   EXPECT_EQ(a.list_builds, b.list_builds);
+  EXPECT_EQ(a.skin, b.skin);
+  EXPECT_EQ(a.last_build_step, b.last_build_step);
   EXPECT_EQ(a.removed_low, b.removed_low);
   EXPECT_EQ(a.removed_high, b.removed_high);
 }
@@ -83,6 +86,8 @@ SolverState make_state(int n, int dim, int slots, unsigned seed) {
   }
   for (std::size_t i = 0; i < un * ud; ++i) s.reference_position.push_back(value());
   s.list_builds = 4321;
+  s.skin = 1.0 / 7.0 * 1e-4;  // an adaptive skin: no short decimal form
+  s.last_build_step = s.step - 321;
   s.removed_low = {1, 20000000000L, 3};
   s.removed_high = {4, 5, 6};
   if (slots > 0) {
@@ -247,6 +252,26 @@ TEST(Checkpoint, ReadingWhatIsNotACheckpointIsAUserError) {
     EXPECT_NE(std::string(e.what()).find("not a granshock checkpoint"), std::string::npos)
         << e.what();
   }
+}
+
+// Checkpoints from before the adaptive skin have neither attribute: they read as the
+// scene's skin (0) with the last build at the stored step.
+TEST(Checkpoint, FileWithoutSkinAttributesReadsAsTheScenesSkin) {
+  TempDir dir;
+  const auto path = dir / "checkpoint.h5";
+  const SolverState state = make_state<double>(8, 2, 0, 4);
+  write_checkpoint(path, state, make_extras());
+  test::edit_checkpoint(path, [](hid_t f) {
+    const hid_t group = H5Gopen2(f, "/state", H5P_DEFAULT);
+    test::h5_ok(H5Adelete(group, "skin"), "deleting @skin");
+    test::h5_ok(H5Adelete(group, "last_build_step"), "deleting @last_build_step");
+    H5Gclose(group);
+  });
+  CheckpointExtras extras;
+  const SolverState back = read_checkpoint(path, extras);
+  EXPECT_EQ(back.skin, 0.0);
+  EXPECT_EQ(back.last_build_step, state.step);
+  EXPECT_TRUE(same_bits(back.position, state.position));
 }
 
 TEST(Checkpoint, StoresNaturalShapes) {

@@ -87,6 +87,7 @@ const std::map<std::string, NonDefault>& non_default_values() {
       {"output.blocks", {{"output.blocks=4"}}},
       {"numerics.precision", {{"numerics.precision=\"single\""}}},
       {"numerics.skin", {{"numerics.skin=\"0.5 d\""}}},
+      {"numerics.adaptive_skin", {{"numerics.adaptive_skin=true"}}},
       {"numerics.mass_definition", {{"numerics.mass_definition=\"paper_sum\""}}},
       {"numerics.bin_size", {{"numerics.bin_size=\"4 d\""}}},
       {"numerics.field_scatter", {{"numerics.field_scatter=\"scatter_view\""}}},
@@ -154,6 +155,7 @@ std::vector<std::string> differences(const Scene& a, const Scene& b) {
   }
   d("setup.dt", sa.dt, sb.dt);
   d("setup.skin_m", sa.skin_m, sb.skin_m);
+  d("setup.adaptive_skin", sa.adaptive_skin, sb.adaptive_skin);
   d("setup.gravity", sa.gravity, sb.gravity);
   d("setup.precision", sa.precision, sb.precision);
   d("setup.delete_outside", sa.delete_outside, sb.delete_outside);
