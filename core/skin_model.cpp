@@ -46,6 +46,11 @@ double SkinModel::best(const SkinSample& at) const {
       fd = cost(at, d);
     }
   }
+  // An optimum at a bound is the bound itself, not a point 1e-13 inside: a skin held at
+  // the largest is then bitwise the fixed skin, and its run the fixed-skin run.
+  const double tolerance = 1e-9 * (largest - smallest);
+  if (a <= smallest + tolerance) return smallest;
+  if (b >= largest - tolerance) return largest;
   return 0.5 * (a + b);
 }
 
