@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "brute_force_contacts.hpp"
 #include "checkpoint_checks.hpp"
 #include "homogeneous_gas.hpp"
 #include "skin_model.hpp"
@@ -123,24 +124,7 @@ SolverSetup adaptive_gas(double phi, int particles, GasSpec& spec) {
   return s;
 }
 
-std::vector<std::pair<int, int>> brute_force_contacts(const SolverSetup& s,
-                                                      const HostParticles& p) {
-  std::vector<std::pair<int, int>> pairs;
-  for (std::size_t i = 0; i < p.size(); ++i)
-    for (std::size_t j = i + 1; j < p.size(); ++j) {
-      double r2 = 0;
-      for (int k = 0; k < 2; ++k) {
-        double dx = p.position[i][k] - p.position[j][k];
-        dx -= s.box.length(k) * std::round(dx / s.box.length(k));
-        r2 += dx * dx;
-      }
-      const double reach = s.species[p.species[i]].radius_m() + s.species[p.species[j]].radius_m();
-      if (r2 < reach * reach)
-        pairs.emplace_back(std::min(p.id[i], p.id[j]), std::max(p.id[i], p.id[j]));
-    }
-  std::sort(pairs.begin(), pairs.end());
-  return pairs;
-}
+using test::brute_force_contacts;
 
 }  // namespace
 

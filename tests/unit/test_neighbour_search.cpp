@@ -7,6 +7,7 @@
 
 #include <cmath>
 
+#include "brute_force_contacts.hpp"
 #include "device/counter_rng.hpp"
 #include "homogeneous_gas.hpp"
 #include "solver.hpp"
@@ -15,25 +16,7 @@ using namespace granshock;
 
 namespace {
 
-std::vector<std::pair<int, int>> brute_force_contacts(const SolverSetup& s,
-                                                      const HostParticles& p) {
-  std::vector<std::pair<int, int>> pairs;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    for (std::size_t j = i + 1; j < p.size(); ++j) {
-      double r2 = 0;
-      for (int d = 0; d < 2; ++d) {
-        double dx = p.position[i][d] - p.position[j][d];
-        if (s.box.periodic[d]) dx -= s.box.length(d) * std::round(dx / s.box.length(d));
-        r2 += dx * dx;
-      }
-      const double reach = s.species[p.species[i]].radius_m() + s.species[p.species[j]].radius_m();
-      if (r2 < reach * reach)
-        pairs.emplace_back(std::min(p.id[i], p.id[j]), std::max(p.id[i], p.id[j]));
-    }
-  }
-  std::sort(pairs.begin(), pairs.end());
-  return pairs;
-}
+using test::brute_force_contacts;
 
 // Two sizes (1 mm and 2 mm) so that the cut-off differs per pair.
 SolverSetup two_size_setup(double lx, double ly, std::array<bool, 3> periodic) {
