@@ -578,11 +578,14 @@ class DemSolver final : public Solver {
       throw InvalidCheckpoint(
           fmt::format("/state@skin = {} m, but the scene's skin is {} m and does not adapt", s.skin,
                       setup_.skin()));
-    if (!(s.skin >= setup_.smallest_adaptive_skin() && s.skin <= setup_.skin()))
+    // Compared in Real: a single-precision solver stores its float skin, which may round
+    // below the double bounds.
+    const Real skin = Real(s.skin);
+    if (!(skin >= Real(setup_.smallest_adaptive_skin()) && skin <= Real(setup_.skin())))
       throw InvalidCheckpoint(
           fmt::format("/state@skin = {} m is not in the adaptive range [{}, {}] m", s.skin,
                       setup_.smallest_adaptive_skin(), setup_.skin()));
-    return Real(s.skin);
+    return skin;
   }
 
   static const SolverSetup& validated(const SolverSetup& s) {

@@ -227,3 +227,28 @@ TEST(AdaptiveSkin, SkinHeldAtTheLargestIsTheFixedSkinRun) {
     ASSERT_EQ(pa.velocity[i], pf.velocity[i]) << "particle " << pa.id[i];
   }
 }
+
+// A single-precision solver stores its float skin; at the smallest bound that float lies
+// below the double bound, and the state must still be accepted (a bug fixed: the range
+// was checked in double, so such a checkpoint could not be resumed).
+TEST(AdaptiveSkin, SinglePrecisionSkinAtTheSmallestBoundIsAccepted) {
+  GasSpec spec;
+  SolverSetup s = adaptive_gas(0.1, 400, spec);
+  s.precision = Precision::single_precision;
+  // Particles at rest on a lattice 2 d apart: no partner within d + 0.3 d, so the lists
+  // of every skin are the same (empty) and the state is consistent whatever skin it says.
+  HostParticles lattice;
+  const int per_row = int(s.box.length(0) / (2 * d));
+  for (int k = 0; k < spec.particles; ++k)
+    lattice.add({(0.5 + 2 * (k % per_row)) * d, (0.5 + 2 * (k / per_row)) * d, 0}, {0, 0, 0}, k % 2,
+                k);
+  auto first = make_solver(s, spec.particles);
+  first->set_particles(lattice);
+  SolverState state = first->export_state();
+  ASSERT_EQ(state.neighbours.size(), 0u);
+  state.skin = double(float(s.smallest_adaptive_skin()));
+  ASSERT_LT(state.skin, s.smallest_adaptive_skin()) << "the case needs a float below the bound";
+  auto resumed = make_solver(s, spec.particles);
+  resumed->import_state(state);
+  EXPECT_EQ(resumed->skin(), state.skin);
+}
