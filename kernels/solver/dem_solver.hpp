@@ -217,22 +217,6 @@ class DemSolver final : public Solver {
     last_build_step_ = steps_;
   }
 
-  // Adaptive skin, before a build that a displacement forced: the skin of least modelled
-  // cost (core/skin_model.hpp) from the interval that ends here. Counts are summed over
-  // processes and the displacement is the global one, so every rank picks the same skin.
-  void choose_skin() {
-    const long steps = steps_ - last_build_step_;
-    const long particles = comm_.sum(long(p_.n)), entries = comm_.sum(long(list_.total));
-    if (steps <= 0 || particles <= 0) return;
-    const SkinSample interval{double(skin_), double(entries) / double(particles),
-                              std::sqrt(watch_.exact_d2()) / double(steps)};
-    use_skin(skin_model_.best(interval));
-  }
-  void use_skin(double skin) {
-    skin_ = Real(skin);
-    watch_ = RebuildWatch(0.5 * double(skin_), double(Real(setup_.dt)));
-  }
-
   void compute_forces() {
     ContactForceKernel<V, ExecSpace> kernel{
         p_, pair_loop(), table_, obstacle_, Real(setup_.dt), history_overflow_, {}};
@@ -568,6 +552,22 @@ class DemSolver final : public Solver {
     sync_seconds_ +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return largest;
+  }
+
+  // Adaptive skin, before a build that a displacement forced: the skin of least modelled
+  // cost (core/skin_model.hpp) from the interval that ends here. Counts are summed over
+  // processes and the displacement is the global one, so every rank picks the same skin.
+  void choose_skin() {
+    const long steps = steps_ - last_build_step_;
+    const long particles = comm_.sum(long(p_.n)), entries = comm_.sum(long(list_.total));
+    if (steps <= 0 || particles <= 0) return;
+    const SkinSample interval{double(skin_), double(entries) / double(particles),
+                              std::sqrt(watch_.exact_d2()) / double(steps)};
+    use_skin(skin_model_.best(interval));
+  }
+  void use_skin(double skin) {
+    skin_ = Real(skin);
+    watch_ = RebuildWatch(0.5 * double(skin_), double(Real(setup_.dt)));
   }
 
   // The skin a state's list was built with: the scene's unless the skin adapts (files

@@ -126,6 +126,16 @@ SolverSetup adaptive_gas(double phi, int particles, GasSpec& spec) {
 
 using test::brute_force_contacts;
 
+// The same particles, in the same order, with bitwise the same positions and velocities.
+void expect_bitwise_equal(const HostParticles& a, const HostParticles& b) {
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    ASSERT_EQ(a.id[i], b.id[i]);
+    ASSERT_EQ(a.position[i], b.position[i]) << "particle " << a.id[i];
+    ASSERT_EQ(a.velocity[i], b.velocity[i]) << "particle " << a.id[i];
+  }
+}
+
 }  // namespace
 
 // A dense gas thins its skin below the scene's 0.3 d, and its lists stay complete: the
@@ -168,13 +178,7 @@ TEST(AdaptiveSkin, ResumesBitwiseFromAnExportedState) {
   resumed->import_state(middle);
   EXPECT_EQ(resumed->skin(), first->skin());
   resumed->advance(1300);
-  const HostParticles a = straight->particles(), b = resumed->particles();
-  ASSERT_EQ(a.size(), b.size());
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    ASSERT_EQ(a.id[i], b.id[i]);
-    ASSERT_EQ(a.position[i], b.position[i]) << "particle " << a.id[i];
-    ASSERT_EQ(a.velocity[i], b.velocity[i]) << "particle " << a.id[i];
-  }
+  expect_bitwise_equal(straight->particles(), resumed->particles());
   EXPECT_EQ(resumed->skin(), straight->skin());
   EXPECT_EQ(resumed->list_builds(), straight->list_builds());
 }
@@ -220,12 +224,7 @@ TEST(AdaptiveSkin, SkinHeldAtTheLargestIsTheFixedSkinRun) {
   f->advance(4000);
   EXPECT_GT(a->list_builds(), 3);
   EXPECT_EQ(a->skin(), fixed.skin());
-  const HostParticles pa = a->particles(), pf = f->particles();
-  ASSERT_EQ(pa.size(), pf.size());
-  for (std::size_t i = 0; i < pa.size(); ++i) {
-    ASSERT_EQ(pa.position[i], pf.position[i]) << "particle " << pa.id[i];
-    ASSERT_EQ(pa.velocity[i], pf.velocity[i]) << "particle " << pa.id[i];
-  }
+  expect_bitwise_equal(a->particles(), f->particles());
 }
 
 // A single-precision solver stores its float skin; at the smallest bound that float lies
