@@ -15,6 +15,7 @@
 
 #include "bin_layout.hpp"
 #include "device/device_math.hpp"
+#include "device/prefetch.hpp"
 
 namespace granshock {
 
@@ -28,6 +29,11 @@ struct GridIndex {
   bool wrap;
   static GridIndex of(const BinLayout& l) {
     return {l.x0, l.y0, 1.0 / l.dx, 1.0 / l.dy, l.nx, l.ny, l.x_period > 0};
+  }
+  // The row that y falls in, clamped to [0, ny].
+  KOKKOS_INLINE_FUNCTION int row_of(double y) const {
+    const double fy = (y - y0) * inv_dy;
+    return fy < 0 ? 0 : (fy >= ny ? ny : int(fy));
   }
   // The bin, and its row in `row`.
   KOKKOS_INLINE_FUNCTION int operator()(double x, double y, int& row) const {
@@ -60,6 +66,18 @@ struct SampleContribution {
     const int bin = where(double(p.x(i, 0)), double(p.x(i, 1)), row);
     if (bin < 0) return;
     add_to_bin(bin, i, add, [&](int k) { return virial(i, k); });
+  }
+
+  // Fetches the lines of bin `bin` in `sums` ahead of add_to_bin (a hint, no effect on
+  // the sums): a sample's bins are cold, and waiting for each in turn was over half of a
+  // sample's time (docs/fields.md, "Cost of sampling").
+  template <class Sums>
+  KOKKOS_FORCEINLINE_FUNCTION void prefetch_bin(const Sums& sums, int bin) const {
+    const double* first = &sums(block_offset + long(bin) * quantities);
+    constexpr int per_line = 64 / sizeof(double);
+    const double* last = first + quantities - 1;
+    for (const double* line = first; line < last; line += per_line) prefetch_for_write(line);
+    prefetch_for_write(last);
   }
 
   // Particle i's moments, and its virial terms virial_of(k), added to bin `bin`.
@@ -171,14 +189,12 @@ class BinAccumulator {
     }
   }
 
-  // Threads that own rows (ScatterStrategy::rows, solver/row_owner_sampling.hpp): the
-  // largest power of two not above the backend's threads, capped at 16 (each scans every
-  // particle; a mask picks a row's owner, no division). ScatterStrategy::automatic takes
-  // rows only on host backends.
+  // Threads that own bands of rows (ScatterStrategy::rows, solver/row_owner_sampling.hpp):
+  // the backend's threads, capped at 16 (each reads every particle's bins).
+  // ScatterStrategy::automatic takes rows only on host backends.
   static int row_owners() {
-    int owners = 1;
-    while (owners * 2 <= ExecSpace().concurrency() && owners < 16) owners *= 2;
-    return owners;
+    const int threads = ExecSpace().concurrency();
+    return threads < 16 ? threads : 16;
   }
   static ScatterStrategy resolve(ScatterStrategy s) {
     if (s != ScatterStrategy::automatic) return s;

@@ -370,16 +370,21 @@ class DemSolver final : public Solver {
     const Part profile_part{
         profile,     p_, {}, block * profile_sums_.block_size(), quantities, BinLayout::per_species,
         virial_terms};
+    if (int(sample_bins_.extent(0)) < p_.n)
+      sample_bins_ = decltype(sample_bins_)("sample_bins", p_.capacity());
+    Kokkos::parallel_for("fields::locate", Policy(0, p_.n),
+                         LocateSampleBins<decltype(p_.x), decltype(sample_bins_)>{
+                             grid, profile, !profile_sums_.empty(), p_.x, sample_bins_});
     const int owners = BinAccumulator<ExecSpace>::row_owners();
-    const RowOwnerSamplePass<V, ExecSpace, Part> pass{
+    const RowOwnerSamplePass<V, ExecSpace, Part, decltype(sample_bins_)> pass{
         {p_, pair_loop(), table_, obstacle_, Real(setup_.dt), history_overflow_, {}},
         grid_part,
         profile_part,
         grid_sums_.sums(),
         profile_sums_.sums(),
-        !profile_sums_.empty(),
+        sample_bins_,
         p_.n,
-        owners - 1};
+        owners};
     Kokkos::parallel_for("fields::sample_rows", Policy(0, owners), pass);
   }
 
@@ -625,7 +630,8 @@ class DemSolver final : public Solver {
   FieldSampling sampling_;
   BinAccumulator<ExecSpace> grid_sums_, profile_sums_;
   Kokkos::View<Real * [Dim * Dim], Mem> virial_;
-  typename Store::PositionView x_next_;  // the fused step's second buffers
+  Kokkos::View<int* [2], Mem> sample_bins_;  // row-owner sampling: each particle's bins
+  typename Store::PositionView x_next_;      // the fused step's second buffers
   typename Store::VectorView v_next_;
   typename Store::ScalarView omega_next_;
   long steps_ = 0;
