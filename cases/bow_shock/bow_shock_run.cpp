@@ -201,6 +201,7 @@ int BowShockRun::advance_to_end() {
     particle_steps_ += double(solver_->global_size()) * double(next - step);
     solver_->advance(next - step);
     step = next;
+    meter_->observe(step);
     actions_at(step);
     warn_if_inflow_falls_short();
     // Collective: every rank takes part in the counts rank 0 reports.

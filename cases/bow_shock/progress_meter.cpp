@@ -11,7 +11,8 @@ ProgressMeter::ProgressMeter(long first_step, long total_steps, double interval_
       out_(out),
       start_(Clock::now()),
       last_(start_),
-      last_step_(first_step) {}
+      rate_since_(start_),
+      rate_since_step_(first_step) {}
 
 double ProgressMeter::elapsed_s() const {
   return std::chrono::duration<double>(Clock::now() - start_).count();
@@ -19,6 +20,15 @@ double ProgressMeter::elapsed_s() const {
 
 bool ProgressMeter::due() const {
   return std::chrono::duration<double>(Clock::now() - last_).count() >= interval_s_;
+}
+
+void ProgressMeter::observe(long step) {
+  const auto now = Clock::now();
+  const double since = std::chrono::duration<double>(now - rate_since_).count();
+  if (since < rate_window_s) return;
+  step_rate_ = double(step - rate_since_step_) / since;
+  rate_since_ = now;
+  rate_since_step_ = step;
 }
 
 long ProgressMeter::steps_per(double seconds, long fallback) const {
@@ -29,10 +39,7 @@ void ProgressMeter::report(long step, double time_s, long particles, long contac
                            double particle_steps, const std::string& note) {
   const auto now = Clock::now();
   const double elapsed = std::chrono::duration<double>(now - start_).count();
-  const double since = std::chrono::duration<double>(now - last_).count();
-  if (since > 0) step_rate_ = double(step - last_step_) / since;
   last_ = now;
-  last_step_ = step;
   const double overall = elapsed > 0 ? double(step - first_step_) / elapsed : 0;
   const double eta = overall > 0 ? double(total_steps_ - step) / overall : 0;
   const int eta_s = int(std::lround(eta));

@@ -19,16 +19,22 @@ class ProgressMeter {
   void report(long step, double time_s, long particles, long contacts, double particle_steps,
               const std::string& note = {});
   double elapsed_s() const;
-  // Steps that fit in about `seconds` of wall time at the rate seen so far.
+  // The run has reached `step`: the step rate is measured from these calls, shown or not
+  // (a --quiet run sizes its time slices by it as well).
+  void observe(long step);
+  // Steps that fit in about `seconds` of wall time at the rate seen so far, `fallback`
+  // before the first measurement.
   long steps_per(double seconds, long fallback) const;
+  // The shortest wall time a rate is measured over.
+  static constexpr double rate_window_s = 0.02;
 
  private:
   using Clock = std::chrono::steady_clock;
   long first_step_, total_steps_;
   double interval_s_;
   std::FILE* out_;
-  Clock::time_point start_, last_;
-  long last_step_ = 0;
+  Clock::time_point start_, last_, rate_since_;
+  long rate_since_step_ = 0;
   double step_rate_ = 0;  // steps per wall second
 };
 
