@@ -152,6 +152,9 @@ class Solver {
   // Exact displacement passes made because the speed bound of the skin test failed
   // (kernels/neighbours/rebuild_watch.hpp); a measure of what the bound saves.
   virtual long exact_list_checks() const = 0;
+  // Parallel regions that ran fused steps: one per step, or one per run of steps with
+  // SolverSetup::steps_per_region > 1 (kernels/solver/fused_steps.hpp).
+  virtual long step_regions() const = 0;
   // The Verlet skin the current list was built with (m): the scene's, or with
   // SolverSetup::adaptive_skin the last choice of core/skin_model.hpp.
   virtual double skin() const = 0;

@@ -36,6 +36,10 @@ struct SolverSetup {
   // speed (kernels/neighbours/rebuild_watch.hpp): the same rebuild steps, slower; for
   // tests and benchmarks.
   bool exact_list_check = false;
+  // Host backends on one process: run up to this many fused steps in one parallel region
+  // (kernels/solver/fused_steps.hpp); 1 gives one region per step. The trajectory is the
+  // same either way.
+  long steps_per_region = 4096;
   std::array<double, 3> gravity{0, 0, 0};
   Precision precision = Precision::double_precision;
   // Particles beyond the box on an open axis are deleted (inflow/outflow scenes).

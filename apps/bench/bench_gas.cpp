@@ -44,6 +44,7 @@ struct Options {
   double skin_d = 0;  // Verlet skin in diameters; 0 keeps the solver's default
   bool exact_list_check = false;
   bool adaptive_skin = false;
+  long steps_per_region = 0;  // 0 keeps the solver's default
   double min_cpu_share = 0.9;
   int retries = 5;
   std::string json_path;
@@ -69,6 +70,7 @@ struct Row {
   double median = 0, min = 0, max = 0;
   double builds_per_1000_steps = 0;
   double exact_checks_per_1000_steps = 0;  // extra displacement passes (rebuild_watch.hpp)
+  double steps_per_region = 0;             // timed steps / parallel regions that ran them
   double skin_at_end_d = 0;                // the skin of the last list, in diameters
   double contacts_per_particle = 0;
   // Resident memory the solver added, from before make_solver to the end of the warm-up
@@ -139,6 +141,7 @@ Row bench_one(const Options& o, double phi, int n_wanted) {
   if (o.skin_d > 0) setup.skin_m = o.skin_d * setup.max_diameter();
   setup.exact_list_check = o.exact_list_check;
   setup.adaptive_skin = o.adaptive_skin;
+  if (o.steps_per_region > 0) setup.steps_per_region = o.steps_per_region;
   setup.precision = o.precision == "single" ? granshock::Precision::single_precision
                                             : granshock::Precision::double_precision;
   granshock::GasSpec spec;
@@ -185,6 +188,7 @@ Row bench_one(const Options& o, double phi, int n_wanted) {
   // the solver: it is run again, at most `retries` times per case.
   const long builds_before = solver->list_builds();
   const long checks_before = solver->exact_list_checks();
+  const long regions_before = solver->step_regions();
   long timed_steps = 0;
   while (int(row.rates.size()) < o.repeats) {
     const double cpu_before = process_cpu_seconds();
@@ -209,6 +213,8 @@ Row bench_one(const Options& o, double phi, int n_wanted) {
       1000.0 * double(solver->list_builds() - builds_before) / double(timed_steps);
   row.exact_checks_per_1000_steps =
       1000.0 * double(solver->exact_list_checks() - checks_before) / double(timed_steps);
+  row.steps_per_region =
+      double(timed_steps) / double(std::max(1L, solver->step_regions() - regions_before));
   row.contacts_per_particle = double(solver->diagnostics().contacts) / double(row.particles);
   row.skin_at_end_d = solver->skin() / setup.max_diameter();
   row.timed_growth_bytes = resident_bytes() - resident_warm;
@@ -251,6 +257,7 @@ nlohmann::json to_json(const Row& r) {
           {"max", r.max},
           {"list_builds_per_1000_steps", r.builds_per_1000_steps},
           {"exact_list_checks_per_1000_steps", r.exact_checks_per_1000_steps},
+          {"steps_per_region", r.steps_per_region},
           {"skin_diameters_at_end", r.skin_at_end_d},
           {"contacts_per_particle", r.contacts_per_particle}};
 }
@@ -295,6 +302,10 @@ int main(int argc, char** argv) {
   app.add_flag("--adaptive-skin", o.adaptive_skin,
                "let the solver re-choose the skin at each list build, up to --skin "
                "(core/skin_model.hpp)");
+  app.add_option("--steps-per-region", o.steps_per_region,
+                 "at most this many steps in one parallel region (1: one region per step; "
+                 "default: the solver's, kernels/solver/fused_steps.hpp)")
+      ->check(CLI::PositiveNumber);
   app.add_option("--min-cpu-share", o.min_cpu_share,
                  "a repeat whose process CPU time is below this share of wall time x threads "
                  "(other processes competed for the cores) is run again")

@@ -10,29 +10,54 @@
 // "still valid" as well; only when B reaches it is the exact displacement measured. So the
 // list is rebuilt at exactly the steps the exact test gives, and the trajectory is bitwise
 // that of measuring every step (tests/unit/test_rebuild_watch.cpp).
-// Host-only bookkeeping: the kernels report max|v|^2 or the exact max displacement^2.
+// The bookkeeping is the host's (the kernels report max|v|^2 or the exact max
+// displacement^2); its bound alone, SpeedBound, also runs inside the host backends'
+// multi-step pass (solver/fused_steps.hpp), which must decide as the host would.
 #pragma once
 
-#include <cmath>
+#include <Kokkos_Core.hpp>
+
+#include "device/device_math.hpp"
 
 namespace granshock {
+
+// B and the top speed of the last drift, and the two questions asked of them.
+struct SpeedBound {
+  double limit, dt;
+  double bound = 0;
+  // The top speed of the last drift reported by speed (0 before the first: that drift
+  // is then reported by speed, and at worst one exact pass follows).
+  double speed = 0;
+
+  // A drift is reported by speed only while this many more steps at the last known top
+  // speed keep the bound below the limit; near the limit every step is measured exactly
+  // instead of paying an extra exact pass after a bound that failed.
+  static constexpr double lookahead_steps = 16;
+
+  KOKKOS_INLINE_FUNCTION void drifted(double max_v2) {
+    speed = dmath::sqrt(max_v2);
+    bound += dt * speed;
+  }
+  KOKKOS_INLINE_FUNCTION bool proves_valid() const { return bound < limit; }
+  KOKKOS_INLINE_FUNCTION bool next_drift_by_speed() const {
+    return bound + lookahead_steps * dt * speed < limit;
+  }
+};
 
 class RebuildWatch {
  public:
   // rebuild_distance: skin/2; dt: the drift's time step.
-  RebuildWatch(double rebuild_distance, double dt)
-      : limit_(rebuild_distance * (1 - margin)), dt_(dt) {}
+  RebuildWatch(double rebuild_distance, double dt) : bound_{rebuild_distance * (1 - margin), dt} {}
 
   // The largest squared displacement since the last build, measured exactly.
   void measured(double max_d2) {
     exact_d2_ = max_d2;
-    bound_ = std::sqrt(max_d2);
+    bound_.bound = dmath::sqrt(max_d2);
   }
   // A drift by dt at speeds up to sqrt(max_v2) happened and was not measured.
   void drifted(double max_v2) {
     exact_d2_ = unknown;
-    speed_ = std::sqrt(max_v2);
-    bound_ += dt_ * speed_;
+    bound_.drifted(max_v2);
   }
   void rebuilt() { measured(0); }
 
@@ -40,29 +65,23 @@ class RebuildWatch {
   bool exact_known() const { return exact_d2_ >= 0; }
   double exact_d2() const { return exact_d2_; }
   // True when the bound proves the list still valid: no exact measurement needed.
-  bool bound_proves_valid() const { return bound_ < limit_; }
+  bool bound_proves_valid() const { return bound_.proves_valid(); }
   // Whether the next drift should report speeds (the bound) rather than the exact
   // displacement: only while the bound is far enough from the limit that measuring
   // exactly afterwards is unlikely. A heuristic: the answer changes the cost, never the
   // rebuild steps.
-  bool next_drift_by_speed() const { return bound_ + lookahead_steps * dt_ * speed_ < limit_; }
+  bool next_drift_by_speed() const { return bound_.next_drift_by_speed(); }
+  const SpeedBound& speed_bound() const { return bound_; }
 
   // Far above the relative round-off of the displacements and speeds (single precision
-  // included), so that B < limit_ implies the computed displacement is below skin/2.
+  // included), so that B < limit implies the computed displacement is below skin/2.
   static constexpr double margin = 1e-4;
-  // A drift is reported by speed only while this many more steps at the last known top
-  // speed keep the bound below the limit; near the limit every step is measured exactly
-  // instead of paying an extra exact pass after a bound that failed.
-  static constexpr double lookahead_steps = 16;
+  static constexpr double lookahead_steps = SpeedBound::lookahead_steps;
 
  private:
   static constexpr double unknown = -1;
-  double limit_, dt_;
-  double bound_ = 0;
+  SpeedBound bound_;
   double exact_d2_ = 0;
-  // The top speed of the last drift reported by speed (0 before the first: that drift
-  // is then reported by speed, and at worst one exact pass follows).
-  double speed_ = 0;
 };
 
 }  // namespace granshock

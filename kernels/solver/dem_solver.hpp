@@ -34,6 +34,7 @@
 #include "solver/contact_forces.hpp"
 #include "solver/diagnostics.hpp"
 #include "solver/fused_step.hpp"
+#include "solver/fused_steps.hpp"
 #include "solver/pair_table.hpp"
 #include "solver/row_owner_sampling.hpp"
 #include "solver/state_io.hpp"
@@ -153,11 +154,17 @@ class DemSolver final : public Solver {
       }
       if (s + 1 < steps) {
         const bool by_speed = !setup_.exact_list_check && watch_.next_drift_by_speed();
-        const double reported = global_max(fused_step(by_speed));
-        if (by_speed) {
-          watch_.drifted(reported);
+        if (by_speed && steps_in_one_region()) {
+          const long done = fused_steps(std::min(steps - 1 - s, setup_.steps_per_region));
+          s += done - 1;  // the loop counts the last
+          steps_ += done - 1;
         } else {
-          watch_.measured(reported);
+          const double reported = global_max(fused_step(by_speed));
+          if (by_speed) {
+            watch_.drifted(reported);
+          } else {
+            watch_.measured(reported);
+          }
         }
       } else {
         compute_forces();
@@ -227,26 +234,94 @@ class DemSolver final : public Solver {
   // in one pass; returns the largest squared speed of the drift (by_speed) or the largest
   // squared displacement since the last list build.
   Real fused_step(bool by_speed) {
+    const FusedStepKernel<V, ExecSpace> kernel = fused_kernel(by_speed, false);
+    Real moved2 = 0;
+    Kokkos::parallel_reduce("fused_step", Policy(0, kernel.work_items(p_.n)), kernel,
+                            Kokkos::Max<Real>(moved2));
+    ++step_regions_;
+    swap_step_buffers();
+    return moved2;
+  }
+
+  // Up to max_steps fused steps, each reported by speed, in one parallel region
+  // (fused_steps.hpp): as many as the host's loop would take in a row without an exact
+  // check. Returns how many; the watch has seen each one's top speed.
+  long fused_steps(long max_steps) {
+    if constexpr (!host_backend) {
+      return 0;  // not called: steps_in_one_region() is false
+    } else {
+      return host_fused_steps(max_steps);
+    }
+  }
+  long host_fused_steps(long max_steps) {
+    const FusedStepsPass<V, ExecSpace> pass{
+        fused_kernel(true, false),      fused_kernel(true, true), watch_.speed_bound(), max_steps,
+        top_speed2_of_steps(max_steps), steps_done_in_region_};
+    Kokkos::parallel_for("fused_steps", Kokkos::TeamPolicy<ExecSpace>(1, region_team_size()), pass);
+    ++step_regions_;
+    long done = 0;
+    Kokkos::deep_copy(done, steps_done_in_region_);
+    const auto speeds = Kokkos::create_mirror_view_and_copy(
+        Kokkos::HostSpace(), Kokkos::subview(top_speed2_, Kokkos::make_pair(0L, done)));
+    for (long k = 0; k < done; ++k) watch_.drifted(speeds(k));
+    if (done % 2 == 1) swap_step_buffers();
+    return done;
+  }
+
+  // The fused pass from the current buffers into the second ones, or (back) the reverse.
+  FusedStepKernel<V, ExecSpace> fused_kernel(bool by_speed, bool back) {
     if (int(x_next_.extent(0)) < p_.capacity()) {
       x_next_ = decltype(x_next_)("x_next", p_.capacity());
       v_next_ = decltype(v_next_)("v_next", p_.capacity());
       if constexpr (V::friction) omega_next_ = decltype(omega_next_)("omega_next", p_.capacity());
     }
-    const FusedStepKernel<V, ExecSpace> kernel{
-        {p_, pair_loop(), table_, obstacle_, Real(setup_.dt), history_overflow_, {}},
-        x_next_,
-        v_next_,
-        omega_next_,
-        integrator_.gravity,
-        by_speed,
-        p_.n};
-    Real moved2 = 0;
-    Kokkos::parallel_reduce("fused_step", Policy(0, kernel.work_items(p_.n)), kernel,
-                            Kokkos::Max<Real>(moved2));
+    Store from = p_;
+    PairLoop<Dim, Real, Mem> pairs = pair_loop();
+    if (back) {
+      from.x = pairs.x = x_next_;
+      from.v = v_next_;
+      from.omega = omega_next_;
+    }
+    return {{from, pairs, table_, obstacle_, Real(setup_.dt), history_overflow_, {}},
+            back ? p_.x : x_next_,
+            back ? p_.v : v_next_,
+            back ? p_.omega : omega_next_,
+            integrator_.gravity,
+            by_speed,
+            p_.n};
+  }
+  void swap_step_buffers() {
     std::swap(p_.x, x_next_);
     std::swap(p_.v, v_next_);
     if constexpr (V::friction) std::swap(p_.omega, omega_next_);
-    return moved2;
+  }
+
+  // Whether fused steps may share one region: on a host backend whose team can hold all
+  // its threads, on one process (ghosts are exchanged between steps), unless the scene
+  // asks to measure every step exactly.
+  static constexpr bool host_backend =
+      Kokkos::SpaceAccessibility<Kokkos::HostSpace, Mem>::accessible;
+  bool steps_in_one_region() const {
+    if constexpr (!host_backend) {
+      return false;
+    } else {
+      return setup_.steps_per_region > 1 && !slabs_ && !setup_.exact_list_check &&
+             region_team_size() == ExecSpace().concurrency();
+    }
+  }
+  int region_team_size() const {
+    if (region_team_size_ == 0) {
+      const FusedStepsPass<V, ExecSpace> probe{};
+      region_team_size_ = std::min(
+          ExecSpace().concurrency(),
+          Kokkos::TeamPolicy<ExecSpace>(1, 1).team_size_max(probe, Kokkos::ParallelForTag()));
+    }
+    return region_team_size_;
+  }
+  Kokkos::View<double*, Mem> top_speed2_of_steps(long steps) {
+    if (long(top_speed2_.extent(0)) < steps)
+      top_speed2_ = decltype(top_speed2_)("top_speed2", steps);
+    return top_speed2_;
   }
 
   Diagnostics diagnostics() const override { return diagnostics_part().compute(comm_); }
@@ -293,6 +368,7 @@ class DemSolver final : public Solver {
   long steps_done() const override { return steps_; }
   long list_builds() const override { return builds_; }
   long exact_list_checks() const override { return exact_checks_; }
+  long step_regions() const override { return step_regions_; }
   double skin() const override { return double(skin_); }
   double time() const override { return double(steps_) * setup_.dt; }
   std::string variant() const override { return V::name() + "/" + ExecSpace::name(); }
@@ -631,7 +707,10 @@ class DemSolver final : public Solver {
   BinAccumulator<ExecSpace> grid_sums_, profile_sums_;
   Kokkos::View<Real * [Dim * Dim], Mem> virial_;
   Kokkos::View<int* [2], Mem> sample_bins_;  // row-owner sampling: each particle's bins
-  typename Store::PositionView x_next_;      // the fused step's second buffers
+  Kokkos::View<double*, Mem> top_speed2_;    // fused_steps: each step's top speed^2
+  Kokkos::View<long, Mem> steps_done_in_region_{"steps_done_in_region"};
+  mutable int region_team_size_ = 0;
+  typename Store::PositionView x_next_;  // the fused step's second buffers
   typename Store::VectorView v_next_;
   typename Store::ScalarView omega_next_;
   long steps_ = 0;
@@ -640,6 +719,7 @@ class DemSolver final : public Solver {
   SkinModel skin_model_;      // adaptive skin only
   long last_build_step_ = 0;  // steps_ at the last list build
   long exact_checks_ = 0;     // exact displacement passes after a bound that failed
+  long step_regions_ = 0;
   double sync_seconds_ = 0;
 };
 

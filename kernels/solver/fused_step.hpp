@@ -48,7 +48,9 @@ struct FusedStepKernel {
   // (neighbouring threads, neighbouring particles: coalesced loads).
   static constexpr int run_length =
       Kokkos::SpaceAccessibility<Kokkos::HostSpace, Mem>::accessible ? 64 : 1;
-  static int work_items(int particles) { return (particles + run_length - 1) / run_length; }
+  KOKKOS_INLINE_FUNCTION static int work_items(int particles) {
+    return (particles + run_length - 1) / run_length;
+  }
 
   KOKKOS_FORCEINLINE_FUNCTION void operator()(const int run, Real& worst) const {
     const int first = run * run_length;

@@ -130,3 +130,35 @@ TEST(FusedStep, MatchesSeparateHalvesFrictionless) {
 TEST(FusedStep, MatchesSeparateHalvesWithFrictionAndObstacle) {
   compare_fused_with_separate_halves(friction_with_obstacle(), 2000);
 }
+
+namespace {
+
+// Fused steps in one parallel region (kernels/solver/fused_steps.hpp) against one region
+// per step: the same list builds and bitwise the same particles, with fewer regions.
+void compare_regions(SolverSetup s, int steps) {
+  const HostParticles gas = make_gas(s);
+  SolverSetup one_per_step = s;
+  one_per_step.steps_per_region = 1;
+  auto many = make_solver(s, gas.size(), Backend::default_space);
+  auto single = make_solver(one_per_step, gas.size(), Backend::default_space);
+  many->set_particles(gas);
+  single->set_particles(gas);
+  many->advance(steps);
+  single->advance(steps);
+  EXPECT_EQ(single->step_regions(), steps - 1);  // the last step is not fused
+  EXPECT_LT(many->step_regions(), (steps - 1) / 4);
+  EXPECT_EQ(many->list_builds(), single->list_builds());
+  EXPECT_EQ(many->exact_list_checks(), single->exact_list_checks());
+  EXPECT_GT(many->list_builds(), 1);
+  expect_identical(many->particles(), single->particles());
+}
+
+}  // namespace
+
+TEST(FusedSteps, ManyStepsPerRegionMatchOnePerStepFrictionless) {
+  compare_regions(frictionless(), 2000);
+}
+
+TEST(FusedSteps, ManyStepsPerRegionMatchOnePerStepWithFrictionAndObstacle) {
+  compare_regions(friction_with_obstacle(), 2000);
+}

@@ -1,0 +1,61 @@
+// Many fused steps in one parallel region, for host backends (docs/design.md, "The
+// solver"). One region per step costs a fork, a join and the host's turn between them
+// (about 1 microsecond on 2 cores, more when the host deschedules a thread), which is a
+// tenth of a small scene's step. Here one team of all threads runs the fused pass
+// (fused_step.hpp) step after step; the team's reduction of each step's top speed is the
+// barrier between steps, and every thread advances the same copy of the speed bound
+// (neighbours/rebuild_watch.hpp) with it, so all decide alike to go on: while the next
+// drift may be reported by speed, exactly when the host's loop would take another fused
+// step without an exact check. The host then replays the reported speeds into its watch.
+// The arithmetic per particle is that of the one-step pass, so the trajectory is bitwise
+// the same (tests/unit/test_backend_agreement.cpp, `FusedSteps`).
+#pragma once
+
+#include <Kokkos_Core.hpp>
+
+#include "neighbours/rebuild_watch.hpp"
+#include "solver/fused_step.hpp"
+
+namespace granshock {
+
+template <class V, class ExecSpace>
+struct FusedStepsPass {
+  using Real = typename V::real;
+  using Kernel = FusedStepKernel<V, ExecSpace>;
+  using Member = typename Kokkos::TeamPolicy<ExecSpace>::member_type;
+  using Mem = typename ExecSpace::memory_space;
+
+  // The pass that reads the current buffers and writes the second ones, and the pass back.
+  Kernel forth, back;
+  SpeedBound bound;  // the host watch's, before the first step (reported by speed)
+  long max_steps;
+  Kokkos::View<double*, Mem> top_speed2;  // of each step done
+  Kokkos::View<long, Mem> done;
+
+  KOKKOS_INLINE_FUNCTION void operator()(const Member& team) const {
+    SpeedBound b = bound;
+    long k = 0;
+    while (k < max_steps) {
+      const Kernel& kernel = k % 2 == 0 ? forth : back;
+      Real top = 0;
+      // One contiguous share of the runs per thread, as a static range policy gives: the
+      // host team's TeamThreadRange deals items out in turn, and every run's neighbours
+      // would then be in the other core's cache.
+      const int runs = Kernel::work_items(kernel.n), threads = team.team_size();
+      Kokkos::parallel_reduce(
+          Kokkos::TeamThreadRange(team, threads),
+          [&](const int share, Real& worst) {
+            const int end = int(long(runs) * (share + 1) / threads);
+            for (int run = int(long(runs) * share / threads); run < end; ++run) kernel(run, worst);
+          },
+          Kokkos::Max<Real>(top));
+      if (team.team_rank() == 0) top_speed2(k) = double(top);
+      b.drifted(double(top));
+      ++k;
+      if (!b.next_drift_by_speed()) break;
+    }
+    if (team.team_rank() == 0) done() = k;
+  }
+};
+
+}  // namespace granshock
