@@ -297,8 +297,8 @@ class DemSolver final : public Solver {
   }
 
   // Whether fused steps may share one region: on a host backend whose team can hold all
-  // its threads, on one process (ghosts are exchanged between steps), unless the scene
-  // asks to measure every step exactly.
+  // its threads, on one process (ghosts are exchanged between steps), for small enough
+  // scenes (fused_steps.hpp), unless the setup asks to measure every step exactly.
   static constexpr bool host_backend =
       Kokkos::SpaceAccessibility<Kokkos::HostSpace, Mem>::accessible;
   bool steps_in_one_region() const {
@@ -306,6 +306,7 @@ class DemSolver final : public Solver {
       return false;
     } else {
       return setup_.steps_per_region > 1 && !slabs_ && !setup_.exact_list_check &&
+             p_.n <= step_regions_particles_per_thread * ExecSpace().concurrency() &&
              region_team_size() == ExecSpace().concurrency();
     }
   }
