@@ -76,7 +76,6 @@ class RebuildWatch {
   // Far above the relative round-off of the displacements and speeds (single precision
   // included), so that B < limit implies the computed displacement is below skin/2.
   static constexpr double margin = 1e-4;
-  static constexpr double lookahead_steps = SpeedBound::lookahead_steps;
 
  private:
   static constexpr double unknown = -1;

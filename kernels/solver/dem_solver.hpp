@@ -248,24 +248,22 @@ class DemSolver final : public Solver {
   // check. Returns how many; the watch has seen each one's top speed.
   long fused_steps(long max_steps) {
     if constexpr (!host_backend) {
-      return 0;  // not called: steps_in_one_region() is false
+      return 0;  // never called: steps_in_one_region() is false
     } else {
-      return host_fused_steps(max_steps);
+      const FusedStepsPass<V, ExecSpace> pass{
+          fused_kernel(true, false),      fused_kernel(true, true), watch_.speed_bound(), max_steps,
+          top_speed2_of_steps(max_steps), steps_done_in_region_};
+      Kokkos::parallel_for("fused_steps", Kokkos::TeamPolicy<ExecSpace>(1, region_team_size()),
+                           pass);
+      ++step_regions_;
+      long done = 0;
+      Kokkos::deep_copy(done, steps_done_in_region_);
+      const auto speeds = Kokkos::create_mirror_view_and_copy(
+          Kokkos::HostSpace(), Kokkos::subview(top_speed2_, Kokkos::make_pair(0L, done)));
+      for (long k = 0; k < done; ++k) watch_.drifted(speeds(k));
+      if (done % 2 == 1) swap_step_buffers();
+      return done;
     }
-  }
-  long host_fused_steps(long max_steps) {
-    const FusedStepsPass<V, ExecSpace> pass{
-        fused_kernel(true, false),      fused_kernel(true, true), watch_.speed_bound(), max_steps,
-        top_speed2_of_steps(max_steps), steps_done_in_region_};
-    Kokkos::parallel_for("fused_steps", Kokkos::TeamPolicy<ExecSpace>(1, region_team_size()), pass);
-    ++step_regions_;
-    long done = 0;
-    Kokkos::deep_copy(done, steps_done_in_region_);
-    const auto speeds = Kokkos::create_mirror_view_and_copy(
-        Kokkos::HostSpace(), Kokkos::subview(top_speed2_, Kokkos::make_pair(0L, done)));
-    for (long k = 0; k < done; ++k) watch_.drifted(speeds(k));
-    if (done % 2 == 1) swap_step_buffers();
-    return done;
   }
 
   // The fused pass from the current buffers into the second ones, or (back) the reverse.

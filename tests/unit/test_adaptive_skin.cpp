@@ -10,6 +10,7 @@
 #include "brute_force_contacts.hpp"
 #include "checkpoint_checks.hpp"
 #include "homogeneous_gas.hpp"
+#include "same_particles.hpp"
 #include "skin_model.hpp"
 #include "solver.hpp"
 
@@ -126,15 +127,7 @@ SolverSetup adaptive_gas(double phi, int particles, GasSpec& spec) {
 
 using test::brute_force_contacts;
 
-// The same particles, in the same order, with bitwise the same positions and velocities.
-void expect_bitwise_equal(const HostParticles& a, const HostParticles& b) {
-  ASSERT_EQ(a.size(), b.size());
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    ASSERT_EQ(a.id[i], b.id[i]);
-    ASSERT_EQ(a.position[i], b.position[i]) << "particle " << a.id[i];
-    ASSERT_EQ(a.velocity[i], b.velocity[i]) << "particle " << a.id[i];
-  }
-}
+using test::expect_bitwise_identical;
 
 }  // namespace
 
@@ -178,7 +171,7 @@ TEST(AdaptiveSkin, ResumesBitwiseFromAnExportedState) {
   resumed->import_state(middle);
   EXPECT_EQ(resumed->skin(), first->skin());
   resumed->advance(1300);
-  expect_bitwise_equal(straight->particles(), resumed->particles());
+  expect_bitwise_identical(straight->particles(), resumed->particles());
   EXPECT_EQ(resumed->skin(), straight->skin());
   EXPECT_EQ(resumed->list_builds(), straight->list_builds());
 }
@@ -224,7 +217,7 @@ TEST(AdaptiveSkin, SkinHeldAtTheLargestIsTheFixedSkinRun) {
   f->advance(4000);
   EXPECT_GT(a->list_builds(), 3);
   EXPECT_EQ(a->skin(), fixed.skin());
-  expect_bitwise_equal(a->particles(), f->particles());
+  expect_bitwise_identical(a->particles(), f->particles());
 }
 
 // A single-precision solver stores its float skin; at the smallest bound that float lies

@@ -10,22 +10,14 @@
 #include <cmath>
 
 #include "homogeneous_gas.hpp"
+#include "same_particles.hpp"
 #include "solver.hpp"
 
 using namespace granshock;
 
 namespace {
 
-void expect_identical(const HostParticles& a, const HostParticles& b) {
-  ASSERT_EQ(a.size(), b.size());
-  EXPECT_EQ(a.id, b.id);
-  EXPECT_EQ(a.species, b.species);
-  std::size_t differing = 0;
-  for (std::size_t i = 0; i < a.size(); ++i)
-    differing += a.position[i] != b.position[i] || a.velocity[i] != b.velocity[i];
-  EXPECT_EQ(differing, 0u) << "particles whose state differs bitwise";
-  EXPECT_EQ(a.angular_velocity, b.angular_velocity);
-}
+using test::expect_bitwise_identical;
 
 // A 2500-particle gas at phi = 0.4 in a periodic box (around a centred cylinder when the
 // setup has one, the box then open along y).
@@ -66,7 +58,7 @@ void compare_backends(SolverSetup s, int steps) {
   serial->advance(steps);
   EXPECT_GT(parallel->list_builds(), 1);
   EXPECT_GT(parallel->diagnostics().contacts + serial->diagnostics().contacts, 0);
-  expect_identical(parallel->particles(), serial->particles());
+  expect_bitwise_identical(parallel->particles(), serial->particles());
 }
 
 // advance(n) fuses the second half of each step with the first half of the next
@@ -84,11 +76,11 @@ void compare_fused_with_separate_halves(SolverSetup s, int steps) {
   EXPECT_EQ(fused->list_builds(), separate->list_builds());
   EXPECT_GT(fused->list_builds(), 1);
   EXPECT_GT(fused->diagnostics().contacts, 0);
-  expect_identical(fused->particles(), separate->particles());
+  expect_bitwise_identical(fused->particles(), separate->particles());
   // The next steps start from the forces advance() left: they must agree as well.
   fused->advance(50);
   separate->advance(50);
-  expect_identical(fused->particles(), separate->particles());
+  expect_bitwise_identical(fused->particles(), separate->particles());
 }
 
 // The scenes both comparisons run: frictionless, and friction with the cylinder.
@@ -150,7 +142,7 @@ void compare_regions(SolverSetup s, int steps) {
   EXPECT_EQ(many->list_builds(), single->list_builds());
   EXPECT_EQ(many->exact_list_checks(), single->exact_list_checks());
   EXPECT_GT(many->list_builds(), 1);
-  expect_identical(many->particles(), single->particles());
+  expect_bitwise_identical(many->particles(), single->particles());
 }
 
 }  // namespace

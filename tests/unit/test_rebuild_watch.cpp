@@ -11,6 +11,7 @@
 
 #include "homogeneous_gas.hpp"
 #include "neighbours/rebuild_watch.hpp"
+#include "same_particles.hpp"
 #include "solver.hpp"
 
 using namespace granshock;
@@ -87,15 +88,7 @@ TEST(RebuildWatch, NeverProvesValidPastTheLimit) {
 
 namespace {
 
-void expect_bitwise_equal(const HostParticles& a, const HostParticles& b) {
-  ASSERT_EQ(a.size(), b.size());
-  std::size_t differing = 0;
-  for (std::size_t i = 0; i < a.size(); ++i)
-    differing +=
-        a.id[i] != b.id[i] || a.position[i] != b.position[i] || a.velocity[i] != b.velocity[i];
-  EXPECT_EQ(differing, 0u) << "particles whose state differs bitwise";
-  EXPECT_EQ(a.angular_velocity, b.angular_velocity);
-}
+using test::expect_bitwise_identical;
 
 // The same gas advanced with the bound and with an exact measurement every step.
 void compare_with_exact_check(SolverSetup s, double phi, int steps) {
@@ -119,7 +112,7 @@ void compare_with_exact_check(SolverSetup s, double phi, int steps) {
   EXPECT_EQ(bounded->list_builds(), exact->list_builds());
   EXPECT_EQ(exact->exact_list_checks(), 0);
   EXPECT_GT(bounded->diagnostics().contacts, 0);
-  expect_bitwise_equal(bounded->particles(), exact->particles());
+  expect_bitwise_identical(bounded->particles(), exact->particles());
 }
 
 }  // namespace
