@@ -6,7 +6,10 @@
 //   l(s)  partners per particle, l0 ((range + s) / (range + s0))^dim (partners fill the
 //         ball of radius range + s about as uniformly as at s0);
 //   m     candidates per particle that a build checks, twice (count, fill): the 3^dim
-//         cells about a particle, l0 (3 cell)^dim / (ball of range + s0);
+//         cells about a particle, l0 (3 cell)^dim / (ball of range + s0); host backends
+//         now check them once (kernels/neighbours/verlet_list.hpp), so there the model
+//         prices a build m checks above its cost; build_overhead was fitted with two
+//         visits and is kept, so the skins it picks are those measured (docs/design.md);
 //   T(s)  steps between builds, (s/2) / u, with u the largest displacement per step
 //         measured over the last interval (ballistic: displacement grows with time);
 //   build_overhead  the sort, reorder and offsets of a build per particle, in candidate

@@ -40,6 +40,10 @@ struct SolverSetup {
   // (kernels/solver/fused_steps.hpp); 1 gives one region per step. The trajectory is the
   // same either way.
   long steps_per_region = 4096;
+  // Host backends: build the Verlet list in one visit of the candidates
+  // (kernels/neighbours/verlet_list.hpp); false visits them twice, as a device does. The
+  // lists are the same either way.
+  bool list_visits_once = true;
   std::array<double, 3> gravity{0, 0, 0};
   Precision precision = Precision::double_precision;
   // Particles beyond the box on an open axis are deleted (inflow/outflow scenes).

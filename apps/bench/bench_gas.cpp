@@ -44,6 +44,7 @@ struct Options {
   double skin_d = 0;  // Verlet skin in diameters; 0 keeps the solver's default
   bool exact_list_check = false;
   bool adaptive_skin = false;
+  bool two_visit_list = false;
   long steps_per_region = 0;  // 0 keeps the solver's default
   double min_cpu_share = 0.9;
   int retries = 5;
@@ -141,6 +142,7 @@ Row bench_one(const Options& o, double phi, int n_wanted) {
   if (o.skin_d > 0) setup.skin_m = o.skin_d * setup.max_diameter();
   setup.exact_list_check = o.exact_list_check;
   setup.adaptive_skin = o.adaptive_skin;
+  setup.list_visits_once = !o.two_visit_list;
   if (o.steps_per_region > 0) setup.steps_per_region = o.steps_per_region;
   setup.precision = o.precision == "single" ? granshock::Precision::single_precision
                                             : granshock::Precision::double_precision;
@@ -302,6 +304,9 @@ int main(int argc, char** argv) {
   app.add_flag("--adaptive-skin", o.adaptive_skin,
                "let the solver re-choose the skin at each list build, up to --skin "
                "(core/skin_model.hpp)");
+  app.add_flag("--two-visit-list", o.two_visit_list,
+               "build the Verlet list by counting, then filling (as a device does) instead of "
+               "in one visit of the candidates (the same lists; to measure what one visit saves)");
   app.add_option("--steps-per-region", o.steps_per_region,
                  "at most this many steps in one parallel region (1: one region per step; "
                  "default: the solver's, kernels/solver/fused_steps.hpp)")
@@ -377,6 +382,7 @@ int main(int argc, char** argv) {
                             {"dt_s", o.dt},
                             {"sigma_m_per_s", o.sigma},
                             {"skin_diameters", skin_d},
+                            {"list_visits", o.two_visit_list ? 2 : 1},
                             {"repeats", o.repeats},
                             {"min_seconds", o.min_seconds},
                             {"min_cpu_share", o.min_cpu_share},

@@ -43,6 +43,9 @@ class VerletList {
   Kokkos::View<int*, Mem> offsets;     // n + 1; neighbours of i: [offsets(i), offsets(i+1))
   Kokkos::View<int*, Mem> neighbours;  // particle indices
   int total = 0;
+  // Host backends: visit the candidates once, into a buffer per thread (build_visiting_once);
+  // false, or a device, visits them twice, to count and to fill. The lists are the same.
+  bool visit_once = true;
 
   // Restores a list saved by a checkpoint.
   void assign(const std::vector<int>& host_offsets, const std::vector<int>& host_neighbours) {
@@ -66,6 +69,10 @@ class VerletList {
              const RadiusView& radius, Real skin, int n, const Ghosts& ghosts = {}) {
     if (int(offsets.extent(0)) < n + 1)
       offsets = Kokkos::View<int*, Mem>("verlet_offsets", n + n / 4 + 16);
+    if constexpr (host_backend) {
+      if (visit_once)
+        return build_visiting_once(grid, box, cell_start, x, species, radius, skin, n, ghosts);
+    }
     auto off = offsets;
     // Pass 1: count. Pass 2: fill. Both visit the same candidates in the same order.
     Kokkos::parallel_for(
@@ -95,7 +102,88 @@ class VerletList {
         });
   }
 
+  static constexpr bool host_backend =
+      Kokkos::SpaceAccessibility<Kokkos::HostSpace, Mem>::accessible;
+
+  // The list in one visit of the candidates, as a hand-written OpenMP build does it
+  // (docs/design.md, "The solver"): each of `shares` work items (one per thread)
+  // takes a contiguous share of the particles and writes their partners into its own part
+  // of a buffer, then a second, light pass turns the counts into offsets and copies each
+  // part into place. The count pass of the two-visit build, which computes every
+  // candidate's distance a second time, is gone. A part too small for its share's
+  // partners (the first build, or the scene got denser) is counted to the end, and the
+  // visit repeats with parts large enough; parts keep a quarter in reserve.
+  template <class PositionView, class SpeciesView, class RadiusView, class StartView, class Ghosts>
+  void build_visiting_once(const CellGrid<Dim, Position>& grid,
+                           const BoxGeometry<Dim, Position>& box, const StartView& cell_start,
+                           const PositionView& x, const SpeciesView& species,
+                           const RadiusView& radius, Real skin, int n, const Ghosts& ghosts) {
+    const int shares = ExecSpace().concurrency();
+    if (int(share_count_.extent(0)) < shares)
+      share_count_ = Kokkos::View<long*, Mem>("verlet_share_count", shares);
+    if (part_capacity_ == 0) part_capacity_ = 8L * (n / shares + 1) + 256;
+    auto off = offsets;
+    auto count = share_count_;
+    for (;;) {
+      if (long(parts_.extent(0)) < part_capacity_ * shares)
+        parts_ =
+            Kokkos::View<int*, Mem>(Kokkos::view_alloc("verlet_parts", Kokkos::WithoutInitializing),
+                                    part_capacity_ * shares);
+      auto parts = parts_;
+      const long capacity = part_capacity_;
+      Kokkos::parallel_for(
+          "verlet::visit", Policy(0, shares), KOKKOS_LAMBDA(const int s) {
+            const long first_slot = s * capacity, end_slot = first_slot + capacity;
+            long k = first_slot;
+            const int end = int(long(n) * (s + 1) / shares);
+            for (int i = int(long(n) * s / shares); i < end; ++i) {
+              const long before = k;
+              visit(grid, box, cell_start, ghosts, x, species, radius, skin, i, [&](int j) {
+                if (k < end_slot) parts(k) = j;
+                ++k;
+              });
+              off(i + 1) = int(k - before);
+            }
+            count(s) = k - first_slot;
+          });
+      Kokkos::fence();
+      long largest = 0, sum = 0;
+      for (int s = 0; s < shares; ++s) {
+        largest = count(s) > largest ? count(s) : largest;
+        sum += count(s);
+      }
+      if (largest <= part_capacity_) {
+        total = int(sum);
+        break;
+      }
+      part_capacity_ = largest + largest / 4 + 256;
+    }
+    if (int(neighbours.extent(0)) < total)
+      neighbours = Kokkos::View<int*, Mem>("verlet_neighbours", total + total / 4 + 64);
+    auto nb = neighbours;
+    auto parts = parts_;
+    const long capacity = part_capacity_;
+    Kokkos::parallel_for(
+        "verlet::place", Policy(0, shares), KOKKOS_LAMBDA(const int s) {
+          long base = 0;
+          for (int r = 0; r < s; ++r) base += count(r);
+          if (s == 0) off(0) = 0;
+          long running = base;
+          const int end = int(long(n) * (s + 1) / shares);
+          for (int i = int(long(n) * s / shares); i < end; ++i) {
+            running += off(i + 1);
+            off(i + 1) = int(running);
+          }
+          const long first_slot = s * capacity;
+          for (long k = 0; k < count(s); ++k) nb(base + k) = parts(first_slot + k);
+        });
+  }
+
  private:
+  Kokkos::View<long*, Mem> share_count_;  // partners per share, build_visiting_once
+  Kokkos::View<int*, Mem> parts_;         // one part of part_capacity_ per share
+  long part_capacity_ = 0;
+
   template <class PositionView, class SpeciesView, class RadiusView, class StartView, class Ghosts,
             class F>
   KOKKOS_INLINE_FUNCTION static void visit(const CellGrid<Dim, Position>& grid,

@@ -73,6 +73,7 @@ class DemSolver final : public Solver {
     integrator_.dt = Real(setup.dt);
     for (int d = 0; d < Dim; ++d) integrator_.gravity[d] = Real(setup.gravity[d]);
     p_.allocate(int(std::max<std::size_t>(capacity, 1)));
+    list_.visit_once = setup.list_visits_once;
     if (comm.size() > 1) slabs_.emplace(comm, grid_, setup.box, int(Decomposition{}.axis));
   }
 

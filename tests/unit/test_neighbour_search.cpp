@@ -111,6 +111,38 @@ TEST(NeighbourSearchMoving, ListsStayCompleteBetweenRebuilds) {
   }
 }
 
+// The list built in one visit of the candidates (host backends, a buffer part per thread)
+// is the list of the two-visit build (count, then fill), entry for entry, for dilute and
+// dense configurations, periodic and open, and again for a second configuration given to
+// the same solvers (buffers reused). The dense ones hold more partners than a part's first
+// capacity (8 per particle plus 256, here on up to 16 threads), so the one-visit build
+// must also have repeated its visit with larger parts.
+TEST(NeighbourSearchOneVisit, ListEqualsTheTwoVisitList) {
+  const Config configs[] = {{"dilute_periodic", 0.06, 0.05, {true, true, false}, 400},
+                            {"dense_periodic", 0.03, 0.03, {true, true, false}, 2000},
+                            {"all_open", 0.03, 0.03, {false, false, false}, 2000}};
+  for (const Config& c : configs) {
+    SolverSetup once = two_size_setup(c.lx, c.ly, c.periodic);
+    SolverSetup twice = once;
+    twice.list_visits_once = false;
+    auto a = make_solver(once, c.n);
+    auto b = make_solver(twice, c.n);
+    for (const std::uint64_t seed : {7, 8}) {
+      const HostParticles p = random_particles(once, c.n - int(seed), seed);
+      a->set_particles(p);
+      b->set_particles(p);
+      const SolverState sa = a->export_state(), sb = b->export_state();
+      ASSERT_FALSE(sa.neighbours.empty()) << c.name;
+      EXPECT_EQ(sa.neighbour_offsets, sb.neighbour_offsets) << c.name << " seed " << seed;
+      EXPECT_EQ(sa.neighbours, sb.neighbours) << c.name << " seed " << seed;
+      if (c.n == 2000) {
+        EXPECT_GT(double(sa.neighbours.size()) / double(p.size()), 8.0 + 256.0 * 16 / c.n)
+            << c.name << ": too few partners to overflow a first part";
+      }
+    }
+  }
+}
+
 }  // namespace
 
 // The homogeneous gas starts at rest: zero total momentum (a bug fixed: the mean velocity
