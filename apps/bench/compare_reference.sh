@@ -49,18 +49,23 @@ granshock_rate() {  # phi n -> particle-steps/s (one repeat)
 
 median() { tr ' ' '\n' | grep -v '^$' | sort -g | awk '{ a[NR] = $1 } END { print a[int((NR + 1) / 2)] }'; }
 
-echo "| phi | N | $variant p-steps/s | granshock p-steps/s | ratio |"
-echo "|---|---|---|---|---|"
+# ratio: of the two medians; per round: granshock / reference of each alternating pair
+# (the machine's speed drifts between rounds, so their median is the steadier figure).
+echo "| phi | N | $variant p-steps/s | granshock p-steps/s | ratio | per round | median of rounds |"
+echo "|---|---|---|---|---|---|---|"
 for c in $cases; do
   phi=${c%%:*} n=${c##*:}
-  ref_rates="" gs_rates=""
+  ref_rates="" gs_rates="" round_ratios=""
   for ((r = 1; r <= repeats; ++r)); do
-    ref_rates+=" $(reference_rate "$phi" "$n")"
-    gs_rates+=" $(granshock_rate "$phi" "$n")"
+    ref_rate=$(reference_rate "$phi" "$n")
+    gs_rate=$(granshock_rate "$phi" "$n")
+    ref_rates+=" $ref_rate" gs_rates+=" $gs_rate"
+    round_ratios+=" $(awk -v a="$gs_rate" -v b="$ref_rate" 'BEGIN { printf "%.2f", a / b }')"
   done
   ref=$(echo "$ref_rates" | median) gs=$(echo "$gs_rates" | median)
-  printf '| %s | %s | %.3g | %.3g | %.2f |\n' "$phi" "$n" "$ref" "$gs" \
-    "$(awk -v a="$gs" -v b="$ref" 'BEGIN { print a / b }')"
+  printf '| %s | %s | %.3g | %.3g | %.2f | %s | %.2f |\n' "$phi" "$n" "$ref" "$gs" \
+    "$(awk -v a="$gs" -v b="$ref" 'BEGIN { print a / b }')" "${round_ratios# }" \
+    "$(echo "$round_ratios" | median)"
 done
 echo "($repeats alternating repeats of ${seconds} s, $threads threads; reference variant $variant;" \
   "sigma $sigma m/s)"
