@@ -13,6 +13,7 @@
 
 #include "device/box_geometry.hpp"
 #include "device/position.hpp"
+#include "device/share.hpp"
 #include "device/vec.hpp"
 #include "neighbours/cell_grid.hpp"
 
@@ -135,8 +136,8 @@ class VerletList {
           "verlet::visit", Policy(0, shares), KOKKOS_LAMBDA(const int s) {
             const long first_slot = s * capacity, end_slot = first_slot + capacity;
             long k = first_slot;
-            const int end = int(long(n) * (s + 1) / shares);
-            for (int i = int(long(n) * s / shares); i < end; ++i) {
+            const int end = share_begin(n, s + 1, shares);
+            for (int i = share_begin(n, s, shares); i < end; ++i) {
               const long before = k;
               visit(grid, box, cell_start, ghosts, x, species, radius, skin, i, [&](int j) {
                 if (k < end_slot) parts(k) = j;
@@ -169,8 +170,8 @@ class VerletList {
           for (int r = 0; r < s; ++r) base += count(r);
           if (s == 0) off(0) = 0;
           long running = base;
-          const int end = int(long(n) * (s + 1) / shares);
-          for (int i = int(long(n) * s / shares); i < end; ++i) {
+          const int end = share_begin(n, s + 1, shares);
+          for (int i = share_begin(n, s, shares); i < end; ++i) {
             running += off(i + 1);
             off(i + 1) = int(running);
           }

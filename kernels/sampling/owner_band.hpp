@@ -4,6 +4,8 @@
 
 #include <Kokkos_Core.hpp>
 
+#include "device/share.hpp"
+
 namespace granshock {
 
 // Owner t's band of rows [lo, hi) of a layout with `rows` rows, for n particles in the
@@ -18,7 +20,7 @@ KOKKOS_INLINE_FUNCTION void owner_band(int t, int owners, int n, int rows, const
   hi = rows;
   int boundary = 0;
   for (int k = 1; k < owners; ++k) {
-    const int r = n > 0 ? row_of(int(long(n) * k / owners)) : 0;
+    const int r = n > 0 ? row_of(share_begin(n, k, owners)) : 0;
     boundary = r > boundary ? r : boundary;
     if (k == t) lo = boundary;
     if (k == t + 1) hi = boundary;

@@ -13,6 +13,7 @@
 
 #include <Kokkos_Core.hpp>
 
+#include "device/share.hpp"
 #include "neighbours/rebuild_watch.hpp"
 #include "solver/fused_step.hpp"
 
@@ -51,8 +52,8 @@ struct FusedStepsPass {
       Kokkos::parallel_reduce(
           Kokkos::TeamThreadRange(team, threads),
           [&](const int share, Real& worst) {
-            const int end = int(long(runs) * (share + 1) / threads);
-            for (int run = int(long(runs) * share / threads); run < end; ++run) kernel(run, worst);
+            const int end = share_begin(runs, share + 1, threads);
+            for (int run = share_begin(runs, share, threads); run < end; ++run) kernel(run, worst);
           },
           Kokkos::Max<Real>(top));
       if (team.team_rank() == 0) top_speed2(k) = double(top);
