@@ -3,6 +3,7 @@
 #include <Kokkos_Core.hpp>
 #include <nlohmann/json.hpp>
 
+#include "device/backends.hpp"
 #include "mpi_runtime.hpp"
 
 #include "version.hpp"
@@ -31,6 +32,14 @@ std::string build_info_json(int processes) {
   j["backends"] = backends;
   j["default_execution_space"] = Kokkos::DefaultExecutionSpace::name();
   j["threads"] = Kokkos::DefaultHostExecutionSpace().concurrency();
+  // Which branches the kernels take (docs/cuda.md, "Branch points"), and whether Kokkos
+  // checks every View index (cmake/install_kokkos_debug.sh).
+  j["kernel_paths"] = uses_host_paths<Kokkos::DefaultExecutionSpace>() ? "host" : "device";
+#ifdef KOKKOS_ENABLE_DEBUG_BOUNDS_CHECK
+  j["bounds_check"] = true;
+#else
+  j["bounds_check"] = false;
+#endif
   // MPI: linked always (parallel HDF5); started only under a launcher (docs/parallel.md).
   j["mpi"] = {{"library", MpiRuntime::library_version()},
               {"launched", MpiRuntime::launched_by_mpi()},

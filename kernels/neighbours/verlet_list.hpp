@@ -11,7 +11,9 @@
 #include <type_traits>
 #include <vector>
 
+#include "device/backends.hpp"
 #include "device/box_geometry.hpp"
+#include "device/host_mirror.hpp"
 #include "device/position.hpp"
 #include "device/share.hpp"
 #include "device/vec.hpp"
@@ -35,8 +37,10 @@ struct NoGhostCells {
   KOKKOS_INLINE_FUNCTION int end(int) const { return 0; }
 };
 
-template <int Dim, class Real, class ExecSpace>
+template <int Dim, class Real, class ExecSpace, class Paths = DefaultPaths<ExecSpace>>
 class VerletList {
+  static_assert(paths_possible<ExecSpace, Paths>(), "host paths need host-accessible memory");
+
  public:
   using Mem = typename ExecSpace::memory_space;
   using Policy = Kokkos::RangePolicy<ExecSpace>;
@@ -44,16 +48,16 @@ class VerletList {
   Kokkos::View<int*, Mem> offsets;     // n + 1; neighbours of i: [offsets(i), offsets(i+1))
   Kokkos::View<int*, Mem> neighbours;  // particle indices
   int total = 0;
-  // Host backends: visit the candidates once, into a buffer per thread (build_visiting_once);
-  // false, or a device, visits them twice, to count and to fill. The lists are the same.
+  // Host paths: visit the candidates once, into a buffer per thread (build_visiting_once);
+  // false, or device paths, visit them twice, to count and to fill. The lists are the same.
   bool visit_once = true;
 
   // Restores a list saved by a checkpoint.
   void assign(const std::vector<int>& host_offsets, const std::vector<int>& host_neighbours) {
     offsets = Kokkos::View<int*, Mem>("verlet_offsets", host_offsets.size() + 16);
     neighbours = Kokkos::View<int*, Mem>("verlet_neighbours", host_neighbours.size() + 64);
-    auto o = Kokkos::create_mirror_view(offsets);
-    auto nb = Kokkos::create_mirror_view(neighbours);
+    auto o = host_mirror<Paths>(offsets);
+    auto nb = host_mirror<Paths>(neighbours);
     for (std::size_t i = 0; i < host_offsets.size(); ++i) o(i) = host_offsets[i];
     for (std::size_t k = 0; k < host_neighbours.size(); ++k) nb(k) = host_neighbours[k];
     Kokkos::deep_copy(offsets, o);
@@ -70,7 +74,7 @@ class VerletList {
              const RadiusView& radius, Real skin, int n, const Ghosts& ghosts = {}) {
     if (int(offsets.extent(0)) < n + 1)
       offsets = Kokkos::View<int*, Mem>("verlet_offsets", n + n / 4 + 16);
-    if constexpr (host_backend) {
+    if constexpr (Paths::host) {
       if (visit_once)
         return build_visiting_once(grid, box, cell_start, x, species, radius, skin, n, ghosts);
     }
@@ -102,9 +106,6 @@ class VerletList {
                 [&](int j) { nb(k++) = j; });
         });
   }
-
-  static constexpr bool host_backend =
-      Kokkos::SpaceAccessibility<Kokkos::HostSpace, Mem>::accessible;
 
   // The list in one visit of the candidates, as a hand-written OpenMP build does it
   // (docs/design.md, "The solver"): each of `shares` work items (one per thread)

@@ -10,16 +10,18 @@
 #include <vector>
 
 #include "communicator.hpp"
+#include "device/backends.hpp"
 #include "device/box_geometry.hpp"
 #include "device/counter_rng.hpp"
 #include "device/device_lambda.hpp"
+#include "device/host_mirror.hpp"
 #include "particles/particle_store.hpp"
 #include "particles/population_kernels.hpp"
 #include "solver.hpp"
 
 namespace granshock {
 
-template <class V, class ExecSpace>
+template <class V, class ExecSpace, class Paths = DefaultPaths<ExecSpace>>
 class ParticlePopulation {
  public:
   static constexpr int Dim = V::dim;
@@ -196,7 +198,7 @@ class ParticlePopulation {
   // The first `count` rows of every rank's `near`, concatenated; count becomes the total.
   static Kokkos::View<Position* [Dim], Mem> gathered(const Kokkos::View<Position* [Dim], Mem>& near,
                                                      int& count, const Communicator& everyone) {
-    const auto mine = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), near);
+    const auto mine = host_copy<Paths>(near);
     std::vector<char> bytes(sizeof(Position) * Dim * std::size_t(count));
     for (int e = 0; e < count; ++e)
       for (int d = 0; d < Dim; ++d) {
@@ -207,7 +209,7 @@ class ParticlePopulation {
     const std::vector<char> all = everyone.all_gather(bytes);
     count = int(all.size() / (sizeof(Position) * Dim));
     Kokkos::View<Position* [Dim], Mem> out("insert_near_all", count > 0 ? count : 1);
-    auto host = Kokkos::create_mirror_view(out);
+    auto host = host_mirror<Paths>(out);
     for (int e = 0; e < count; ++e)
       for (int d = 0; d < Dim; ++d)
         std::memcpy(&host(e, d), all.data() + sizeof(Position) * (std::size_t(e) * Dim + d),
@@ -254,7 +256,7 @@ class ParticlePopulation {
 
  private:
   void set_number_fractions(const std::vector<double>& fractions) {
-    auto h = Kokkos::create_mirror_view(cumulative_);
+    auto h = host_mirror<Paths>(cumulative_);
     double c = 0;
     for (std::size_t s = 0; s < fractions.size(); ++s) h(s) = (c += fractions[s]);
     Kokkos::deep_copy(cumulative_, h);

@@ -34,6 +34,8 @@
 #include <vector>
 
 #include "communicator.hpp"
+#include "device/backends.hpp"
+#include "device/host_mirror.hpp"
 #include "domain.hpp"
 #include "neighbours/cell_grid.hpp"
 #include "slab_decomposition.hpp"
@@ -53,19 +55,22 @@ int width(const View& v) {
   }
 }
 
-// Rows stored one after another in host memory (LayoutRight, or one value per row): a
-// range of rows is one block of bytes. A GPU's View (LayoutLeft) is copied value by value.
-template <class View>
+// Host paths, on host mirrors whose rows are stored one after another (LayoutRight, or one
+// value per row): a range of rows is one block of bytes. Device paths: the host mirror of
+// a GPU's View (LayoutLeft) is copied value by value.
+template <class Paths, class View>
 constexpr bool rows_are_contiguous() {
-  return Kokkos::SpaceAccessibility<Kokkos::HostSpace, typename View::memory_space>::accessible &&
+  return Paths::host &&
          (View::rank == 1 || std::is_same_v<typename View::array_layout, Kokkos::LayoutRight>);
 }
 
-template <class View>
+template <class Paths, class View>
 void append(std::vector<char>& out, const View& v, int begin, int end) {
+  static_assert(std::is_same_v<typename View::memory_space, Kokkos::HostSpace>,
+                "host mirrors only");
   using T = typename View::non_const_value_type;
   const int w = width(v);
-  if constexpr (rows_are_contiguous<View>()) {
+  if constexpr (rows_are_contiguous<Paths, View>()) {
     if (end <= begin) return;
     const char* from = reinterpret_cast<const char*>(v.data() + std::size_t(begin) * w);
     out.insert(out.end(), from, from + std::size_t(end - begin) * w * sizeof(T));
@@ -85,12 +90,14 @@ void append(std::vector<char>& out, const View& v, int begin, int end) {
 }
 
 // Reads `count` rows into v starting at row `first`; returns the bytes consumed.
-template <class View>
+template <class Paths, class View>
 std::size_t extract(const View& v, const char* in, int first, int count) {
+  static_assert(std::is_same_v<typename View::memory_space, Kokkos::HostSpace>,
+                "host mirrors only");
   using T = typename View::non_const_value_type;
   const int w = width(v);
   std::size_t at = 0;
-  if constexpr (rows_are_contiguous<View>()) {
+  if constexpr (rows_are_contiguous<Paths, View>()) {
     at = std::size_t(count) * w * sizeof(T);
     if (at > 0) std::memcpy(static_cast<void*>(v.data() + std::size_t(first) * w), in, at);
   } else {
@@ -119,7 +126,7 @@ struct GhostRun {
   int count = 0;
 };
 
-template <int Dim, class Store, class ExecSpace>
+template <int Dim, class Store, class ExecSpace, class Paths = DefaultPaths<ExecSpace>>
 class SlabExchange {
  public:
   using Mem = typename ExecSpace::memory_space;
@@ -192,7 +199,7 @@ class SlabExchange {
     const bool moved_cuts = balance_ != SlabBalance::equal && rebalance(p);
     const int me = comm_.rank();
     for (int pass = 0;; ++pass) {
-      auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.x);
+      auto x = host_copy<Paths>(p.x);
       std::vector<int> keep, down, up;
       for (int i = 0; i < p.n; ++i) {
         const int owner = owner_of(x(i, axis()));
@@ -211,7 +218,7 @@ class SlabExchange {
       if (int(keep.size()) < p.n) {
         Kokkos::View<int*, Kokkos::HostSpace> order_host("keep_order", keep.size());
         for (std::size_t k = 0; k < keep.size(); ++k) order_host(k) = keep[k];
-        auto order = Kokkos::create_mirror_view_and_copy(Mem(), order_host);
+        auto order = device_copy<Mem, Paths>(order_host);
         permute.apply(p, order, int(keep.size()));
         p.n = int(keep.size());
       }
@@ -227,13 +234,13 @@ class SlabExchange {
   // [first, p.n); keeps those whose row is this slab's (population.hpp, insert).
   template <class Permutation>
   void keep_own(Store& p, Permutation& permute, int first) {
-    auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.x);
+    auto x = host_copy<Paths>(p.x);
     Kokkos::View<int*, Kokkos::HostSpace> order_host("keep_own_order", std::max(p.n, 1));
     int kept = 0;
     for (int i = 0; i < p.n; ++i)
       if (i < first || owns(x(i, axis()))) order_host(kept++) = i;
     if (kept == p.n) return;
-    auto order = Kokkos::create_mirror_view_and_copy(Mem(), order_host);
+    auto order = device_copy<Mem, Paths>(order_host);
     permute.apply(p, order, kept);
     p.n = kept;
   }
@@ -245,7 +252,7 @@ class SlabExchange {
   template <class StartView, class Grow>
   int append_ghosts(Store& p, const StartView& cell_start, Kokkos::View<int*, Mem>& ghost_start,
                     Grow&& grow) {
-    auto start = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), cell_start);
+    auto start = host_copy<Paths>(cell_start);
     send_down_ = storage_ranges(start, slabs_.first_row(comm_.rank()));
     send_up_ = storage_ranges(start, slabs_.end_row(comm_.rank()) - 1);
     // This slab's lowest row goes down, its highest up; from above comes the row above it.
@@ -372,13 +379,13 @@ class SlabExchange {
     arrays(p, [&](auto& view) {
       using T = typename std::decay_t<decltype(view)>::non_const_value_type;
       const std::size_t row = sizeof(T) * std::size_t(row_bytes::width(view));
-      auto host = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), view);
+      auto host = host_copy<Paths>(view);
       int at = p.n;
       for (const GhostRun& r : merge_) {
         const std::size_t from = std::size_t(r.from);
-        row_bytes::extract(host,
-                           bytes[from]->data() + array_start[from] + std::size_t(r.first) * row, at,
-                           r.count);
+        row_bytes::extract<Paths>(
+            host, bytes[from]->data() + array_start[from] + std::size_t(r.first) * row, at,
+            r.count);
         at += r.count;
       }
       for (const std::size_t from : {0, 1}) array_start[from] += std::size_t(count[from]) * row;
@@ -413,7 +420,7 @@ class SlabExchange {
       weight = std::max(1.0, std::round(work_seconds_ / work_particle_steps_ * 1e12));
       work_seconds_ = work_particle_steps_ = 0;
     }
-    auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.x);
+    auto x = host_copy<Paths>(p.x);
     const int rows = grid_.ncell[axis()];
     std::vector<double> histogram(std::size_t(rows), 0.0);
     for (int i = 0; i < p.n; ++i)
@@ -465,8 +472,8 @@ class SlabExchange {
                                        ForArrays&& arrays) {
     std::vector<char> out;
     arrays(p, [&](auto& view) {
-      auto host = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), view);
-      for (const auto& [begin, end] : ranges) row_bytes::append(out, host, begin, end);
+      auto host = host_copy<Paths>(view);
+      for (const auto& [begin, end] : ranges) row_bytes::append<Paths>(out, host, begin, end);
     });
     return out;
   }
@@ -478,8 +485,8 @@ class SlabExchange {
     if (count == 0) return 0;
     std::size_t at = 0;
     arrays(p, [&](auto& view) {
-      auto host = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), view);
-      at += row_bytes::extract(host, bytes.data() + at, first, count);
+      auto host = host_copy<Paths>(view);
+      at += row_bytes::extract<Paths>(host, bytes.data() + at, first, count);
       Kokkos::deep_copy(view, host);
     });
     return count;
@@ -525,8 +532,8 @@ class SlabExchange {
     const int ncell = grid_.total();
     if (int(ghost_start.extent(0)) != ncell + 1)
       ghost_start = Kokkos::View<int*, Mem>("ghost_cell_start", ncell + 1);
-    auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p.x);
-    auto start = Kokkos::create_mirror_view(ghost_start);
+    auto x = host_copy<Paths>(p.x);
+    auto start = host_mirror<Paths>(ghost_start);
     int g = 0;
     for (int c = 0; c <= ncell; ++c) {
       while (g < ghosts_ && grid_.cell_of(x, p.n + g) < c) ++g;

@@ -11,10 +11,13 @@
 #include <Kokkos_ScatterView.hpp>
 
 #include <stdexcept>
+#include <type_traits>
 #include <vector>
 
 #include "bin_layout.hpp"
+#include "device/backends.hpp"
 #include "device/device_math.hpp"
+#include "device/host_mirror.hpp"
 #include "device/prefetch.hpp"
 
 namespace granshock {
@@ -140,13 +143,20 @@ struct ScatterSample {
 
 // The sums of one accumulator (grid or profile) for all blocks, on the device, and the
 // per-thread scratch a ScatterView needs (sized for one block and reused).
-template <class ExecSpace>
+template <class ExecSpace, class Paths = DefaultPaths<ExecSpace>>
 class BinAccumulator {
  public:
   using Mem = typename ExecSpace::memory_space;
   using Sums = Kokkos::View<double*, Mem>;
-  using Scatter =
-      Kokkos::Experimental::ScatterView<double*, typename Sums::array_layout, ExecSpace>;
+  // Host paths: Kokkos' choice for the backend (on OpenMP one private copy per thread,
+  // added up after the pass). Device paths: Kokkos' choice on a GPU, one copy and atomic
+  // adds.
+  using Scatter = std::conditional_t<
+      Paths::host,
+      Kokkos::Experimental::ScatterView<double*, typename Sums::array_layout, ExecSpace>,
+      Kokkos::Experimental::ScatterView<
+          double*, typename Sums::array_layout, ExecSpace, Kokkos::Experimental::ScatterSum,
+          Kokkos::Experimental::ScatterNonDuplicated, Kokkos::Experimental::ScatterAtomic>>;
 
   BinAccumulator() = default;
   BinAccumulator(long bins, int quantities, int blocks)
@@ -191,26 +201,31 @@ class BinAccumulator {
 
   // Threads that own bands of rows (ScatterStrategy::rows, solver/row_owner_sampling.hpp):
   // the backend's threads, capped at 16 (each reads every particle's bins).
-  // ScatterStrategy::automatic takes rows only on host backends.
+  // ScatterStrategy::automatic takes rows only on host paths.
   static int row_owners() {
     const int threads = ExecSpace().concurrency();
     return threads < 16 ? threads : 16;
   }
   static ScatterStrategy resolve(ScatterStrategy s) {
     if (s != ScatterStrategy::automatic) return s;
-    constexpr bool host = Kokkos::SpaceAccessibility<Kokkos::HostSpace, Mem>::accessible;
-    return host && ExecSpace().concurrency() <= 16 ? ScatterStrategy::rows
-                                                   : ScatterStrategy::atomic;
+    return Paths::host && ExecSpace().concurrency() <= 16 ? ScatterStrategy::rows
+                                                          : ScatterStrategy::atomic;
   }
 
   std::vector<double> to_host() const {
-    const auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sums_);
+    const auto h = host_copy<Paths>(sums_);
     return std::vector<double>(h.data(), h.data() + h.extent(0));
   }
-  void from_host(const std::vector<double>& values) {
+  // The sums `values`, or zeros of their size (take = false: a rank other than the one
+  // that holds the global sums).
+  void from_host(const std::vector<double>& values, bool take = true) {
     if (values.size() != sums_.extent(0))
       throw std::runtime_error("field sums of the checkpoint do not match the scene's bins");
-    auto h = Kokkos::create_mirror_view(sums_);
+    if (!take) {
+      Kokkos::deep_copy(sums_, 0.0);
+      return;
+    }
+    auto h = host_mirror<Paths>(sums_);
     for (std::size_t k = 0; k < values.size(); ++k) h(k) = values[k];
     Kokkos::deep_copy(sums_, h);
   }

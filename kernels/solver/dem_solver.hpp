@@ -19,6 +19,8 @@
 
 #include "checkpoint_checks.hpp"
 #include "communicator.hpp"
+#include "device/backends.hpp"
+#include "device/host_mirror.hpp"
 #include "neighbours/cell_grid.hpp"
 #include "neighbours/cell_sort.hpp"
 #include "neighbours/pair_loop.hpp"
@@ -43,8 +45,12 @@
 
 namespace granshock {
 
-template <class V, class ExecSpace>
+// Paths: where the kernels take their host or their device branches (device/backends.hpp;
+// docs/cuda.md, "Branch points"); a test may build the other way to compare the two.
+template <class V, class ExecSpace, class Paths = DefaultPaths<ExecSpace>>
 class DemSolver final : public Solver {
+  static_assert(paths_possible<ExecSpace, Paths>(), "host paths need host-accessible memory");
+
  public:
   static constexpr int Dim = V::dim;
   using Real = typename V::real;
@@ -56,11 +62,13 @@ class DemSolver final : public Solver {
   // Positions, the box, cells and the skin displacement are in Position (double) in every
   // variant; the rest in Real (device/position.hpp; docs/design.md, "Particles").
   using Position = typename Store::Position;
+  using Accumulator = BinAccumulator<ExecSpace, Paths>;
+  using Population = ParticlePopulation<V, ExecSpace, Paths>;
 
   DemSolver(const SolverSetup& setup, std::size_t capacity, const Communicator& comm)
       : setup_(validated(setup)),
         comm_(comm),
-        table_(PairTable<Model, Real, Mem>::build(setup)),
+        table_(PairTable<Model, Real, Mem>::template build<Paths>(setup)),
         box_(BoxGeometry<Dim, Position>::from(setup.box)),
         obstacle_(Obstacle::from(setup.obstacle)),
         skin_(Real(setup.skin())),
@@ -84,11 +92,11 @@ class DemSolver final : public Solver {
     for (const int id : given.id) next_id = std::max(next_id, id + 1);
     const int n = int(hp.size());
     if (n > p_.capacity()) p_.allocate(n + n / 4);
-    auto x = Kokkos::create_mirror_view(p_.x);
-    auto v = Kokkos::create_mirror_view(p_.v);
-    auto species = Kokkos::create_mirror_view(p_.species);
-    auto id = Kokkos::create_mirror_view(p_.id);
-    auto omega = Kokkos::create_mirror_view(p_.omega);
+    auto x = host_mirror<Paths>(p_.x);
+    auto v = host_mirror<Paths>(p_.v);
+    auto species = host_mirror<Paths>(p_.species);
+    auto id = host_mirror<Paths>(p_.id);
+    auto omega = host_mirror<Paths>(p_.omega);
     for (int i = 0; i < n; ++i) {
       for (int d = 0; d < Dim; ++d) {
         x(i, d) = Position(hp.position[i][d]);
@@ -120,11 +128,11 @@ class DemSolver final : public Solver {
   }
 
   HostParticles particles() const override {
-    auto x = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p_.x);
-    auto v = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p_.v);
-    auto species = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p_.species);
-    auto id = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p_.id);
-    auto omega = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p_.omega);
+    auto x = host_copy<Paths>(p_.x);
+    auto v = host_copy<Paths>(p_.v);
+    auto species = host_copy<Paths>(p_.species);
+    auto id = host_copy<Paths>(p_.id);
+    auto omega = host_copy<Paths>(p_.omega);
     HostParticles hp;
     for (int i = 0; i < p_.n; ++i) {
       std::array<double, 3> xi{0, 0, 0}, vi{0, 0, 0};
@@ -205,9 +213,7 @@ class DemSolver final : public Solver {
   // the skin criterion.
   void rebuild_lists() override {
     wrap_periodic();
-    const auto grow = [this](int capacity) {
-      ParticlePopulation<V, ExecSpace>::grow(p_, capacity);
-    };
+    const auto grow = [this](int capacity) { Population::grow(p_, capacity); };
     if (slabs_) slabs_->migrate(p_, permutation_, grow);
     population_.remove_escaped(p_, permutation_);
     sort_.sort(grid_, p_.x, p_.id, p_.n);
@@ -235,7 +241,7 @@ class DemSolver final : public Solver {
   // in one pass; returns the largest squared speed of the drift (by_speed) or the largest
   // squared displacement since the last list build.
   Real fused_step(bool by_speed) {
-    const FusedStepKernel<V, ExecSpace> kernel = fused_kernel(by_speed, false);
+    const FusedStepKernel<V, ExecSpace, Paths> kernel = fused_kernel(by_speed, false);
     Real moved2 = 0;
     Kokkos::parallel_reduce("fused_step", Policy(0, kernel.work_items(p_.n)), kernel,
                             Kokkos::Max<Real>(moved2));
@@ -248,10 +254,10 @@ class DemSolver final : public Solver {
   // (fused_steps.hpp): as many as the host's loop would take in a row without an exact
   // check. Returns how many; the watch has seen each one's top speed.
   long fused_steps(long max_steps) {
-    if constexpr (!host_backend) {
+    if constexpr (!Paths::host) {
       return 0;  // never called: steps_in_one_region() is false
     } else {
-      const FusedStepsPass<V, ExecSpace> pass{
+      const FusedStepsPass<V, ExecSpace, Paths> pass{
           fused_kernel(true, false),      fused_kernel(true, true), watch_.speed_bound(), max_steps,
           top_speed2_of_steps(max_steps), steps_done_in_region_};
       Kokkos::parallel_for("fused_steps", Kokkos::TeamPolicy<ExecSpace>(1, region_team_size()),
@@ -259,8 +265,8 @@ class DemSolver final : public Solver {
       ++step_regions_;
       long done = 0;
       Kokkos::deep_copy(done, steps_done_in_region_);
-      const auto speeds = Kokkos::create_mirror_view_and_copy(
-          Kokkos::HostSpace(), Kokkos::subview(top_speed2_, Kokkos::make_pair(0L, done)));
+      const auto speeds =
+          host_copy<Paths>(Kokkos::subview(top_speed2_, Kokkos::make_pair(0L, done)));
       for (long k = 0; k < done; ++k) watch_.drifted(speeds(k));
       if (done % 2 == 1) swap_step_buffers();
       return done;
@@ -268,7 +274,7 @@ class DemSolver final : public Solver {
   }
 
   // The fused pass from the current buffers into the second ones, or (back) the reverse.
-  FusedStepKernel<V, ExecSpace> fused_kernel(bool by_speed, bool back) {
+  FusedStepKernel<V, ExecSpace, Paths> fused_kernel(bool by_speed, bool back) {
     if (int(x_next_.extent(0)) < p_.capacity()) {
       x_next_ = decltype(x_next_)("x_next", p_.capacity());
       v_next_ = decltype(v_next_)("v_next", p_.capacity());
@@ -295,13 +301,11 @@ class DemSolver final : public Solver {
     if constexpr (V::friction) std::swap(p_.omega, omega_next_);
   }
 
-  // Whether fused steps may share one region: on a host backend whose team can hold all
-  // its threads, on one process (ghosts are exchanged between steps), for small enough
-  // scenes (fused_steps.hpp), unless the setup asks to measure every step exactly.
-  static constexpr bool host_backend =
-      Kokkos::SpaceAccessibility<Kokkos::HostSpace, Mem>::accessible;
+  // Whether fused steps may share one region: on host paths whose team can hold all the
+  // backend's threads, on one process (ghosts are exchanged between steps), for small
+  // enough scenes (fused_steps.hpp), unless the setup asks to measure every step exactly.
   bool steps_in_one_region() const {
-    if constexpr (!host_backend) {
+    if constexpr (!Paths::host) {
       return false;
     } else {
       return setup_.steps_per_region > 1 && !slabs_ && !setup_.exact_list_check &&
@@ -311,7 +315,7 @@ class DemSolver final : public Solver {
   }
   int region_team_size() const {
     if (region_team_size_ == 0) {
-      const FusedStepsPass<V, ExecSpace> probe{};
+      const FusedStepsPass<V, ExecSpace, Paths> probe{};
       region_team_size_ = std::min(
           ExecSpace().concurrency(),
           Kokkos::TeamPolicy<ExecSpace>(1, 1).team_size_max(probe, Kokkos::ParallelForTag()));
@@ -371,7 +375,11 @@ class DemSolver final : public Solver {
   long step_regions() const override { return step_regions_; }
   double skin() const override { return double(skin_); }
   double time() const override { return double(steps_) * setup_.dt; }
-  std::string variant() const override { return V::name() + "/" + ExecSpace::name(); }
+  // A host backend on device paths says so (docs/cuda.md, "Branch points").
+  std::string variant() const override {
+    const bool device_paths_on_host = !Paths::host && host_accessible<ExecSpace>();
+    return V::name() + "/" + ExecSpace::name() + (device_paths_on_host ? "/device-paths" : "");
+  }
 
   // Several processes: every rank places the same particles (population.hpp) and keeps
   // its slab's; the count returned is the whole event's, the same on every rank. New
@@ -405,16 +413,15 @@ class DemSolver final : public Solver {
 
   void configure_sampling(const FieldSampling& f) override {
     sampling_ = f;
-    grid_sums_ = BinAccumulator<ExecSpace>(f.grid.bins(), f.grid.quantities(), f.grid.blocks);
+    grid_sums_ = Accumulator(f.grid.bins(), f.grid.quantities(), f.grid.blocks);
     if (f.has_profile())
-      profile_sums_ =
-          BinAccumulator<ExecSpace>(f.profile.bins(), f.grid.quantities(), f.grid.blocks);
+      profile_sums_ = Accumulator(f.profile.bins(), f.grid.quantities(), f.grid.blocks);
   }
 
   void sample_fields(int block) override {
     const GridIndex grid = GridIndex::of(sampling_.grid);
     const GridIndex profile = GridIndex::of(sampling_.profile);
-    const ScatterStrategy strategy = BinAccumulator<ExecSpace>::resolve(sampling_.strategy);
+    const ScatterStrategy strategy = Accumulator::resolve(sampling_.strategy);
     if (strategy == ScatterStrategy::rows) return sample_by_row_owners(block, grid, profile);
     if (int(virial_.extent(0)) < p_.n) virial_ = decltype(virial_)("virial", p_.capacity());
     ContactForceKernel<V, ExecSpace, ForceMode::virial> kernel{
@@ -451,7 +458,7 @@ class DemSolver final : public Solver {
     Kokkos::parallel_for("fields::locate", Policy(0, p_.n),
                          LocateSampleBins<decltype(p_.x), decltype(sample_bins_)>{
                              grid, profile, !profile_sums_.empty(), p_.x, sample_bins_});
-    const int owners = BinAccumulator<ExecSpace>::row_owners();
+    const int owners = Accumulator::row_owners();
     const RowOwnerSamplePass<V, ExecSpace, Part, decltype(sample_bins_)> pass{
         {p_, pair_loop(), table_, obstacle_, Real(setup_.dt), history_overflow_, {}},
         grid_part,
@@ -473,9 +480,8 @@ class DemSolver final : public Solver {
   void restore_field_sums(const std::vector<double>& grid,
                           const std::vector<double>& profile) override {
     const bool mine = !slabs_ || comm_.is_root();
-    grid_sums_.from_host(mine ? grid : std::vector<double>(grid.size(), 0.0));
-    if (!profile_sums_.empty())
-      profile_sums_.from_host(mine ? profile : std::vector<double>(profile.size(), 0.0));
+    grid_sums_.from_host(grid, mine);
+    if (!profile_sums_.empty()) profile_sums_.from_host(profile, mine);
   }
 
   // Several processes: the whole state on rank 0, every rank's particles at their rows of
@@ -487,7 +493,7 @@ class DemSolver final : public Solver {
     s.dim = Dim;
     s.step = steps_;
     s.next_id = population_.next_id();
-    state_io::export_particles(p_, s);
+    state_io::export_particles<Paths>(p_, s);
     s.list_builds = builds_;
     s.skin = double(skin_);
     s.last_build_step = last_build_step_;
@@ -495,8 +501,8 @@ class DemSolver final : public Solver {
     s.removed_low = gone.low;
     s.removed_high = gone.high;
     if (!slabs_) {
-      state_io::to_host(list_.offsets, p_.n + 1, s.neighbour_offsets);
-      state_io::to_host(list_.neighbours, list_.total, s.neighbours);
+      state_io::to_host<Paths>(list_.offsets, p_.n + 1, s.neighbour_offsets);
+      state_io::to_host<Paths>(list_.neighbours, list_.total, s.neighbours);
       return s;
     }
     const std::vector<int> cells = reference_cells();
@@ -507,7 +513,7 @@ class DemSolver final : public Solver {
                      all);
     if (!comm_.is_root()) return all;
     all = select_particles(all, row_sources(rows, total, all.size()));
-    state_io::ReferenceLists lists = state_io::lists_from_reference<Dim, Real, ExecSpace>(
+    state_io::ReferenceLists lists = state_io::lists_from_reference<Dim, Real, ExecSpace, Paths>(
         all, grid_, box_, table_.radius, skin_);
     for (std::size_t k = 0; k < lists.order.size(); ++k)
       if (lists.order[k] != int(k))
@@ -523,8 +529,8 @@ class DemSolver final : public Solver {
     check_state(s);  // as read_checkpoint did: the checks below rely on it
     check_fit(s, f);
     const Real skin = state_skin(s);
-    state_io::check_lists<Dim, Real, ExecSpace>(s, grid_, box_, population_.escape_test(),
-                                                table_.radius, skin);
+    state_io::check_lists<Dim, Real, ExecSpace, Paths>(s, grid_, box_, population_.escape_test(),
+                                                       table_.radius, skin);
     check_contacts(s, f);
     const RemovalCounts gone{s.removed_low, s.removed_high};
     steps_ = s.step;
@@ -537,7 +543,7 @@ class DemSolver final : public Solver {
       return;
     }
     if (int(s.size()) > p_.capacity()) p_.allocate(int(s.size()) + int(s.size()) / 4);
-    state_io::import_particles(p_, s);
+    state_io::import_particles<Paths>(p_, s);
     list_.assign(s.neighbour_offsets, s.neighbours);
     population_.restore(s.next_id, gone);
   }
@@ -554,10 +560,8 @@ class DemSolver final : public Solver {
     }
     const SolverState own = select_particles(s, rows);
     if (int(own.size()) > p_.capacity()) p_.allocate(int(own.size()) + int(own.size()) / 4);
-    state_io::import_particles(p_, own);
-    const auto grow = [this](int capacity) {
-      ParticlePopulation<V, ExecSpace>::grow(p_, capacity);
-    };
+    state_io::import_particles<Paths>(p_, own);
+    const auto grow = [this](int capacity) { Population::grow(p_, capacity); };
     std::swap(p_.x, p_.x_ref);  // the rebuild's positions, for ghosts, cells and the list
     sort_.sort(grid_, p_.x, p_.id, p_.n);
     slabs_->append_ghosts(p_, sort_.cell_start, ghost_start_, grow);
@@ -592,7 +596,7 @@ class DemSolver final : public Solver {
 
   // The cell of each owned particle's reference position: its place in the last sort.
   std::vector<int> reference_cells() const {
-    auto x_ref = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), p_.x_ref);
+    auto x_ref = host_copy<Paths>(p_.x_ref);
     std::vector<int> cells(std::size_t(p_.n));
     for (int i = 0; i < p_.n; ++i) cells[std::size_t(i)] = grid_.cell_of(x_ref, i);
     return cells;
@@ -681,7 +685,7 @@ class DemSolver final : public Solver {
   }
   // Not smaller than any species' radius in the table (the same double, then rounded).
   Real max_radius() const { return Real(0.5 * setup_.max_diameter()); }
-  SolverDiagnostics<V, ExecSpace> diagnostics_part() const {
+  SolverDiagnostics<V, ExecSpace, Paths> diagnostics_part() const {
     return {p_, pair_loop(), table_, obstacle_};
   }
 
@@ -695,16 +699,16 @@ class DemSolver final : public Solver {
   VelocityVerlet<V, ExecSpace> integrator_;
 
   Store p_;
-  ParticlePopulation<V, ExecSpace> population_;
+  Population population_;
   ParticlePermutation<ExecSpace, Store> permutation_;
-  std::optional<SlabExchange<Dim, Store, ExecSpace>> slabs_;  // several processes only
-  Kokkos::View<int*, Mem> ghost_start_;                       // their ghosts' cells
+  std::optional<SlabExchange<Dim, Store, ExecSpace, Paths>> slabs_;  // several processes only
+  Kokkos::View<int*, Mem> ghost_start_;                              // their ghosts' cells
   CellSort<Dim, Position, ExecSpace> sort_;
-  VerletList<Dim, Real, ExecSpace> list_;
+  VerletList<Dim, Real, ExecSpace, Paths> list_;
   Kokkos::View<int, Mem> history_overflow_;
 
   FieldSampling sampling_;
-  BinAccumulator<ExecSpace> grid_sums_, profile_sums_;
+  Accumulator grid_sums_, profile_sums_;
   Kokkos::View<Real * [Dim * Dim], Mem> virial_;
   Kokkos::View<int* [2], Mem> sample_bins_;  // row-owner sampling: each particle's bins
   Kokkos::View<double*, Mem> top_speed2_;    // fused_steps: each step's top speed^2

@@ -11,7 +11,9 @@
 #include <vector>
 
 #include "communicator.hpp"
+#include "device/backends.hpp"
 #include "device/device_lambda.hpp"
+#include "device/host_mirror.hpp"
 #include "neighbours/pair_loop.hpp"
 #include "particles/particle_store.hpp"
 #include "solver.hpp"
@@ -19,7 +21,7 @@
 
 namespace granshock {
 
-template <class V, class ExecSpace>
+template <class V, class ExecSpace, class Paths = DefaultPaths<ExecSpace>>
 struct SolverDiagnostics {
   static constexpr int Dim = V::dim;
   using Real = typename V::real;
@@ -181,7 +183,7 @@ struct SolverDiagnostics {
                                     ++k;
                                   });
         });
-    const auto host = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), list);
+    const auto host = host_copy<Paths>(list);
     std::vector<std::pair<int, int>> out;
     for (int k = 0; k < total; ++k) out.emplace_back(host(k, 0), host(k, 1));
     std::sort(out.begin(), out.end());

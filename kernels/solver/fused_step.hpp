@@ -18,11 +18,12 @@
 
 #include <Kokkos_Core.hpp>
 
+#include "device/backends.hpp"
 #include "solver/contact_forces.hpp"
 
 namespace granshock {
 
-template <class V, class ExecSpace>
+template <class V, class ExecSpace, class Paths = DefaultPaths<ExecSpace>>
 struct FusedStepKernel {
   static constexpr int Dim = V::dim;
   using Real = typename V::real;
@@ -41,13 +42,12 @@ struct FusedStepKernel {
 
   int n;  // particles
 
-  // Host backends give each work item a run of particles, so that the running maximum and
+  // Host paths give each work item a run of particles, so that the running maximum and
   // the step's constants stay in registers: through the reference `worst` and the
   // functor's own fields, which the compiler must assume the stores to x_next and v_next
-  // may overwrite, they are reloaded per particle. A device keeps one particle per thread
-  // (neighbouring threads, neighbouring particles: coalesced loads).
-  static constexpr int run_length =
-      Kokkos::SpaceAccessibility<Kokkos::HostSpace, Mem>::accessible ? 64 : 1;
+  // may overwrite, they are reloaded per particle. Device paths keep one particle per
+  // thread (neighbouring threads, neighbouring particles: coalesced loads).
+  static constexpr int run_length = Paths::host ? 64 : 1;
   KOKKOS_INLINE_FUNCTION static int work_items(int particles) {
     return (particles + run_length - 1) / run_length;
   }

@@ -25,10 +25,10 @@ namespace granshock {
 // saves. Above this many particles per thread the solver keeps one region per step.
 constexpr int step_regions_particles_per_thread = 8192;
 
-template <class V, class ExecSpace>
+template <class V, class ExecSpace, class Paths = DefaultPaths<ExecSpace>>
 struct FusedStepsPass {
   using Real = typename V::real;
-  using Kernel = FusedStepKernel<V, ExecSpace>;
+  using Kernel = FusedStepKernel<V, ExecSpace, Paths>;
   using Member = typename Kokkos::TeamPolicy<ExecSpace>::member_type;
   using Mem = typename ExecSpace::memory_space;
 

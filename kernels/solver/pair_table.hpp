@@ -5,6 +5,7 @@
 
 #include <Kokkos_Core.hpp>
 
+#include "device/host_mirror.hpp"
 #include "solver_setup.hpp"
 
 namespace granshock {
@@ -19,6 +20,8 @@ struct PairTable {
   Kokkos::View<Coefficients**, MemSpace> pair;     // [species_i][species_j]
   Kokkos::View<Coefficients*, MemSpace> obstacle;  // [species] against the obstacle
 
+  // Paths: the caller's (device/host_mirror.hpp).
+  template <class Paths>
   static PairTable build(const SolverSetup& s) {
     const int n = int(s.species.size());
     PairTable t;
@@ -27,11 +30,11 @@ struct PairTable {
     t.inv_inertia = decltype(t.inv_inertia)("inv_inertia", n);
     t.pair = decltype(t.pair)("pair_coefficients", n, n);
     t.obstacle = decltype(t.obstacle)("obstacle_coefficients", n);
-    auto radius = Kokkos::create_mirror_view(t.radius);
-    auto inv_mass = Kokkos::create_mirror_view(t.inv_mass);
-    auto inv_inertia = Kokkos::create_mirror_view(t.inv_inertia);
-    auto pair = Kokkos::create_mirror_view(t.pair);
-    auto obstacle = Kokkos::create_mirror_view(t.obstacle);
+    auto radius = host_mirror<Paths>(t.radius);
+    auto inv_mass = host_mirror<Paths>(t.inv_mass);
+    auto inv_inertia = host_mirror<Paths>(t.inv_inertia);
+    auto pair = host_mirror<Paths>(t.pair);
+    auto obstacle = host_mirror<Paths>(t.obstacle);
     const ContactOptions& o = s.contacts.options;
     for (int a = 0; a < n; ++a) {
       radius(a) = Real(s.species[a].radius_m());

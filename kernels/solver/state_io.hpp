@@ -18,6 +18,7 @@
 
 #include "checkpoint_checks.hpp"
 #include "device/box_geometry.hpp"
+#include "device/host_mirror.hpp"
 #include "neighbours/cell_grid.hpp"
 #include "neighbours/cell_sort.hpp"
 #include "neighbours/verlet_list.hpp"
@@ -30,10 +31,11 @@ namespace granshock {
 
 namespace state_io {
 
+// Paths: the solver's (device/host_mirror.hpp).
 // The first n rows of a device View as a flat host vector (row-major).
-template <class View, class T>
+template <class Paths, class View, class T>
 void to_host(const View& view, int n, std::vector<T>& out) {
-  const auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), view);
+  const auto h = host_copy<Paths>(view);
   const int width = View::rank == 1 ? 1 : int(view.extent(1));
   out.resize(std::size_t(n) * width);
   for (int i = 0; i < n; ++i) {
@@ -45,12 +47,12 @@ void to_host(const View& view, int n, std::vector<T>& out) {
   }
 }
 
-template <class View, class T>
+template <class Paths, class View, class T>
 void from_host(const View& view, int n, const std::vector<T>& in, const char* what) {
   const int width = View::rank == 1 ? 1 : int(view.extent(1));
   if (in.size() != std::size_t(n) * width)
     throw std::runtime_error(std::string("checkpoint field '") + what + "' has the wrong size");
-  auto h = Kokkos::create_mirror_view(view);
+  auto h = host_mirror<Paths>(view);
   for (int i = 0; i < n; ++i) {
     if constexpr (View::rank == 1) {
       h(i) = typename View::value_type(in[i]);
@@ -63,17 +65,17 @@ void from_host(const View& view, int n, const std::vector<T>& in, const char* wh
 }
 
 // Every per-particle array of the store into the state, and back.
-template <class Store>
+template <class Paths, class Store>
 void export_particles(const Store& p, SolverState& s) {
-  Store::for_each_array([&](auto array, const auto& view) { to_host(view, p.n, s.*array.member); },
-                        p);
+  Store::for_each_array(
+      [&](auto array, const auto& view) { to_host<Paths>(view, p.n, s.*array.member); }, p);
   s.history_slots = Store::friction ? Store::history_slots : 0;
 }
-template <class Store>
+template <class Paths, class Store>
 void import_particles(Store& p, const SolverState& s) {
   const int n = int(s.size());
   Store::for_each_array(
-      [&](auto array, auto& view) { from_host(view, n, s.*array.member, array.name); }, p);
+      [&](auto array, auto& view) { from_host<Paths>(view, n, s.*array.member, array.name); }, p);
   p.n = n;
 }
 
@@ -86,7 +88,7 @@ struct ReferenceLists {
   std::vector<int> neighbours;
 };
 
-template <int Dim, class Real, class ExecSpace, class RadiusView>
+template <int Dim, class Real, class ExecSpace, class Paths, class RadiusView>
 ReferenceLists lists_from_reference(const SolverState& s, const CellGrid<Dim, Position>& grid,
                                     const BoxGeometry<Dim, Position>& box, const RadiusView& radius,
                                     Real skin) {
@@ -97,9 +99,9 @@ ReferenceLists lists_from_reference(const SolverState& s, const CellGrid<Dim, Po
   if (n == 0) return out;
   Kokkos::View<Position* [Dim], Mem> xr("reference_x", n);
   Kokkos::View<int*, Mem> species("reference_species", n), id("reference_id", n);
-  auto h_xr = Kokkos::create_mirror_view(xr);
-  auto h_species = Kokkos::create_mirror_view(species);
-  auto h_id = Kokkos::create_mirror_view(id);
+  auto h_xr = host_mirror<Paths>(xr);
+  auto h_species = host_mirror<Paths>(species);
+  auto h_id = host_mirror<Paths>(id);
   for (int i = 0; i < n; ++i) {
     for (int d = 0; d < Dim; ++d)
       h_xr(i, d) = Position(s.reference_position[std::size_t(i) * Dim + d]);
@@ -111,18 +113,18 @@ ReferenceLists lists_from_reference(const SolverState& s, const CellGrid<Dim, Po
   Kokkos::deep_copy(id, h_id);
   CellSort<Dim, Position, ExecSpace> sort;
   sort.sort(grid, xr, id, n);
-  to_host(sort.order, n, out.order);
-  VerletList<Dim, Real, ExecSpace> list;
+  to_host<Paths>(sort.order, n, out.order);
+  VerletList<Dim, Real, ExecSpace, Paths> list;
   list.build(grid, box, sort.cell_start, xr, species, radius, skin, n);
-  to_host(list.offsets, n + 1, out.offsets);
-  to_host(list.neighbours, list.total, out.neighbours);
+  to_host<Paths>(list.offsets, n + 1, out.offsets);
+  to_host<Paths>(list.neighbours, list.total, out.neighbours);
   return out;
 }
 
 // Refuses (InvalidCheckpoint) a state whose lists this solver would not have built.
 // Positions are Position (double) in every variant (device/position.hpp); the other
 // arrays of a single-precision solver hold floats.
-template <int Dim, class Real, class ExecSpace, class RadiusView>
+template <int Dim, class Real, class ExecSpace, class Paths, class RadiusView>
 void check_lists(const SolverState& s, const CellGrid<Dim, Position>& grid,
                  const BoxGeometry<Dim, Position>& box, const EscapeTest<Dim, Position>& escape,
                  const RadiusView& radius, Real skin) {
@@ -159,7 +161,7 @@ void check_lists(const SolverState& s, const CellGrid<Dim, Position>& grid,
   }
   if (n == 0) return;
   const ReferenceLists built =
-      lists_from_reference<Dim, Real, ExecSpace>(s, grid, box, radius, skin);
+      lists_from_reference<Dim, Real, ExecSpace, Paths>(s, grid, box, radius, skin);
   for (int k = 0; k < n; ++k)
     if (built.order[std::size_t(k)] != k)
       fail(

@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "communicator.hpp"
+#include "device/backends.hpp"
 #include "models/models.hpp"
 #include "solver.hpp"
 #include "solver/variant.hpp"
@@ -47,8 +48,9 @@ void for_each_variant(F&& f, DimList<Dims...>, TypeList<Models...>, TypeList<Obs
 }
 
 // The solver of the compiled variant that matches the scene, for one precision and backend
-// (instantiated in variants_<backend>_<precision>.cpp, which compile in parallel).
-template <class Real, class ExecSpace>
+// (instantiated in variants_<backend>_<precision>.cpp, which compile in parallel), on the
+// backend's own host or device paths (device/backends.hpp).
+template <class Real, class ExecSpace, class Paths = DefaultPaths<ExecSpace>>
 std::unique_ptr<Solver> make_solver_variant(const SolverSetup& setup, std::size_t capacity,
                                             const Communicator& comm);
 

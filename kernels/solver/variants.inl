@@ -1,11 +1,12 @@
-// The definition of make_solver_variant; included only by the variants_*.cpp files.
+// The definition of make_solver_variant; included by the variants_*.cpp files (and by a
+// test that builds the other paths, tests/unit/solver_on_paths.cpp).
 #include "solver/dem_solver.hpp"
 #include "solver/variant_table.hpp"
 #include "user_error.hpp"
 
 namespace granshock {
 
-template <class Real, class ExecSpace>
+template <class Real, class ExecSpace, class Paths>
 std::unique_ptr<Solver> make_solver_variant(const SolverSetup& setup, std::size_t capacity,
                                             const Communicator& comm) {
   std::unique_ptr<Solver> solver;
@@ -13,7 +14,7 @@ std::unique_ptr<Solver> make_solver_variant(const SolverSetup& setup, std::size_
       [&](auto variant) {
         using V = decltype(variant);
         if (!solver && V::matches(setup))
-          solver = std::make_unique<DemSolver<V, ExecSpace>>(setup, capacity, comm);
+          solver = std::make_unique<DemSolver<V, ExecSpace, Paths>>(setup, capacity, comm);
       },
       CompiledDimensions{}, CompiledModels{}, CompiledObstacles{});
   if (!solver)
