@@ -12,6 +12,7 @@
 #include "homogeneous_gas.hpp"
 #include "same_particles.hpp"
 #include "solver.hpp"
+#include "solver_on_paths.hpp"
 
 using namespace granshock;
 
@@ -45,9 +46,12 @@ HostParticles make_gas(SolverSetup& s) {
   return gas;
 }
 
+// The default backend against Serial: a GPU (Cuda in a CUDA build), or a host backend of
+// several threads. Either way the solvers hand their particles over as host copies.
 void compare_backends(SolverSetup s, int steps) {
   if (Kokkos::DefaultExecutionSpace().concurrency() < 2)
-    GTEST_SKIP() << "needs the default backend with 2 or more threads (OMP_NUM_THREADS=2)";
+    GTEST_SKIP() << "needs a default backend other than Serial: a GPU, or OpenMP with 2 or "
+                    "more threads (OMP_NUM_THREADS=2)";
   const HostParticles gas = make_gas(s);
   auto parallel = make_solver(s, gas.size(), Backend::default_space);
   auto serial = make_solver(s, gas.size(), Backend::serial);
@@ -131,8 +135,9 @@ void compare_regions(SolverSetup s, int steps) {
   const HostParticles gas = make_gas(s);
   SolverSetup one_per_step = s;
   one_per_step.steps_per_region = 1;
-  auto many = make_solver(s, gas.size(), Backend::default_space);
-  auto single = make_solver(one_per_step, gas.size(), Backend::default_space);
+  // Regions of many steps are host paths only (docs/cuda.md, "Branch points").
+  auto many = test::make_solver_on_paths(s, gas.size(), test::Paths::host);
+  auto single = test::make_solver_on_paths(one_per_step, gas.size(), test::Paths::host);
   many->set_particles(gas);
   single->set_particles(gas);
   many->advance(steps);
@@ -153,4 +158,39 @@ TEST(FusedSteps, ManyStepsPerRegionMatchOnePerStepFrictionless) {
 
 TEST(FusedSteps, ManyStepsPerRegionMatchOnePerStepWithFrictionAndObstacle) {
   compare_regions(friction_with_obstacle(), 2000);
+}
+
+namespace {
+
+// Host paths against device paths (kernels/device/backends.hpp; docs/cuda.md, "Branch
+// points"): the one-visit list build against count, scan and fill, runs of 64 particles
+// per work item against one, many fused steps per region against one, the field sums'
+// strategies. None changes a particle's arithmetic or the order of its contacts, so the
+// trajectories are bitwise the same. Each solver shows that it took its own branches:
+// only host paths run many steps in one region.
+void compare_paths(SolverSetup s, int steps) {
+  const HostParticles gas = make_gas(s);
+  auto host = test::make_solver_on_paths(s, gas.size(), test::Paths::host);
+  auto device = test::make_solver_on_paths(s, gas.size(), test::Paths::device);
+  host->set_particles(gas);
+  device->set_particles(gas);
+  host->advance(steps);
+  device->advance(steps);
+  EXPECT_LT(host->step_regions(), (steps - 1) / 4) << host->variant();
+  EXPECT_EQ(device->step_regions(), steps - 1) << device->variant();
+  EXPECT_EQ(host->list_builds(), device->list_builds());
+  EXPECT_GT(host->list_builds(), 1);
+  EXPECT_GT(host->diagnostics().contacts, 0);
+  expect_bitwise_identical(host->particles(), device->particles());
+  EXPECT_EQ(host->contact_pairs(), device->contact_pairs());
+}
+
+}  // namespace
+
+TEST(KernelPaths, DeviceTrajectoryIsTheHostTrajectoryBitwiseFrictionless) {
+  compare_paths(frictionless(), 3000);
+}
+
+TEST(KernelPaths, DeviceTrajectoryIsTheHostTrajectoryBitwiseWithFrictionAndObstacle) {
+  compare_paths(friction_with_obstacle(), 3000);
 }

@@ -3,14 +3,22 @@
 // give bitwise the same sums with 1 and 2 threads. Counts are exact; the
 // velocity moments and the contact virial agree to round-off (summation order differs),
 // relative 1e-12. The reference virial comes from the elastic Hertz force written here
-// (e = 1: F = 4/3 Y* sqrt(R*) dn^(3/2) along n), not from the solver's kernel.
+// (e = 1: F = 4/3 Y* sqrt(R*) dn^(3/2) along n), not from the solver's kernel. The host and
+// the device paths of the kernels (docs/cuda.md, "Branch points") agree within the bound
+// of a sum taken in another order.
 #include <gtest/gtest.h>
 
 #include <Kokkos_Core.hpp>
 #include <cmath>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
 
 #include "homogeneous_gas.hpp"
+#include "same_particles.hpp"
 #include "solver.hpp"
+#include "solver_on_paths.hpp"
 
 using namespace granshock;
 
@@ -56,9 +64,11 @@ Fixture dense_gas(int warmup_steps) {
   return f;
 }
 
-// The host reference: the same binning, summed serially.
+// The host reference: the same binning, summed serially; with `magnitudes` the sum of
+// each term's absolute value instead (the scale of a summation's round-off).
 std::vector<double> reference_sums(const Fixture& f, const HostParticles& p, int block,
-                                   bool profile) {
+                                   bool profile, bool magnitudes = false) {
+  const auto term = [magnitudes](double x) { return magnitudes ? std::abs(x) : x; };
   const BinLayout& g = f.sampling.grid;
   const BinLayout& layout = profile ? f.sampling.profile : g;
   const int q = g.quantities();
@@ -77,10 +87,10 @@ std::vector<double> reference_sums(const Fixture& f, const HostParticles& p, int
     const double vx = p.velocity[i][0], vy = p.velocity[i][1];
     double* sp = s + BinLayout::per_species * p.species[i];
     sp[0] += 1;
-    sp[1] += vx;
-    sp[2] += vy;
+    sp[1] += term(vx);
+    sp[2] += term(vy);
     sp[3] += vx * vx;
-    sp[4] += vx * vy;
+    sp[4] += term(vx * vy);
     sp[5] += vy * vy;
     // Virial of particle i: sum over partners j of 1/2 r_ij (x) F_ij (elastic Hertz).
     for (std::size_t j = 0; j < p.size(); ++j) {
@@ -97,7 +107,7 @@ std::vector<double> reference_sums(const Fixture& f, const HostParticles& p, int
       const double fn = 4.0 / 3.0 * pp.youngs_star * std::sqrt(pp.radius_star) * std::pow(dn, 1.5);
       for (int a = 0; a < 2; ++a)
         for (int b = 0; b < 2; ++b)
-          s[g.virial_index(BinLayout::w_xx) + 2 * a + b] += 0.5 * r[a] * fn * r[b] / dist;
+          s[g.virial_index(BinLayout::w_xx) + 2 * a + b] += term(0.5 * r[a] * fn * r[b] / dist);
     }
   }
   return sums;
@@ -168,4 +178,86 @@ TEST(BinAccumulator, RowOwnersAreBitwiseTheSameForAnyThreadCount) {
   EXPECT_EQ(f.solver->field_sums(false), serial->field_sums(false));
   EXPECT_EQ(f.solver->field_sums(true), serial->field_sums(true));
   EXPECT_GT(f.solver->diagnostics().contacts, 0);
+}
+
+namespace {
+
+// Adds b to a, entry by entry (a empty: a becomes b).
+void accumulate(std::vector<double>& a, const std::vector<double>& b) {
+  if (a.empty()) a.assign(b.size(), 0.0);
+  for (std::size_t k = 0; k < b.size(); ++k) a[k] += b[k];
+}
+
+}  // namespace
+
+// Host paths against device paths (kernels/device/backends.hpp; docs/cuda.md, "Branch
+// points"): `automatic` is row owners on host paths and atomic adds on device paths,
+// `scatter_view` one copy per thread against one copy with atomic adds. Both add the same
+// terms (the trajectories are bitwise the same, checked), in different orders: counts
+// are equal, and every other sum within the bound of a sum of n terms in any order,
+// 2 (n - 1) u sum |x_i| (u = 2^-53; Higham, Accuracy and Stability of Numerical
+// Algorithms, 2002, eq. 4.4), n and sum |x_i| taken from the particles sampled.
+TEST(BinAccumulator, DevicePathsAgreeWithHostPathsWithinTheSummationBound) {
+  Fixture f = dense_gas(0);
+  const HostParticles gas = f.solver->particles();
+  const ScatterStrategy strategies[] = {ScatterStrategy::automatic, ScatterStrategy::scatter_view};
+  std::vector<std::unique_ptr<Solver>> host, device;  // one of each per strategy
+  for (const ScatterStrategy strategy : strategies) {
+    f.sampling.strategy = strategy;
+    host.push_back(test::make_solver_on_paths(f.setup, gas.size(), test::Paths::host));
+    device.push_back(test::make_solver_on_paths(f.setup, gas.size(), test::Paths::device));
+    for (Solver* s : {host.back().get(), device.back().get()}) {
+      s->set_particles(gas);
+      s->configure_sampling(f.sampling);
+    }
+  }
+  std::vector<double> grid_scale, profile_scale;
+  long terms = 0;
+  for (int k = 0; k < 4; ++k) {
+    for (std::size_t m = 0; m < host.size(); ++m)
+      for (Solver* s : {host[m].get(), device[m].get()}) {
+        s->advance(200);
+        s->sample_fields(k);
+      }
+    // Sampling leaves the trajectory alone (above): every solver holds these particles.
+    const HostParticles p = host[0]->particles();
+    terms += long(p.size());
+    accumulate(grid_scale, reference_sums(f, p, k, false, true));
+    accumulate(profile_scale, reference_sums(f, p, k, true, true));
+  }
+  ASSERT_GT(host[0]->diagnostics().contacts, 20) << "the test needs contacts for the virial";
+  const int q = f.sampling.grid.quantities();
+  const double bound_per_scale = 2.0 * double(terms) * std::ldexp(1.0, -53);
+  for (std::size_t m = 0; m < host.size(); ++m) {
+    const std::string name = m == 0 ? "automatic" : "scatter_view";
+    test::expect_bitwise_identical(host[m]->particles(), device[m]->particles());
+    for (const bool profile : {false, true}) {
+      const std::string what = name + (profile ? " profile" : " grid");
+      const std::vector<double> a = host[m]->field_sums(profile),
+                                b = device[m]->field_sums(profile);
+      const std::vector<double>& scale = profile ? profile_scale : grid_scale;
+      ASSERT_EQ(a.size(), b.size()) << what;
+      ASSERT_EQ(a.size(), scale.size()) << what;
+      std::size_t miscounted = 0, beyond = 0, differing = 0;
+      double worst = 0;  // the largest difference, as a fraction of its bound
+      for (std::size_t k = 0; k < a.size(); ++k) {
+        const int quantity = int(k % std::size_t(q));
+        if (quantity < BinLayout::per_species * f.sampling.grid.n_species &&
+            quantity % BinLayout::per_species == 0) {
+          miscounted += a[k] != b[k];
+        } else {
+          // The reference's virial is that of the analytic Hertz force: 1e-9 above the
+          // kernel's magnitudes covers their round-off.
+          const double bound = bound_per_scale * scale[k] * (1 + 1e-9);
+          beyond += std::abs(a[k] - b[k]) > bound;
+          differing += a[k] != b[k];
+          if (a[k] != b[k]) worst = std::max(worst, std::abs(a[k] - b[k]) / bound);
+        }
+      }
+      EXPECT_EQ(miscounted, 0u) << what << ": counts differ";
+      EXPECT_EQ(beyond, 0u) << what << ": sums beyond the summation bound";
+      std::cout << "[ info ] " << what << ": " << differing << " of " << a.size()
+                << " sums differ, the largest by " << worst << " of its bound\n";
+    }
+  }
 }

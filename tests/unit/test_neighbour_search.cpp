@@ -11,6 +11,7 @@
 #include "device/counter_rng.hpp"
 #include "homogeneous_gas.hpp"
 #include "solver.hpp"
+#include "solver_on_paths.hpp"
 
 using namespace granshock;
 
@@ -111,12 +112,14 @@ TEST(NeighbourSearchMoving, ListsStayCompleteBetweenRebuilds) {
   }
 }
 
-// The list built in one visit of the candidates (host backends, a buffer part per thread)
-// is the list of the two-visit build (count, then fill), entry for entry, for dilute and
-// dense configurations, periodic and open, and again for a second configuration given to
-// the same solvers (buffers reused). The dense ones hold more partners than a part's first
+// The list built in one visit of the candidates (host paths, a buffer part per thread)
+// is the list of the two-visit build (count, then fill; the device paths' build, or host
+// paths with list_visits_once = false), entry for entry, for dilute and dense
+// configurations, periodic and open, and again for a second configuration given to the
+// same solvers (buffers reused). The dense ones hold more partners than a part's first
 // capacity (8 per particle plus 256, here on up to 16 threads), so the one-visit build
-// must also have repeated its visit with larger parts.
+// must also have repeated its visit with larger parts. Against both two-visit builds: the
+// host paths' own (same backend), and the device paths' (docs/cuda.md, "Branch points").
 TEST(NeighbourSearchOneVisit, ListEqualsTheTwoVisitList) {
   const Config configs[] = {{"dilute_periodic", 0.06, 0.05, {true, true, false}, 400},
                             {"dense_periodic", 0.03, 0.03, {true, true, false}, 2000},
@@ -125,16 +128,20 @@ TEST(NeighbourSearchOneVisit, ListEqualsTheTwoVisitList) {
     SolverSetup once = two_size_setup(c.lx, c.ly, c.periodic);
     SolverSetup twice = once;
     twice.list_visits_once = false;
-    auto a = make_solver(once, c.n);
-    auto b = make_solver(twice, c.n);
+    auto a = test::make_solver_on_paths(once, c.n, test::Paths::host);
+    auto b = test::make_solver_on_paths(twice, c.n, test::Paths::host);
+    auto d = test::make_solver_on_paths(once, c.n, test::Paths::device);
     for (const std::uint64_t seed : {7, 8}) {
       const HostParticles p = random_particles(once, c.n - int(seed), seed);
       a->set_particles(p);
       b->set_particles(p);
-      const SolverState sa = a->export_state(), sb = b->export_state();
+      d->set_particles(p);
+      const SolverState sa = a->export_state(), sb = b->export_state(), sd = d->export_state();
       ASSERT_FALSE(sa.neighbours.empty()) << c.name;
       EXPECT_EQ(sa.neighbour_offsets, sb.neighbour_offsets) << c.name << " seed " << seed;
       EXPECT_EQ(sa.neighbours, sb.neighbours) << c.name << " seed " << seed;
+      EXPECT_EQ(sa.neighbour_offsets, sd.neighbour_offsets) << c.name << " seed " << seed;
+      EXPECT_EQ(sa.neighbours, sd.neighbours) << c.name << " seed " << seed;
       if (c.n == 2000) {
         EXPECT_GT(double(sa.neighbours.size()) / double(p.size()), 8.0 + 256.0 * 16 / c.n)
             << c.name << ": too few partners to overflow a first part";
