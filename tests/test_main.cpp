@@ -5,6 +5,9 @@
 
 int main(int argc, char** argv) {
   ::testing::InitGoogleTest(&argc, argv);
+  // Listing the tests (ctest's discovery) starts no backend, so that a CUDA build's test
+  // programs list their tests on a machine without a GPU (docs/cuda.md, "Test discovery").
+  if (GTEST_FLAG_GET(list_tests)) return RUN_ALL_TESTS();
   granshock::KokkosRuntime kokkos(argc, argv);
   return RUN_ALL_TESTS();
 }
