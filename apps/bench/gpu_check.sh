@@ -1,0 +1,212 @@
+#!/usr/bin/env bash
+# shellcheck disable=SC2317 # the functions run through `step` (bash -c), not inline
+# The device check (docs/cuda.md, "The device check"): one command for a machine with an
+# NVIDIA GPU and nvcc. It builds the CUDA variant with every core, then runs
+# `granshock info`, the test suite, the gas benchmark at 32k and 2M particles (phi 0.1
+# and 0.5), the default scene and a paper case for 0.05 s of simulated time, compares the
+# two runs with the host's (apps/bench/gpu_check_reference.json: counts, energies, field
+# sums, e_eff; apps/bench/gpu_check_compare.py) and prints one table. Every step has a
+# time box (timeout); the boxes add up to 475 s, under 8 minutes of device time.
+#
+# Usage: apps/bench/gpu_check.sh [--record]
+#   GRANSHOCK_GPU_CHECK_DRY=1   the same steps on the host, on the device-path build
+#                               (build-device/, -DGRANSHOCK_DEVICE_PATHS=ON): no GPU needed
+#   --record                    the same steps on the host build (build/, host paths); writes
+#                               the reference that the other two compare with
+#   GRANSHOCK_GPU_CHECK_BOXES=F multiplies every time box by F (default 1; a 2-core host
+#                               needs about 10 for the runs)
+#   GRANSHOCK_GPU_CHECK_TESTS="ctest arguments"   a part of the suite instead of all of it
+#   GRANSHOCK_GPU_CHECK_OUT=DIR logs, runs and the table (default gpu-check/ in the repo)
+#   GRANSHOCK_GPU_CHECK_CMAKE="args"  more CMake configure arguments for the build
+# Exit status: 0 when every step is ok, 1 otherwise.
+set -uo pipefail
+
+repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
+cd "$repo" || exit 1
+here=$repo/apps/bench
+reference=$here/gpu_check_reference.json
+out=${GRANSHOCK_GPU_CHECK_OUT:-$repo/gpu-check}
+factor=${GRANSHOCK_GPU_CHECK_BOXES:-1}
+jobs=$(nproc)
+python=/usr/bin/python3
+mode=gpu
+[ "${GRANSHOCK_GPU_CHECK_DRY:-0}" = 1 ] && mode=dry
+if [ $# -gt 0 ]; then
+  if [ "$1" != --record ] || [ $# -ne 1 ]; then
+    echo "gpu_check.sh: unexpected argument '$1' (it takes --record or nothing)" >&2
+    exit 2
+  fi
+  mode=record
+fi
+case $mode in
+  gpu) build=$repo/build-cuda expect="Cuda device" ;;
+  dry) build=$repo/build-device expect="OpenMP device" ;;
+  record) build=$repo/build expect="OpenMP host" ;;
+esac
+rm -rf "$out" && mkdir -p "$out"
+export OMP_NUM_THREADS=${OMP_NUM_THREADS:-2} OMP_PROC_BIND=false
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1  # the MPI tests, as root
+
+rows=()
+failed=0
+total_box=0
+start_all=$(date +%s)
+
+# step NAME BOX_SECONDS COMMAND...: runs COMMAND, a program or one of the functions below
+# (exported), within the box, its output in $out/NAME.log; then `row RESULT` adds the
+# step's row to the table.
+step() {
+  local name=$1 box=$2
+  shift 2
+  local limit start rc
+  limit=$(awk -v b="$box" -v f="$factor" 'BEGIN {printf "%d", b * f}')
+  total_box=$((total_box + box))
+  start=$(date +%s)
+  timeout --kill-after=10 "$limit" bash -c '"$@"' step "$@" >"$out/$name.log" 2>&1
+  rc=$?
+  step_seconds=$(($(date +%s) - start))
+  case $rc in
+    0) step_status=ok ;;
+    124 | 137) step_status=TIMEOUT ;;
+    *) step_status=FAIL ;;
+  esac
+  step_name=$name step_box=$limit
+}
+row() {  # RESULT: the last step's row
+  [ "$step_status" = ok ] || failed=1
+  rows+=("| $step_name | $step_status | $step_seconds | $step_box | $1 |")
+}
+log_tail() { tail -n 1 "$out/$1.log" | cut -c1-120; }
+
+# 1. Build, with every core.
+# shellcheck disable=SC2086 # GRANSHOCK_GPU_CHECK_CMAKE: arguments, split on purpose
+build_variant() {
+  case $mode in
+    gpu) bash cmake/build_cuda.sh -DGRANSHOCK_BUILD_TESTS=ON ${GRANSHOCK_GPU_CHECK_CMAKE:-} ;;
+    dry | record)
+      local flags=()
+      [ "$mode" = dry ] && flags=(-DGRANSHOCK_DEVICE_PATHS=ON)
+      bash cmake/install_deps.sh &&
+        cmake -S . -B "$build" -G Ninja "${flags[@]}" ${GRANSHOCK_GPU_CHECK_CMAKE:-} &&
+        cmake --build "$build" --parallel "$jobs" ;;
+  esac
+}
+export -f build_variant
+export mode build jobs out here reference python GRANSHOCK_GPU_CHECK_CMAKE
+step build 210 build_variant
+row "$mode build in ${build#"$repo"/}, $jobs cores"
+granshock=$build/apps/granshock/granshock
+bench=$build/apps/bench/granshock_bench_gas
+export granshock
+
+# 2. granshock info: the backend and the kernels' paths this mode must have.
+step info 10 "$granshock" info
+got=$($python -c 'import json, sys; j = json.load(open(sys.argv[1]));
+print(j["default_execution_space"], j.get("kernel_paths", "?"))' "$out/info.log" 2>/dev/null)
+if [ "$step_status" = ok ] && [ "$got" != "$expect" ]; then step_status=FAIL; fi
+row "${got:-no JSON} (expected: $expect)"
+
+# 3. The test suite (or the part GRANSHOCK_GPU_CHECK_TESTS names), half the cores' worth
+# of test programs at once (each runs 2 OpenMP threads).
+read -r -a test_args <<<"${GRANSHOCK_GPU_CHECK_TESTS:-}"
+step tests 110 ctest --test-dir "$build" -j $((jobs > 1 ? jobs / 2 : 1)) --timeout 100 \
+  "${test_args[@]}"
+row "$(grep -E 'tests passed|No tests were found' "$out/tests.log" | tail -n 1)"
+
+# 4. The gas benchmark (sigma 0.15 m/s, as docs/benchmarks.md): particle-steps per
+# second, and the ratio to the 2-core host's in the same case (the reference's "bench").
+host_rate() {  # CASE: the reference's particle-steps/s, or nothing
+  [ -f "$reference" ] && $python -c 'import json, sys
+r = json.load(open(sys.argv[1])).get("bench", {}).get(sys.argv[2])
+print("%.3g" % r if r else "")' "$reference" "$1"
+}
+for case in "32000 0.1 10" "32000 0.5 10" "2000000 0.1 20" "2000000 0.5 20"; do
+  read -r n phi box <<<"$case"
+  name=gas_${n}_phi_$phi
+  step "$name" "$box" "$bench" --particles "$n" --phi "$phi" --sigma 0.15 --repeats 1 \
+    --min-seconds 1 --warmup-steps 20 --warmup-seconds 0.5 --min-cpu-share 0 \
+    --json "$out/$name.json"
+  rate=$($python -c 'import json, sys
+print("%.3g" % json.load(open(sys.argv[1]))["results"][0]["median"])' "$out/$name.json" 2>/dev/null)
+  host=$(host_rate "$name")
+  if [ -n "$rate" ] && [ -n "$host" ]; then
+    row "$rate ps/s; host (2 cores) $host ps/s, ratio $(awk -v a="$rate" -v b="$host" 'BEGIN {printf "%.2f", a / b}')"
+  else
+    row "${rate:+$rate ps/s}${rate:-$(log_tail "$name")}"
+  fi
+done
+
+# 5. The default scene and a paper case for 0.05 s (the paper case with the inflow's
+# Mach number as inserted, as tests/reference/check_bitwise.sh, to skip the inlet
+# calibration), each then digested for the comparison.
+scene_run() {  # NAME SCENE SETTINGS...
+  local name=$1 scene=$2
+  shift 2
+  local sets=()
+  for s in "$@"; do sets+=(--set "$s"); done
+  "$granshock" run "$scene" --out "$out/$name" --quiet "${sets[@]}" &&
+    $python "$here/gpu_check_compare.py" digest "$out/$name" >"$out/$name.json"
+}
+scene_result() {  # NAME
+  $python -c 'import json, sys; d = json.load(open(sys.argv[1]))
+print("%d particles, %.3g ps/s, %d list builds" % (d["particles_final"],
+      d["particle_steps_per_second"], d["list_builds"]))' "$out/$1.json" 2>/dev/null ||
+    log_tail "$1"
+}
+export -f scene_run
+step default_scene 40 scene_run default_scene scenes/default.toml time.duration=0.05 \
+  time.production_start=0.025
+row "$(scene_result default_scene)"
+step paper_d50_u1000 40 scene_run paper_d50_u1000 scenes/paper/d50_u1000.toml \
+  inflow.mach_at=inserted time.duration=0.05 time.production_start=0.025 \
+  output.snapshot_interval=0.025 output.checkpoint_interval=0.025
+row "$(scene_result paper_d50_u1000)"
+
+# 6. The runs against the host's.
+compare_runs() {
+  local bad=0 name
+  for name in default_scene paper_d50_u1000; do
+    $python - "$reference" "$out/$name.json" "$name" >"$out/$name.reference.json" <<'PY' || return 1
+import json, sys
+print(json.dumps(json.load(open(sys.argv[1]))["runs"][sys.argv[3]]))
+PY
+    echo "$name: $($python "$here/gpu_check_compare.py" compare "$out/$name.reference.json" \
+      "$out/$name.json")" || bad=1
+  done
+  return "$bad"
+}
+export -f compare_runs
+if [ "$mode" = record ]; then
+  step record 5 $python - "$out" "$reference" <<'PY'
+import json, os, sys
+out, reference = sys.argv[1], sys.argv[2]
+# The benchmark's host rates are kept where the reference has them (measured on an idle
+# host, docs/benchmarks.md); a loaded recording machine would understate them.
+old = json.load(open(reference)) if os.path.exists(reference) else {}
+bench = old.get("bench")
+if not bench:
+    bench = {"source": "gpu_check.sh --record"}
+    for name in ("gas_32000_phi_0.1", "gas_32000_phi_0.5", "gas_2000000_phi_0.1",
+                 "gas_2000000_phi_0.5"):
+        bench[name] = float("%.3g" % json.load(open(f"{out}/{name}.json"))["results"][0]["median"])
+runs = {name: json.load(open(f"{out}/{name}.json")) for name in ("default_scene", "paper_d50_u1000")}
+json.dump({"bench": bench, "runs": runs}, open(reference, "w"), indent=1, sort_keys=True)
+print(f"recorded {reference}")
+PY
+  row "$(log_tail record)"
+else
+  step compare 5 compare_runs
+  row "$(sed 's/ (N /: N /' "$out/compare.log" | tr '\n' ';' | cut -c1-300)"
+fi
+
+# The table (also in $out/table.md).
+{
+  echo "granshock device check ($mode), $(date -u +%Y-%m-%d), $(uname -n), $jobs cores"
+  echo
+  echo "| step | status | s | box s | result |"
+  echo "|---|---|---|---|---|"
+  printf '%s\n' "${rows[@]}"
+  echo
+  echo "total $(($(date +%s) - start_all)) s (boxes: $total_box s x $factor); logs in $out"
+} | tee "$out/table.md"
+exit $failed
