@@ -42,14 +42,17 @@ std::vector<std::size_t> selection(const StudyPlan& plan, std::optional<long> on
 }
 
 int emit_slurm(const StudyPlan& plan) {
-  claim_study_directory(plan.out, plan.spec.name);
   std::error_code ec;
   const fs::path program = fs::read_symlink("/proc/self/exe", ec);
   if (ec) throw UserError("cannot find the granshock program's own path (/proc/self/exe)");
   const StudyRate rate = study_rate(plan);
   const fs::path script = plan.out / "study.slurm";
-  write_file_atomically(script,
-                        slurm_script(plan, program, rate.particle_steps_per_second, rate.source));
+  const SlurmScript written =
+      slurm_script(plan, program, rate.particle_steps_per_second, rate.source);
+  claim_study_directory(plan.out, plan.spec.name);
+  for (const std::string& warning : written.warnings)
+    std::cerr << "granshock study: warning: " << warning << "\n";
+  write_file_atomically(script, written.text);
   std::cout << fmt::format("granshock study: wrote {} ({} array tasks); submit it with sbatch\n",
                            script.string(), plan.cases.size());
   return 0;
