@@ -12,6 +12,7 @@
 #include "field_sums_file.hpp"
 #include "fields_output.hpp"
 #include "figures.hpp"
+#include "json_file.hpp"
 #include "run_file.hpp"
 #include "summary_json.hpp"
 #include "user_error.hpp"
@@ -32,10 +33,7 @@ struct RunTarget {
 RunTarget target_mach(const fs::path& summary, double nominal) {
   std::error_code ec;
   if (!fs::exists(summary, ec)) return {nominal, false};
-  std::ifstream in(summary);
-  std::stringstream text;
-  text << in.rdbuf();
-  const nlohmann::json j = nlohmann::json::parse(text.str(), nullptr, false);
+  const nlohmann::json j = read_json_file(summary).value;
   if (!j.is_object() || !j.contains("ma_inf_target") || !j["ma_inf_target"].is_number())
     return {nominal, false};
   const bool at_inlet = j.contains("inflow_mach_at") && j["inflow_mach_at"] == "inlet_bins";

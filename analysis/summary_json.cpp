@@ -1,9 +1,7 @@
 #include "summary_json.hpp"
 
-#include <fstream>
-#include <sstream>
-
 #include "atomic_file.hpp"
+#include "json_file.hpp"
 #include "user_error.hpp"
 
 namespace granshock {
@@ -12,16 +10,11 @@ void merge_summary_json(const std::filesystem::path& path, const nlohmann::json&
   nlohmann::json merged = nlohmann::json::object();
   std::error_code ec;
   if (std::filesystem::exists(path, ec)) {
-    std::ifstream in(path);
-    if (!in) throw UserError("cannot read '" + path.string() + "'");
-    std::stringstream text;
-    text << in.rdbuf();
-    try {
-      merged = nlohmann::json::parse(text.str());
-    } catch (const nlohmann::json::parse_error& e) {
-      throw UserError("'" + path.string() + "' is not valid JSON (" + e.what() +
+    JsonFile existing = read_json_file(path);
+    if (existing.value.is_discarded())
+      throw UserError("'" + path.string() + "' is not valid JSON (" + existing.error +
                       "); move it away to start a new one");
-    }
+    merged = std::move(existing.value);
     if (!merged.is_object()) throw UserError("'" + path.string() + "' does not hold a JSON object");
   }
   for (const auto& [key, value] : keys.items()) merged[key] = value;

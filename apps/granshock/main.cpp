@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 #include <Kokkos_Core.hpp>
+#include <cerrno>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -76,6 +77,17 @@ std::string positive_step_count(const std::string& steps) {
              : std::string("must be a positive number of steps");
 }
 
+// --case of study: a whole number that fits (CLI11 would saturate 1e30 to LONG_MAX); the
+// study, once read, says which numbers are its cases.
+std::string whole_case_number(const std::string& text) {
+  errno = 0;
+  char* end = nullptr;
+  std::strtol(text.c_str(), &end, 10);
+  return !text.empty() && *end == '\0' && errno == 0
+             ? std::string()
+             : text + " is not a case number (0, 1, 2, ...)";
+}
+
 void add_run_command(CLI::App& app, granshock::RunOptions& o) {
   auto* cmd = app.add_subcommand("run", "simulate a bow-shock scene and write its run directory");
   cmd->add_option("scene", o.scene_file, "scene file (TOML)")->required();
@@ -141,8 +153,10 @@ void add_study_command(CLI::App& app, granshock::StudyOptions& o) {
   cmd->add_option("--set", o.overrides,
                   "override a scene key in every case, after the study file's [study] set, e.g. "
                   "--set time.duration=2.0 (repeatable)");
-  cmd->add_option("--case", o.only_case, "run only case K (0-based; for Slurm array tasks)")
-      ->check(CLI::NonNegativeNumber);
+  cmd->add_option_function<long>(
+         "--case", [&o](const long& k) { o.only_case = k; },
+         "run only case K (0-based; for Slurm array tasks)")
+      ->check(whole_case_number);
   cmd->add_flag("--collect", o.collect,
                 "build the table and figures from the finished cases; run nothing");
   cmd->add_option("--emit", o.emit, "write a batch script into the study directory: slurm")

@@ -12,6 +12,7 @@
 #include <set>
 
 #include "axis_values.hpp"
+#include "shell_text.hpp"
 #include "user_error.hpp"
 
 namespace granshock {
@@ -150,9 +151,11 @@ SlurmSettings read_slurm(const toml::table& root, const std::string& file) {
                       ": options must be an array of strings, e.g. [\"--partition=short\"]");
     for (const toml::node& opt : *a) {
       const std::string text = opt.as_string()->get();
-      if (text.rfind("--", 0) != 0 || text.find_first_of("\n\r") != std::string::npos)
+      if (text.rfind("--", 0) != 0 || has_control_character(text))
         throw UserError(
-            fmt::format("{}: option '{}' must be one sbatch option starting with --", where, text));
+            fmt::format("{}: option {} must be one sbatch option starting with --, without control "
+                        "characters (it is written on an #SBATCH line)",
+                        where, shell_quote(text)));
       s.options.push_back(text);
     }
   }

@@ -3,13 +3,13 @@
 #include <fmt/format.h>
 
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <sstream>
 
+#include "json_file.hpp"
 #include "user_error.hpp"
 
 namespace granshock {
@@ -37,14 +37,12 @@ AccuracyTable read_accuracy_table(const std::filesystem::path& path) {
   const auto fail = [&](const std::string& why) {
     return UserError(fmt::format("accuracy table {}: {}", path.string(), why));
   };
-  std::ifstream in(path);
-  if (!in) throw fail("cannot be read (make one with `granshock tradeoff SCENE.toml`)");
-  json doc;
-  try {
-    in >> doc;
-  } catch (const json::exception& e) {
-    throw fail(std::string("is not JSON: ") + e.what());
-  }
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec))
+    throw fail("cannot be read (make one with `granshock tradeoff SCENE.toml`)");
+  JsonFile file = read_json_file(path);
+  if (file.value.is_discarded()) throw fail("is not JSON: " + file.error);
+  json doc = std::move(file.value);
   if (!doc.contains("cases") || !doc["cases"].is_array() || !doc.contains("noise"))
     throw fail("has no \"cases\" and \"noise\" (not a trade.json of granshock tradeoff)");
 
