@@ -1,5 +1,7 @@
 #include "summary_json.hpp"
 
+#include <sys/stat.h>
+
 #include <fstream>
 #include <sstream>
 
@@ -8,24 +10,34 @@
 
 namespace granshock {
 
-void merge_summary_json(const std::filesystem::path& path, const nlohmann::json& keys) {
-  nlohmann::json merged = nlohmann::json::object();
-  std::error_code ec;
-  if (std::filesystem::exists(path, ec)) {
-    std::ifstream in(path);
-    if (!in) throw UserError("cannot read '" + path.string() + "'");
-    std::stringstream text;
-    text << in.rdbuf();
-    try {
-      merged = nlohmann::json::parse(text.str());
-    } catch (const nlohmann::json::parse_error& e) {
-      throw UserError("'" + path.string() + "' is not valid JSON (" + e.what() +
-                      "); move it away to start a new one");
-    }
-    if (!merged.is_object()) throw UserError("'" + path.string() + "' does not hold a JSON object");
+nlohmann::json read_summary_json(const std::filesystem::path& path) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) return nlohmann::json::object();
+  // A FIFO or a device would block the read or never end.
+  if (!S_ISREG(st.st_mode)) throw UserError("'" + path.string() + "' is not a regular file");
+  std::ifstream in(path);
+  if (!in) throw UserError("cannot read '" + path.string() + "'");
+  std::stringstream text;
+  text << in.rdbuf();
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(text.str());
+  } catch (const nlohmann::json::parse_error& e) {
+    throw UserError("'" + path.string() + "' is not valid JSON (" + e.what() +
+                    "); move it away to start a new one");
   }
-  for (const auto& [key, value] : keys.items()) merged[key] = value;
-  write_file_atomically(path, merged.dump(2) + "\n");
+  if (!j.is_object()) throw UserError("'" + path.string() + "' does not hold a JSON object");
+  return j;
+}
+
+void merge_summary_json(const std::filesystem::path& path, const nlohmann::json& keys) {
+  write_summary_json(path, read_summary_json(path), keys);
+}
+
+void write_summary_json(const std::filesystem::path& path, nlohmann::json base,
+                        const nlohmann::json& keys) {
+  for (const auto& [key, value] : keys.items()) base[key] = value;
+  write_file_atomically(path, base.dump(2) + "\n");
 }
 
 }  // namespace granshock
