@@ -9,6 +9,7 @@
 #include <cerrno>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <set>
 #include <sstream>
 
@@ -104,11 +105,12 @@ void check_creatable(const fs::path& dir) {
 
 namespace {
 
-[[noreturn]] void refuse_output(const fs::path& p, const std::string& is, const std::string& do_) {
+[[noreturn]] void refuse_output(const fs::path& p, const std::string& is,
+                                const std::string& remedy) {
   throw UserError(fmt::format(
       "'{}' is {}; granshock writes its outputs only as files it creates itself: {} or choose "
       "another directory",
-      p.string(), is, do_));
+      p.string(), is, remedy));
 }
 
 }  // namespace
