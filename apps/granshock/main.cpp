@@ -138,7 +138,9 @@ void add_fields_command(CLI::App& app, std::vector<std::filesystem::path>& dirs,
                                  "recompute fields, figures and summary from DIR/run.h5; "
                                  "with several DIRs also the delta/D table and figure");
   cmd->add_option("dirs", dirs, "run directories")->required()->check(CLI::ExistingDirectory);
-  cmd->add_option("--out", out, "where to write (required with several DIRs)");
+  cmd->add_option("--out", out,
+                  "where to write (required with several DIRs): a new or empty directory, or "
+                  "one granshock fields wrote before");
 }
 
 void add_study_command(CLI::App& app, granshock::StudyOptions& o) {

@@ -394,7 +394,7 @@ void BowShockRun::finish(bool completed) {
     // The field analysis reads run.h5, which must be closed first.
     run_file_.reset();
     if (run_has_field_sums(dir_))
-      fields_command({dir_}, {}, FieldsCommandOptions{true, options_.quiet});
+      fields_command({dir_}, {}, FieldsCommandOptions{true, options_.quiet, &*run_directory_});
   }
   if (completed && !options_.quiet)
     std::cout << fmt::format(
