@@ -79,7 +79,8 @@ void write_sample_checkpoint(const std::filesystem::path& dir) {
 }
 
 int bench(const std::filesystem::path& dir, int n, int dim) {
-  RunFile run = RunFile::create(dir / "bench.h5", "", "", dim);
+  // As a run of two species writes them: with each particle's radius and the frame views.
+  RunFile run = RunFile::create(dir / "bench.h5", "", "", dim, {{0.5e-3, 0.6e-3}, false});
   const HostParticles p = test::random_particles(n);
   const int frames = 10;
   const auto start = std::chrono::steady_clock::now();
