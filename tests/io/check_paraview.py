@@ -124,6 +124,13 @@ def check_fields(xmf):
     """fields.xmf: one 2-D grid of cell fields, no time steps."""
     with h5py.File(os.path.join(os.path.dirname(xmf), "fields.h5"), "r") as f:
         stored = {name: f["fields/" + name][()] for name in f["fields"]}
+        vectors = {name: f["vectors/" + name][()] for name in f["vectors"]}
+    expect("u" in vectors, "fields.h5: no mean velocity vector u")
+    for name, values in vectors.items():  # u = (ux, uy, 0), u_s = (ux_s, uy_s, 0)
+        suffix = name[1:]
+        expect(np.array_equal(values[..., 0], stored["ux" + suffix], equal_nan=True) and
+               np.array_equal(values[..., 1], stored["uy" + suffix], equal_nan=True) and
+               not values[..., 2].any(), f"fields.h5: /vectors/{name} is not (ux, uy, 0)")
     for reader in ("default", "Xdmf3ReaderT", "XDMFReader"):
         what = f"fields.xmf [{reader}]"
         print(f"{what}: opening", flush=True)
@@ -133,12 +140,17 @@ def check_fields(xmf):
         expect(timesteps(proxy) == [], f"{what}: time steps {timesteps(proxy)}")
         grid = dataset_at(proxy)
         got = arrays_of(grid.GetCellData())
-        expect(sorted(got) == sorted(stored), f"{what}: cell arrays {sorted(got)}, fields.h5 {sorted(stored)}")
-        for name, values in stored.items():
-            if name in got:
-                expect(got[name].shape == (values.size,), f"{what}: {name} has {got[name].shape} tuples")
-                if got[name].shape == (values.size,):
-                    expect(np.array_equal(got[name], values.ravel(), equal_nan=True), f"{what}: {name} values")
+        expected = sorted(list(stored) + list(vectors))
+        expect(sorted(got) == expected, f"{what}: cell arrays {sorted(got)}, fields.h5 {expected}")
+        for name, values in list(stored.items()) + list(vectors.items()):
+            if name not in got:
+                continue
+            shape = (values.shape[0] * values.shape[1],) + values.shape[2:]
+            expect(got[name].shape == shape, f"{what}: {name} has shape {got[name].shape}, expected {shape}")
+            if got[name].shape == shape:
+                expect(np.array_equal(got[name], values.reshape(shape), equal_nan=True), f"{what}: {name} values")
+        active = grid.GetCellData().GetVectors()
+        expect(active is not None and active.GetName() == "u", f"{what}: u is not the active cell vector")
         Delete(proxy)
 
 
