@@ -542,6 +542,7 @@ void RunFile::complete_snapshot(long frame, long step, double time, long total) 
     if (!contents_.species_radius.empty()) append_step_time(f, all + "/radius", index, step, time);
     if (contents_.angular_velocity)
       append_step_time(f, all + "/angular_velocity", index, step, time);
+    // The frame's views for XDMF readers (docs/output_format.md, "run.xmf").
     std::vector<long> counts = h5::read_dataset<long>(f, all + "/count/value");
     counts.resize(index);
     counts.push_back(total);

@@ -63,7 +63,7 @@ class RunFile {
   // `path` with every process of `comm` writing its part's rows at once (parallel HDF5,
   // collective). Rank 0 holds the file open in `root_file` between snapshots, the others
   // nothing: it is closed for the collective write and reopened after, when rank 0 alone
-  // appends the frame's step and count (a frame counts once its count is there).
+  // appends the frame's steps, views and count (a frame counts once its count is there).
   static void append_snapshot_collectively(const std::filesystem::path& path, MPI_Comm comm,
                                            long step, double time, const SnapshotPart& part,
                                            std::optional<RunFile>& root_file);
