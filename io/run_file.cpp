@@ -23,7 +23,9 @@ using h5::Handle;
 constexpr const char* kParticles = "/particles/all";
 constexpr const char* kObservables = "/observables";
 constexpr const char* kFileKind = "run";
-constexpr int kFormatVersion = 1;
+// 2: snapshots add radius and, with friction, angular_velocity (docs/output_format.md).
+constexpr int kFormatVersion = 2;
+constexpr const char* kSpeciesRadius = "/parameters/species_radius";
 
 // Time-indexed 1-D datasets grow by this many entries per chunk (2 KiB of int64).
 constexpr hsize_t kSeriesChunk = 256;
@@ -255,6 +257,15 @@ Handle open_existing(const fs::path& path, unsigned flags, const char* doing) {
     throw UserError(std::string("cannot ") + doing + " '" + path.string() +
                     "': not a granshock run file");
   }
+  const int version = h5::naming_file_in_errors(path, "reading", [&] {
+    return h5::read_attribute<int>(file.get(), "granshock_format_version");
+  });
+  if (version > kFormatVersion) {
+    throw UserError(std::string("cannot ") + doing + " '" + path.string() +
+                    "': it is a run file of format " + std::to_string(version) +
+                    ", written by a newer granshock (this one reads formats 1 to " +
+                    std::to_string(kFormatVersion) + ")");
+  }
   return file;
 }
 
@@ -301,7 +312,8 @@ Handle attribute_source(hid_t file, const std::string& path) {
 
 // The groups, header and empty time-indexed datasets of a new run file.
 void write_layout(hid_t f, const std::string& scene_toml_as_given,
-                  const std::string& scene_toml_resolved, int dim) {
+                  const std::string& scene_toml_resolved, int dim,
+                  const SnapshotContents& contents) {
   h5::write_attribute(f, "granshock_file", kFileKind);
   h5::write_attribute(f, "granshock_format_version", kFormatVersion);
 
@@ -328,6 +340,16 @@ void write_layout(hid_t f, const std::string& scene_toml_as_given,
                       "m s-1");
   create_time_element(f, all + "/species", H5T_STD_I32LE, {0}, &kIntFill, H5T_NATIVE_INT, nullptr);
   create_time_element(f, all + "/id", H5T_STD_I32LE, {0}, &kIntFill, H5T_NATIVE_INT, nullptr);
+  if (!contents.species_radius.empty()) {
+    create_time_element(f, all + "/radius", H5T_IEEE_F64LE, {0}, &kFloatFill, H5T_NATIVE_DOUBLE,
+                        "m");
+    h5::write_dataset(f, kSpeciesRadius, contents.species_radius,
+                      {hsize_t(contents.species_radius.size())});
+  }
+  if (contents.angular_velocity) {
+    create_time_element(f, all + "/angular_velocity", H5T_IEEE_F64LE, {0}, &kFloatFill,
+                        H5T_NATIVE_DOUBLE, "rad s-1");
+  }
   create_time_element(f, all + "/count", H5T_STD_I64LE, {}, nullptr, H5T_NATIVE_LONG, nullptr);
 
   for (const ObservableSpec& spec : kObservableSpecs) {
@@ -340,11 +362,29 @@ void write_layout(hid_t f, const std::string& scene_toml_as_given,
 
 }  // namespace
 
+namespace {
+
+// What the snapshots of `file` hold: the elements it was created with.
+SnapshotContents read_contents(hid_t file) {
+  SnapshotContents contents;
+  const std::string all = kParticles;
+  if (h5::exists(file, all + "/radius"))
+    contents.species_radius = h5::read_dataset<double>(file, kSpeciesRadius);
+  contents.angular_velocity = h5::exists(file, all + "/angular_velocity");
+  return contents;
+}
+
+}  // namespace
+
 RunFile::RunFile(fs::path path, h5::Handle file, int dim)
-    : path_(std::move(path)), file_(std::move(file)), dim_(dim) {}
+    : path_(std::move(path)), file_(std::move(file)), dim_(dim) {
+  contents_ =
+      h5::naming_file_in_errors(path_, "reading", [&] { return read_contents(file_.get()); });
+}
 
 RunFile RunFile::create(const fs::path& path, const std::string& scene_toml_as_given,
-                        const std::string& scene_toml_resolved, int dim) {
+                        const std::string& scene_toml_resolved, int dim,
+                        const SnapshotContents& contents) {
   if (dim != 2 && dim != 3) throw std::invalid_argument("RunFile: dim must be 2 or 3");
   h5::silence_error_printing();
   const hid_t id = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
@@ -354,7 +394,7 @@ RunFile RunFile::create(const fs::path& path, const std::string& scene_toml_as_g
   Handle file(id, H5Fclose);
   try {
     h5::naming_file_in_errors(path, "creating", [&] {
-      write_layout(file.get(), scene_toml_as_given, scene_toml_resolved, dim);
+      write_layout(file.get(), scene_toml_as_given, scene_toml_resolved, dim, contents);
     });
   } catch (...) {
     // No half-made run file left behind.
@@ -432,6 +472,19 @@ long RunFile::write_snapshot_rows(long step, const HostParticles& p,
   }
   if (covered != long(n))
     throw std::invalid_argument("RunFile: snapshot rows do not cover the particles");
+  // Checked before anything is written: under parallel HDF5 every process must write.
+  std::vector<double> radius;
+  if (!contents_.species_radius.empty()) {
+    for (int s : p.species) {
+      if (s < 0 || std::size_t(s) >= contents_.species_radius.size())
+        throw std::invalid_argument("RunFile: species " + std::to_string(s) + " has no radius");
+      radius.push_back(contents_.species_radius[std::size_t(s)]);
+    }
+  }
+  std::vector<double> spin = p.angular_velocity;
+  if (spin.empty()) spin.assign(n, 0.0);
+  if (spin.size() != n)
+    throw std::invalid_argument("RunFile: snapshot particle arrays differ in length");
   return h5::naming_file_in_errors(path_, "writing", [&] {
     const hid_t f = file_.get();
     const std::string all = kParticles;
@@ -463,6 +516,13 @@ long RunFile::write_snapshot_rows(long step, const HostParticles& p,
     write_vectors("velocity", p.velocity);
     write_scalars("species", p.species);
     write_scalars("id", p.id);
+    auto write_doubles = [&](const char* name, const std::vector<double>& v) {
+      Handle set = h5::open_dataset(f, all + "/" + name + "/value");
+      write_frame_rows(set.get(), {frame + 1, capacity}, frame, rows, H5T_NATIVE_DOUBLE, v.data(),
+                       transfer);
+    };
+    if (!contents_.species_radius.empty()) write_doubles("radius", radius);
+    if (contents_.angular_velocity) write_doubles("angular_velocity", spin);
     return long(frame);
   });
 }
@@ -479,6 +539,14 @@ void RunFile::complete_snapshot(long frame, long step, double time, long total) 
     const hsize_t index = hsize_t(frame);
     for (const char* name : {"position", "velocity", "species", "id"})
       append_step_time(f, all + "/" + name, index, step, time);
+    if (!contents_.species_radius.empty()) append_step_time(f, all + "/radius", index, step, time);
+    if (contents_.angular_velocity)
+      append_step_time(f, all + "/angular_velocity", index, step, time);
+    // The frame's views for XDMF readers (docs/output_format.md, "run.xmf").
+    std::vector<long> counts = h5::read_dataset<long>(f, all + "/count/value");
+    counts.resize(index);
+    counts.push_back(total);
+    update_frame_views(f, dim_, counts);
     // count last: frames() lists a frame once all of its data is there.
     append_scalar<long>(f, all + "/count", index, step, time, total);
   });
@@ -559,6 +627,11 @@ long RunFile::particle_capacity() const {
     Handle set = h5::open_dataset(file_.get(), std::string(kParticles) + "/position/value");
     return static_cast<long>(h5::shape_of(set.get()).at(1));
   });
+}
+
+std::vector<FrameViewArray> RunFile::frame_view_arrays() const {
+  return h5::naming_file_in_errors(path_, "reading",
+                                   [&] { return granshock::frame_view_arrays(file_.get()); });
 }
 
 std::string RunFile::scene_as_given() const {

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "frame_views.hpp"
 #include "hdf5_handle.hpp"
 #include "host_particles.hpp"
 #include "snapshot_frame.hpp"
@@ -19,12 +20,23 @@
 
 namespace granshock {
 
+// What each snapshot holds besides position, velocity, species and id
+// (docs/output_format.md, "Particle snapshots").
+struct SnapshotContents {
+  // The radius of each species (m), by species index: every snapshot then stores each
+  // particle's radius. Empty: no radius element.
+  std::vector<double> species_radius;
+  // Friction (quasi-2-D): every snapshot stores each particle's spin about z (rad/s).
+  bool angular_velocity = false;
+};
+
 class RunFile {
  public:
   // Creates (or replaces) the file. dim is 2 (positions and velocities store x, y) or 3.
   // Throws UserError naming the path when it cannot be created.
   static RunFile create(const std::filesystem::path& path, const std::string& scene_toml_as_given,
-                        const std::string& scene_toml_resolved, int dim);
+                        const std::string& scene_toml_resolved, int dim,
+                        const SnapshotContents& contents = {});
 
   // Reopens an existing run file read-write and drops every time-indexed entry (snapshot
   // frames, time-series rows) whose step is after checkpoint_step. Throws UserError when
@@ -43,14 +55,15 @@ class RunFile {
   ~RunFile() = default;  // the handle closes the file
 
   // Appends one frame. Steps must increase from frame to frame (resume relies on it);
-  // throws std::invalid_argument otherwise or when p's arrays differ in length.
+  // throws std::invalid_argument otherwise, when p's arrays differ in length (an empty
+  // angular_velocity stands for zeros) or when a species has no radius.
   void append_snapshot(long step, double time, const HostParticles& p);
 
   // Several processes (docs/parallel.md, "Output"): appends one frame to the run file at
   // `path` with every process of `comm` writing its part's rows at once (parallel HDF5,
   // collective). Rank 0 holds the file open in `root_file` between snapshots, the others
   // nothing: it is closed for the collective write and reopened after, when rank 0 alone
-  // appends the frame's step and count (a frame counts once its count is there).
+  // appends the frame's steps, views and count (a frame counts once its count is there).
   static void append_snapshot_collectively(const std::filesystem::path& path, MPI_Comm comm,
                                            long step, double time, const SnapshotPart& part,
                                            std::optional<RunFile>& root_file);
@@ -67,6 +80,11 @@ class RunFile {
   // The particle extent of the snapshot datasets (>= every frame's count).
   long particle_capacity() const;
   int dim() const { return dim_; }
+  // What the snapshots of this file hold (files of format 1 hold neither radius nor
+  // angular velocity: a resumed run keeps writing what its file has).
+  const SnapshotContents& contents() const { return contents_; }
+  // The arrays every frame's views show (frame_views.hpp), for write_particles_xdmf.
+  std::vector<FrameViewArray> frame_view_arrays() const;
   const std::filesystem::path& path() const { return path_; }
 
   std::string scene_as_given() const;
@@ -107,6 +125,7 @@ class RunFile {
   h5::Handle file_;
   h5::Handle transfer_;  // collective transfers: a file every process opened; else none
   int dim_ = 2;
+  SnapshotContents contents_;
 };
 
 }  // namespace granshock

@@ -134,8 +134,11 @@ void BowShockRun::open_run_file() {
   if (options_.resume) {
     run_file_.emplace(RunFile::open_for_resume(dir_ / "run.h5", checkpoint_state_.step));
   } else {
-    run_file_.emplace(
-        RunFile::create(dir_ / "run.h5", loaded_.as_given, loaded_.resolved, scene_.setup.dim));
+    SnapshotContents contents;
+    for (const Species& s : scene_.setup.species) contents.species_radius.push_back(s.radius_m());
+    contents.angular_velocity = scene_.setup.contacts.has_friction();
+    run_file_.emplace(RunFile::create(dir_ / "run.h5", loaded_.as_given, loaded_.resolved,
+                                      scene_.setup.dim, contents));
   }
 }
 
@@ -350,7 +353,7 @@ void BowShockRun::write_snapshot(long step) {
   }
   if (!root_) return;
   write_particles_xdmf(dir_ / "run.xmf", "run.h5", run_file_->frames(), run_file_->dim(),
-                       run_file_->particle_capacity());
+                       run_file_->frame_view_arrays());
 }
 
 void BowShockRun::write_checkpoint_now() {

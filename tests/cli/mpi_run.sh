@@ -147,10 +147,13 @@ full_disk)
   trap 'rm -rf "$dir"' EXIT
   tight=(--set output.snapshot_interval=0.0005 --set output.checkpoint_interval=0.002
          --set 'numerics.bin_size="6 d"' --set output.blocks=2 --snapshot-output collective)
+  # The limit (1600 KiB) is met in a snapshot of this run; where exactly depends on the
+  # layout (run.h5 of format 2 adds radius and frame views): at some limits the write that
+  # fails leaves run.h5 unreadable, which --resume then refuses (docs/output_format.md).
   # Shared memory between the processes would meet the limit too (MPI warns and falls
   # back): TCP over the loopback between them keeps the test about granshock's write.
   timeout 120 "$mpiexec" --oversubscribe --mca btl self,tcp --mca btl_tcp_if_include lo -np 2 \
-    bash -c 'ulimit -f 1500; exec "$@"' limited \
+    bash -c 'ulimit -f 1600; exec "$@"' limited \
     "$granshock" run "$scene" "${short[@]}" "${tight[@]}" --out "$dir/run" >"$dir/out" 2>"$dir/err"
   status=$?
   grep "granshock" "$dir/err"
