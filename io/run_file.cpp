@@ -1,15 +1,23 @@
 #include "run_file.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <optional>
+#include <random>
 #include <stdexcept>
 #include <system_error>
 #include <utility>
 
+#include "failure_agreement.hpp"
+#include "file_room.hpp"
 #include "hdf5_helpers.hpp"
+#include "run_file_growth.hpp"
+#include "run_file_layout.hpp"
 #include "user_error.hpp"
 #include "version.hpp"
 
@@ -24,19 +32,11 @@ constexpr const char* kParticles = "/particles/all";
 constexpr const char* kObservables = "/observables";
 constexpr const char* kFileKind = "run";
 constexpr int kFormatVersion = 1;
+constexpr const char* kRunIdAttribute = "run_id";
 
-// Time-indexed 1-D datasets grow by this many entries per chunk (2 KiB of int64).
-constexpr hsize_t kSeriesChunk = 256;
-// Snapshot chunks hold one frame of this many particles: a frame is written (and read
-// by a viewer) as a whole, so chunks never span frames. 16384 particles x 2 doubles is
-// 256 KiB, large enough for fast sequential I/O.
-constexpr hsize_t kParticleChunk = 16384;
-// Snapshots are stored byte-shuffled and gzip level 1 (0 = uncompressed). Measured for
-// 100k particles in 2-D (random positions, thermal velocities; docs/output_format.md):
-// none 7 ms and 4.6 MB per snapshot, shuffle+gzip-1 130 ms and 3.0 MB. Compression also
-// keeps small runs small: a frame's last chunk is padded with fill values up to the
-// chunk size, 0.66 MB for a 1000-particle frame uncompressed, 0.04 MB compressed.
-constexpr unsigned kSnapshotDeflate = 1;
+using run_layout::kParticleChunk;
+using run_layout::kSeriesChunk;
+using run_layout::kSnapshotDeflate;
 
 constexpr double kFloatFill = std::numeric_limits<double>::quiet_NaN();
 constexpr int kIntFill = -1;
@@ -299,11 +299,73 @@ Handle attribute_source(hid_t file, const std::string& path) {
   return h5::object(H5Oopen(file, where.c_str(), H5P_DEFAULT), "opening '" + where + "'");
 }
 
+// A random identity for a new run, written into run.h5 and every checkpoint of the run so
+// that a resume never joins files of two runs (docs/output_format.md).
+std::string new_run_id() {
+  std::random_device random;
+  std::string id;
+  for (int k = 0; k < 4; ++k) id += fmt::format("{:08x}", std::uint32_t(random()));
+  return id;
+}
+
+std::string read_run_id(hid_t file) {
+  return h5::has_attribute(file, kRunIdAttribute) ? h5::read_string_attribute(file, kRunIdAttribute)
+                                                  : std::string();
+}
+
+// The entries of GROUP/step, and of them those at or before `step`.
+struct Entries {
+  long all = 0, up_to = 0;
+  long last_step = -1;  // of those up to `step`; -1: none
+};
+
+Entries entries_up_to(hid_t file, const std::string& group_path, long step) {
+  const std::vector<long> steps = h5::read_dataset<long>(file, group_path + "/step");
+  Entries e;
+  e.all = long(steps.size());
+  for (long s : steps) {
+    if (s > step) break;
+    ++e.up_to;
+    e.last_step = s;
+  }
+  return e;
+}
+
+// A resume joins run.h5 to the checkpoint only when the checkpoint was written with this
+// file: the same run id, and the frames and rows it recorded, at or before its step.
+void check_against_checkpoint(hid_t file, const fs::path& path, long step,
+                              const RunFileRecord& checkpoint) {
+  const std::string id = read_run_id(file);
+  if (checkpoint.run_id.empty() && id.empty()) return;  // both from before the record
+  if (checkpoint.run_id != id)
+    throw UserError(fmt::format(
+        "--resume: '{}' belongs to another run than the checkpoint.h5 beside it (run id "
+        "'{}', the checkpoint's {}); put back the run.h5 of the checkpoint's run, or start "
+        "again with --overwrite",
+        path.string(), id,
+        checkpoint.run_id.empty() ? std::string("none: it is older than run ids")
+                                  : "'" + checkpoint.run_id + "'"));
+  const Entries frames = entries_up_to(file, std::string(kParticles) + "/count", step);
+  const Entries rows = entries_up_to(file, std::string(kObservables) + "/particles", step);
+  if (frames.up_to == checkpoint.frames && rows.up_to == checkpoint.rows) return;
+  const long last = std::max(frames.last_step, rows.last_step);
+  throw UserError(fmt::format(
+      "--resume: '{}' holds {} snapshot{} and {} time-series row{} up to step {}{}, but the "
+      "checkpoint.h5 beside it (step {}) was written when it held {} and {}; it is not the "
+      "run.h5 that checkpoint was written with: put that one back, or start again with "
+      "--overwrite",
+      path.string(), frames.up_to, frames.up_to == 1 ? "" : "s", rows.up_to,
+      rows.up_to == 1 ? "" : "s", step,
+      last >= 0 ? fmt::format(" (its last at step {})", last) : std::string(), step,
+      checkpoint.frames, checkpoint.rows));
+}
+
 // The groups, header and empty time-indexed datasets of a new run file.
 void write_layout(hid_t f, const std::string& scene_toml_as_given,
                   const std::string& scene_toml_resolved, int dim) {
   h5::write_attribute(f, "granshock_file", kFileKind);
   h5::write_attribute(f, "granshock_format_version", kFormatVersion);
+  h5::write_attribute(f, kRunIdAttribute, new_run_id());
 
   Handle h5md = h5::require_group(f, "/h5md");
   h5::write_attribute(h5md.get(), "version", std::vector<int>{1, 1});
@@ -341,7 +403,54 @@ void write_layout(hid_t f, const std::string& scene_toml_as_given,
 }  // namespace
 
 RunFile::RunFile(fs::path path, h5::Handle file, int dim)
-    : path_(std::move(path)), file_(std::move(file)), dim_(dim) {}
+    : path_(std::move(path)), file_(std::move(file)), dim_(dim) {
+  settle();
+}
+
+void RunFile::settle() {
+  // HDF5's end of allocation, or the file's size when that is larger (H5Fget_eoa would
+  // be exact, but parallel HDF5's driver does not answer it).
+  hsize_t end = 0;
+  h5::naming_file_in_errors(path_, "reading", [&] {
+    h5::check(H5Fget_filesize(file_.get(), &end), "reading the end of allocation");
+  });
+  settled_ = end;
+  promised_ = 0;
+  // Bytes past the end are room reserved before and not used (allocated on disk).
+  reserved_ = std::max<std::uintmax_t>(end, file_bytes(path_));
+}
+
+int RunFile::try_make_room(std::uintmax_t growth) {
+  const std::uintmax_t end = settled_ + promised_ + growth;
+  if (end > reserved_) {
+    if (const int refused = reserve_file_bytes(path_, reserved_, end); refused != 0) return refused;
+    reserved_ = end;
+  }
+  promised_ += growth;
+  return 0;
+}
+
+void RunFile::make_room(std::uintmax_t growth, const std::string& what) {
+  if (const int refused = try_make_room(growth); refused != 0)
+    throw UserError(
+        fmt::format("writing '{}' failed: no room for {} ({:.2f} MB reserved before writing): {}",
+                    path_.string(), what, double(growth) / 1e6, std::strerror(refused)));
+}
+
+std::uintmax_t RunFile::snapshot_growth(long total) const {
+  const long frames = long(h5::naming_file_in_errors(path_, "reading", [&] {
+    return series_end(file_.get(), std::string(kParticles) + "/count").entries;
+  }));
+  const long capacity = particle_capacity();
+  return run_growth::snapshot_rows(frames, capacity, std::max(capacity, total), dim_);
+}
+
+std::uintmax_t RunFile::completion_growth() const {
+  const long frames = long(h5::naming_file_in_errors(path_, "reading", [&] {
+    return series_end(file_.get(), std::string(kParticles) + "/count").entries;
+  }));
+  return run_growth::series_entries(frames, run_layout::kSeriesPerFrame);
+}
 
 RunFile RunFile::create(const fs::path& path, const std::string& scene_toml_as_given,
                         const std::string& scene_toml_resolved, int dim) {
@@ -366,17 +475,34 @@ RunFile RunFile::create(const fs::path& path, const std::string& scene_toml_as_g
   return RunFile(path, std::move(file), dim);
 }
 
-RunFile RunFile::open_for_resume(const fs::path& path, long checkpoint_step) {
+RunFile RunFile::open_for_resume(const fs::path& path, long checkpoint_step,
+                                 const RunFileRecord& checkpoint) {
   Handle file = open_existing(path, H5F_ACC_RDWR, "resume");
-  const int dim = h5::naming_file_in_errors(path, "resuming", [&] {
-    std::vector<std::string> groups;
-    h5::check(H5Lvisit(file.get(), H5_INDEX_NAME, H5_ITER_INC, collect_step_groups, &groups),
-              "listing the time series");
-    for (const std::string& group : groups) truncate_after(file.get(), group, checkpoint_step);
-    h5::check(H5Fflush(file.get(), H5F_SCOPE_GLOBAL), "flushing");
-    return read_dim(file.get());
+  h5::naming_file_in_errors(path, "resuming", [&] {
+    check_against_checkpoint(file.get(), path, checkpoint_step, checkpoint);
   });
-  return RunFile(path, std::move(file), dim);
+  const int dim = h5::naming_file_in_errors(path, "resuming", [&] { return read_dim(file.get()); });
+  RunFile run(path, std::move(file), dim);
+  run.make_room(run_growth::truncation() + run_growth::attribute(64), "resuming");
+  h5::naming_file_in_errors(path, "resuming", [&] {
+    const hid_t f = run.file_.get();
+    std::vector<std::string> groups;
+    h5::check(H5Lvisit(f, H5_INDEX_NAME, H5_ITER_INC, collect_step_groups, &groups),
+              "listing the time series");
+    for (const std::string& group : groups) truncate_after(f, group, checkpoint_step);
+    // A run from before the record: from now on its checkpoints record this file.
+    if (read_run_id(f).empty()) h5::write_attribute(f, kRunIdAttribute, new_run_id());
+  });
+  run.flush();
+  return run;
+}
+
+void RunFile::check_resumable(const fs::path& path, long checkpoint_step,
+                              const RunFileRecord& checkpoint) {
+  Handle file = open_existing(path, H5F_ACC_RDONLY, "resume");
+  h5::naming_file_in_errors(path, "resuming", [&] {
+    check_against_checkpoint(file.get(), path, checkpoint_step, checkpoint);
+  });
 }
 
 RunFile RunFile::open_for_append(const fs::path& path) {
@@ -413,9 +539,13 @@ RunFile RunFile::open_read_only(const fs::path& path) {
 
 void RunFile::append_snapshot(long step, double time, const HostParticles& p) {
   const long n = long(p.size());
+  make_room(snapshot_growth(n) + completion_growth(), "the next snapshot");
   const long frame = write_snapshot_rows(
       step, p, n > 0 ? std::vector<FileRows>{{0, n}} : std::vector<FileRows>{}, n);
   complete_snapshot(frame, step, time, n);
+  // Settled at once: the next append reserves room past this one's actual end, not past
+  // its bound (which deflate's worst case makes several times a small frame's size).
+  flush();
 }
 
 long RunFile::write_snapshot_rows(long step, const HostParticles& p,
@@ -504,6 +634,23 @@ void RunFile::append_snapshot_collectively(const std::filesystem::path& path, MP
   long frame = 0;
   {
     RunFile shared = open_collectively(path, comm);
+    // Room for the frame before any process writes, reserved by rank 0 and known to all:
+    // refused, every process leaves the file as it was (docs/parallel.md, "Errors").
+    std::uintmax_t growth = 0;
+    int refused = 0;
+    if (rank == 0) {
+      growth = shared.snapshot_growth(part.total);
+      refused = shared.try_make_room(growth);
+    }
+    MPI_Bcast(&refused, 1, MPI_INT, 0, comm);
+    if (refused != 0) {
+      failure_agreed() = true;
+      if (rank != 0) throw PeerFailed(0);
+      throw UserError(fmt::format(
+          "writing '{}' failed: no room for the next snapshot ({:.2f} MB reserved before "
+          "writing): {}",
+          path.string(), double(growth) / 1e6, std::strerror(refused)));
+    }
     try {
       frame = shared.write_snapshot_rows(step, part.particles, part.rows, part.total);
     } catch (...) {
@@ -515,10 +662,17 @@ void RunFile::append_snapshot_collectively(const std::filesystem::path& path, MP
   }  // closed (collective) before rank 0 reopens it
   if (rank != 0) return;
   root_file.emplace(open_for_append(path));
+  root_file->make_room(root_file->completion_growth(), "the next snapshot");
   root_file->complete_snapshot(frame, step, time, part.total);
+  root_file->flush();
 }
 
 void RunFile::append_time_series(const TimeSeriesRow& row) {
+  const long rows = long(h5::naming_file_in_errors(path_, "reading", [&] {
+    return series_end(file_.get(), std::string(kObservables) + "/particles").entries;
+  }));
+  make_room(run_growth::series_entries(rows, run_layout::kSeriesPerRow),
+            "the next time-series row");
   h5::naming_file_in_errors(path_, "writing", [&] {
     const hid_t f = file_.get();
     const std::string root = kObservables;
@@ -540,6 +694,7 @@ void RunFile::append_time_series(const TimeSeriesRow& row) {
     put_long("deleted_inlet", row.deleted_inlet);
     put_long("particles", row.particles);
   });
+  flush();
 }
 
 std::vector<SnapshotFrame> RunFile::frames() const {
@@ -551,6 +706,16 @@ std::vector<SnapshotFrame> RunFile::frames() const {
     std::vector<SnapshotFrame> result(std::min({steps.size(), times.size(), counts.size()}));
     for (std::size_t i = 0; i < result.size(); ++i) result[i] = {steps[i], times[i], counts[i]};
     return result;
+  });
+}
+
+RunFileRecord RunFile::record() const {
+  return h5::naming_file_in_errors(path_, "reading", [&] {
+    RunFileRecord r;
+    r.run_id = read_run_id(file_.get());
+    r.frames = long(series_end(file_.get(), std::string(kParticles) + "/count").entries);
+    r.rows = long(series_end(file_.get(), std::string(kObservables) + "/particles").entries);
+    return r;
   });
 }
 
@@ -572,12 +737,14 @@ std::string RunFile::scene_resolved() const {
 }
 
 void RunFile::write_attribute(const std::string& object, const std::string& name, double value) {
+  make_room(run_growth::attribute(sizeof value), "an attribute");
   h5::naming_file_in_errors(path_, "writing", [&] {
     h5::write_attribute(attribute_target(file_.get(), object).get(), name, value);
   });
 }
 
 void RunFile::write_attribute(const std::string& object, const std::string& name, long value) {
+  make_room(run_growth::attribute(sizeof value), "an attribute");
   h5::naming_file_in_errors(path_, "writing", [&] {
     h5::write_attribute(attribute_target(file_.get(), object).get(), name, value);
   });
@@ -585,6 +752,7 @@ void RunFile::write_attribute(const std::string& object, const std::string& name
 
 void RunFile::write_attribute(const std::string& object, const std::string& name,
                               const std::string& value) {
+  make_room(run_growth::attribute(value.size()), "an attribute");
   h5::naming_file_in_errors(path_, "writing", [&] {
     h5::write_attribute(attribute_target(file_.get(), object).get(), name, value);
   });
@@ -621,6 +789,7 @@ void RunFile::write_array(const std::string& dataset, const std::vector<double>&
   if (elements != values.size()) {
     throw std::invalid_argument("RunFile::write_array: shape does not match the value count");
   }
+  make_room(run_growth::whole_dataset(values.size() * sizeof(double)), "'" + dataset + "'");
   h5::naming_file_in_errors(path_, "writing",
                             [&] { h5::write_dataset(file_.get(), dataset, values, dims); });
 }
@@ -638,6 +807,13 @@ std::vector<double> RunFile::read_array(const std::string& dataset,
 void RunFile::flush() {
   h5::naming_file_in_errors(
       path_, "flushing", [&] { h5::check(H5Fflush(file_.get(), H5F_SCOPE_GLOBAL), "H5Fflush"); });
+  // Everything is written: the room reserved past HDF5's end is given back.
+  haddr_t end = 0;
+  h5::naming_file_in_errors(path_, "flushing", [&] {
+    h5::check(H5Fget_eoa(file_.get(), &end), "reading the end of allocation");
+  });
+  trim_file(path_, end);
+  settle();
 }
 
 }  // namespace granshock

@@ -1,0 +1,30 @@
+// Upper bounds on how far one change to run.h5 can move HDF5's end of allocation (where
+// the file ends once written), from its layout (run_file_layout.hpp) and HDF5's rules for
+// file space. RunFile reserves this much on disk before it changes the file
+// (io/file_room.hpp, docs/output_format.md "A full disk"); tests/io/test_run_file_room.cpp
+// checks every bound against the growth HDF5 makes.
+#pragma once
+
+#include <cstdint>
+
+namespace granshock::run_growth {
+
+// The particle rows of a snapshot frame appended after `frames` frames, the particle
+// extent growing from `capacity` to `new_capacity` (every earlier frame gains the new
+// columns of chunks too).
+std::uintmax_t snapshot_rows(long frames, long capacity, long new_capacity, int dim);
+
+// One entry appended to each of `series` 1-D time series that hold `index` entries.
+std::uintmax_t series_entries(long index, int series);
+
+// A dataset of `bytes` written whole, replacing one of that name.
+std::uintmax_t whole_dataset(std::uintmax_t bytes);
+
+// An attribute of `bytes` written or replaced.
+std::uintmax_t attribute(std::uintmax_t bytes);
+
+// Cutting the time series back to a checkpoint's step (RunFile::open_for_resume), which
+// rewrites metadata in place and frees chunks.
+std::uintmax_t truncation();
+
+}  // namespace granshock::run_growth
