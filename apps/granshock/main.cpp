@@ -17,6 +17,7 @@
 #include "fields_command.hpp"
 #include "hdf5_runtime.hpp"
 #include "head_on_collision.hpp"
+#include "interrupt.hpp"
 #include "mpi_communicator.hpp"
 #include "mpi_runtime.hpp"
 #include "run_command.hpp"
@@ -175,6 +176,9 @@ void add_tradeoff_command(CLI::App& app, granshock::TradeoffOptions& o) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // First: a signal while MPI and Kokkos start waits until the command is known
+  // (cases/bow_shock/interrupt.hpp).
+  granshock::hold_interrupts();
   CLI::App app{"granshock: GPU-portable DEM for granular gas dynamics"};
   app.require_subcommand(1);
   app.allow_extras(false);
@@ -242,6 +246,12 @@ int main(int argc, char** argv) {
               << "--help)\n";
     return 2;
   }
+  // A run (also each case of a study) stops at a safe point with a message, from its very
+  // start (docs/output_format.md, "Signals"); the other commands end as signals end them.
+  if (app.got_subcommand("run") || app.got_subcommand("study") || app.got_subcommand("tradeoff"))
+    granshock::catch_interrupts();
+  else
+    granshock::release_interrupts();
   // Only `run` divides a scene among processes; the other commands would each do the whole
   // job N times into the same place. Every rank decides alike and returns, so none waits
   // for another; rank 0 alone says why.
@@ -295,8 +305,8 @@ int main(int argc, char** argv) {
         std::cerr << "granshock: warning: " << result.overlap.message << "\n";
       std::cout << granshock::to_json(result) << "\n";
     }
-  } catch (const granshock::PeerFailed&) {
-    return 2;  // another rank failed and said why
+  } catch (const granshock::PeerFailed& e) {
+    return e.exit_code();  // another rank failed and said why
   } catch (const granshock::NumericalFailure& e) {
     // From global sums: every rank meets it at the same step.
     return leave(4, std::string("granshock: error: ") + e.what(), true);

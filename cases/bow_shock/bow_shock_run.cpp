@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <iostream>
 
 #include "atomic_file.hpp"
@@ -60,6 +61,12 @@ void writing(Write&& write) {
   }
 }
 
+std::string signal_name(int signal) {
+  return signal == SIGINT    ? "SIGINT"
+         : signal == SIGTERM ? "SIGTERM"
+                             : fmt::format("signal {}", signal);
+}
+
 // Intervals longer than the run act once, at its end: clamping them to the duration keeps
 // the step count in range (run_checks.hpp bounds duration / dt).
 long every_seconds(double interval, double duration, double dt) {
@@ -78,14 +85,41 @@ BowShockRun::BowShockRun(const RunOptions& o, LoadedScene loaded, const Communic
       sampling_(scene_) {}
 
 int BowShockRun::execute() {
+  // Held since the program started (apps/granshock/main.cpp); in-process callers start here.
+  catch_interrupts();
+  try {
+    return execute_or_throw();
+  } catch (const Interrupted& e) {
+    // The rank that reports an agreed failure, or rank 0 where every rank stopped alike.
+    if (root_ || failure_agreed()) std::cerr << interrupted_message(e.signal()) << "\n";
+    return e.exit_code();
+  }
+}
+
+// Before the first checkpoint (docs/output_format.md, "Signals").
+std::string BowShockRun::interrupted_message(int signal) const {
+  if (!claimed_)
+    return fmt::format(
+        "granshock: interrupted by {} while setting up the run, before anything was written "
+        "to '{}'; run the same command again",
+        signal_name(signal), dir_.string());
+  return fmt::format(
+      "granshock: interrupted by {} before the first checkpoint (while prefilling the "
+      "domain); '{}' holds no checkpoint to resume: start again with --overwrite",
+      signal_name(signal), dir_.string());
+}
+
+int BowShockRun::execute_or_throw() {
   // Failures up to here are the same on every rank, or rank 0's alone (its directory and
   // files): all ranks agree on them before the first collective step (docs/parallel.md,
   // "Errors"). No step inside an agreement may itself be collective: a rank that failed
   // before it would meet the agreement's reduction instead.
   agree_on_failure(comm_, [&] { prepare(); });
   agree_on_failure(comm_, [&] {
+    throw_if_interrupted();
     // Every check is done: from here on the run owns the directory (and holds its lock).
     if (root_) run_directory_.emplace(RunDirectory::claim(dir_, mode_));
+    claimed_ = true;
     if (options_.resume) read_checkpoint_and_check();
     open_run_file();
   });
@@ -94,7 +128,6 @@ int BowShockRun::execute() {
     if (!options_.resume) start_fresh();  // writes the outputs of step 0
     first_step_ = solver_->steps_done();
     meter_.emplace(first_step_, total_steps_, scene_.run.progress_interval_s);
-    catch_interrupts();
     return advance_to_end();
   } catch (const WriteFailed& e) {
     throw UserError(fmt::format("{}; {}", e.what(), what_survives()));
@@ -127,6 +160,7 @@ std::string BowShockRun::what_survives() {
 // The scene's checks and calibrations, the directory's check and the solver.
 void BowShockRun::prepare() {
   dir_ = run_directory_of(options_, scene_);
+  throw_if_interrupted();
   std::vector<std::string> warnings = check_scene_before_run(scene_, options_.force);
   mode_ = options_.resume      ? DirectoryMode::resume
           : options_.overwrite ? DirectoryMode::overwrite
@@ -136,11 +170,13 @@ void BowShockRun::prepare() {
   // Again with a calibrated damping or sigma: the time-step guard depends on the damping
   // ratio and on the fastest impact.
   const bool damping_calibrated = calibrate_restitution();
+  throw_if_interrupted();
   if (calibrate_inflow() || damping_calibrated)
     warnings = check_scene_before_run(scene_, options_.force);
   if (root_)
     for (const std::string& w : warnings) std::cerr << "granshock: warning: " << w << "\n";
 
+  throw_if_interrupted();
   total_steps_ = scene_.total_steps();
   series_.every =
       every_seconds(scene_.run.series_interval_s, scene_.run.duration_s, scene_.setup.dt);
@@ -281,7 +317,12 @@ long BowShockRun::agreed_next_step(long step) {
 
 void BowShockRun::start_fresh() {
   solver_->set_particles(HostParticles{});
-  inflow_.prefill(*solver_);
+  // A large prefill takes minutes: a signal stops it between slabs, on every rank at the
+  // same slab (the insertion is collective).
+  inflow_.prefill(*solver_, [&] {
+    if (const int signal = int(comm_.max(double(interrupt_signal()))); signal != 0)
+      throw Interrupted(signal);
+  });
   actions_at(0);
 }
 
@@ -454,12 +495,13 @@ void BowShockRun::finish(bool completed) {
 }
 
 // The field analysis of a completed run (`granshock fields`): the run's data is complete,
-// so a failure here does not call for --resume.
+// so neither a failure nor a signal here calls for --resume.
 void BowShockRun::analyse() {
   const std::string complete = fmt::format(
       "the run's data is complete (checkpoint.h5, run.h5, summary.json): `granshock fields {}` "
       "redoes the analysis",
       dir_.string());
+  const ExitAtInterrupt at_signal("granshock: interrupted during the field analysis; " + complete);
   try {
     fields_command({dir_}, {}, FieldsCommandOptions{true, options_.quiet});
   } catch (const UserError& e) {
