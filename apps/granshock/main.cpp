@@ -175,9 +175,20 @@ void add_tradeoff_command(CLI::App& app, granshock::TradeoffOptions& o) {
 
 }  // namespace
 
+#if defined(__ELF__)
+// SIGINT and SIGTERM are held from before the shared libraries initialise (MPI, HDF5 and
+// Kokkos take milliseconds before main): an executable's .preinit_array runs right after
+// the dynamic loader, before any library's constructor.
+extern "C" void granshock_hold_interrupts_at_load(int, char**, char**) {
+  granshock::hold_interrupts();
+}
+__attribute__((section(".preinit_array"), used)) static void (*const hold_interrupts_at_load)(
+    int, char**, char**) = granshock_hold_interrupts_at_load;
+#endif
+
 int main(int argc, char** argv) {
-  // First: a signal while MPI and Kokkos start waits until the command is known
-  // (cases/bow_shock/interrupt.hpp).
+  // First (again, where .preinit_array is not): a signal while MPI and Kokkos start waits
+  // until the command is known (cases/bow_shock/interrupt.hpp).
   granshock::hold_interrupts();
   CLI::App app{"granshock: GPU-portable DEM for granular gas dynamics"};
   app.require_subcommand(1);
@@ -246,9 +257,10 @@ int main(int argc, char** argv) {
               << "--help)\n";
     return 2;
   }
-  // A run (also each case of a study) stops at a safe point with a message, from its very
-  // start (docs/output_format.md, "Signals"); the other commands end as signals end them.
-  if (app.got_subcommand("run") || app.got_subcommand("study") || app.got_subcommand("tradeoff"))
+  // A run stops at a safe point with a message, from its very start (docs/output_format.md,
+  // "Signals"); the other commands end as signals end them (a study catches them once it
+  // runs its cases: cases/study/study_runner.cpp).
+  if (app.got_subcommand("run"))
     granshock::catch_interrupts();
   else
     granshock::release_interrupts();
