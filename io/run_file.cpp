@@ -335,16 +335,17 @@ Entries entries_up_to(hid_t file, const std::string& group_path, long step) {
 // file: the same run id, and the frames and rows it recorded, at or before its step.
 void check_against_checkpoint(hid_t file, const fs::path& path, long step,
                               const RunFileRecord& checkpoint) {
+  // A checkpoint from before the record cannot be checked (and a resume that stopped
+  // before writing a checkpoint with a record must be able to start again from it).
+  if (checkpoint.run_id.empty()) return;
   const std::string id = read_run_id(file);
-  if (checkpoint.run_id.empty() && id.empty()) return;  // both from before the record
   if (checkpoint.run_id != id)
     throw UserError(fmt::format(
         "--resume: '{}' belongs to another run than the checkpoint.h5 beside it (run id "
-        "'{}', the checkpoint's {}); put back the run.h5 of the checkpoint's run, or start "
+        "{}, the checkpoint's '{}'); put back the run.h5 of the checkpoint's run, or start "
         "again with --overwrite",
-        path.string(), id,
-        checkpoint.run_id.empty() ? std::string("none: it is older than run ids")
-                                  : "'" + checkpoint.run_id + "'"));
+        path.string(), id.empty() ? std::string("none: it is older than run ids") : "'" + id + "'",
+        checkpoint.run_id));
   const Entries frames = entries_up_to(file, std::string(kParticles) + "/count", step);
   const Entries rows = entries_up_to(file, std::string(kObservables) + "/particles", step);
   if (frames.up_to == checkpoint.frames && rows.up_to == checkpoint.rows) return;

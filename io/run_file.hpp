@@ -44,7 +44,7 @@ class RunFile {
   // frames, time-series rows) whose step is after checkpoint_step. Throws UserError, with
   // the file unchanged, when it is missing, is not a granshock run file, or does not match
   // the checkpoint's record: another run's, or holding other entries up to its step. A
-  // file and a checkpoint from before the record get a run id now.
+  // checkpoint from before the record is not checked; a file without a run id gets one.
   static RunFile open_for_resume(const std::filesystem::path& path, long checkpoint_step,
                                  const RunFileRecord& checkpoint);
 

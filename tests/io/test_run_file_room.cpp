@@ -227,9 +227,6 @@ TEST(RunFileRecord, ResumeRefusesAFileTheCheckpointWasNotWrittenWithAndChangesNo
   refusal = refusal_of([&] { RunFile::open_for_resume(dir / "run.h5", 200, one_more); });
   EXPECT_NE(refusal.find("holds 2 snapshots"), std::string::npos) << refusal;
   EXPECT_EQ(refusal.find('\n'), std::string::npos);
-  // A checkpoint from before run ids, beside a file that has one.
-  refusal = refusal_of([&] { RunFile::open_for_resume(dir / "run.h5", 200, RunFileRecord{}); });
-  EXPECT_NE(refusal.find("older than run ids"), std::string::npos) << refusal;
   EXPECT_EQ(bytes_of(dir / "run.h5"), before) << "a refused resume changed run.h5";
 
   // The checkpoint's own file: accepted, cut back to its step.
@@ -237,7 +234,10 @@ TEST(RunFileRecord, ResumeRefusesAFileTheCheckpointWasNotWrittenWithAndChangesNo
   EXPECT_EQ(resumed.frames().size(), 2u);
 }
 
-TEST(RunFileRecord, AFileAndCheckpointFromBeforeRunIdsResumeAndTheFileGetsOne) {
+// A checkpoint from before the record is not checked (run.h5 may already have an id: a
+// resume from it that stopped before its first checkpoint), and a file without an id gets
+// one; a checkpoint with a record refuses a file without an id.
+TEST(RunFileRecord, FilesAndCheckpointsFromBeforeRunIds) {
   TempDir dir;
   write_run(dir / "run.h5", 2, nullptr);
   {
@@ -246,9 +246,25 @@ TEST(RunFileRecord, AFileAndCheckpointFromBeforeRunIdsResumeAndTheFileGetsOne) {
     ASSERT_GE(H5Adelete(f, "run_id"), 0);
     H5Fclose(f);
   }
-  RunFile resumed = RunFile::open_for_resume(dir / "run.h5", 100, RunFileRecord{});
-  EXPECT_EQ(resumed.frames().size(), 1u);
-  EXPECT_EQ(resumed.record().run_id.size(), 32u);
+  RunFileRecord recorded;
+  recorded.run_id = "0123456789abcdef0123456789abcdef";
+  recorded.frames = recorded.rows = 1;
+  const std::string refusal =
+      refusal_of([&] { RunFile::open_for_resume(dir / "run.h5", 100, recorded); });
+  EXPECT_NE(refusal.find("(run id none: it is older than run ids, the checkpoint's "
+                         "'0123456789abcdef0123456789abcdef')"),
+            std::string::npos)
+      << refusal;
+  std::string id;
+  {
+    RunFile resumed = RunFile::open_for_resume(dir / "run.h5", 100, RunFileRecord{});
+    EXPECT_EQ(resumed.frames().size(), 1u);
+    id = resumed.record().run_id;
+    EXPECT_EQ(id.size(), 32u);
+  }
+  // Again from the same old checkpoint: the file's new id is no obstacle, nor changed.
+  RunFile again = RunFile::open_for_resume(dir / "run.h5", 100, RunFileRecord{});
+  EXPECT_EQ(again.record().run_id, id);
 }
 
 }  // namespace
