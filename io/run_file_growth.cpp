@@ -29,7 +29,8 @@ std::uintmax_t deflated(std::uintmax_t n) {
 
 // A chunk of fill values (NaN, -1), made for every chunk of a frame when the frame is
 // allocated (H5D_ALLOC_TIME_EARLY) and replaced by the written chunk: each byte plane is
-// constant after the shuffle, and deflates to about a hundredth of its size.
+// constant after the shuffle, and deflates to less than a hundredth of its size (an empty
+// frame of two chunks per dataset, 1.3 MB of fill values in 2-D, grew run.h5 by 5.9 kB).
 std::uintmax_t fill_chunk(std::uintmax_t n) {
   return n / 32 + KiB;
 }

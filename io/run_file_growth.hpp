@@ -2,7 +2,7 @@
 // the file ends once written), from its layout (run_file_layout.hpp) and HDF5's rules for
 // file space. RunFile reserves this much on disk before it changes the file
 // (io/file_room.hpp, docs/output_format.md "A full disk"); tests/io/test_run_file_room.cpp
-// checks every bound against the growth HDF5 makes.
+// checks them with file-size limits met at every stage of a run's appends.
 #pragma once
 
 #include <cstdint>
