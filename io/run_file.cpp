@@ -33,6 +33,7 @@ constexpr const char* kObservables = "/observables";
 constexpr const char* kFileKind = "run";
 constexpr int kFormatVersion = 1;
 constexpr const char* kRunIdAttribute = "run_id";
+constexpr std::uintmax_t kMostPromised = std::uintmax_t(1) << 20;
 
 using run_layout::kParticleChunk;
 using run_layout::kSeriesChunk;
@@ -422,6 +423,10 @@ void RunFile::settle() {
 }
 
 int RunFile::try_make_room(std::uintmax_t growth) {
+  // The bounds of the changes since the last flush add up: past 1 MiB the file is flushed
+  // first (the rows of a time series, 16 KiB each, take a few bytes), so that the room
+  // reserved never runs far ahead of the file.
+  if (promised_ > 0 && promised_ + growth > kMostPromised) flush();
   const std::uintmax_t end = settled_ + promised_ + growth;
   if (end > reserved_) {
     if (const int refused = reserve_file_bytes(path_, reserved_, end); refused != 0) return refused;
@@ -695,7 +700,6 @@ void RunFile::append_time_series(const TimeSeriesRow& row) {
     put_long("deleted_inlet", row.deleted_inlet);
     put_long("particles", row.particles);
   });
-  flush();
 }
 
 std::vector<SnapshotFrame> RunFile::frames() const {

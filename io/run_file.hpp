@@ -81,7 +81,7 @@ class RunFile {
   // compression the processes then share (measured on 2 processes, docs/scaling.md).
   static bool collective_pays(long total);
 
-  // Appends one row to every /observables series, and flushes; the same rule on steps.
+  // Appends one row to every /observables series; the same rule on steps.
   void append_time_series(const TimeSeriesRow& row);
 
   // The frames written so far, in order.
