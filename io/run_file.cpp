@@ -314,16 +314,15 @@ std::string read_run_id(hid_t file) {
                                                   : std::string();
 }
 
-// The entries of GROUP/step, and of them those at or before `step`.
+// The entries of GROUP/step at or before `step`.
 struct Entries {
-  long all = 0, up_to = 0;
-  long last_step = -1;  // of those up to `step`; -1: none
+  long up_to = 0;
+  long last_step = -1;  // the last of them; -1: none
 };
 
 Entries entries_up_to(hid_t file, const std::string& group_path, long step) {
   const std::vector<long> steps = h5::read_dataset<long>(file, group_path + "/step");
   Entries e;
-  e.all = long(steps.size());
   for (long s : steps) {
     if (s > step) break;
     ++e.up_to;
