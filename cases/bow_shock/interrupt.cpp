@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <csignal>
 #include <cstring>
 
@@ -75,8 +76,9 @@ ExitAtInterrupt::ExitAtInterrupt(const std::string& message) {
   const std::size_t length = std::min(message.size(), sizeof(g_exit_message) - 2);
   std::memcpy(g_exit_message, message.data(), length);
   g_exit_message[length] = '\n';
-  // Armed before the flag is read: a signal in between either finds the message or left
-  // the flag for the check below.
+  // The message is complete before the handler can see it armed; armed before the flag is
+  // read: a signal in between either finds the message or left the flag for the check.
+  std::atomic_signal_fence(std::memory_order_seq_cst);
   g_exit_length = std::sig_atomic_t(length + 1);
   if (const int sig = interrupt_signal(); sig != 0) {
     write_all(g_exit_message, length + 1);
