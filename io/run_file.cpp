@@ -17,7 +17,6 @@
 #include "file_room.hpp"
 #include "hdf5_helpers.hpp"
 #include "run_file_growth.hpp"
-#include "run_file_layout.hpp"
 #include "user_error.hpp"
 #include "version.hpp"
 
@@ -35,9 +34,18 @@ constexpr int kFormatVersion = 1;
 constexpr const char* kRunIdAttribute = "run_id";
 constexpr std::uintmax_t kMostPromised = std::uintmax_t(1) << 20;
 
-using run_layout::kParticleChunk;
-using run_layout::kSeriesChunk;
-using run_layout::kSnapshotDeflate;
+// Time-indexed 1-D datasets grow by this many entries per chunk (2 KiB of int64).
+constexpr hsize_t kSeriesChunk = 256;
+// Snapshot chunks hold one frame of this many particles: a frame is written (and read
+// by a viewer) as a whole, so chunks never span frames. 16384 particles x 2 doubles is
+// 256 KiB, large enough for fast sequential I/O.
+constexpr hsize_t kParticleChunk = 16384;
+// Snapshots are stored byte-shuffled and gzip level 1 (0 = uncompressed). Measured for
+// 100k particles in 2-D (random positions, thermal velocities; docs/output_format.md):
+// none 7 ms and 4.6 MB per snapshot, shuffle+gzip-1 130 ms and 3.0 MB. Compression also
+// keeps small runs small: a frame's last chunk is padded with fill values up to the
+// chunk size, 0.66 MB for a 1000-particle frame uncompressed, 0.04 MB compressed.
+constexpr unsigned kSnapshotDeflate = 1;
 
 constexpr double kFloatFill = std::numeric_limits<double>::quiet_NaN();
 constexpr int kIntFill = -1;
@@ -361,6 +369,52 @@ void check_against_checkpoint(hid_t file, const fs::path& path, long step,
       checkpoint.frames, checkpoint.rows));
 }
 
+// What one more entry adds to below `group` (/particles/all or /observables), as the file
+// holds it: the 1-D series of every time-indexed element (step, time, a scalar's value)
+// and the per-particle arrays (frame x particle [x components]), with their chunking, so
+// that the bounds of run_file_growth.hpp follow the layout.
+struct EntryLayout {
+  std::vector<run_growth::SeriesArray> series;
+  std::vector<run_growth::ParticleArray> particles;
+};
+
+EntryLayout entry_layout(hid_t file, const std::string& group) {
+  EntryLayout layout;
+  auto add = [&](const std::string& path) {
+    if (!h5::exists(file, path)) return;
+    Handle set = h5::open_dataset(file, path);
+    const std::vector<hsize_t> shape = h5::shape_of(set.get());
+    Handle props = h5::plist(H5Dget_create_plist(set.get()), "reading dataset properties");
+    std::vector<hsize_t> chunk(shape.size(), 0);
+    if (H5Pget_layout(props.get()) == H5D_CHUNKED)
+      h5::check(H5Pget_chunk(props.get(), int(chunk.size()), chunk.data()), "reading the chunks");
+    Handle type = h5::datatype(H5Dget_type(set.get()), "reading the type");
+    std::uintmax_t bytes = H5Tget_size(type.get());
+    if (shape.size() == 1) {
+      layout.series.push_back({chunk[0], bytes});
+      return;
+    }
+    for (std::size_t k = 2; k < shape.size(); ++k) bytes *= shape[k];
+    layout.particles.push_back({chunk.size() > 1 ? chunk[1] : 0, bytes});
+  };
+  Handle g = h5::open_group(file, group);
+  H5G_info_t info{};
+  h5::check(H5Gget_info(g.get(), &info), "listing '" + group + "'");
+  for (hsize_t k = 0; k < info.nlinks; ++k) {
+    const ssize_t length =
+        H5Lget_name_by_idx(g.get(), ".", H5_INDEX_NAME, H5_ITER_INC, k, nullptr, 0, H5P_DEFAULT);
+    h5::check(herr_t(length < 0 ? -1 : 0), "listing '" + group + "'");
+    std::string name(std::size_t(length) + 1, '\0');
+    H5Lget_name_by_idx(g.get(), ".", H5_INDEX_NAME, H5_ITER_INC, k, name.data(), name.size(),
+                       H5P_DEFAULT);
+    name.resize(std::size_t(length));
+    const std::string element = group + "/" + name;
+    if (!h5::exists(file, element + "/step")) continue;
+    for (const char* part : {"step", "time", "value"}) add(element + "/" + part);
+  }
+  return layout;
+}
+
 // The groups, header and empty time-indexed datasets of a new run file.
 void write_layout(hid_t f, const std::string& scene_toml_as_given,
                   const std::string& scene_toml_resolved, int dim) {
@@ -428,8 +482,12 @@ int RunFile::try_make_room(std::uintmax_t growth) {
   if (promised_ > 0 && promised_ + growth > kMostPromised) flush();
   const std::uintmax_t end = settled_ + promised_ + growth;
   if (end > reserved_) {
-    if (const int refused = reserve_file_bytes(path_, reserved_, end); refused != 0) return refused;
-    reserved_ = end;
+    // In steps of 256 KiB: one reservation serves many rows of a time series.
+    const std::uintmax_t step = std::uintmax_t(1) << 18;
+    const std::uintmax_t until = (end + step - 1) / step * step;
+    if (const int refused = reserve_file_bytes(path_, reserved_, until); refused != 0)
+      return refused;
+    reserved_ = until;
   }
   promised_ += growth;
   return 0;
@@ -442,19 +500,34 @@ void RunFile::make_room(std::uintmax_t growth, const std::string& what) {
                     path_.string(), what, double(growth) / 1e6, std::strerror(refused)));
 }
 
+const RunFile::GrowthLayout& RunFile::growth_layout() const {
+  if (!growth_layout_) {
+    h5::naming_file_in_errors(path_, "reading", [&] {
+      EntryLayout frame = entry_layout(file_.get(), kParticles);
+      GrowthLayout layout;
+      layout.frame_series = std::move(frame.series);
+      layout.particles = std::move(frame.particles);
+      layout.row_series = entry_layout(file_.get(), kObservables).series;
+      growth_layout_ = std::move(layout);
+    });
+  }
+  return *growth_layout_;
+}
+
 std::uintmax_t RunFile::snapshot_growth(long total) const {
   const long frames = long(h5::naming_file_in_errors(path_, "reading", [&] {
     return series_end(file_.get(), std::string(kParticles) + "/count").entries;
   }));
   const long capacity = particle_capacity();
-  return run_growth::snapshot_rows(frames, capacity, std::max(capacity, total), dim_);
+  return run_growth::snapshot_rows(frames, capacity, std::max(capacity, total),
+                                   growth_layout().particles);
 }
 
 std::uintmax_t RunFile::completion_growth() const {
   const long frames = long(h5::naming_file_in_errors(path_, "reading", [&] {
     return series_end(file_.get(), std::string(kParticles) + "/count").entries;
   }));
-  return run_growth::series_entries(frames, run_layout::kSeriesPerFrame);
+  return run_growth::series_entries(frames, growth_layout().frame_series);
 }
 
 RunFile RunFile::create(const fs::path& path, const std::string& scene_toml_as_given,
@@ -641,12 +714,10 @@ void RunFile::append_snapshot_collectively(const std::filesystem::path& path, MP
     RunFile shared = open_collectively(path, comm);
     // Room for the frame before any process writes, reserved by rank 0 and known to all:
     // refused, every process leaves the file as it was (docs/parallel.md, "Errors").
-    std::uintmax_t growth = 0;
-    int refused = 0;
-    if (rank == 0) {
-      growth = shared.snapshot_growth(part.total);
-      refused = shared.try_make_room(growth);
-    }
+    // Every process reads the layout: datasets opened by rank 0 alone left the processes'
+    // metadata caches disagreeing, and the frame's chunks damaged ("inflate() failed").
+    const std::uintmax_t growth = shared.snapshot_growth(part.total);
+    int refused = rank == 0 ? shared.try_make_room(growth) : 0;
     MPI_Bcast(&refused, 1, MPI_INT, 0, comm);
     if (refused != 0) {
       failure_agreed() = true;
@@ -676,7 +747,7 @@ void RunFile::append_time_series(const TimeSeriesRow& row) {
   const long rows = long(h5::naming_file_in_errors(path_, "reading", [&] {
     return series_end(file_.get(), std::string(kObservables) + "/particles").entries;
   }));
-  make_room(run_growth::series_entries(rows, run_layout::kSeriesPerRow),
+  make_room(run_growth::series_entries(rows, growth_layout().row_series),
             "the next time-series row");
   h5::naming_file_in_errors(path_, "writing", [&] {
     const hid_t f = file_.get();

@@ -19,6 +19,7 @@
 
 #include "hdf5_handle.hpp"
 #include "host_particles.hpp"
+#include "run_file_growth.hpp"
 #include "snapshot_frame.hpp"
 #include "snapshot_part.hpp"
 #include "time_series.hpp"
@@ -127,6 +128,12 @@ class RunFile {
   void settle();
   std::uintmax_t snapshot_growth(long total) const;  // the rows of a frame of `total`
   std::uintmax_t completion_growth() const;          // its step, time and count
+  // The datasets those bounds count with, read from the file once (they do not change).
+  struct GrowthLayout {
+    std::vector<run_growth::SeriesArray> frame_series, row_series;
+    std::vector<run_growth::ParticleArray> particles;
+  };
+  const GrowthLayout& growth_layout() const;
   // Every process of `comm` at once, for write_snapshot_rows alone.
   static RunFile open_collectively(const std::filesystem::path& path, MPI_Comm comm);
   // A frame's particle data: `p` to the file `rows` of a frame of `total` rows (the next
@@ -142,6 +149,7 @@ class RunFile {
   std::uintmax_t settled_ = 0;   // HDF5's end of allocation at the last flush or open
   std::uintmax_t promised_ = 0;  // the most the changes since can have grown it
   std::uintmax_t reserved_ = 0;  // the file's bytes allocated on disk
+  mutable std::optional<GrowthLayout> growth_layout_;
 };
 
 }  // namespace granshock

@@ -1,9 +1,6 @@
 #include "run_file_growth.hpp"
 
 #include <algorithm>
-#include <initializer_list>
-
-#include "run_file_layout.hpp"
 
 namespace granshock::run_growth {
 
@@ -44,23 +41,25 @@ std::uintmax_t index_nodes(std::uintmax_t first, std::uintmax_t count) {
   return first + count <= 32 ? 1 : count / 16 + 8;
 }
 
-std::uintmax_t chunks_for(long particles) {
+std::uintmax_t chunks_for(long particles, std::uintmax_t per_chunk) {
   const std::uintmax_t n = particles > 0 ? std::uintmax_t(particles) : 0;
-  return (n + run_layout::kParticleChunk - 1) / run_layout::kParticleChunk;
+  return per_chunk == 0 ? 0 : (n + per_chunk - 1) / per_chunk;
 }
 
 }  // namespace
 
-std::uintmax_t snapshot_rows(long frames, long capacity, long new_capacity, int dim) {
+std::uintmax_t snapshot_rows(long frames, long capacity, long new_capacity,
+                             const std::vector<ParticleArray>& arrays) {
   const std::uintmax_t before = std::uintmax_t(frames > 0 ? frames : 0);
-  const std::uintmax_t old_columns = chunks_for(capacity);
-  const std::uintmax_t columns = std::max(old_columns, chunks_for(new_capacity));
   std::uintmax_t bytes = kPerChange;
-  const std::uintmax_t d = std::uintmax_t(dim);
-  for (const std::uintmax_t width : {d * 8, d * 8, std::uintmax_t(4), std::uintmax_t(4)}) {
-    const std::uintmax_t raw = run_layout::kParticleChunk * width;
-    // The new frame: every chunk filled, then written.
-    bytes += columns * (fill_chunk(raw) + deflated(raw) + 2 * kPerAllocation);
+  for (const ParticleArray& a : arrays) {
+    const std::uintmax_t old_columns = chunks_for(capacity, a.chunk_particles);
+    const std::uintmax_t columns =
+        std::max(old_columns, chunks_for(new_capacity, a.chunk_particles));
+    const std::uintmax_t raw = a.chunk_particles * a.bytes_per_particle;
+    // The new frame: every chunk filled, then written; and what else a frame's metadata
+    // takes besides the chunk index.
+    bytes += columns * (fill_chunk(raw) + deflated(raw) + 2 * kPerAllocation) + kPerAllocation;
     // Earlier frames gain the new columns, filled.
     const std::uintmax_t added = before * (columns - old_columns);
     bytes += added * (fill_chunk(raw) + kPerAllocation);
@@ -69,14 +68,17 @@ std::uintmax_t snapshot_rows(long frames, long capacity, long new_capacity, int 
   return bytes;
 }
 
-std::uintmax_t series_entries(long index, int series) {
+std::uintmax_t series_entries(long index, const std::vector<SeriesArray>& series) {
   const std::uintmax_t i = std::uintmax_t(index > 0 ? index : 0);
-  if (i % run_layout::kSeriesChunk != 0) return kPerChange;
-  // The entry opens a chunk in every series (allocated when written: 256 int64 or float64).
-  const std::uintmax_t chunk = run_layout::kSeriesChunk * 8;
-  const std::uintmax_t nodes = index_nodes(i / run_layout::kSeriesChunk, 1);
-  return kPerChange +
-         std::uintmax_t(series) * (chunk + kPerAllocation + nodes * (kIndexNode + kPerAllocation));
+  std::uintmax_t bytes = kPerChange;
+  for (const SeriesArray& a : series) {
+    // The entry opens a chunk (allocated when written), and a node of the chunk index.
+    if (a.chunk_entries == 0 || i % a.chunk_entries != 0) continue;
+    const std::uintmax_t nodes = index_nodes(i / a.chunk_entries, 1);
+    bytes += a.chunk_entries * a.bytes_per_entry + kPerAllocation +
+             nodes * (kIndexNode + kPerAllocation);
+  }
+  return bytes;
 }
 
 std::uintmax_t whole_dataset(std::uintmax_t bytes) {

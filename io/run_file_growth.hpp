@@ -1,21 +1,36 @@
 // Upper bounds on how far one change to run.h5 can move HDF5's end of allocation (where
-// the file ends once written), from its layout (run_file_layout.hpp) and HDF5's rules for
-// file space. RunFile reserves this much on disk before it changes the file
+// the file ends once written), from its datasets' chunking as the file holds it and HDF5's
+// rules for file space. RunFile reserves this much on disk before it changes the file
 // (io/file_room.hpp, docs/output_format.md "A full disk"); tests/io/test_run_file_room.cpp
 // checks them with file-size limits met at every stage of a run's appends.
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 namespace granshock::run_growth {
 
-// The particle rows of a snapshot frame appended after `frames` frames, the particle
-// extent growing from `capacity` to `new_capacity` (every earlier frame gains the new
-// columns of chunks too).
-std::uintmax_t snapshot_rows(long frames, long capacity, long new_capacity, int dim);
+// A per-particle dataset of the snapshots (frame x particle [x components]), chunked by
+// one frame of `chunk_particles`.
+struct ParticleArray {
+  std::uintmax_t chunk_particles = 0;
+  std::uintmax_t bytes_per_particle = 0;
+};
 
-// One entry appended to each of `series` 1-D time series that hold `index` entries.
-std::uintmax_t series_entries(long index, int series);
+// The particle rows of a snapshot frame appended after `frames` frames to every array,
+// the particle extent growing from `capacity` to `new_capacity` (every earlier frame gains
+// the new columns of chunks too).
+std::uintmax_t snapshot_rows(long frames, long capacity, long new_capacity,
+                             const std::vector<ParticleArray>& arrays);
+
+// A 1-D time series (step, time, or a scalar's value), chunked by `chunk_entries`.
+struct SeriesArray {
+  std::uintmax_t chunk_entries = 0;
+  std::uintmax_t bytes_per_entry = 0;
+};
+
+// One entry appended to each of `series`, which hold `index` entries.
+std::uintmax_t series_entries(long index, const std::vector<SeriesArray>& series);
 
 // A dataset of `bytes` written whole, replacing one of that name.
 std::uintmax_t whole_dataset(std::uintmax_t bytes);
