@@ -18,6 +18,7 @@
 #include "fields_command.hpp"
 #include "hdf5_runtime.hpp"
 #include "head_on_collision.hpp"
+#include "interrupt.hpp"
 #include "mpi_communicator.hpp"
 #include "mpi_runtime.hpp"
 #include "run_command.hpp"
@@ -190,7 +191,21 @@ void add_tradeoff_command(CLI::App& app, granshock::TradeoffOptions& o) {
 
 }  // namespace
 
+#if defined(__ELF__)
+// SIGINT and SIGTERM are held from before the shared libraries initialise (MPI, HDF5 and
+// Kokkos take milliseconds before main): an executable's .preinit_array runs right after
+// the dynamic loader, before any library's constructor.
+extern "C" void granshock_hold_interrupts_at_load(int, char**, char**) {
+  granshock::hold_interrupts();
+}
+__attribute__((section(".preinit_array"), used)) static void (*const hold_interrupts_at_load)(
+    int, char**, char**) = granshock_hold_interrupts_at_load;
+#endif
+
 int main(int argc, char** argv) {
+  // First (again, where .preinit_array is not): a signal while MPI and Kokkos start waits
+  // until the command is known (cases/bow_shock/interrupt.hpp).
+  granshock::hold_interrupts();
   CLI::App app{"granshock: GPU-portable DEM for granular gas dynamics"};
   app.require_subcommand(1);
   app.allow_extras(false);
@@ -258,6 +273,13 @@ int main(int argc, char** argv) {
               << "--help)\n";
     return 2;
   }
+  // A run stops at a safe point with a message, from its very start (docs/output_format.md,
+  // "Signals"); the other commands end as signals end them (a study catches them once it
+  // runs its cases: cases/study/study_runner.cpp).
+  if (app.got_subcommand("run"))
+    granshock::catch_interrupts();
+  else
+    granshock::release_interrupts();
   // Only `run` divides a scene among processes; the other commands would each do the whole
   // job N times into the same place. Every rank decides alike and returns, so none waits
   // for another; rank 0 alone says why.
@@ -311,8 +333,8 @@ int main(int argc, char** argv) {
         std::cerr << "granshock: warning: " << result.overlap.message << "\n";
       std::cout << granshock::to_json(result) << "\n";
     }
-  } catch (const granshock::PeerFailed&) {
-    return 2;  // another rank failed and said why
+  } catch (const granshock::PeerFailed& e) {
+    return e.exit_code();  // another rank failed and said why
   } catch (const granshock::NumericalFailure& e) {
     // From global sums: every rank meets it at the same step.
     return leave(4, std::string("granshock: error: ") + e.what(), true);

@@ -79,9 +79,10 @@ void InflowController::count_prefill() {
   });
 }
 
-void InflowController::prefill(Solver& solver) {
+void InflowController::prefill(Solver& solver, const std::function<void()>& between_slabs) {
   count_prefill();
   for_each_prefill_slab([&](double y, double top, double expected) {
+    if (between_slabs) between_slabs();
     insert_batch(solver, y, top, expected, false);
   });
   // Lists are rebuilt once, after the last slab (insertion itself needs only positions),
