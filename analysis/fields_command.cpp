@@ -12,6 +12,7 @@
 #include "field_sums_file.hpp"
 #include "fields_output.hpp"
 #include "figures.hpp"
+#include "regular_file.hpp"
 #include "run_file.hpp"
 #include "summary_json.hpp"
 #include "user_error.hpp"
@@ -32,6 +33,7 @@ struct RunTarget {
 RunTarget target_mach(const fs::path& summary, double nominal) {
   std::error_code ec;
   if (!fs::exists(summary, ec)) return {nominal, false};
+  require_regular_file(summary, "summary");  // a FIFO would block the read
   std::ifstream in(summary);
   std::stringstream text;
   text << in.rdbuf();

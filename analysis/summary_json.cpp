@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "atomic_file.hpp"
+#include "regular_file.hpp"
 #include "user_error.hpp"
 
 namespace granshock {
@@ -12,6 +13,7 @@ void merge_summary_json(const std::filesystem::path& path, const nlohmann::json&
   nlohmann::json merged = nlohmann::json::object();
   std::error_code ec;
   if (std::filesystem::exists(path, ec)) {
+    require_regular_file(path, "summary");  // a FIFO would block the read
     std::ifstream in(path);
     if (!in) throw UserError("cannot read '" + path.string() + "'");
     std::stringstream text;

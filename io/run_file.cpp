@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "hdf5_helpers.hpp"
+#include "regular_file.hpp"
 #include "user_error.hpp"
 #include "version.hpp"
 
@@ -237,6 +238,7 @@ Handle open_existing(const fs::path& path, unsigned flags, const char* doing) {
   if (!fs::exists(path, ec)) {
     throw UserError(std::string("cannot ") + doing + " '" + path.string() + "': no such file");
   }
+  require_regular_file(path, "run file");  // HDF5 would block on a FIFO
   const hid_t id = H5Fopen(path.c_str(), flags, H5P_DEFAULT);
   if (id < 0) {
     throw UserError(std::string("cannot ") + doing + " '" + path.string() +

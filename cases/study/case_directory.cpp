@@ -3,6 +3,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "regular_file.hpp"
 #include "run_directory.hpp"
 #include "run_file.hpp"
 
@@ -27,6 +28,8 @@ std::string to_string(CaseState state) {
 }
 
 nlohmann::json read_summary(const fs::path& dir) {
+  std::error_code ec;  // a FIFO would block the read
+  if (fs::exists(dir / "summary.json", ec)) require_regular_file(dir / "summary.json", "summary");
   std::ifstream in(dir / "summary.json");
   if (!in) return nullptr;
   std::stringstream text;
