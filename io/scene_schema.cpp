@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <map>
@@ -24,6 +25,16 @@ namespace {
 
 // More blocks than this only divide the production window into noise (and memory).
 constexpr long kMaxBlocks = 10000;
+
+// The most species a scene may have (docs/scene_format.md, "Limits"). Every pair has its
+// own contact table, written in full into the resolved scene (about 160 KB of TOML at 64
+// species, 2.4 MB at 256: past the 1 MiB a scene file may hold), kept as the force
+// kernel's coefficient table (200 KB at 64, in cache) and collided twice for summary.json;
+// the field sums grow with the species as well. The paper's mixture has two.
+constexpr long kMaxSpecies = 64;
+
+// A pair key's name for the obstacle ("a-obstacle"); no species may take it.
+const char* const kObstacleName = "obstacle";
 
 // A scene name names the run directory runs/<name>: it must be a plain file name.
 bool is_safe_name(const std::string& name) {
@@ -50,6 +61,7 @@ struct Reading {
   std::optional<double> calibration_speed;        // default: the inflow speed
   Material material;
   Species species;
+  std::map<std::string, int> species_by_name;  // pair names are looked up once per pair
   double number_fraction = 0;
   int pair_a = 0, pair_b = -1;  // pair_b < 0: "a-obstacle"
   Obstacle obstacle;
@@ -122,10 +134,8 @@ const Material& material_named(Reading& st, const std::string& key, const std::s
 }
 
 int find_species(const Reading& st, const std::string& name) {
-  const auto& species = st.s.setup.species;
-  for (std::size_t a = 0; a < species.size(); ++a)
-    if (species[a].name == name) return int(a);
-  return -1;
+  const auto it = st.species_by_name.find(name);
+  return it == st.species_by_name.end() ? -1 : it->second;
 }
 
 int species_index(const Reading& st, const std::string& key, const std::string& name) {
@@ -221,9 +231,12 @@ const Key kSpeciesKeys[] = {
     {"name", "string",
      [](TableReader& r, Reading& st, const std::string& k) {
        st.species.name = r.string(k);
-       for (const auto& other : st.s.setup.species)
-         if (other.name == st.species.name)
-           fail(r.key(k), '"' + st.species.name + '"', "species names must be unique");
+       if (find_species(st, st.species.name) >= 0)
+         fail(r.key(k), '"' + st.species.name + '"', "species names must be unique");
+       if (st.species.name == kObstacleName || st.species.name.empty())
+         fail(r.key(k), '"' + st.species.name + '"',
+              "a species may not be named \"obstacle\" (contact.pairs.\"a-obstacle\" names "
+              "the obstacle) nor \"\"");
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.s.setup.species[w.species].name);
@@ -252,10 +265,41 @@ const Key kSpeciesKeys[] = {
 };
 const Table kSpecies = table("[[species]]", kSpeciesKeys);
 
+// Every pair key ("a-b" in either order, "a-obstacle") must name one pair: a dash inside a
+// species name could make "a-b-c" both a with b-c and a-b with c, and a species named
+// "obstacle" would share its keys with the obstacle, so that one key set two pairs while
+// the resolved scene showed one. Checked over all pair keys once the species are known.
+void refuse_ambiguous_pair_keys(const Reading& st) {
+  const std::vector<Species>& species = st.s.setup.species;
+  const int n = int(species.size());
+  std::map<std::string, std::pair<int, int>> pair_of_key;  // b = -1: the obstacle
+  const auto claim = [&](const std::string& key, int a, int b) {
+    const std::pair<int, int> pair(b < 0 ? a : std::min(a, b), b < 0 ? b : std::max(a, b));
+    const auto [it, fresh] = pair_of_key.emplace(key, pair);
+    if (fresh || it->second == pair) return;
+    const auto name = [&](int k) { return k < 0 ? std::string(kObstacleName) : species[k].name; };
+    const int later = std::max({a, b, it->second.first, it->second.second});
+    fail(fmt::format("species.{}.name", later), '"' + species[later].name + '"',
+         fmt::format("the pair key \"{}\" would name both {} with {} and {} with {}; choose "
+                     "species names that no dash can split two ways",
+                     key, name(it->second.first), name(it->second.second), name(pair.first),
+                     name(pair.second)));
+  };
+  for (int a = 0; a < n; ++a) {
+    for (int b = 0; b < n; ++b) claim(species[a].name + "-" + species[b].name, a, b);
+    claim(species[a].name + "-" + kObstacleName, a, -1);
+  }
+}
+
 void read_species(TableReader& top, Reading& st) {
   const toml::node* sp = top.node("species");
   if (!sp || !sp->is_array_of_tables() || sp->as_array()->empty())
     fail("species", sp ? show(*sp) : "(missing)", "needs one or more [[species]] tables");
+  if (sp->as_array()->size() > std::size_t(kMaxSpecies))
+    fail("species", fmt::format("{} [[species]] tables", sp->as_array()->size()),
+         fmt::format("at most {} species (docs/scene_format.md, \"Limits\": every pair of "
+                     "species has its own contact table)",
+                     kMaxSpecies));
   double fraction_sum = 0;
   int index = 0;
   for (const auto& item : *sp->as_array()) {
@@ -264,12 +308,14 @@ void read_species(TableReader& top, Reading& st) {
     for (const Key& k : kSpecies) k.read(r, st, k.name);
     fraction_sum += st.number_fraction;
     st.s.inflow.number_fraction.push_back(st.number_fraction);
+    st.species_by_name[st.species.name] = int(st.s.setup.species.size());
     st.s.setup.species.push_back(st.species);
     r.finish();
   }
   if (std::abs(fraction_sum - 1.0) > 1e-9)
     fail("species.*.number_fraction", fmt::format("sum {}", fraction_sum),
          "the number fractions must add up to 1");
+  refuse_ambiguous_pair_keys(st);
 }
 
 // ---- [contact.pairs."a-b"] ---------------------------------------------------------------

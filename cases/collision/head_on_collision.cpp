@@ -40,7 +40,10 @@ struct Geometry {
   }
 };
 
-Geometry build(const SolverSetup& scene, int a, int b, double dt, const ImpactPlace& place) {
+// `dmax`: the largest diameter of the whole scene, which sizes the box and the cylinder
+// alike for every pair.
+Geometry build(const SolverSetup& scene, int a, int b, double dt, const ImpactPlace& place,
+               double dmax) {
   Geometry g;
   g.on_obstacle = b < 0;
   g.place = place;
@@ -48,7 +51,6 @@ Geometry build(const SolverSetup& scene, int a, int b, double dt, const ImpactPl
   g.setup.contacts = scene.contacts;
   g.setup.precision = scene.precision;
   g.setup.dt = dt;
-  const double dmax = scene.max_diameter();
   g.radius_a = scene.species[a].radius_m();
   g.radius_b = g.on_obstacle ? 0 : scene.species[b].radius_m();
   g.cylinder_radius = 5 * dmax;
@@ -94,9 +96,20 @@ std::vector<std::string> collision_pair_names() {
 
 CollisionResult collide_species(const SolverSetup& given, int a, int b, double speed, double dt,
                                 bool force, double phase, const ImpactPlace& place) {
+  // The pair's own species alone (a -> 0, b -> 1 or 0): summary.json collides every pair
+  // of a scene, and a copy of every pair's tables per collision made that O(species^4).
+  SolverSetup scene;
+  std::vector<int> kept = {a};
+  if (b >= 0 && b != a) kept.push_back(b);
+  for (const int k : kept) scene.species.push_back(given.species.at(std::size_t(k)));
+  scene.contacts = given.contacts.of_species(kept);
+  scene.precision = given.precision;
+  scene.obstacle = given.obstacle;
+  const double dmax = given.max_diameter();
+  b = b < 0 ? -1 : b == a ? 0 : 1;
+  a = 0;
   // A scene without an obstacle collides with an aluminium cylinder: its pair properties
   // (softening, calibrated damping) then come from SolverSetup like any obstacle's.
-  SolverSetup scene = given;
   if (b < 0 && !scene.obstacle)
     scene.obstacle = Obstacle{ObstacleShape::cylinder, {}, 0, aluminium()};
   const PairProperties props = b >= 0 ? scene.pair(a, b) : scene.obstacle_pair(a);
@@ -129,7 +142,7 @@ CollisionResult collide_species(const SolverSetup& given, int a, int b, double s
     throw UserError(fmt::format("the line of impact must be along x or y (axis {})", place.axis));
   for (const double c : place.centre)
     if (!std::isfinite(c)) throw UserError("the impact's place must be finite");
-  Geometry g = build(scene, a, b, r.dt, place);
+  Geometry g = build(scene, a, b, r.dt, place, dmax);
 
   // Start a few steps before contact, in the zero-momentum frame for two particles; the
   // sixth drift overlaps them by phase x speed x dt.
