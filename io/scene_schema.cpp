@@ -33,6 +33,36 @@ constexpr long kMaxBlocks = 10000;
 // the field sums grow with the species as well. The paper's mixture has two.
 constexpr long kMaxSpecies = 64;
 
+// Physical ranges of the scene's numbers (docs/scene_format.md, "Keys"): values outside
+// them passed every check and failed late, as -nan particle counts (units.d = 1e-320),
+// a diameter of 1e-320 m, or a restitution of 1e-6 that ran the whole simulation before
+// its effective restitution could not be measured.
+struct Range {
+  double lo, hi;
+  const char* why;
+};
+// Particle sizes (and the unit d): micrometre powders to metre boulders.
+constexpr Range kDiameter = {1e-6, 1.0, "from a micrometre powder to a metre boulder"};
+constexpr Range kYoungsModulus = {1e3, 1e13, "from a hydrogel to past diamond's 1.2e12 Pa"};
+constexpr Range kDensity = {1.0, 1e5, "from an aerogel to past osmium's 22590 kg/m3"};
+// Below 0.01 the damped Hertz law's rebound creeps: a contact lasts 2.7 t_c at e = 0.01 and
+// 25 t_c at e = 1e-6, and the integrator at the usual steps returns under half of e
+// (docs/contact_model.md, "Restitution range").
+constexpr Range kRestitution = {
+    0.01, 1.0,
+    "below 0.01 the damped contact law's rebound is not resolved (docs/contact_model.md)"};
+constexpr Range kFriction = {0.0, 10.0, "Coulomb friction of real materials is below 2"};
+// Speeds: the inflow, its fluctuation and the speeds contacts are calibrated at.
+constexpr Range kSpeed = {1e-6, 1e4, "from a micrometre per second to hypervelocity"};
+constexpr Range kSigma = {0.0, 1e4, "at most hypervelocity"};
+constexpr Range kMach = {0.1, 1e4, "from a subsonic to a hypersonic gas"};
+constexpr Range kSoftening = {1.0, 1e9, "every modulus divided by this stays at least 1e-9 of it"};
+constexpr Range kNumberFraction = {1e-6, 1.0, "at least one particle in a million"};
+constexpr double kMinAreaFraction = 1e-6;
+// The domain's extent: positions are double, resolved to 2e-12 m at 10 km.
+constexpr double kMaxDomainLength = 1e4;
+constexpr Range kProgressInterval = {0.01, 1e9, "wall-clock seconds"};
+
 // A pair key's name for the obstacle ("a-obstacle"); no species may take it.
 const char* const kObstacleName = "obstacle";
 
@@ -148,7 +178,9 @@ int species_index(const Reading& st, const std::string& key, const std::string& 
 
 const Key kUnitsKeys[] = {
     {"d", "number (m)",
-     [](TableReader& r, Reading& st, const std::string& k) { st.s.d_m = r.positive(k, 1e-3); },
+     [](TableReader& r, Reading& st, const std::string& k) {
+       st.s.d_m = r.number_within(k, kDiameter.lo, kDiameter.hi, 1e-3, kDiameter.why);
+     },
      [](const Writing& w, toml::table& t, const std::string& k) { t.insert(k, w.s.d_m); }},
 };
 const Table kUnits = table("units", kUnitsKeys);
@@ -188,7 +220,8 @@ const Table kScene = table("scene", kSceneKeys);
 const Key kMaterialKeys[] = {
     {"youngs_modulus", "number (Pa)",
      [](TableReader& r, Reading& st, const std::string& k) {
-       st.material.youngs_modulus_pa = r.positive(k);
+       st.material.youngs_modulus_pa =
+           r.number_within(k, kYoungsModulus.lo, kYoungsModulus.hi, {}, kYoungsModulus.why);
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.material->youngs_modulus_pa);
@@ -202,7 +235,7 @@ const Key kMaterialKeys[] = {
      }},
     {"density", "number (kg/m3)",
      [](TableReader& r, Reading& st, const std::string& k) {
-       st.material.density_kg_m3 = r.positive(k);
+       st.material.density_kg_m3 = r.number_within(k, kDensity.lo, kDensity.hi, {}, kDensity.why);
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.material->density_kg_m3);
@@ -250,14 +283,15 @@ const Key kSpeciesKeys[] = {
      }},
     {"diameter", "length",
      [](TableReader& r, Reading& st, const std::string& k) {
-       st.species.diameter_m = r.positive_length(k);
+       st.species.diameter_m = r.length_within(k, kDiameter.lo, kDiameter.hi, {}, kDiameter.why);
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.s.setup.species[w.species].diameter_m);
      }},
     {"number_fraction", "number",
      [](TableReader& r, Reading& st, const std::string& k) {
-       st.number_fraction = r.number_in(k, 0, 1, true, false);
+       st.number_fraction =
+           r.number_within(k, kNumberFraction.lo, kNumberFraction.hi, {}, kNumberFraction.why);
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.s.inflow.number_fraction[w.species]);
@@ -326,9 +360,11 @@ const Key kPairKeys[] = {
        ContactSettings& c = st.s.setup.contacts;
        const int a = st.pair_a, b = st.pair_b;
        if (b < 0) {
-         c.obstacle_restitution[a] = r.number_in(k, 0, 1, true, false, c.obstacle_restitution[a]);
+         c.obstacle_restitution[a] = r.number_within(k, kRestitution.lo, kRestitution.hi,
+                                                     c.obstacle_restitution[a], kRestitution.why);
        } else {
-         const double e = r.number_in(k, 0, 1, true, false, c.restitution[a][b]);
+         const double e = r.number_within(k, kRestitution.lo, kRestitution.hi, c.restitution[a][b],
+                                          kRestitution.why);
          c.restitution[a][b] = c.restitution[b][a] = e;
        }
      },
@@ -342,9 +378,11 @@ const Key kPairKeys[] = {
        ContactSettings& c = st.s.setup.contacts;
        const int a = st.pair_a, b = st.pair_b;
        if (b < 0) {
-         c.obstacle_friction[a] = r.number_in(k, 0, INFINITY, false, true, c.obstacle_friction[a]);
+         c.obstacle_friction[a] =
+             r.number_within(k, kFriction.lo, kFriction.hi, c.obstacle_friction[a], kFriction.why);
        } else {
-         const double mu = r.number_in(k, 0, INFINITY, false, true, c.friction[a][b]);
+         const double mu =
+             r.number_within(k, kFriction.lo, kFriction.hi, c.friction[a][b], kFriction.why);
          c.friction[a][b] = c.friction[b][a] = mu;
        }
      },
@@ -409,7 +447,7 @@ void write_pairs(const Writing& w, toml::table& t, const std::string& k) {
 const Key kContactKeys[] = {
     {"restitution", "number",
      [](TableReader& r, Reading& st, const std::string& k) {
-       const double e = r.number_in(k, 0, 1, true, false);
+       const double e = r.number_within(k, kRestitution.lo, kRestitution.hi, {}, kRestitution.why);
        st.s.setup.contacts = ContactSettings::uniform(int(st.s.setup.species.size()), e, 0.0);
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
@@ -417,7 +455,7 @@ const Key kContactKeys[] = {
      }},
     {"friction", "number",
      [](TableReader& r, Reading& st, const std::string& k) {
-       const double mu = r.number_in(k, 0, INFINITY, false, true, 0.0);
+       const double mu = r.number_within(k, kFriction.lo, kFriction.hi, 0.0, kFriction.why);
        ContactSettings& c = st.s.setup.contacts;
        for (auto& row : c.friction) row.assign(row.size(), mu);
        c.obstacle_friction.assign(c.obstacle_friction.size(), mu);
@@ -436,14 +474,16 @@ const Key kContactKeys[] = {
     // Its default, the inflow speed, is known once [inflow] is read (read_scene).
     {"calibration_speed", "number (m/s)",
      [](TableReader& r, Reading& st, const std::string& k) {
-       if (r.has(k)) st.calibration_speed = r.positive(k);
+       if (r.has(k))
+         st.calibration_speed = r.number_within(k, kSpeed.lo, kSpeed.hi, {}, kSpeed.why);
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.s.setup.contacts.calibration_speed_m_per_s);
      }},
     {"softening", "number",
      [](TableReader& r, Reading& st, const std::string& k) {
-       st.s.setup.contacts.softening = r.number_in(k, 1, INFINITY, false, true, 1.0);
+       st.s.setup.contacts.softening =
+           r.number_within(k, kSoftening.lo, kSoftening.hi, 1.0, kSoftening.why);
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.s.setup.contacts.softening);
@@ -465,7 +505,8 @@ const Key kContactKeys[] = {
     // Its default, the inflow speed, is known once [inflow] is read (read_scene).
     {"characteristic_velocity", "number (m/s)",
      [](TableReader& r, Reading& st, const std::string& k) {
-       if (r.has(k)) st.characteristic_velocity = r.positive(k);
+       if (r.has(k))
+         st.characteristic_velocity = r.number_within(k, kSpeed.lo, kSpeed.hi, {}, kSpeed.why);
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.s.setup.contacts.options.characteristic_velocity_m_per_s);
@@ -531,6 +572,9 @@ const Key kDomainKeys[] = {
     {"width", "length",
      [](TableReader& r, Reading& st, const std::string& k) {
        st.s.setup.box.hi[0] = r.positive_length(k);
+       if (st.s.setup.box.hi[0] > kMaxDomainLength)
+         fail(r.key(k), fmt::format("{} m", st.s.setup.box.hi[0]),
+              fmt::format("must be at most {:g} m", kMaxDomainLength));
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.s.setup.box.hi[0]);
@@ -538,6 +582,9 @@ const Key kDomainKeys[] = {
     {"length", "length",
      [](TableReader& r, Reading& st, const std::string& k) {
        st.s.setup.box.hi[1] = r.positive_length(k);
+       if (st.s.setup.box.hi[1] > kMaxDomainLength)
+         fail(r.key(k), fmt::format("{} m", st.s.setup.box.hi[1]),
+              fmt::format("must be at most {:g} m", kMaxDomainLength));
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.s.setup.box.hi[1]);
@@ -549,7 +596,9 @@ void after_domain(Reading& st) {
   const double width = setup.box.hi[0], range = setup.max_diameter() + setup.skin_m;
   if (width < 3 * range)
     fail("domain.width", fmt::format("{} m", width),
-         fmt::format("must be at least 3 interaction ranges ({} m)", 3 * range));
+         fmt::format("must be at least 3 interaction ranges, each the largest diameter plus "
+                     "numerics.skin ({} m)",
+                     3 * range));
   setup.box.lo = {0, 0, 0};
   setup.box.hi[2] = setup.max_diameter();
   setup.box.periodic = {true, false, false};
@@ -563,6 +612,10 @@ const Key kInflowKeys[] = {
     {"area_fraction", "number",
      [](TableReader& r, Reading& st, const std::string& k) {
        const double phi = st.s.inflow.area_fraction = r.positive(k);
+       if (phi < kMinAreaFraction)
+         fail(r.key(k), fmt::format("{}", phi),
+              fmt::format("must be at least {}: a gas that dilute leaves the field bins empty",
+                          kMinAreaFraction));
        if (phi > kMaxInflowAreaFraction)
          fail(r.key(k), fmt::format("{}", phi),
               fmt::format("must be in (0, {}]: random insertion in the strip reaches about 0.42 "
@@ -576,7 +629,7 @@ const Key kInflowKeys[] = {
      }},
     {"velocity", "number (m/s)",
      [](TableReader& r, Reading& st, const std::string& k) {
-       st.s.inflow.speed_m_per_s = r.positive(k);
+       st.s.inflow.speed_m_per_s = r.number_within(k, kSpeed.lo, kSpeed.hi, {}, kSpeed.why);
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.s.inflow.speed_m_per_s);
@@ -587,13 +640,15 @@ const Key kInflowKeys[] = {
        if (r.has(k) == r.has("mach"))
          fail("inflow.sigma / inflow.mach", "(both or neither)",
               "give exactly one: sigma (m/s) or mach");
-       if (r.has(k)) st.s.inflow.sigma_m_per_s = r.number_in(k, 0, INFINITY, false, true);
+       if (r.has(k))
+         st.s.inflow.sigma_m_per_s = r.number_within(k, kSigma.lo, kSigma.hi, {}, kSigma.why);
      },
      [](const Writing& w, toml::table& t, const std::string& k) { t.insert(k, w.s.inflow.sigma); }},
     // Resolved into inflow.sigma (resolve_inflow), which carries it into the resolved scene.
     {"mach", "number",
      [](TableReader& r, Reading& st, const std::string& k) {
-       if (r.has(k)) st.s.inflow.target_mach = r.positive(k);
+       if (r.has(k))
+         st.s.inflow.target_mach = r.number_within(k, kMach.lo, kMach.hi, {}, kMach.why);
      },
      [](const Writing&, toml::table&, const std::string&) {}},
     // Where the Mach number is meant (docs/fields.md, "Three upstream Mach numbers"). Like
@@ -612,7 +667,8 @@ const Key kInflowKeys[] = {
        const double strip = st.s.inflow.strip_m = r.length(k, 2 * st.s.d_m);
        if (strip < st.s.setup.max_diameter() || strip >= st.s.setup.box.hi[1])
          fail(r.key(k), fmt::format("{} m", strip),
-              "must be at least one diameter and shorter than the domain");
+              fmt::format("must be at least one diameter and shorter than domain.length ({} m)",
+                          st.s.setup.box.hi[1]));
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.s.inflow.strip_m);
@@ -626,6 +682,13 @@ const Key kObstacleKeys[] = {
     {"diameter", "length",
      [](TableReader& r, Reading& st, const std::string& k) {
        st.obstacle.diameter_m = r.positive_length(k);
+       // The contact law treats the cylinder as a wall of infinite radius
+       // (core/pair_properties.hpp).
+       if (st.obstacle.diameter_m < st.s.setup.max_diameter())
+         fail(r.key(k), fmt::format("{} m", st.obstacle.diameter_m),
+              fmt::format("must be at least the largest particle diameter ({} m): the contact "
+                          "law treats the cylinder as a wall",
+                          st.s.setup.max_diameter()));
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.s.setup.obstacle->diameter_m);
@@ -681,7 +744,10 @@ const Key kTimeKeys[] = {
     {"production_start", "number (s)",
      [](TableReader& r, Reading& st, const std::string& k) {
        const double duration = st.s.run.duration_s;
-       st.s.run.production_start_s = r.number_in(k, 0, duration, false, true, 0.5 * duration);
+       const double start = st.s.run.production_start_s = r.number(k, 0.5 * duration);
+       if (!(start >= 0 && start < duration))
+         fail(r.key(k), fmt::format("{}", start),
+              fmt::format("must be in [0, {}): before the end of time.duration", duration));
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.s.run.production_start_s);
@@ -715,7 +781,8 @@ const Key kOutputKeys[] = {
      }},
     {"progress_interval", "number (s)",
      [](TableReader& r, Reading& st, const std::string& k) {
-       st.s.run.progress_interval_s = r.positive(k, 2.0);
+       st.s.run.progress_interval_s = r.number_within(k, kProgressInterval.lo, kProgressInterval.hi,
+                                                      2.0, kProgressInterval.why);
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.s.run.progress_interval_s);

@@ -45,7 +45,7 @@ void add_collide_command(CLI::App& app, granshock::CollisionOptions& o, std::str
       ->required();
   cmd->add_option("--speed", o.speed_m_per_s, "relative normal impact speed (m/s)")->required();
   cmd->add_option("--dt", o.dt, "time step (s); default t_c/100");
-  cmd->add_option("--e", o.restitution, "coefficient of restitution, in (0, 1]; default 0.5");
+  cmd->add_option("--e", o.restitution, "coefficient of restitution, in [0.01, 1]; default 0.5");
   cmd->add_option("--model", model, "contact law: hertz (default) | hooke")
       ->check(CLI::IsMember({"hertz", "hooke"}));
   cmd->add_option("--characteristic-velocity", o.characteristic_velocity,

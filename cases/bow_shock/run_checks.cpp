@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "field_sampling_check.hpp"
+#include "run_summary.hpp"
 #include "user_error.hpp"
 
 namespace granshock {
@@ -16,6 +17,20 @@ void refuse_count(const char* key, double count, const char* what, double limit)
       fmt::format("scene key '{}': the run would {} {:.3g} times, more than the "
                   "{:.3g} granshock allows; choose a larger value",
                   key, what, count, limit));
+}
+
+// summary.json measures every pair's restitution at the run's dt (run_summary.hpp); a pair
+// whose collision cannot be measured there once ran the whole simulation and then ended
+// without a summary. The same collisions, before anything runs.
+void check_effective_restitution(const Scene& s) {
+  try {
+    effective_restitution_table(s);
+  } catch (const UserError& e) {
+    throw UserError(fmt::format(
+        "scene keys 'contact.restitution' / 'time.dt': the effective restitution of the pairs "
+        "at this step cannot be measured, as summary.json must: {}",
+        e.what()));
+  }
 }
 
 }  // namespace
@@ -42,7 +57,8 @@ std::vector<std::string> check_scene_before_run(const Scene& s, bool force) {
   const double steps = s.run.duration_s / s.setup.dt;
   if (steps < 1)
     throw UserError(
-        fmt::format("scene key 'time.duration' = {:g} s: shorter than one time step ({:g} s)",
+        fmt::format("scene keys 'time.duration' / 'time.dt' = {:g} s / {:g} s: shorter than one "
+                    "time step",
                     s.run.duration_s, s.setup.dt));
   if (!(steps <= RunLimits::max_steps))
     throw UserError(fmt::format(
@@ -91,6 +107,7 @@ std::vector<std::string> check_scene_before_run(const Scene& s, bool force) {
   if (overlap.verdict == Verdict::refuse && !force) throw UserError(overlap.message);
   if (overlap.verdict != Verdict::ok) warnings.push_back(overlap.message);
   validate_field_sampling(s);  // before any output: no hours spent on empty fields
+  check_effective_restitution(s);
   return warnings;
 }
 

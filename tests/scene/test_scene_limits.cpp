@@ -8,6 +8,7 @@
 #include <cstring>
 #include <string>
 
+#include "head_on_collision.hpp"
 #include "run_summary.hpp"
 #include "scene_file.hpp"
 #include "scene_fixtures.hpp"
@@ -101,6 +102,10 @@ TEST(SceneLimits, EachSummaryCollisionHoldsItsOwnPairAlone) {
   EXPECT_EQ(many_table.size(), std::size_t(12 * 13 / 2 + 12));
   for (const char* pair : {"s0-s0", "s0-s1", "s1-s1", "s0-obstacle", "s1-obstacle"})
     EXPECT_EQ(many_table[pair], two_table[pair]) << pair;
+  // The table collides on the serial backend: the same numbers as the default one's.
+  const CollisionResult r =
+      collide_species(many.setup, 5, 8, many.inflow.speed_m_per_s, many.setup.dt, true);
+  EXPECT_EQ(many_table["s5-s8"]["at_inflow_speed"]["e_eff"].get<double>(), r.e_eff);
 }
 
 }  // namespace
