@@ -11,6 +11,7 @@
 #include <string>
 #include <string_view>
 
+#include "allocation_failure.hpp"
 #include "build_info.hpp"
 #include "device/kokkos_runtime.hpp"
 #include "failure_agreement.hpp"
@@ -308,6 +309,9 @@ int main(int argc, char** argv) {
         "granshock: error: not enough memory (" + one_line(e.what()) + "); make the scene smaller",
         false);
   } catch (const std::exception& e) {
+    // Kokkos reports an allocation it could not make as a runtime_error.
+    if (const auto memory = granshock::allocation_failure(e.what()))
+      return leave(2, "granshock: error: " + *memory, false);
     return leave(3, std::string("granshock: internal error: ") + e.what(), false);
   }
   return 0;

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "field_sampling_check.hpp"
+#include "run_memory.hpp"
 #include "run_summary.hpp"
 #include "user_error.hpp"
 
@@ -52,7 +53,7 @@ double expected_insertions(const Scene& s) {
   return s.inflow.area_fraction * width * streamwise / disk;
 }
 
-std::vector<std::string> check_scene_before_run(const Scene& s, bool force) {
+std::vector<std::string> check_scene_before_run(const Scene& s, bool force, int processes) {
   std::vector<std::string> warnings;
   const double steps = s.run.duration_s / s.setup.dt;
   if (steps < 1)
@@ -107,6 +108,10 @@ std::vector<std::string> check_scene_before_run(const Scene& s, bool force) {
   if (overlap.verdict == Verdict::refuse && !force) throw UserError(overlap.message);
   if (overlap.verdict != Verdict::ok) warnings.push_back(overlap.message);
   validate_field_sampling(s);  // before any output: no hours spent on empty fields
+  // Where the available memory cannot be read (no /proc), nothing is refused; an allocation
+  // that fails then ends the run as "not enough memory" (apps/granshock/main.cpp).
+  if (const auto available = available_memory_bytes())
+    check_run_memory(s, estimate_run_memory(s, processes), *available);
   check_effective_restitution(s);
   return warnings;
 }
