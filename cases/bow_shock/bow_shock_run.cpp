@@ -96,7 +96,7 @@ int BowShockRun::execute() {
 // The scene's checks and calibrations, the directory's check and the solver.
 void BowShockRun::prepare() {
   dir_ = run_directory_of(options_, scene_);
-  std::vector<std::string> warnings = check_scene_before_run(scene_, options_.force);
+  std::vector<std::string> warnings = check_scene_before_run(scene_, options_.force, comm_.size());
   mode_ = options_.resume      ? DirectoryMode::resume
           : options_.overwrite ? DirectoryMode::overwrite
                                : DirectoryMode::create;
@@ -106,7 +106,7 @@ void BowShockRun::prepare() {
   // ratio and on the fastest impact.
   const bool damping_calibrated = calibrate_restitution();
   if (calibrate_inflow() || damping_calibrated)
-    warnings = check_scene_before_run(scene_, options_.force);
+    warnings = check_scene_before_run(scene_, options_.force, comm_.size());
   if (root_)
     for (const std::string& w : warnings) std::cerr << "granshock: warning: " << w << "\n";
 
@@ -246,7 +246,12 @@ long BowShockRun::agreed_next_step(long step) {
 
 void BowShockRun::start_fresh() {
   solver_->set_particles(HostParticles{});
-  inflow_.prefill(*solver_);
+  // A large prefill takes minutes: its progress, in the run's form (progress_meter.hpp).
+  ProgressMeter prefill(0, 0, scene_.run.progress_interval_s);
+  inflow_.prefill(*solver_, [&](long done, long slabs) {
+    if (root_ && !options_.quiet && prefill.due())
+      prefill.report_prefill(done, slabs, long(inflow_.inserted()));
+  });
   actions_at(0);
 }
 
