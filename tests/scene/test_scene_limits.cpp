@@ -9,6 +9,7 @@
 #include <string>
 
 #include "head_on_collision.hpp"
+#include "run_checks.hpp"
 #include "run_summary.hpp"
 #include "scene_file.hpp"
 #include "scene_fixtures.hpp"
@@ -106,6 +107,27 @@ TEST(SceneLimits, EachSummaryCollisionHoldsItsOwnPairAlone) {
   const CollisionResult r =
       collide_species(many.setup, 5, 8, many.inflow.speed_m_per_s, many.setup.dt, true);
   EXPECT_EQ(many_table["s5-s8"]["at_inflow_speed"]["e_eff"].get<double>(), r.e_eff);
+}
+
+// A pair whose restitution summary.json cannot measure at the run's dt (e = 1e-6 stays in
+// contact past the collision's bound) ran the whole simulation, then ended without a
+// summary. The same measurement is made before the run (here on a scene the schema's range
+// would refuse, to reach it).
+TEST(SceneLimits, APairSummaryCannotMeasureIsRefusedBeforeTheRun) {
+  Scene s = parse_scene(small_scene()).scene;
+  s.setup.contacts = ContactSettings::uniform(2, 1e-6, 0.0);
+  try {
+    check_scene_before_run(s, false);
+    FAIL() << "accepted";
+  } catch (const UserError& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(what.rfind("scene keys 'contact.restitution' / 'time.dt': the effective "
+                         "restitution of the pairs at this step cannot be measured",
+                         0),
+              0u)
+        << what;
+    EXPECT_NE(what.find("did not complete within"), std::string::npos) << what;
+  }
 }
 
 }  // namespace
