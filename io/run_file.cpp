@@ -17,6 +17,7 @@
 #include "file_room.hpp"
 #include "hdf5_helpers.hpp"
 #include "run_file_growth.hpp"
+#include "regular_file.hpp"
 #include "user_error.hpp"
 #include "version.hpp"
 
@@ -248,6 +249,7 @@ Handle open_existing(const fs::path& path, unsigned flags, const char* doing) {
   if (!fs::exists(path, ec)) {
     throw UserError(std::string("cannot ") + doing + " '" + path.string() + "': no such file");
   }
+  require_regular_file(path, "run file");  // HDF5 would block on a FIFO
   const hid_t id = H5Fopen(path.c_str(), flags, H5P_DEFAULT);
   if (id < 0) {
     throw UserError(std::string("cannot ") + doing + " '" + path.string() +

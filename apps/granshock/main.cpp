@@ -12,6 +12,7 @@
 #include <string>
 #include <string_view>
 
+#include "allocation_failure.hpp"
 #include "build_info.hpp"
 #include "device/kokkos_runtime.hpp"
 #include "failure_agreement.hpp"
@@ -47,7 +48,7 @@ void add_collide_command(CLI::App& app, granshock::CollisionOptions& o, std::str
       ->required();
   cmd->add_option("--speed", o.speed_m_per_s, "relative normal impact speed (m/s)")->required();
   cmd->add_option("--dt", o.dt, "time step (s); default t_c/100");
-  cmd->add_option("--e", o.restitution, "coefficient of restitution, in (0, 1]; default 0.5");
+  cmd->add_option("--e", o.restitution, "coefficient of restitution, in [0.01, 1]; default 0.5");
   cmd->add_option("--model", model, "contact law: hertz (default) | hooke")
       ->check(CLI::IsMember({"hertz", "hooke"}));
   cmd->add_option("--characteristic-velocity", o.characteristic_velocity,
@@ -346,6 +347,9 @@ int main(int argc, char** argv) {
         "granshock: error: not enough memory (" + one_line(e.what()) + "); make the scene smaller",
         false);
   } catch (const std::exception& e) {
+    // Kokkos reports an allocation it could not make as a runtime_error.
+    if (const auto memory = granshock::allocation_failure(e.what()))
+      return leave(2, "granshock: error: " + *memory, false);
     return leave(3, std::string("granshock: internal error: ") + e.what(), false);
   }
   return 0;

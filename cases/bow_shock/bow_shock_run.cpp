@@ -161,7 +161,7 @@ std::string BowShockRun::what_survives() {
 void BowShockRun::prepare() {
   dir_ = run_directory_of(options_, scene_);
   throw_if_interrupted();
-  std::vector<std::string> warnings = check_scene_before_run(scene_, options_.force);
+  std::vector<std::string> warnings = check_scene_before_run(scene_, options_.force, comm_.size());
   mode_ = options_.resume      ? DirectoryMode::resume
           : options_.overwrite ? DirectoryMode::overwrite
                                : DirectoryMode::create;
@@ -172,7 +172,7 @@ void BowShockRun::prepare() {
   const bool damping_calibrated = calibrate_restitution();
   throw_if_interrupted();
   if (calibrate_inflow() || damping_calibrated)
-    warnings = check_scene_before_run(scene_, options_.force);
+    warnings = check_scene_before_run(scene_, options_.force, comm_.size());
   if (root_)
     for (const std::string& w : warnings) std::cerr << "granshock: warning: " << w << "\n";
 
@@ -320,11 +320,15 @@ long BowShockRun::agreed_next_step(long step) {
 
 void BowShockRun::start_fresh() {
   solver_->set_particles(HostParticles{});
-  // A large prefill takes minutes: a signal stops it between slabs, on every rank at the
-  // same slab (the insertion is collective).
-  inflow_.prefill(*solver_, [&] {
+  // A large prefill takes minutes: its progress, in the run's form (progress_meter.hpp),
+  // and a signal stops it between slabs, on every rank at the same slab (the insertion is
+  // collective).
+  ProgressMeter prefill(0, 0, scene_.run.progress_interval_s);
+  inflow_.prefill(*solver_, [&](long done, long slabs) {
     if (const int signal = int(comm_.max(double(interrupt_signal()))); signal != 0)
       throw Interrupted(signal);
+    if (root_ && !options_.quiet && prefill.due())
+      prefill.report_prefill(done, slabs, long(inflow_.inserted()));
   });
   actions_at(0);
 }

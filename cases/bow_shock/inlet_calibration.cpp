@@ -95,7 +95,7 @@ InletMach measure_inlet_mach(const Scene& scene, double sigma) {
   InflowController inflow(c);
   const std::unique_ptr<Solver> solver = make_solver(c.setup, c.capacity_estimate());
   solver->set_particles(HostParticles{});
-  inflow.prefill(*solver, throw_if_interrupted);
+  inflow.prefill(*solver, [](long, long) { throw_if_interrupted(); });
   inflow.insert_if_due(*solver, 0);
   const long total = c.total_steps();
   const long first = long(std::llround(c.run.production_start_s / c.setup.dt));
