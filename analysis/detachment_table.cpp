@@ -59,28 +59,45 @@ DetachmentRow detachment_row(const std::filesystem::path& run_dir, const FieldAn
 
 void write_detachment_table(const std::filesystem::path& out_dir,
                             const std::vector<DetachmentRow>& rows) {
-  std::string csv =
-      "run,D_over_d,ma_inf_target,ma_inf_measured,ma_inf_measured_downstream,delta_over_D,"
-      "delta_over_D_err,phi_peak,shock_angle_deg,phi_inf_deviation,delta_over_D_reason,"
-      "delta_over_D_err_reason,shock_angle_deg_reason,inflow_warning";
-  for (FrontDefinition d : kFrontDefinitions)
-    csv += std::string(",delta_over_D_") + name(d) + ",delta_over_D_" + name(d) + "_err";
-  csv += ",delta_over_D_consistent,delta_over_D_spread,delta_over_D_verdict\n";
+  std::vector<std::string> header = {"run",
+                                     "D_over_d",
+                                     "ma_inf_target",
+                                     "ma_inf_measured",
+                                     "ma_inf_measured_downstream",
+                                     "delta_over_D",
+                                     "delta_over_D_err",
+                                     "phi_peak",
+                                     "shock_angle_deg",
+                                     "phi_inf_deviation",
+                                     "delta_over_D_reason",
+                                     "delta_over_D_err_reason",
+                                     "shock_angle_deg_reason",
+                                     "inflow_warning"};
+  for (FrontDefinition d : kFrontDefinitions) {
+    header.push_back(std::string("delta_over_D_") + name(d));
+    header.push_back(std::string("delta_over_D_") + name(d) + "_err");
+  }
+  for (const char* n : {"delta_over_D_consistent", "delta_over_D_spread", "delta_over_D_verdict"})
+    header.push_back(n);
+  std::string csv = csv_header(header);
   nlohmann::json table = nlohmann::json::array();
   for (const DetachmentRow& r : rows) {
-    csv += csv_text(r.run);
+    std::vector<std::string> cells = {csv_text(r.run)};
     for (double v :
          {r.d_over_particle, r.ma_inf_target, r.ma_inf_measured, r.ma_inf_measured_downstream,
           r.delta_over_D, r.delta_over_D_err, r.phi_peak, r.shock_angle_deg, r.phi_inf_deviation})
-      csv += "," + csv_number(v);
+      cells.push_back(csv_number(v));
     for (const std::string* text : {&r.delta_over_D_reason, &r.delta_over_D_err_reason,
                                     &r.shock_angle_deg_reason, &r.inflow_warning})
-      csv += "," + (text->empty() ? std::string() : csv_text(*text));
-    for (std::size_t k = 0; k < kFrontDefinitions.size(); ++k)
-      csv += "," + csv_number(r.by_definition[k]) + "," + csv_number(r.by_definition_err[k]);
-    csv += "," + csv_number(r.consistent) + "," + csv_number(r.spread) + "," +
-           (r.verdict.empty() ? std::string() : csv_text(r.verdict));
-    csv += "\n";
+      cells.push_back(text->empty() ? std::string() : csv_text(*text));
+    for (std::size_t k = 0; k < kFrontDefinitions.size(); ++k) {
+      cells.push_back(csv_number(r.by_definition[k]));
+      cells.push_back(csv_number(r.by_definition_err[k]));
+    }
+    cells.push_back(csv_number(r.consistent));
+    cells.push_back(csv_number(r.spread));
+    cells.push_back(r.verdict.empty() ? std::string() : csv_text(r.verdict));
+    csv += csv_line(cells);
     table.push_back({{"run", r.run},
                      {"D_over_d", json_number(r.d_over_particle)},
                      {"ma_inf_target", json_number(r.ma_inf_target)},

@@ -4,14 +4,17 @@
 #include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 
 #include "bin_sums.hpp"
 #include "detachment_table.hpp"
 #include "field_analysis.hpp"
 #include "field_sums_file.hpp"
+#include "fields_directory.hpp"
 #include "fields_output.hpp"
 #include "figures.hpp"
+#include "json_file.hpp"
 #include "run_file.hpp"
 #include "summary_json.hpp"
 #include "user_error.hpp"
@@ -32,20 +35,11 @@ struct RunTarget {
 RunTarget target_mach(const fs::path& summary, double nominal) {
   std::error_code ec;
   if (!fs::exists(summary, ec)) return {nominal, false};
-  std::ifstream in(summary);
-  std::stringstream text;
-  text << in.rdbuf();
-  const nlohmann::json j = nlohmann::json::parse(text.str(), nullptr, false);
+  const nlohmann::json j = read_json_file(summary, "summary").value;
   if (!j.is_object() || !j.contains("ma_inf_target") || !j["ma_inf_target"].is_number())
     return {nominal, false};
   const bool at_inlet = j.contains("inflow_mach_at") && j["inflow_mach_at"] == "inlet_bins";
   return {j["ma_inf_target"].get<double>(), at_inlet};
-}
-
-void make_directory(const fs::path& dir) {
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec) throw UserError("cannot create '" + dir.string() + "': " + ec.message());
 }
 
 std::string number(double v, int digits) {
@@ -80,6 +74,43 @@ std::string result_line(const Done& d) {
   return line + "; results in " + d.dest.string();
 }
 
+bool same_directory(const fs::path& a, const fs::path& b) {
+  std::error_code ec;
+  return fs::equivalent(a, b, ec) && !ec;
+}
+
+// Each DIR holds a run file, and no directory is given twice (it would be claimed twice).
+void check_run_directories(const std::vector<fs::path>& run_dirs) {
+  for (std::size_t i = 0; i < run_dirs.size(); ++i) {
+    const fs::path run_file = run_dirs[i] / "run.h5";
+    std::error_code ec;
+    const fs::file_status status = fs::status(run_file, ec);
+    if (!fs::exists(status))
+      throw UserError("'" + run_file.string() +
+                      "' does not exist: granshock fields analyses the run.h5 of a run directory");
+    if (!fs::is_regular_file(status))
+      throw UserError("'" + run_file.string() + "' is not a regular file");
+    for (std::size_t j = 0; j < i; ++j)
+      if (same_directory(run_dirs[i], run_dirs[j]))
+        throw UserError("run directory '" + run_dirs[i].string() + "' is given twice (as '" +
+                        run_dirs[j].string() + "')");
+  }
+}
+
+// A run directory that is only read (its analysis goes to --out) must not be in the
+// middle of being written by a run.
+void refuse_if_being_written(const fs::path& dir) {
+  const std::optional<DirectoryMarker> marker = read_marker(dir, kRunMarker);
+  if (marker && locked_by_another(dir, kRunMarker))
+    throw UserError("run directory '" + dir.string() + "' is in use by another granshock run" +
+                    (marker->pid > 0 ? " (pid " + std::to_string(marker->pid) + ")" : "") +
+                    "; wait for it to end, then try again");
+}
+
+bool held_by_caller(const FieldsCommandOptions& o, const fs::path& dir) {
+  return o.held != nullptr && same_directory(o.held->path(), dir);
+}
+
 }  // namespace
 
 bool run_has_field_sums(const fs::path& run_dir) {
@@ -106,28 +137,50 @@ int fields_command(const std::vector<fs::path>& run_dirs, const fs::path& out,
     throw UserError(
         "granshock fields with " + std::to_string(run_dirs.size()) +
         " run directories needs --out DIR for their comparison (detachment table and figure)");
-  // Every run is checked before anything is written.
+  check_run_directories(run_dirs);
+  // Each run's analysis goes into its own run directory, or (one run) into OUT; OUT takes
+  // the comparison of several (docs/output_format.md, "The fields directory").
+  const bool in_place = several || out.empty() || same_directory(out, run_dirs[0]);
+  const bool writes_out = !in_place || several;
+  const FieldsOutput out_kind = several ? FieldsOutput::comparison : FieldsOutput::one_run;
+
+  // Every directory is checked, every run analysed and every summary read before
+  // anything is written.
+  for (const fs::path& dir : run_dirs) {
+    if (!in_place)
+      refuse_if_being_written(dir);
+    else if (!held_by_caller(o, dir))
+      RunDirectory::check(dir, DirectoryMode::fields);
+  }
+  if (writes_out) FieldsDirectory::check(out, out_kind);
   std::vector<FieldAnalysis> analyses;
   for (const fs::path& dir : run_dirs) analyses.push_back(analyse_run_file(dir / "run.h5"));
+  std::vector<nlohmann::json> summaries;
+  for (const fs::path& dir : run_dirs) summaries.push_back(read_summary_json(dir / "summary.json"));
+
+  // Then claimed: each is locked until the figures are drawn.
+  std::vector<RunDirectory> claimed;
+  for (const fs::path& dir : run_dirs)
+    if (in_place && !held_by_caller(o, dir))
+      claimed.push_back(RunDirectory::claim(dir, DirectoryMode::fields));
+  std::optional<FieldsDirectory> out_dir;
+  if (writes_out) out_dir.emplace(FieldsDirectory::claim(out, out_kind));
 
   std::vector<Done> done;
   for (std::size_t i = 0; i < run_dirs.size(); ++i) {
     const fs::path& dir = run_dirs[i];
-    const fs::path dest = (!several && !out.empty()) ? out : dir;
-    make_directory(dest);
+    const fs::path dest = in_place ? dir : out;
     const RunTarget target = target_mach(dir / "summary.json", analyses[i].ma_target);
     set_target_mach(analyses[i], target.mach, target.at_inlet);
     write_fields_outputs(analyses[i], dest);
     const nlohmann::json keys = summary_keys(analyses[i]);
-    std::error_code ec;
-    if (dest != dir && fs::exists(dir / "summary.json", ec) &&
-        !fs::exists(dest / "summary.json", ec))
-      fs::copy_file(dir / "summary.json", dest / "summary.json", ec);
-    merge_summary_json(dest / "summary.json", keys);
+    if (in_place)
+      merge_summary_json(dest / "summary.json", keys);  // read again, under the lock
+    else
+      write_summary_json(dest / "summary.json", summaries[i], keys);
     done.push_back({dir, dest, detachment_row(dir, analyses[i], target.mach)});
   }
   if (several) {
-    make_directory(out);
     std::vector<DetachmentRow> rows;
     for (const Done& d : done) rows.push_back(d.row);
     write_detachment_table(out, rows);

@@ -5,11 +5,16 @@
 #include <filesystem>
 #include <vector>
 
+#include "run_directory.hpp"
+
 namespace granshock {
 
 struct FieldsCommandOptions {
   bool figures = true;  // draw the PNG figures (needs Python with matplotlib)
   bool quiet = false;   // no result line on stdout
+  // The run directory the caller has claimed already (`granshock run` analysing its own
+  // run at its end): written under the caller's lock instead of taking it again.
+  const RunDirectory* held = nullptr;
 };
 
 // For each run directory DIR: reads DIR/run.h5, writes fields.h5, fields.xmf,
@@ -17,10 +22,16 @@ struct FieldsCommandOptions {
 // non-empty `out`, in `out`, starting from DIR/summary.json). With several directories it
 // also writes the comparison of their detachment lengths (the paper's Fig. 6) into `out`:
 // detachment.csv, detachment.json and figures/detachment_length.png; `out` is then
-// required. The files that do not need Python are written before the figures, so that a
-// missing matplotlib costs only the PNGs. An inflow that misses its target phi_inf is a
-// warning on stderr (docs/fields.md, section 10), printed also when `quiet`. Returns 0; throws
-// UserError for bad input (no run.h5, no field sums, several DIRs without `out`, no matplotlib).
+// required. Directories follow the rules of docs/output_format.md: DIR is written only
+// when granshock marked it as a run directory, under its lock; `out` must be new, empty,
+// or a directory `granshock fields` made (or, for a comparison, a study directory); every
+// output is a file granshock creates itself. All of that, the runs and their summaries
+// are checked before anything is written. The files that do not need Python are written
+// before the figures, so that a missing matplotlib costs only the PNGs. An inflow that
+// misses its target phi_inf is a warning on stderr (docs/fields.md, section 10), printed
+// also when `quiet`. Returns 0; throws UserError for bad input (no run.h5, no field sums,
+// a summary.json that is not a JSON object, a directory it may not write, several DIRs
+// without `out`, no matplotlib).
 int fields_command(const std::vector<std::filesystem::path>& run_dirs,
                    const std::filesystem::path& out);
 // The same, without figures or without the result line on stdout.

@@ -201,16 +201,20 @@ FieldsFileContent fields_file_content(const FieldAnalysis& a) {
 }
 
 std::string convergence_csv(const FieldAnalysis& a) {
-  std::string csv = "choice,kind,size_d";
-  for (FrontDefinition d : kFrontDefinitions)
-    csv += std::string(",") + name(d) + "," + name(d) + "_err";
-  csv += "\n";
+  std::vector<std::string> header = {"choice", "kind", "size_d"};
+  for (FrontDefinition d : kFrontDefinitions) {
+    header.push_back(name(d));
+    header.push_back(std::string(name(d)) + "_err");
+  }
+  std::string csv = csv_header(header);
   for (const ConvergenceChoice& c : a.convergence.choices) {
-    csv +=
-        csv_text(c.label) + "," + c.kind + "," + csv_number(c.kind == "window" ? kNaN : c.size_d);
-    for (const Detachment& d : c.result)
-      csv += "," + csv_number(d.delta_over_d) + "," + csv_number(d.delta_over_d_err);
-    csv += "\n";
+    std::vector<std::string> cells = {csv_text(c.label), csv_name(c.kind),
+                                      csv_number(c.kind == "window" ? kNaN : c.size_d)};
+    for (const Detachment& d : c.result) {
+      cells.push_back(csv_number(d.delta_over_d));
+      cells.push_back(csv_number(d.delta_over_d_err));
+    }
+    csv += csv_line(cells);
   }
   return csv;
 }

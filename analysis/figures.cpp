@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "atomic_file.hpp"
 #include "user_error.hpp"
 
 extern char** environ;
@@ -98,11 +99,15 @@ void require_plotting_python() {
     throw UserError(python.string() + " cannot import matplotlib, h5py and numpy" + install);
 }
 
+// The figures' directory is one granshock makes itself, never a link to elsewhere; the
+// scripts write each PNG under a new temporary name and rename it (figure_files.py).
 void plot_run_figures(const fs::path& fields_h5, const fs::path& figures_dir) {
+  make_real_directory(figures_dir);
   run_figure_script(figure_script("plot_fields.py"), {fields_h5.string(), figures_dir.string()});
 }
 
 void plot_detachment_figure(const fs::path& table_json, const fs::path& png) {
+  make_real_directory(png.parent_path());
   run_figure_script(figure_script("plot_detachment.py"), {table_json.string(), png.string()});
 }
 

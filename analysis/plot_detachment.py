@@ -9,7 +9,8 @@ cylindrical-nosed bodies", J. Spacecraft Rockets 4 (1967) 822-823), at each Ma_i
 Usage: plot_detachment.py DETACHMENT_JSON OUT_PNG
 
 DETACHMENT_JSON is the table `granshock fields DIR... --out OUT` writes
-(OUT/detachment.json). Runs are grouped by their target Ma_inf (rounded to 3 significant
+(OUT/detachment.json). OUT_PNG is written whole and never through a symbolic link
+(figure_files.py). Runs are grouped by their target Ma_inf (rounded to 3 significant
 digits). Needs matplotlib (Debian: python3-matplotlib).
 """
 import json
@@ -22,6 +23,8 @@ import matplotlib
 matplotlib.use("Agg")  # files only, no display
 
 import matplotlib.pyplot as plt  # noqa: E402
+
+from figure_files import FigureDirectory  # noqa: E402
 
 
 def number(value):
@@ -94,8 +97,9 @@ def main():
         ax.set_ylabel("$\\delta$ / D")
     if axes[0, 0].get_legend_handles_labels()[0]:
         axes[0, 0].legend(fontsize=7)
-    os.makedirs(os.path.dirname(os.path.abspath(sys.argv[2])), exist_ok=True)
-    fig.savefig(sys.argv[2], dpi=150)
+    directory, name = os.path.split(os.path.abspath(sys.argv[2]))
+    with FigureDirectory(directory) as figures:
+        figures.save(fig, name, dpi=150)
     plt.close(fig)
     return 0
 

@@ -6,10 +6,11 @@ shock front over the Mach field), and the stagnation-line profiles of phi, T and
 
 Usage: plot_fields.py FIELDS_H5 FIGURES_DIR
 
-Writes FIGURES_DIR/{solid_fraction,temperature,mach,stagnation_profiles}.png. Needs
+Writes FIGURES_DIR/{solid_fraction,temperature,mach,stagnation_profiles}.png, each whole
+and never through a symbolic link (figure_files.py); FIGURES_DIR is created when absent
+and must not be a link. Needs
 numpy, h5py and matplotlib (Debian: python3-numpy python3-h5py python3-matplotlib).
 """
-import os
 import sys
 import textwrap
 
@@ -22,6 +23,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.colors import LogNorm  # noqa: E402
 from matplotlib.patches import Circle, Rectangle  # noqa: E402
+
+from figure_files import FigureDirectory  # noqa: E402
 
 
 def read_lines(f, name):
@@ -88,7 +91,7 @@ class Run:
         return ", ".join(parts)
 
 
-def field_figure(run, values, label, title, path, norm=None, cmap="viridis", lines=()):
+def field_figure(run, values, label, title, figures, png, norm=None, cmap="viridis", lines=()):
     """One field on the bin grid; masked (NaN) bins show a hatched background."""
     width = run.x_nodes[-1] - run.x_nodes[0]
     height = run.y_nodes[-1] - run.y_nodes[0]
@@ -123,7 +126,7 @@ def field_figure(run, values, label, title, path, norm=None, cmap="viridis", lin
     elif np.isnan(values).any():
         ax.text(1.0, -0.06, "hatched: masked bins (too few particles)", transform=ax.transAxes,
                 ha="right", va="top", fontsize=7, color="0.3")
-    fig.savefig(path, dpi=150)
+    figures.save(fig, png, dpi=150)
     plt.close(fig)
 
 
@@ -145,7 +148,7 @@ FRONT_STYLES = {
 }
 
 
-def profile_figure(run, path):
+def profile_figure(run, figures, png):
     p = run.profile
     fig, axes = plt.subplots(3, 1, figsize=(6.0, 7.0), sharex=True, constrained_layout=True)
     for ax, (name, label) in zip(axes, (("phi", "$\\phi$"), ("T_norm", "$T/(m_{av}U_\\infty^2)$"),
@@ -182,7 +185,7 @@ def profile_figure(run, path):
             axes[-1].text(0.0, -0.3, textwrap.fill("delta/D n/a: " + run.delta_reason, 100),
                           transform=axes[-1].transAxes, fontsize=7, color="0.3", va="top")
     axes[0].set_title(title, fontsize=10)
-    fig.savefig(path, dpi=150)
+    figures.save(fig, png, dpi=150)
     plt.close(fig)
 
 
@@ -191,26 +194,29 @@ def main():
         print(__doc__, file=sys.stderr)
         return 2
     run = Run(sys.argv[1])
-    out = sys.argv[2]
-    os.makedirs(out, exist_ok=True)
+    with FigureDirectory(sys.argv[2]) as out:
+        draw_figures(run, out)
+    return 0
+
+
+def draw_figures(run, out):
     f = run.fields
     front_style = dict(color="w", linestyle="--", linewidth=1.0, label="shock front")
     field_figure(run, f["phi"], "solid fraction $\\phi$", run.title("Solid fraction"),
-                 os.path.join(out, "solid_fraction.png"), cmap="viridis",
+                 out, "solid_fraction.png", cmap="viridis",
                  lines=((run.front, dict(front_style, color="r")),))
     field_figure(run, f["T_norm"], "$T/(m_{av}U_\\infty^2)$", run.title("Granular temperature"),
-                 os.path.join(out, "temperature.png"), norm=positive_norm(f["T_norm"]), cmap="inferno")
+                 out, "temperature.png", norm=positive_norm(f["T_norm"]), cmap="inferno")
     ma = f["Ma"]
     finite = ma[np.isfinite(ma)]
     # The 95th percentile: a few sparse, cold bins (in the wake) can have a huge Ma.
     vmax = np.percentile(finite, 95) if finite.size else 1.0
     field_figure(run, ma, f"Ma ({run.mass_definition})", run.title("Mach number"),
-                 os.path.join(out, "mach.png"), cmap="coolwarm",
+                 out, "mach.png", cmap="coolwarm",
                  norm=matplotlib.colors.TwoSlopeNorm(vmin=0.0, vcenter=1.0, vmax=max(vmax, 2.0)),
                  lines=((run.sonic, dict(color="k", linewidth=1.4, label="sonic line Ma = 1")),
                         (run.front, front_style)))
-    profile_figure(run, os.path.join(out, "stagnation_profiles.png"))
-    return 0
+    profile_figure(run, out, "stagnation_profiles.png")
 
 
 if __name__ == "__main__":

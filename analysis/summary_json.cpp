@@ -1,31 +1,34 @@
 #include "summary_json.hpp"
 
-#include <fstream>
-#include <sstream>
-
 #include "atomic_file.hpp"
+#include "json_file.hpp"
 #include "user_error.hpp"
 
 namespace granshock {
 
-void merge_summary_json(const std::filesystem::path& path, const nlohmann::json& keys) {
-  nlohmann::json merged = nlohmann::json::object();
+nlohmann::json read_summary_json(const std::filesystem::path& path) {
   std::error_code ec;
-  if (std::filesystem::exists(path, ec)) {
-    std::ifstream in(path);
-    if (!in) throw UserError("cannot read '" + path.string() + "'");
-    std::stringstream text;
-    text << in.rdbuf();
-    try {
-      merged = nlohmann::json::parse(text.str());
-    } catch (const nlohmann::json::parse_error& e) {
-      throw UserError("'" + path.string() + "' is not valid JSON (" + e.what() +
-                      "); move it away to start a new one");
-    }
-    if (!merged.is_object()) throw UserError("'" + path.string() + "' does not hold a JSON object");
-  }
-  for (const auto& [key, value] : keys.items()) merged[key] = value;
-  write_file_atomically(path, merged.dump(2) + "\n");
+  if (!std::filesystem::exists(std::filesystem::symlink_status(path, ec)))
+    return nlohmann::json::object();
+  // A regular file of bounded size and nesting (json_file.hpp): a FIFO or a device would
+  // block the read or never end, a file nested on purpose would overflow the parser.
+  JsonFile existing = read_json_file(path, "summary");
+  if (existing.value.is_discarded())
+    throw UserError("'" + path.string() + "' is not valid JSON (" + existing.error +
+                    "); move it away to start a new one");
+  if (!existing.value.is_object())
+    throw UserError("'" + path.string() + "' does not hold a JSON object");
+  return std::move(existing.value);
+}
+
+void merge_summary_json(const std::filesystem::path& path, const nlohmann::json& keys) {
+  write_summary_json(path, read_summary_json(path), keys);
+}
+
+void write_summary_json(const std::filesystem::path& path, nlohmann::json base,
+                        const nlohmann::json& keys) {
+  for (const auto& [key, value] : keys.items()) base[key] = value;
+  write_file_atomically(path, base.dump(2) + "\n");
 }
 
 }  // namespace granshock

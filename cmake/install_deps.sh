@@ -24,6 +24,9 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libtomlplusplus-dev libcli11-dev libfmt-dev nlohmann-json3-dev
   python3-matplotlib python3-h5py
+  # ParaView's pvbatch and an X server without a screen, for io.paraview_opens_outputs
+  # (docs/output_format.md, "What ParaView shows"): about 140 MB to download, 800 MB installed.
+  python3-paraview xvfb xauth
 )
 
 missing=()

@@ -66,6 +66,34 @@ void describe(hid_t file, const std::string& path, const std::string& unit,
   if (!description.empty()) h5::write_attribute(set.get(), "description", description);
 }
 
+// /vectors/<v.name>: the cell fields v.x and v.y as components 0 and 1 of a virtual
+// dataset [ny, nx, 3] of this file ("."); component 2 is unmapped and reads as 0.
+void write_vector_view(hid_t file, const CellVector& v, hsize_t ny, hsize_t nx) {
+  const hsize_t cells[2] = {ny, nx};
+  const hsize_t dims[3] = {ny, nx, 3};
+  Handle props = h5::plist(H5Pcreate(H5P_DATASET_CREATE), "creating dataset properties");
+  const double zero = 0;
+  h5::check(H5Pset_fill_value(props.get(), H5T_NATIVE_DOUBLE, &zero), "setting a fill value");
+  Handle source = h5::dataspace(H5Screate_simple(2, cells, nullptr), "creating a dataspace");
+  const std::string component[2] = {"/fields/" + v.x, "/fields/" + v.y};
+  for (hsize_t c = 0; c < 2; ++c) {
+    Handle target = h5::dataspace(H5Screate_simple(3, dims, nullptr), "creating a dataspace");
+    const hsize_t start[3] = {0, 0, c};
+    const hsize_t count[3] = {ny, nx, 1};
+    h5::check(H5Sselect_hyperslab(target.get(), H5S_SELECT_SET, start, nullptr, count, nullptr),
+              "selecting a component");
+    h5::check(H5Pset_virtual(props.get(), target.get(), ".", component[c].c_str(), source.get()),
+              "mapping '" + component[c] + "'");
+  }
+  Handle vectors = h5::require_group(file, "/vectors");
+  Handle space = h5::dataspace(H5Screate_simple(3, dims, nullptr), "creating a dataspace");
+  h5::dataset(H5Dcreate2(vectors.get(), v.name.c_str(), H5T_IEEE_F64LE, space.get(), H5P_DEFAULT,
+                         props.get(), H5P_DEFAULT),
+              "creating '/vectors/" + v.name + "'");
+  describe(file, "/vectors/" + v.name, "m s-1",
+           "(" + v.x + ", " + v.y + ", 0): a view of the two fields, for glyphs and stream lines");
+}
+
 void write_content(hid_t file, const FieldsFileContent& c) {
   h5::write_attribute(file, "granshock_file", "fields");
   h5::write_attribute(file, "granshock_format_version", kFormatVersion);
@@ -79,6 +107,7 @@ void write_content(hid_t file, const FieldsFileContent& c) {
     h5::write_dataset(file, "/fields/" + f.name, f.values, cells);
     describe(file, "/fields/" + f.name, "", f.description);
   }
+  for (const CellVector& v : cell_vectors(c)) write_vector_view(file, v, cells[0], cells[1]);
   for (const auto& set : c.lines) {
     std::vector<double> points;
     std::vector<long> offsets{0};
@@ -114,6 +143,22 @@ void write_content(hid_t file, const FieldsFileContent& c) {
 // The data must reach the disk before the rename does (as for checkpoints).
 
 }  // namespace
+
+std::vector<CellVector> cell_vectors(const FieldsFileContent& content) {
+  auto has = [&](const std::string& name) {
+    for (const auto& f : content.cell_fields)
+      if (f.name == name) return true;
+    return false;
+  };
+  std::vector<CellVector> vectors;
+  for (const auto& f : content.cell_fields) {
+    if (f.name.rfind("ux", 0) != 0) continue;
+    const std::string suffix = f.name.substr(2);  // "" or "_<species>"
+    if (!suffix.empty() && suffix[0] != '_') continue;
+    if (has("uy" + suffix)) vectors.push_back({"u" + suffix, f.name, "uy" + suffix});
+  }
+  return vectors;
+}
 
 void write_fields_file(const fs::path& path, const FieldsFileContent& content) {
   check_content(content);

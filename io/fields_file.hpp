@@ -50,10 +50,21 @@ struct FieldsFileContent {
   std::vector<TextAttribute> text_attributes;
 };
 
+// A cell vector that fields files show besides the scalars (docs/fields.md, "fields.xmf"):
+// /vectors/<name>, float64 [ny, nx, 3], an HDF5 virtual dataset whose components are the
+// cell fields x and y and 0 (no data copied), so that a viewer draws glyphs or stream
+// lines of the mean flow without a calculator.
+struct CellVector {
+  std::string name, x, y;
+};
+// The mean velocity u = (ux, uy, 0) and each species' u_s = (ux_s, uy_s, 0), where the
+// content has both components.
+std::vector<CellVector> cell_vectors(const FieldsFileContent& content);
+
 // Writes `path` atomically. Besides the content it writes /grid: x [nx] and y [ny] (cell
 // centres), x_nodes [nx + 1], y_nodes [ny + 1], nodes [ny + 1, nx + 1, 2] (the corner
 // coordinates the XDMF geometry refers to) and @nx, @ny, @x0, @y0, @dx, @dy; and on the
-// root @granshock_file = "fields", @granshock_format_version = 1.
+// root @granshock_file = "fields", @granshock_format_version = 1; and cell_vectors().
 // Throws std::invalid_argument when an array does not match the grid, UserError naming the
 // file when it cannot be written.
 void write_fields_file(const std::filesystem::path& path, const FieldsFileContent& content);

@@ -34,6 +34,14 @@ void write_fields_xdmf(const std::filesystem::path& xmf_path, const std::string&
   };
   for (const auto& f : c.cell_fields) attribute(f.name, "Float", 8);
   for (const auto& f : c.cell_flags) attribute(f.name, "Int", 4);
+  for (const CellVector& v : cell_vectors(c)) {
+    out << "      <Attribute Name=\"" << xml_escape(v.name)
+        << "\" AttributeType=\"Vector\" Center=\"Cell\">\n"
+        << "        <DataItem Dimensions=\"" << cells
+        << " 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << h5 << ":/vectors/"
+        << xml_escape(v.name) << "</DataItem>\n"
+        << "      </Attribute>\n";
+  }
   out << "    </Grid>\n"
       << "  </Domain>\n"
       << "</Xdmf>\n";

@@ -7,6 +7,8 @@
 
 #include <algorithm>
 
+#include "atomic_file.hpp"
+
 namespace granshock::h5 {
 
 namespace {
@@ -205,7 +207,7 @@ std::string read_string_dataset(hid_t loc, const std::string& name) {
 
 namespace {
 void sync_file(const std::filesystem::path& path) {
-  const int fd = ::open(path.c_str(), O_RDONLY);
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
   if (fd < 0) throw Hdf5Error("reopening to sync failed");
   const int status = ::fsync(fd);
   ::close(fd);
@@ -222,9 +224,19 @@ void write_file_atomically(const std::filesystem::path& path, const std::string&
   Handle creation = plist(H5Pcreate(H5P_FILE_CREATE), "creating file properties");
   if (options.user_block > 0)
     check(H5Pset_userblock(creation.get(), options.user_block), "setting the user block");
-  const hid_t id = H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, creation.get(), H5P_DEFAULT);
-  if (id < 0)
-    throw UserError("cannot write " + what + " '" + path.string() + "': " + take_error_message());
+  // The temporary is a file granshock creates itself (io/atomic_file.hpp): a stale one
+  // that is a regular file is removed, and H5F_ACC_EXCL creates it with O_CREAT | O_EXCL,
+  // which fails on any name that exists, a symbolic link included.
+  remove_stale_temporary(tmp);
+  const hid_t id = H5Fcreate(tmp.c_str(), H5F_ACC_EXCL, creation.get(), H5P_DEFAULT);
+  if (id < 0) {
+    const std::string reason = take_error_message();
+    // A create that failed half-way (a full disk) can leave the file: nothing else has
+    // that name now, and unlinking never follows a link.
+    std::error_code ignored;
+    fs::remove(tmp, ignored);
+    throw UserError("cannot write " + what + " '" + path.string() + "': " + reason);
+  }
   Handle file(id, H5Fclose);
   auto discard_tmp = [&] {
     file.close();

@@ -1,15 +1,23 @@
 #include "run_file.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <optional>
+#include <random>
 #include <stdexcept>
 #include <system_error>
 #include <utility>
 
+#include "failure_agreement.hpp"
+#include "file_room.hpp"
 #include "hdf5_helpers.hpp"
+#include "run_file_growth.hpp"
+#include "regular_file.hpp"
 #include "user_error.hpp"
 #include "version.hpp"
 
@@ -23,7 +31,11 @@ using h5::Handle;
 constexpr const char* kParticles = "/particles/all";
 constexpr const char* kObservables = "/observables";
 constexpr const char* kFileKind = "run";
-constexpr int kFormatVersion = 1;
+// 2: snapshots add radius and, with friction, angular_velocity (docs/output_format.md).
+constexpr int kFormatVersion = 2;
+constexpr const char* kSpeciesRadius = "/parameters/species_radius";
+constexpr const char* kRunIdAttribute = "run_id";
+constexpr std::uintmax_t kMostPromised = std::uintmax_t(1) << 20;
 
 // Time-indexed 1-D datasets grow by this many entries per chunk (2 KiB of int64).
 constexpr hsize_t kSeriesChunk = 256;
@@ -237,6 +249,7 @@ Handle open_existing(const fs::path& path, unsigned flags, const char* doing) {
   if (!fs::exists(path, ec)) {
     throw UserError(std::string("cannot ") + doing + " '" + path.string() + "': no such file");
   }
+  require_regular_file(path, "run file");  // HDF5 would block on a FIFO
   const hid_t id = H5Fopen(path.c_str(), flags, H5P_DEFAULT);
   if (id < 0) {
     throw UserError(std::string("cannot ") + doing + " '" + path.string() +
@@ -254,6 +267,15 @@ Handle open_existing(const fs::path& path, unsigned flags, const char* doing) {
   if (!ours) {
     throw UserError(std::string("cannot ") + doing + " '" + path.string() +
                     "': not a granshock run file");
+  }
+  const int version = h5::naming_file_in_errors(path, "reading", [&] {
+    return h5::read_attribute<int>(file.get(), "granshock_format_version");
+  });
+  if (version > kFormatVersion) {
+    throw UserError(std::string("cannot ") + doing + " '" + path.string() +
+                    "': it is a run file of format " + std::to_string(version) +
+                    ", written by a newer granshock (this one reads formats 1 to " +
+                    std::to_string(kFormatVersion) + ")");
   }
   return file;
 }
@@ -299,11 +321,120 @@ Handle attribute_source(hid_t file, const std::string& path) {
   return h5::object(H5Oopen(file, where.c_str(), H5P_DEFAULT), "opening '" + where + "'");
 }
 
+// A random identity for a new run, written into run.h5 and every checkpoint of the run so
+// that a resume never joins files of two runs (docs/output_format.md).
+std::string new_run_id() {
+  std::random_device random;
+  std::string id;
+  for (int k = 0; k < 4; ++k) id += fmt::format("{:08x}", std::uint32_t(random()));
+  return id;
+}
+
+std::string read_run_id(hid_t file) {
+  return h5::has_attribute(file, kRunIdAttribute) ? h5::read_string_attribute(file, kRunIdAttribute)
+                                                  : std::string();
+}
+
+// The entries of GROUP/step at or before `step`.
+struct Entries {
+  long up_to = 0;
+  long last_step = -1;  // the last of them; -1: none
+};
+
+Entries entries_up_to(hid_t file, const std::string& group_path, long step) {
+  const std::vector<long> steps = h5::read_dataset<long>(file, group_path + "/step");
+  Entries e;
+  for (long s : steps) {
+    if (s > step) break;
+    ++e.up_to;
+    e.last_step = s;
+  }
+  return e;
+}
+
+// A resume joins run.h5 to the checkpoint only when the checkpoint was written with this
+// file: the same run id, and the frames and rows it recorded, at or before its step.
+void check_against_checkpoint(hid_t file, const fs::path& path, long step,
+                              const RunFileRecord& checkpoint) {
+  // A checkpoint from before the record cannot be checked (and a resume that stopped
+  // before writing a checkpoint with a record must be able to start again from it).
+  if (checkpoint.run_id.empty()) return;
+  const std::string id = read_run_id(file);
+  if (checkpoint.run_id != id)
+    throw UserError(fmt::format(
+        "--resume: '{}' belongs to another run than the checkpoint.h5 beside it (run id "
+        "{}, the checkpoint's '{}'); put back the run.h5 of the checkpoint's run, or start "
+        "again with --overwrite",
+        path.string(), id.empty() ? std::string("none: it is older than run ids") : "'" + id + "'",
+        checkpoint.run_id));
+  const Entries frames = entries_up_to(file, std::string(kParticles) + "/count", step);
+  const Entries rows = entries_up_to(file, std::string(kObservables) + "/particles", step);
+  if (frames.up_to == checkpoint.frames && rows.up_to == checkpoint.rows) return;
+  const long last = std::max(frames.last_step, rows.last_step);
+  throw UserError(fmt::format(
+      "--resume: '{}' holds {} snapshot{} and {} time-series row{} up to step {}{}, but the "
+      "checkpoint.h5 beside it (step {}) was written when it held {} and {}; it is not the "
+      "run.h5 that checkpoint was written with: put that one back, or start again with "
+      "--overwrite",
+      path.string(), frames.up_to, frames.up_to == 1 ? "" : "s", rows.up_to,
+      rows.up_to == 1 ? "" : "s", step,
+      last >= 0 ? fmt::format(" (its last at step {})", last) : std::string(), step,
+      checkpoint.frames, checkpoint.rows));
+}
+
+// What one more entry adds to below `group` (/particles/all or /observables), as the file
+// holds it: the 1-D series of every time-indexed element (step, time, a scalar's value)
+// and the per-particle arrays (frame x particle [x components]), with their chunking, so
+// that the bounds of run_file_growth.hpp follow the layout.
+struct EntryLayout {
+  std::vector<run_growth::SeriesArray> series;
+  std::vector<run_growth::ParticleArray> particles;
+};
+
+EntryLayout entry_layout(hid_t file, const std::string& group) {
+  EntryLayout layout;
+  auto add = [&](const std::string& path) {
+    if (!h5::exists(file, path)) return;
+    Handle set = h5::open_dataset(file, path);
+    const std::vector<hsize_t> shape = h5::shape_of(set.get());
+    Handle props = h5::plist(H5Dget_create_plist(set.get()), "reading dataset properties");
+    std::vector<hsize_t> chunk(shape.size(), 0);
+    if (H5Pget_layout(props.get()) == H5D_CHUNKED)
+      h5::check(H5Pget_chunk(props.get(), int(chunk.size()), chunk.data()), "reading the chunks");
+    Handle type = h5::datatype(H5Dget_type(set.get()), "reading the type");
+    std::uintmax_t bytes = H5Tget_size(type.get());
+    if (shape.size() == 1) {
+      layout.series.push_back({chunk[0], bytes});
+      return;
+    }
+    for (std::size_t k = 2; k < shape.size(); ++k) bytes *= shape[k];
+    layout.particles.push_back({chunk.size() > 1 ? chunk[1] : 0, bytes});
+  };
+  Handle g = h5::open_group(file, group);
+  H5G_info_t info{};
+  h5::check(H5Gget_info(g.get(), &info), "listing '" + group + "'");
+  for (hsize_t k = 0; k < info.nlinks; ++k) {
+    const ssize_t length =
+        H5Lget_name_by_idx(g.get(), ".", H5_INDEX_NAME, H5_ITER_INC, k, nullptr, 0, H5P_DEFAULT);
+    h5::check(herr_t(length < 0 ? -1 : 0), "listing '" + group + "'");
+    std::string name(std::size_t(length) + 1, '\0');
+    H5Lget_name_by_idx(g.get(), ".", H5_INDEX_NAME, H5_ITER_INC, k, name.data(), name.size(),
+                       H5P_DEFAULT);
+    name.resize(std::size_t(length));
+    const std::string element = group + "/" + name;
+    if (!h5::exists(file, element + "/step")) continue;
+    for (const char* part : {"step", "time", "value"}) add(element + "/" + part);
+  }
+  return layout;
+}
+
 // The groups, header and empty time-indexed datasets of a new run file.
 void write_layout(hid_t f, const std::string& scene_toml_as_given,
-                  const std::string& scene_toml_resolved, int dim) {
+                  const std::string& scene_toml_resolved, int dim,
+                  const SnapshotContents& contents) {
   h5::write_attribute(f, "granshock_file", kFileKind);
   h5::write_attribute(f, "granshock_format_version", kFormatVersion);
+  h5::write_attribute(f, kRunIdAttribute, new_run_id());
 
   Handle h5md = h5::require_group(f, "/h5md");
   h5::write_attribute(h5md.get(), "version", std::vector<int>{1, 1});
@@ -328,6 +459,16 @@ void write_layout(hid_t f, const std::string& scene_toml_as_given,
                       "m s-1");
   create_time_element(f, all + "/species", H5T_STD_I32LE, {0}, &kIntFill, H5T_NATIVE_INT, nullptr);
   create_time_element(f, all + "/id", H5T_STD_I32LE, {0}, &kIntFill, H5T_NATIVE_INT, nullptr);
+  if (!contents.species_radius.empty()) {
+    create_time_element(f, all + "/radius", H5T_IEEE_F64LE, {0}, &kFloatFill, H5T_NATIVE_DOUBLE,
+                        "m");
+    h5::write_dataset(f, kSpeciesRadius, contents.species_radius,
+                      {hsize_t(contents.species_radius.size())});
+  }
+  if (contents.angular_velocity) {
+    create_time_element(f, all + "/angular_velocity", H5T_IEEE_F64LE, {0}, &kFloatFill,
+                        H5T_NATIVE_DOUBLE, "rad s-1");
+  }
   create_time_element(f, all + "/count", H5T_STD_I64LE, {}, nullptr, H5T_NATIVE_LONG, nullptr);
 
   for (const ObservableSpec& spec : kObservableSpecs) {
@@ -340,11 +481,107 @@ void write_layout(hid_t f, const std::string& scene_toml_as_given,
 
 }  // namespace
 
+namespace {
+
+// What the snapshots of `file` hold: the elements it was created with.
+SnapshotContents read_contents(hid_t file) {
+  SnapshotContents contents;
+  const std::string all = kParticles;
+  if (h5::exists(file, all + "/radius"))
+    contents.species_radius = h5::read_dataset<double>(file, kSpeciesRadius);
+  contents.angular_velocity = h5::exists(file, all + "/angular_velocity");
+  return contents;
+}
+
+}  // namespace
+
 RunFile::RunFile(fs::path path, h5::Handle file, int dim)
-    : path_(std::move(path)), file_(std::move(file)), dim_(dim) {}
+    : path_(std::move(path)), file_(std::move(file)), dim_(dim) {
+  contents_ =
+      h5::naming_file_in_errors(path_, "reading", [&] { return read_contents(file_.get()); });
+  settle();
+}
+
+void RunFile::settle() {
+  // HDF5's end of allocation, or the file's size when that is larger (H5Fget_eoa would
+  // be exact, but parallel HDF5's driver does not answer it).
+  hsize_t end = 0;
+  h5::naming_file_in_errors(path_, "reading", [&] {
+    h5::check(H5Fget_filesize(file_.get(), &end), "reading the end of allocation");
+  });
+  settled_ = end;
+  promised_ = 0;
+  // Bytes past the end are room reserved before and not used (allocated on disk).
+  reserved_ = std::max<std::uintmax_t>(end, file_bytes(path_));
+}
+
+int RunFile::try_make_room(std::uintmax_t growth) {
+  // The bounds of the changes since the last flush add up: past 1 MiB the file is flushed
+  // first (the rows of a time series, 16 KiB each, take a few bytes), so that the room
+  // reserved never runs far ahead of the file.
+  if (promised_ > 0 && promised_ + growth > kMostPromised) flush();
+  const std::uintmax_t end = settled_ + promised_ + growth;
+  if (end > reserved_) {
+    // In steps of 256 KiB: one reservation serves many rows of a time series.
+    const std::uintmax_t step = std::uintmax_t(1) << 18;
+    const std::uintmax_t until = (end + step - 1) / step * step;
+    if (const int refused = reserve_file_bytes(path_, reserved_, until); refused != 0)
+      return refused;
+    reserved_ = until;
+  }
+  promised_ += growth;
+  return 0;
+}
+
+void RunFile::make_room(std::uintmax_t growth, const std::string& what) {
+  if (const int refused = try_make_room(growth); refused != 0)
+    throw UserError(
+        fmt::format("writing '{}' failed: no room for {} ({:.2f} MB reserved before writing): {}",
+                    path_.string(), what, double(growth) / 1e6, std::strerror(refused)));
+}
+
+const RunFile::GrowthLayout& RunFile::growth_layout() const {
+  if (!growth_layout_) {
+    h5::naming_file_in_errors(path_, "reading", [&] {
+      EntryLayout frame = entry_layout(file_.get(), kParticles);
+      GrowthLayout layout;
+      layout.frame_series = std::move(frame.series);
+      layout.particles = std::move(frame.particles);
+      layout.row_series = entry_layout(file_.get(), kObservables).series;
+      growth_layout_ = std::move(layout);
+    });
+  }
+  return *growth_layout_;
+}
+
+std::uintmax_t RunFile::snapshot_growth(long total) const {
+  const long frames = long(h5::naming_file_in_errors(path_, "reading", [&] {
+    return series_end(file_.get(), std::string(kParticles) + "/count").entries;
+  }));
+  const long capacity = particle_capacity();
+  return run_growth::snapshot_rows(frames, capacity, std::max(capacity, total),
+                                   growth_layout().particles);
+}
+
+std::uintmax_t RunFile::completion_growth(long total) const {
+  return h5::naming_file_in_errors(path_, "reading", [&] {
+    const hid_t f = file_.get();
+    const long frames = long(series_end(f, std::string(kParticles) + "/count").entries);
+    // The new frame's views, and those of earlier frames without any (a file from before
+    // views, resumed).
+    long without_views = 1;
+    for (long k = 0; k < frames; ++k) without_views += h5::exists(f, frame_view_group(k)) ? 0 : 1;
+    const long vertices = vertex_index_length(f);
+    return run_growth::series_entries(frames, growth_layout().frame_series) +
+           run_growth::frame_views(without_views, frame_view_arrays().size() + 2, vertices,
+                                   std::max({vertices, total, particle_capacity()}),
+                                   kVertexIndexChunk);
+  });
+}
 
 RunFile RunFile::create(const fs::path& path, const std::string& scene_toml_as_given,
-                        const std::string& scene_toml_resolved, int dim) {
+                        const std::string& scene_toml_resolved, int dim,
+                        const SnapshotContents& contents) {
   if (dim != 2 && dim != 3) throw std::invalid_argument("RunFile: dim must be 2 or 3");
   h5::silence_error_printing();
   const hid_t id = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
@@ -354,7 +591,7 @@ RunFile RunFile::create(const fs::path& path, const std::string& scene_toml_as_g
   Handle file(id, H5Fclose);
   try {
     h5::naming_file_in_errors(path, "creating", [&] {
-      write_layout(file.get(), scene_toml_as_given, scene_toml_resolved, dim);
+      write_layout(file.get(), scene_toml_as_given, scene_toml_resolved, dim, contents);
     });
   } catch (...) {
     // No half-made run file left behind.
@@ -366,17 +603,34 @@ RunFile RunFile::create(const fs::path& path, const std::string& scene_toml_as_g
   return RunFile(path, std::move(file), dim);
 }
 
-RunFile RunFile::open_for_resume(const fs::path& path, long checkpoint_step) {
+RunFile RunFile::open_for_resume(const fs::path& path, long checkpoint_step,
+                                 const RunFileRecord& checkpoint) {
   Handle file = open_existing(path, H5F_ACC_RDWR, "resume");
-  const int dim = h5::naming_file_in_errors(path, "resuming", [&] {
-    std::vector<std::string> groups;
-    h5::check(H5Lvisit(file.get(), H5_INDEX_NAME, H5_ITER_INC, collect_step_groups, &groups),
-              "listing the time series");
-    for (const std::string& group : groups) truncate_after(file.get(), group, checkpoint_step);
-    h5::check(H5Fflush(file.get(), H5F_SCOPE_GLOBAL), "flushing");
-    return read_dim(file.get());
+  h5::naming_file_in_errors(path, "resuming", [&] {
+    check_against_checkpoint(file.get(), path, checkpoint_step, checkpoint);
   });
-  return RunFile(path, std::move(file), dim);
+  const int dim = h5::naming_file_in_errors(path, "resuming", [&] { return read_dim(file.get()); });
+  RunFile run(path, std::move(file), dim);
+  run.make_room(run_growth::truncation() + run_growth::attribute(64), "resuming");
+  h5::naming_file_in_errors(path, "resuming", [&] {
+    const hid_t f = run.file_.get();
+    std::vector<std::string> groups;
+    h5::check(H5Lvisit(f, H5_INDEX_NAME, H5_ITER_INC, collect_step_groups, &groups),
+              "listing the time series");
+    for (const std::string& group : groups) truncate_after(f, group, checkpoint_step);
+    // A run from before the record: from now on its checkpoints record this file.
+    if (read_run_id(f).empty()) h5::write_attribute(f, kRunIdAttribute, new_run_id());
+  });
+  run.flush();
+  return run;
+}
+
+void RunFile::check_resumable(const fs::path& path, long checkpoint_step,
+                              const RunFileRecord& checkpoint) {
+  Handle file = open_existing(path, H5F_ACC_RDONLY, "resume");
+  h5::naming_file_in_errors(path, "resuming", [&] {
+    check_against_checkpoint(file.get(), path, checkpoint_step, checkpoint);
+  });
 }
 
 RunFile RunFile::open_for_append(const fs::path& path) {
@@ -413,9 +667,13 @@ RunFile RunFile::open_read_only(const fs::path& path) {
 
 void RunFile::append_snapshot(long step, double time, const HostParticles& p) {
   const long n = long(p.size());
+  make_room(snapshot_growth(n) + completion_growth(n), "the next snapshot");
   const long frame = write_snapshot_rows(
       step, p, n > 0 ? std::vector<FileRows>{{0, n}} : std::vector<FileRows>{}, n);
   complete_snapshot(frame, step, time, n);
+  // Settled at once: the next append reserves room past this one's actual end, not past
+  // its bound (which deflate's worst case makes several times a small frame's size).
+  flush();
 }
 
 long RunFile::write_snapshot_rows(long step, const HostParticles& p,
@@ -432,6 +690,19 @@ long RunFile::write_snapshot_rows(long step, const HostParticles& p,
   }
   if (covered != long(n))
     throw std::invalid_argument("RunFile: snapshot rows do not cover the particles");
+  // Checked before anything is written: under parallel HDF5 every process must write.
+  std::vector<double> radius;
+  if (!contents_.species_radius.empty()) {
+    for (int s : p.species) {
+      if (s < 0 || std::size_t(s) >= contents_.species_radius.size())
+        throw std::invalid_argument("RunFile: species " + std::to_string(s) + " has no radius");
+      radius.push_back(contents_.species_radius[std::size_t(s)]);
+    }
+  }
+  std::vector<double> spin = p.angular_velocity;
+  if (spin.empty()) spin.assign(n, 0.0);
+  if (spin.size() != n)
+    throw std::invalid_argument("RunFile: snapshot particle arrays differ in length");
   return h5::naming_file_in_errors(path_, "writing", [&] {
     const hid_t f = file_.get();
     const std::string all = kParticles;
@@ -463,6 +734,13 @@ long RunFile::write_snapshot_rows(long step, const HostParticles& p,
     write_vectors("velocity", p.velocity);
     write_scalars("species", p.species);
     write_scalars("id", p.id);
+    auto write_doubles = [&](const char* name, const std::vector<double>& v) {
+      Handle set = h5::open_dataset(f, all + "/" + name + "/value");
+      write_frame_rows(set.get(), {frame + 1, capacity}, frame, rows, H5T_NATIVE_DOUBLE, v.data(),
+                       transfer);
+    };
+    if (!contents_.species_radius.empty()) write_doubles("radius", radius);
+    if (contents_.angular_velocity) write_doubles("angular_velocity", spin);
     return long(frame);
   });
 }
@@ -479,6 +757,14 @@ void RunFile::complete_snapshot(long frame, long step, double time, long total) 
     const hsize_t index = hsize_t(frame);
     for (const char* name : {"position", "velocity", "species", "id"})
       append_step_time(f, all + "/" + name, index, step, time);
+    if (!contents_.species_radius.empty()) append_step_time(f, all + "/radius", index, step, time);
+    if (contents_.angular_velocity)
+      append_step_time(f, all + "/angular_velocity", index, step, time);
+    // The frame's views for XDMF readers (docs/output_format.md, "run.xmf").
+    std::vector<long> counts = h5::read_dataset<long>(f, all + "/count/value");
+    counts.resize(index);
+    counts.push_back(total);
+    update_frame_views(f, dim_, counts);
     // count last: frames() lists a frame once all of its data is there.
     append_scalar<long>(f, all + "/count", index, step, time, total);
   });
@@ -504,6 +790,21 @@ void RunFile::append_snapshot_collectively(const std::filesystem::path& path, MP
   long frame = 0;
   {
     RunFile shared = open_collectively(path, comm);
+    // Room for the frame before any process writes, reserved by rank 0 and known to all:
+    // refused, every process leaves the file as it was (docs/parallel.md, "Errors").
+    // Every process reads the layout: datasets opened by rank 0 alone left the processes'
+    // metadata caches disagreeing, and the frame's chunks damaged ("inflate() failed").
+    const std::uintmax_t growth = shared.snapshot_growth(part.total);
+    int refused = rank == 0 ? shared.try_make_room(growth) : 0;
+    MPI_Bcast(&refused, 1, MPI_INT, 0, comm);
+    if (refused != 0) {
+      failure_agreed() = true;
+      if (rank != 0) throw PeerFailed(0);
+      throw UserError(fmt::format(
+          "writing '{}' failed: no room for the next snapshot ({:.2f} MB reserved before "
+          "writing): {}",
+          path.string(), double(growth) / 1e6, std::strerror(refused)));
+    }
     try {
       frame = shared.write_snapshot_rows(step, part.particles, part.rows, part.total);
     } catch (...) {
@@ -515,10 +816,17 @@ void RunFile::append_snapshot_collectively(const std::filesystem::path& path, MP
   }  // closed (collective) before rank 0 reopens it
   if (rank != 0) return;
   root_file.emplace(open_for_append(path));
+  root_file->make_room(root_file->completion_growth(part.total), "the next snapshot");
   root_file->complete_snapshot(frame, step, time, part.total);
+  root_file->flush();
 }
 
 void RunFile::append_time_series(const TimeSeriesRow& row) {
+  const long rows = long(h5::naming_file_in_errors(path_, "reading", [&] {
+    return series_end(file_.get(), std::string(kObservables) + "/particles").entries;
+  }));
+  make_room(run_growth::series_entries(rows, growth_layout().row_series),
+            "the next time-series row");
   h5::naming_file_in_errors(path_, "writing", [&] {
     const hid_t f = file_.get();
     const std::string root = kObservables;
@@ -554,11 +862,26 @@ std::vector<SnapshotFrame> RunFile::frames() const {
   });
 }
 
+RunFileRecord RunFile::record() const {
+  return h5::naming_file_in_errors(path_, "reading", [&] {
+    RunFileRecord r;
+    r.run_id = read_run_id(file_.get());
+    r.frames = long(series_end(file_.get(), std::string(kParticles) + "/count").entries);
+    r.rows = long(series_end(file_.get(), std::string(kObservables) + "/particles").entries);
+    return r;
+  });
+}
+
 long RunFile::particle_capacity() const {
   return h5::naming_file_in_errors(path_, "reading", [&] {
     Handle set = h5::open_dataset(file_.get(), std::string(kParticles) + "/position/value");
     return static_cast<long>(h5::shape_of(set.get()).at(1));
   });
+}
+
+std::vector<FrameViewArray> RunFile::frame_view_arrays() const {
+  return h5::naming_file_in_errors(path_, "reading",
+                                   [&] { return granshock::frame_view_arrays(file_.get()); });
 }
 
 std::string RunFile::scene_as_given() const {
@@ -572,12 +895,14 @@ std::string RunFile::scene_resolved() const {
 }
 
 void RunFile::write_attribute(const std::string& object, const std::string& name, double value) {
+  make_room(run_growth::attribute(sizeof value), "an attribute");
   h5::naming_file_in_errors(path_, "writing", [&] {
     h5::write_attribute(attribute_target(file_.get(), object).get(), name, value);
   });
 }
 
 void RunFile::write_attribute(const std::string& object, const std::string& name, long value) {
+  make_room(run_growth::attribute(sizeof value), "an attribute");
   h5::naming_file_in_errors(path_, "writing", [&] {
     h5::write_attribute(attribute_target(file_.get(), object).get(), name, value);
   });
@@ -585,6 +910,7 @@ void RunFile::write_attribute(const std::string& object, const std::string& name
 
 void RunFile::write_attribute(const std::string& object, const std::string& name,
                               const std::string& value) {
+  make_room(run_growth::attribute(value.size()), "an attribute");
   h5::naming_file_in_errors(path_, "writing", [&] {
     h5::write_attribute(attribute_target(file_.get(), object).get(), name, value);
   });
@@ -621,6 +947,7 @@ void RunFile::write_array(const std::string& dataset, const std::vector<double>&
   if (elements != values.size()) {
     throw std::invalid_argument("RunFile::write_array: shape does not match the value count");
   }
+  make_room(run_growth::whole_dataset(values.size() * sizeof(double)), "'" + dataset + "'");
   h5::naming_file_in_errors(path_, "writing",
                             [&] { h5::write_dataset(file_.get(), dataset, values, dims); });
 }
@@ -638,6 +965,13 @@ std::vector<double> RunFile::read_array(const std::string& dataset,
 void RunFile::flush() {
   h5::naming_file_in_errors(
       path_, "flushing", [&] { h5::check(H5Fflush(file_.get(), H5F_SCOPE_GLOBAL), "H5Fflush"); });
+  // Everything is written: the room reserved past HDF5's end is given back.
+  haddr_t end = 0;
+  h5::naming_file_in_errors(path_, "flushing", [&] {
+    h5::check(H5Fget_eoa(file_.get(), &end), "reading the end of allocation");
+  });
+  trim_file(path_, end);
+  settle();
 }
 
 }  // namespace granshock

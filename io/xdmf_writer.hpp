@@ -1,25 +1,28 @@
-// The XDMF (version 2) description of run.h5's particle snapshots, so that ParaView or
-// VisIt open them as a time series of point clouds without copying any data: each frame
-// is a Polyvertex grid whose arrays are hyperslabs of the snapshot datasets.
+// The XDMF (version 2) description of run.h5's particle snapshots, so that ParaView (any
+// of its three XDMF readers) or VisIt open them as a time series of point clouds without
+// copying any data: each frame is a Polyvertex grid whose arrays are the frame's views in
+// run.h5 (frame_views.hpp; docs/output_format.md, "run.xmf").
 #pragma once
 
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "frame_views.hpp"
 #include "snapshot_frame.hpp"
 
 namespace granshock {
 
 // Writes xmf_path atomically. h5_filename_relative is the run file's name as seen from
-// the XMF's directory (normally "run.h5"); dim (2 or 3) and capacity (the particle
-// extent of the snapshot datasets) come from RunFile::dim() and particle_capacity().
-// Frames with no particles are left out (viewers reject empty hyperslabs). In 2-D the
-// velocity is given as two scalars vx, vy: XDMF readers take a "Vector" as exactly three
-// components, so an (n, 2) array would be misread. Throws std::invalid_argument when a
-// frame's count exceeds capacity, UserError when the file cannot be written.
+// the XMF's directory (normally "run.h5"); frame K's grid reads the views in its group
+// frame_view_group(K): "vertex" (the topology), "position" (XY in 2-D, XYZ in 3-D) and
+// one attribute per entry of `arrays` (RunFile::frame_view_arrays()), a Vector where it
+// has three components. Frames with no particles are left out (viewers reject empty
+// arrays). Throws std::invalid_argument for a negative count, a dim other than 2 or 3 or
+// an array of another width, UserError when the file cannot be written.
 void write_particles_xdmf(const std::filesystem::path& xmf_path,
                           const std::string& h5_filename_relative,
-                          const std::vector<SnapshotFrame>& frames, int dim, long capacity);
+                          const std::vector<SnapshotFrame>& frames, int dim,
+                          const std::vector<FrameViewArray>& arrays);
 
 }  // namespace granshock

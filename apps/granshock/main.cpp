@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 #include <Kokkos_Core.hpp>
+#include <cerrno>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -11,12 +12,14 @@
 #include <string>
 #include <string_view>
 
+#include "allocation_failure.hpp"
 #include "build_info.hpp"
 #include "device/kokkos_runtime.hpp"
 #include "failure_agreement.hpp"
 #include "fields_command.hpp"
 #include "hdf5_runtime.hpp"
 #include "head_on_collision.hpp"
+#include "interrupt.hpp"
 #include "mpi_communicator.hpp"
 #include "mpi_runtime.hpp"
 #include "run_command.hpp"
@@ -45,7 +48,7 @@ void add_collide_command(CLI::App& app, granshock::CollisionOptions& o, std::str
       ->required();
   cmd->add_option("--speed", o.speed_m_per_s, "relative normal impact speed (m/s)")->required();
   cmd->add_option("--dt", o.dt, "time step (s); default t_c/100");
-  cmd->add_option("--e", o.restitution, "coefficient of restitution, in (0, 1]; default 0.5");
+  cmd->add_option("--e", o.restitution, "coefficient of restitution, in [0.01, 1]; default 0.5");
   cmd->add_option("--model", model, "contact law: hertz (default) | hooke")
       ->check(CLI::IsMember({"hertz", "hooke"}));
   cmd->add_option("--characteristic-velocity", o.characteristic_velocity,
@@ -74,6 +77,17 @@ std::string positive_step_count(const std::string& steps) {
   return std::strtol(steps.c_str(), nullptr, 10) >= 1
              ? std::string()
              : std::string("must be a positive number of steps");
+}
+
+// --case of study: a whole number that fits (CLI11 would saturate 1e30 to LONG_MAX); the
+// study, once read, says which numbers are its cases.
+std::string whole_case_number(const std::string& text) {
+  errno = 0;
+  char* end = nullptr;
+  std::strtol(text.c_str(), &end, 10);
+  return !text.empty() && *end == '\0' && errno == 0
+             ? std::string()
+             : text + " is not a case number (0, 1, 2, ...)";
 }
 
 void add_run_command(CLI::App& app, granshock::RunOptions& o) {
@@ -126,7 +140,9 @@ void add_fields_command(CLI::App& app, std::vector<std::filesystem::path>& dirs,
                                  "recompute fields, figures and summary from DIR/run.h5; "
                                  "with several DIRs also the delta/D table and figure");
   cmd->add_option("dirs", dirs, "run directories")->required()->check(CLI::ExistingDirectory);
-  cmd->add_option("--out", out, "where to write (required with several DIRs)");
+  cmd->add_option("--out", out,
+                  "where to write (required with several DIRs): a new or empty directory, or "
+                  "one granshock fields wrote before");
 }
 
 void add_study_command(CLI::App& app, granshock::StudyOptions& o) {
@@ -141,8 +157,10 @@ void add_study_command(CLI::App& app, granshock::StudyOptions& o) {
   cmd->add_option("--set", o.overrides,
                   "override a scene key in every case, after the study file's [study] set, e.g. "
                   "--set time.duration=2.0 (repeatable)");
-  cmd->add_option("--case", o.only_case, "run only case K (0-based; for Slurm array tasks)")
-      ->check(CLI::NonNegativeNumber);
+  cmd->add_option_function<long>(
+         "--case", [&o](const long& k) { o.only_case = k; },
+         "run only case K (0-based; for Slurm array tasks)")
+      ->check(whole_case_number);
   cmd->add_flag("--collect", o.collect,
                 "build the table and figures from the finished cases; run nothing");
   cmd->add_option("--emit", o.emit, "write a batch script into the study directory: slurm")
@@ -174,7 +192,21 @@ void add_tradeoff_command(CLI::App& app, granshock::TradeoffOptions& o) {
 
 }  // namespace
 
+#if defined(__ELF__)
+// SIGINT and SIGTERM are held from before the shared libraries initialise (MPI, HDF5 and
+// Kokkos take milliseconds before main): an executable's .preinit_array runs right after
+// the dynamic loader, before any library's constructor.
+extern "C" void granshock_hold_interrupts_at_load(int, char**, char**) {
+  granshock::hold_interrupts();
+}
+__attribute__((section(".preinit_array"), used)) static void (*const hold_interrupts_at_load)(
+    int, char**, char**) = granshock_hold_interrupts_at_load;
+#endif
+
 int main(int argc, char** argv) {
+  // First (again, where .preinit_array is not): a signal while MPI and Kokkos start waits
+  // until the command is known (cases/bow_shock/interrupt.hpp).
+  granshock::hold_interrupts();
   CLI::App app{"granshock: GPU-portable DEM for granular gas dynamics"};
   app.require_subcommand(1);
   app.allow_extras(false);
@@ -242,6 +274,13 @@ int main(int argc, char** argv) {
               << "--help)\n";
     return 2;
   }
+  // A run stops at a safe point with a message, from its very start (docs/output_format.md,
+  // "Signals"); the other commands end as signals end them (a study catches them once it
+  // runs its cases: cases/study/study_runner.cpp).
+  if (app.got_subcommand("run"))
+    granshock::catch_interrupts();
+  else
+    granshock::release_interrupts();
   // Only `run` divides a scene among processes; the other commands would each do the whole
   // job N times into the same place. Every rank decides alike and returns, so none waits
   // for another; rank 0 alone says why.
@@ -295,8 +334,8 @@ int main(int argc, char** argv) {
         std::cerr << "granshock: warning: " << result.overlap.message << "\n";
       std::cout << granshock::to_json(result) << "\n";
     }
-  } catch (const granshock::PeerFailed&) {
-    return 2;  // another rank failed and said why
+  } catch (const granshock::PeerFailed& e) {
+    return e.exit_code();  // another rank failed and said why
   } catch (const granshock::NumericalFailure& e) {
     // From global sums: every rank meets it at the same step.
     return leave(4, std::string("granshock: error: ") + e.what(), true);
@@ -308,6 +347,9 @@ int main(int argc, char** argv) {
         "granshock: error: not enough memory (" + one_line(e.what()) + "); make the scene smaller",
         false);
   } catch (const std::exception& e) {
+    // Kokkos reports an allocation it could not make as a runtime_error.
+    if (const auto memory = granshock::allocation_failure(e.what()))
+      return leave(2, "granshock: error: " + *memory, false);
     return leave(3, std::string("granshock: internal error: ") + e.what(), false);
   }
   return 0;

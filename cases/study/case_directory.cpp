@@ -1,8 +1,6 @@
 #include "case_directory.hpp"
 
-#include <fstream>
-#include <sstream>
-
+#include "json_file.hpp"
 #include "run_directory.hpp"
 #include "run_file.hpp"
 
@@ -27,12 +25,10 @@ std::string to_string(CaseState state) {
 }
 
 nlohmann::json read_summary(const fs::path& dir) {
-  std::ifstream in(dir / "summary.json");
-  if (!in) return nullptr;
-  std::stringstream text;
-  text << in.rdbuf();
-  nlohmann::json j = nlohmann::json::parse(text.str(), nullptr, false);
-  return j.is_object() ? j : nlohmann::json();
+  std::error_code ec;
+  if (!fs::exists(dir / "summary.json", ec)) return nullptr;
+  JsonFile summary = read_json_file(dir / "summary.json", "summary");
+  return summary.value.is_object() ? std::move(summary.value) : nlohmann::json();
 }
 
 nlohmann::json summary_value(const nlohmann::json& summary, const std::string& key) {

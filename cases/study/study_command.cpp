@@ -24,32 +24,35 @@ namespace {
 void check_options(const StudyOptions& o) {
   const int modes = int(o.collect) + int(!o.emit.empty()) + int(o.dry_run);
   if (modes > 1) throw UserError("--collect, --emit and --dry-run exclude each other");
-  if (o.only_case >= 0 && (o.collect || !o.emit.empty()))
+  if (o.only_case && (o.collect || !o.emit.empty()))
     throw UserError("--case runs one case; it does not go with --collect or --emit");
   if (!o.emit.empty() && o.emit != "slurm")
     throw UserError("--emit '" + o.emit + "': the one script granshock writes is 'slurm'");
 }
 
-std::vector<std::size_t> selection(const StudyPlan& plan, int only_case) {
+std::vector<std::size_t> selection(const StudyPlan& plan, std::optional<long> only_case) {
   const std::size_t n = plan.cases.size();
-  if (only_case >= 0 && std::size_t(only_case) >= n)
-    throw UserError(fmt::format("--case {}: the study '{}' has {} case{} (0 to {})", only_case,
+  if (only_case && (*only_case < 0 || std::size_t(*only_case) >= n))
+    throw UserError(fmt::format("--case {}: the study '{}' has {} case{} (0 to {})", *only_case,
                                 plan.spec.name, n, n == 1 ? "" : "s", n - 1));
-  if (only_case >= 0) return {std::size_t(only_case)};
+  if (only_case) return {std::size_t(*only_case)};
   std::vector<std::size_t> all(n);
   for (std::size_t k = 0; k < n; ++k) all[k] = k;
   return all;
 }
 
 int emit_slurm(const StudyPlan& plan) {
-  claim_study_directory(plan.out, plan.spec.name);
   std::error_code ec;
   const fs::path program = fs::read_symlink("/proc/self/exe", ec);
   if (ec) throw UserError("cannot find the granshock program's own path (/proc/self/exe)");
   const StudyRate rate = study_rate(plan);
   const fs::path script = plan.out / "study.slurm";
-  write_file_atomically(script,
-                        slurm_script(plan, program, rate.particle_steps_per_second, rate.source));
+  const SlurmScript written =
+      slurm_script(plan, program, rate.particle_steps_per_second, rate.source);
+  claim_study_directory(plan.out, plan.spec.name);
+  for (const std::string& warning : written.warnings)
+    std::cerr << "granshock study: warning: " << warning << "\n";
+  write_file_atomically(script, written.text);
   std::cout << fmt::format("granshock study: wrote {} ({} array tasks); submit it with sbatch\n",
                            script.string(), plan.cases.size());
   return 0;
@@ -93,7 +96,7 @@ int study_command(const StudyOptions& o) {
   for (const auto& [index, why] : result.failures)
     std::cerr << fmt::format("granshock study: case {} (--case {}) failed: {}\n",
                              plan.cases[std::size_t(index)].spec.name, index, why);
-  if (o.only_case >= 0) {
+  if (o.only_case) {
     if (!o.quiet)
       std::cerr << "granshock study: with --case the table is not built; build it with "
                    "--collect once every case has run\n";

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,7 +13,7 @@ struct StudyOptions {
   std::filesystem::path study_file;
   std::filesystem::path out_dir;       // empty: the study file's out, else runs/<study name>
   std::vector<std::string> overrides;  // --set: every case, after the file's [study] set
-  int only_case = -1;                  // --case K: run case K alone (array jobs); no table
+  std::optional<long> only_case;       // --case K: run case K alone (array jobs); no table
   bool collect = false;                // build the table from the directories, run nothing
   std::string emit;                    // "slurm": write <out>/study.slurm, run nothing
   bool dry_run = false;                // list the cases with their overrides and cost

@@ -7,9 +7,9 @@
 #include <filesystem>
 #include <string>
 
-namespace granshock {
+#include "marked_directory.hpp"  // kStudyMarker
 
-inline constexpr const char* kStudyMarker = ".granshock-study";
+namespace granshock {
 
 enum class StudyDirectoryState { absent, empty, this_study };
 

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+
 #include "case_directory.hpp"
 #include "study_cost.hpp"
 
@@ -12,7 +14,10 @@ StudyRate study_rate(const StudyPlan& plan) {
   int cases = 0;
   for (const PlannedCase& c : plan.cases) {
     const CaseDirectory dir = inspect_case_directory(c.dir);
-    if (dir.state != CaseState::finished || dir.wall_seconds <= 0) continue;
+    // A duration no run reports (zero, negative, not finite) is not a measurement.
+    if (dir.state != CaseState::finished || !(dir.wall_seconds > 0) ||
+        !std::isfinite(dir.wall_seconds))
+      continue;
     particle_steps += expected_particle_steps(c.scene);
     seconds += dir.wall_seconds;
     ++cases;

@@ -2,11 +2,11 @@
 
 #include <toml++/toml.h>
 
-#include <cstdio>
 #include <set>
 
 #include "atomic_file.hpp"
 #include "case_directory.hpp"
+#include "csv_cells.hpp"
 
 namespace granshock {
 
@@ -53,14 +53,8 @@ std::string csv_cell(const nlohmann::ordered_json& v) {
   if (v.is_null()) return "";
   if (v.is_boolean()) return v.get<bool>() ? "true" : "false";
   if (v.is_number_integer()) return v.dump();
-  if (v.is_number()) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.10g", v.get<double>());
-    return buffer;
-  }
-  std::string out = "\"";
-  for (char ch : v.get<std::string>()) out += ch == '"' ? std::string("\"\"") : std::string(1, ch);
-  return out + "\"";
+  if (v.is_number()) return csv_number(v.get<double>());
+  return csv_text(v.get<std::string>());
 }
 
 }  // namespace
@@ -128,14 +122,12 @@ StudyTable study_table(const StudyPlan& plan, const std::map<int, std::string>& 
 }
 
 void write_study_table(const std::filesystem::path& out, const StudyTable& t) {
-  std::string csv;
-  for (std::size_t k = 0; k < t.columns.size(); ++k) csv += (k ? "," : "") + t.columns[k];
-  csv += "\n";
+  std::string csv = csv_header(t.columns);
   nlohmann::ordered_json json = nlohmann::ordered_json::array();
   for (const Row& row : t.rows) {
-    for (std::size_t k = 0; k < t.columns.size(); ++k)
-      csv += (k ? "," : "") + csv_cell(row[t.columns[k]]);
-    csv += "\n";
+    std::vector<std::string> cells;
+    for (const std::string& column : t.columns) cells.push_back(csv_cell(row[column]));
+    csv += csv_line(cells);
     json.push_back(row);
   }
   write_file_atomically(out / "study.csv", csv);

@@ -2,7 +2,8 @@
 """Checks fields.xmf (written by `granshock fields`) against its fields.h5 the way an
 XDMF reader sees it: the XML parses, the grid is a 2DSMesh of (ny + 1) x (nx + 1) nodes
 with XY geometry, and every DataItem names an existing dataset whose shape, number type
-and precision match what the XML declares; every attribute is cell-centred on ny x nx.
+and precision match what the XML declares; every attribute is cell-centred on ny x nx
+(x 3 for the Vectors, one of which is the mean velocity u).
 
 Usage: check_fields_xdmf.py FIELDS_XMF
 """
@@ -55,8 +56,12 @@ def main():
     attributes = grid.findall("Attribute")
     for attribute in attributes:
         expect(attribute.get("Center") == "Cell", f"{attribute.get('Name')}: cell-centred")
-        expect(dims(attribute.find("DataItem").get("Dimensions")) == cell_dims,
+        # A Vector (the mean velocity u, u_s per species) has three components per cell.
+        vector = attribute.get("AttributeType") == "Vector"
+        expect(dims(attribute.find("DataItem").get("Dimensions")) == cell_dims + ((3,) if vector else ()),
                f"{attribute.get('Name')}: {cell_dims} cells")
+    names = [a.get("Name") for a in attributes if a.get("AttributeType") == "Vector"]
+    expect("u" in names, f"no mean velocity vector u (vectors: {names})")
     expect(len(attributes) >= 20, f"only {len(attributes)} attributes")
     for failure in failures:
         print("FAIL:", failure)

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <string>
 #include <vector>
@@ -18,6 +19,7 @@
 #include "field_physics.hpp"
 #include "field_sums_file.hpp"
 #include "kinetic_theory.hpp"
+#include "run_directory.hpp"
 #include "run_file.hpp"
 #include "scene_file.hpp"
 
@@ -208,10 +210,18 @@ inline BowShockSums bow_shock_sums(const FieldPhysics& phys, double diameter_d, 
   return s;
 }
 
-// Writes run.h5 in dir with the scene and the sums, as `granshock run` stores them.
+// Marks dir as a run directory, as `granshock run` does first (io/run_directory.hpp).
+inline void mark_run_directory(const std::filesystem::path& dir) {
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / kRunMarker) << "granshock run directory\nformat = " << kRunDirectoryFormat
+                                  << "\n";
+}
+
+// Writes run.h5 in dir, marked as a run directory, with the scene and the sums, as
+// `granshock run` stores them.
 inline void write_run_file(const std::filesystem::path& dir, const std::string& scene_toml,
                            const BinSums& grid, const BinSums* profile) {
-  std::filesystem::create_directories(dir);
+  mark_run_directory(dir);
   const LoadedScene loaded = parse_scene(scene_toml);
   RunFile run = RunFile::create(dir / "run.h5", scene_toml, loaded.resolved, 2);
   FieldSumsRecord record;

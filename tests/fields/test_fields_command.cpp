@@ -9,11 +9,15 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <functional>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <sstream>
 
 #include "fields_command.hpp"
+#include "fields_directory.hpp"
+#include "figures.hpp"
 #include "synthetic_run.hpp"
 #include "user_error.hpp"
 
@@ -241,7 +245,7 @@ TEST(FieldsCommand, BadInputEndsInOneUserError) {
   }
   // A run file without field sums (a run that ended before its production window).
   const fs::path bare = tmp.path() / "bare";
-  fs::create_directories(bare);
+  test::mark_run_directory(bare);
   const std::string scene = test::bow_shock_scene();
   RunFile::create(bare / "run.h5", scene, parse_scene(scene).resolved, 2);
   try {
@@ -273,4 +277,269 @@ TEST(FieldsCommand, MissingMatplotlibCostsOnlyTheFigures) {
   EXPECT_FALSE(fs::exists(run / "figures" / "mach.png"));
   const nlohmann::json j = nlohmann::json::parse(read_text(run / "summary.json"));
   EXPECT_TRUE(j.contains("delta_over_D"));
+}
+
+// ---- Directories (docs/output_format.md, "The run directory", "The fields directory"):
+// `fields` writes only into a run directory granshock marked, under its lock, or into an
+// --out that is new, empty or its own; never through a symbolic link; and it refuses
+// before writing anything.
+
+namespace {
+
+// Every entry below `dir` (not following links) with its content, or "->target" for links.
+std::map<std::string, std::string> tree(const fs::path& dir) {
+  std::map<std::string, std::string> out;
+  for (auto it = fs::recursive_directory_iterator(dir); it != fs::recursive_directory_iterator();
+       ++it) {
+    const std::string rel = fs::relative(it->path(), dir).string();
+    if (it->is_symlink())
+      out[rel] = "->" + fs::read_symlink(it->path()).string();
+    else if (it->is_regular_file())
+      out[rel] = read_text(it->path());
+    else
+      out[rel] = "(dir)";
+  }
+  return out;
+}
+
+std::string refusal(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const UserError& e) {
+    return e.what();
+  }
+  return "(accepted)";
+}
+
+const FieldsCommandOptions kNoFigures{false, true};
+
+}  // namespace
+
+TEST(FieldsCommandOut, RefusesADirectoryThatIsNotItsOwnAndLeavesItUntouched) {
+  test::ScratchDir tmp;
+  const fs::path run = tmp.path() / "run";
+  make_run(run, 12);
+  // A home directory with files of the names `fields` writes.
+  const fs::path home = tmp.path() / "home";
+  fs::create_directories(home / "figures");
+  for (const char* name :
+       {"fields.h5", "figures/mach.png", "detachment_convergence.csv", "summary.json", "notes.txt"})
+    std::ofstream(home / name) << "the user's " << name;
+  const auto before = tree(home);
+  std::string why = refusal([&] { fields_command({run}, home, kNoFigures); });
+  EXPECT_NE(why.find("is not empty and was not written by granshock fields"), std::string::npos)
+      << why;
+  EXPECT_EQ(tree(home), before);
+  // Nor the comparison of several runs.
+  make_run(tmp.path() / "run2", 18);
+  why = refusal([&] { fields_command({run, tmp.path() / "run2"}, home, kNoFigures); });
+  EXPECT_NE(why.find("is not empty and was not written by granshock fields"), std::string::npos)
+      << why;
+  EXPECT_EQ(tree(home), before);
+  // Another run's directory is that run's: its fields are its own.
+  const auto other = tree(tmp.path() / "run2");
+  why = refusal([&] { fields_command({run}, tmp.path() / "run2", kNoFigures); });
+  EXPECT_NE(why.find("is a granshock run directory"), std::string::npos) << why;
+  EXPECT_EQ(tree(tmp.path() / "run2"), other);
+  // A study directory takes a comparison, not one run's analysis.
+  fs::create_directories(tmp.path() / "study");
+  std::ofstream(tmp.path() / "study" / kStudyMarker) << "format = 1\nstudy = s\n";
+  why = refusal([&] { fields_command({run}, tmp.path() / "study", kNoFigures); });
+  EXPECT_NE(why.find("is a granshock study directory"), std::string::npos) << why;
+  EXPECT_EQ(refusal([&] {
+              fields_command({run, tmp.path() / "run2"}, tmp.path() / "study", kNoFigures);
+            }),
+            "(accepted)");
+  EXPECT_TRUE(fs::exists(tmp.path() / "study" / "detachment.csv"));
+}
+
+TEST(FieldsCommandOut, MarksANewDirectoryAndStartsItsSummaryFromTheRuns) {
+  test::ScratchDir tmp;
+  const fs::path run = tmp.path() / "run";
+  make_run(run, 12);
+  const auto run_before = tree(run);
+  const fs::path out = tmp.path() / "out";
+  ASSERT_EQ(fields_command({run}, out, kNoFigures), 0);
+  EXPECT_NE(read_text(out / kFieldsMarker).find("format = 1"), std::string::npos);
+  EXPECT_EQ(tree(run), run_before) << "the run directory is only read";
+  nlohmann::json j = nlohmann::json::parse(read_text(out / "summary.json"));
+  EXPECT_EQ(j["steps"], 123);
+  EXPECT_TRUE(j.contains("delta_over_D"));
+  // Again into its own directory, with a user's file beside: replaced, the file kept;
+  // the summary is the run's again, not the previous one's.
+  std::ofstream(out / "notes.txt") << "mine";
+  std::ofstream(out / "summary.json") << R"({"stale": 1})";
+  ASSERT_EQ(fields_command({run}, out, kNoFigures), 0);
+  EXPECT_EQ(read_text(out / "notes.txt"), "mine");
+  j = nlohmann::json::parse(read_text(out / "summary.json"));
+  EXPECT_FALSE(j.contains("stale"));
+  EXPECT_EQ(j["steps"], 123);
+  // --out naming the run directory itself is `granshock fields DIR`.
+  EXPECT_EQ(refusal([&] { fields_command({run}, run, kNoFigures); }), "(accepted)");
+  EXPECT_FALSE(fs::exists(run / kFieldsMarker));
+}
+
+TEST(FieldsCommandRefuses, ARunDirectoryWithoutItsMarker) {
+  test::ScratchDir tmp;
+  const fs::path run = tmp.path() / "run";
+  make_run(run, 12);
+  fs::remove(run / kRunMarker);
+  const auto before = tree(run);
+  const std::string why = refusal([&] { fields_command({run}, {}, kNoFigures); });
+  EXPECT_NE(why.find("is not a granshock run directory"), std::string::npos) << why;
+  EXPECT_NE(why.find("--out"), std::string::npos) << why;
+  EXPECT_EQ(tree(run), before);
+  // Read from there, written elsewhere: fine.
+  EXPECT_EQ(refusal([&] { fields_command({run}, tmp.path() / "out", kNoFigures); }), "(accepted)");
+  EXPECT_EQ(tree(run), before);
+}
+
+TEST(FieldsCommandRefuses, ADirectoryAnotherGranshockHolds) {
+  test::ScratchDir tmp;
+  const fs::path run = tmp.path() / "run";
+  make_run(run, 12);
+  const fs::path out = tmp.path() / "out";
+  ASSERT_EQ(fields_command({run}, out, kNoFigures), 0);
+  const auto run_before = tree(run);
+  const auto out_before = tree(out);
+  {
+    // A run in progress (its lock is per open file, so a claim in this process stands
+    // for another one): neither analysed in place nor read for --out.
+    const RunDirectory running = RunDirectory::claim(run, DirectoryMode::fields);
+    std::string why = refusal([&] { fields_command({run}, {}, kNoFigures); });
+    EXPECT_NE(why.find("is in use by another granshock"), std::string::npos) << why;
+    why = refusal([&] { fields_command({run}, out, kNoFigures); });
+    EXPECT_NE(why.find("is in use by another granshock run"), std::string::npos) << why;
+    auto after = tree(run);
+    after.erase(kRunMarker);  // names the last claimant's pid
+    auto expected = run_before;
+    expected.erase(kRunMarker);
+    EXPECT_EQ(after, expected);
+    EXPECT_EQ(tree(out), out_before);
+    // The run itself analyses its own directory under its own lock.
+    FieldsCommandOptions own = kNoFigures;
+    own.held = &running;
+    EXPECT_EQ(refusal([&] { fields_command({run}, {}, own); }), "(accepted)");
+    EXPECT_TRUE(fs::exists(run / "fields.h5"));
+  }
+  {
+    // Another `granshock fields` writing the same --out.
+    const FieldsDirectory writing = FieldsDirectory::claim(out, FieldsOutput::one_run);
+    const std::string why = refusal([&] { fields_command({run}, out, kNoFigures); });
+    EXPECT_NE(why.find("is in use by another granshock"), std::string::npos) << why;
+    auto out_now = tree(out);
+    out_now.erase(kFieldsMarker);
+    auto out_expected = out_before;
+    out_expected.erase(kFieldsMarker);
+    EXPECT_EQ(out_now, out_expected);
+  }
+  EXPECT_EQ(refusal([&] { fields_command({run}, out, kNoFigures); }), "(accepted)");
+}
+
+TEST(FieldsCommandRefuses, EveryOutputNamePlantedAsASymbolicLink) {
+  test::ScratchDir tmp;
+  const fs::path outside = tmp.path() / "outside.txt";
+  std::ofstream(outside) << "the user's file";
+  const fs::path user_dir = tmp.path() / "user";
+  fs::create_directories(user_dir);
+  std::ofstream(user_dir / "mach.png") << "the user's figure";
+  const auto user_before = tree(user_dir);
+  make_run(tmp.path() / "run", 12);
+  make_run(tmp.path() / "run2", 18);
+  const fs::path out = tmp.path() / "out";
+  const fs::path comparison = tmp.path() / "comparison";
+  ASSERT_EQ(fields_command({tmp.path() / "run"}, out, kNoFigures), 0);
+  ASSERT_EQ(fields_command({tmp.path() / "run", tmp.path() / "run2"}, comparison, kNoFigures), 0);
+  // Where each list is written: the run directory itself, --out for one run, --out for
+  // a comparison.
+  struct Case {
+    fs::path dir;
+    std::vector<std::string> names;
+    std::function<void()> command;
+  };
+  const std::vector<Case> cases = {
+      {tmp.path() / "run", fields_outputs(),
+       [&] { fields_command({tmp.path() / "run"}, {}, kNoFigures); }},
+      {out, fields_outputs(), [&] { fields_command({tmp.path() / "run"}, out, kNoFigures); }},
+      {comparison, comparison_outputs(), [&] {
+         fields_command({tmp.path() / "run", tmp.path() / "run2"}, comparison, kNoFigures);
+       }}};
+  for (const Case& c : cases) {
+    std::vector<std::string> names = c.names;
+    names.push_back("figures");
+    for (const std::string& name : names) {
+      const fs::path planted = c.dir / name;
+      const fs::path saved = tmp.path() / "saved";
+      fs::remove_all(saved);
+      if (fs::exists(fs::symlink_status(planted))) fs::rename(planted, saved);
+      fs::create_directories(planted.parent_path());
+      fs::create_symlink(name == "figures" ? user_dir : outside, planted);
+      const std::string why = refusal(c.command);
+      EXPECT_NE(why.find("'" + planted.string() + "' is a symbolic link"), std::string::npos)
+          << planted << ": " << why;
+      EXPECT_EQ(read_text(outside), "the user's file") << planted;
+      EXPECT_EQ(tree(user_dir), user_before) << planted;
+      fs::remove(planted);
+      if (fs::exists(fs::symlink_status(saved))) fs::rename(saved, planted);
+    }
+    EXPECT_EQ(refusal(c.command), "(accepted)") << c.dir;
+  }
+}
+
+TEST(FieldsCommandRefuses, ASummaryThatIsNotJsonBeforeWritingAnything) {
+  test::ScratchDir tmp;
+  const fs::path run = tmp.path() / "run";
+  make_run(run, 12);
+  ASSERT_EQ(fields_command({run}, {}, kNoFigures), 0);
+  std::ofstream(run / "summary.json") << "nope{";
+  const auto before = tree(run);
+  std::string why = refusal([&] { fields_command({run}, {}, kNoFigures); });
+  EXPECT_NE(why.find("summary.json' is not valid JSON"), std::string::npos) << why;
+  EXPECT_EQ(tree(run), before) << "fields.h5, fields.xmf or the CSV was rewritten";
+  why = refusal([&] { fields_command({run}, tmp.path() / "out", kNoFigures); });
+  EXPECT_NE(why.find("summary.json' is not valid JSON"), std::string::npos) << why;
+  EXPECT_FALSE(fs::exists(tmp.path() / "out"));
+  std::ofstream(run / "summary.json", std::ios::trunc) << "[1, 2]";
+  why = refusal([&] { fields_command({run}, {}, kNoFigures); });
+  EXPECT_NE(why.find("does not hold a JSON object"), std::string::npos) << why;
+}
+
+// plot_fields.py on its own (as an installed script is run by hand, or if a link appears
+// after granshock looked): it never writes through a link either.
+TEST(FigureFiles, ThePlottingScriptNeverWritesThroughALink) {
+  if (!python_with_h5py()) GTEST_SKIP() << "no /usr/bin/python3 with h5py";
+  test::ScratchDir tmp;
+  const fs::path run = tmp.path() / "run";
+  make_run(run, 12);
+  ASSERT_EQ(fields_command({run}, {}, kNoFigures), 0);
+  const fs::path outside = tmp.path() / "outside.txt";
+  std::ofstream(outside) << "the user's file";
+  const fs::path user_dir = tmp.path() / "user";
+  fs::create_directories(user_dir);
+  const auto plot = [&](const fs::path& figures) {
+    const std::string command = "/usr/bin/python3 '" + figure_script("plot_fields.py").string() +
+                                "' '" + (run / "fields.h5").string() + "' '" + figures.string() +
+                                "' 2>/dev/null";
+    return std::system(command.c_str());
+  };
+  // The figures directory is a link: refused, nothing written there.
+  fs::create_symlink(user_dir, run / "linked");
+  EXPECT_NE(plot(run / "linked"), 0);
+  EXPECT_TRUE(fs::is_empty(user_dir));
+  // A link as a temporary: refused, its target unchanged.
+  fs::create_directories(run / "figures");
+  fs::create_symlink(outside, run / "figures" / "mach.png.tmp");
+  EXPECT_NE(plot(run / "figures"), 0);
+  EXPECT_EQ(read_text(outside), "the user's file");
+  // A link as the figure: replaced by the figure, its target unchanged; a stale
+  // temporary that is a file is replaced.
+  fs::remove(run / "figures" / "mach.png.tmp");
+  std::ofstream(run / "figures" / "temperature.png.tmp") << "left by a killed run";
+  fs::create_symlink(outside, run / "figures" / "mach.png");
+  EXPECT_EQ(plot(run / "figures"), 0);
+  EXPECT_EQ(read_text(outside), "the user's file");
+  EXPECT_TRUE(is_png(run / "figures" / "mach.png"));
+  EXPECT_FALSE(fs::is_symlink(run / "figures" / "mach.png"));
+  EXPECT_TRUE(is_png(run / "figures" / "temperature.png"));
+  EXPECT_FALSE(fs::exists(run / "figures" / "temperature.png.tmp"));
 }

@@ -2,7 +2,8 @@
 """Checks the run.h5 / checkpoint.h5 layout of docs/output_format.md as h5py sees it.
 
 Usage: check_run_file.py DIR   (DIR as written by write_sample_run: run.h5 in 2-D with
-frames of 5, 12, 0, 3 particles, run3d.h5 in 3-D with 4, 2, and checkpoint.h5)
+friction and frames of 5, 12, 0, 3 particles, run3d.h5 in 3-D without friction with 4, 2,
+and checkpoint.h5)
 """
 import os
 import sys
@@ -22,13 +23,17 @@ def text(value):
     return value.decode() if isinstance(value, bytes) else str(value)
 
 
-def check_run(path, dim, counts):
+def check_run(path, dim, counts, species_radius, spin):
     frames, n_max = len(counts), max(counts)
     with h5py.File(path, "r") as f:
+        expect(int(f.attrs["granshock_format_version"]) == 2, f"{path}: format version")
         expect(list(f["h5md"].attrs["version"]) == [1, 1], f"{path}: /h5md version")
         expect(text(f["h5md/creator"].attrs["name"]) == "granshock", f"{path}: creator name")
         expect("version" in f["h5md/creator"].attrs, f"{path}: creator version")
         expect(text(f["h5md/author"].attrs["name"]) == "granshock", f"{path}: author name")
+        run_id = text(f.attrs["run_id"]) if "run_id" in f.attrs else ""
+        expect(len(run_id) == 32 and all(c in "0123456789abcdef" for c in run_id),
+               f"{path}: @run_id '{run_id}' is not 32 hex digits")
         expect(text(f["scene/as_given"][()]).startswith("# as given"), f"{path}: scene as given")
         expect(text(f["scene/resolved"][()]).startswith("# resolved"), f"{path}: scene resolved")
         expect(int(f["particles/all/box"].attrs["dimension"]) == dim, f"{path}: box dimension")
@@ -53,8 +58,32 @@ def check_run(path, dim, counts):
             for frame, n in enumerate(counts):
                 expect((data[frame, :n] >= 0).all(), f"{path}: {name} frame {frame} values")
                 expect((data[frame, n:] == -1).all(), f"{path}: {name} frame {frame} past n")
+        # Format 2: radius (from the species) and, with friction, the spin about z.
+        expect(list(f["parameters/species_radius"][()]) == species_radius, f"{path}: species_radius")
+        elements = ["radius"] + (["angular_velocity"] if spin else [])
+        expect(("angular_velocity" in all_) == spin, f"{path}: angular_velocity present")
+        species = all_["species/value"][()]
+        for name, unit in (("radius", "m"), ("angular_velocity", "rad s-1")):
+            if name not in elements:
+                continue
+            value = all_[name + "/value"]
+            expect(value.shape == (frames, n_max), f"{path}: {name} shape {value.shape}")
+            expect(value.dtype == np.float64, f"{path}: {name} dtype {value.dtype}")
+            expect(value.maxshape == (None, None), f"{path}: {name} maxshape {value.maxshape}")
+            expect(text(value.attrs["unit"]) == unit, f"{path}: {name} unit")
+            data = value[()]
+            for frame, n in enumerate(counts):
+                expect(np.isnan(data[frame, n:]).all(), f"{path}: {name} frame {frame} not NaN past n")
+                if name == "radius":
+                    expect(np.array_equal(data[frame, :n], np.array(species_radius)[species[frame, :n]]),
+                           f"{path}: radius frame {frame} is not its species'")
+                else:
+                    expect(not np.isnan(data[frame, :n]).any(), f"{path}: {name} frame {frame} has NaN")
+        # The views run.xmf reads (io/frame_views.hpp): one group per frame.
+        expect(sorted(f["xdmf"]) == sorted([f"frame_{k:06d}" for k in range(frames)] + ["vertex_index"]),
+               f"{path}: /xdmf holds {sorted(f['xdmf'])}")
         steps = [1000 * (i + 1) for i in range(frames)]
-        for name in ("position", "velocity", "species", "id", "count"):
+        for name in ["position", "velocity", "species", "id", "count"] + elements:
             expect(list(all_[name + "/step"][()]) == steps, f"{path}: {name}/step")
             expect(np.allclose(all_[name + "/time"][()], [1e-3 * (i + 1) for i in range(frames)]),
                    f"{path}: {name}/time")
@@ -146,8 +175,8 @@ def check_checkpoint(path):
 
 def main():
     directory = sys.argv[1]
-    check_run(os.path.join(directory, "run.h5"), 2, [5, 12, 0, 3])
-    check_run(os.path.join(directory, "run3d.h5"), 3, [4, 2])
+    check_run(os.path.join(directory, "run.h5"), 2, [5, 12, 0, 3], [0.5e-3, 0.6e-3, 0.75e-3], True)
+    check_run(os.path.join(directory, "run3d.h5"), 3, [4, 2], [1e-3, 1e-3, 2e-3], False)
     check_checkpoint(os.path.join(directory, "checkpoint.h5"))
     for failure in failures:
         print("FAIL:", failure)

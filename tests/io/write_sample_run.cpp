@@ -20,13 +20,15 @@ namespace {
 using namespace granshock;
 
 void write_run(const std::filesystem::path& dir, const std::string& name, int dim,
-               const std::vector<int>& counts) {
+               const std::vector<int>& counts, const SnapshotContents& contents) {
   RunFile run = RunFile::create(dir / (name + ".h5"), "# as given\nmach = 5\n",
-                                "# resolved\nmach = 5.0\n", dim);
+                                "# resolved\nmach = 5.0\n", dim, contents);
   for (std::size_t f = 0; f < counts.size(); ++f) {
     const long step = 1000 * static_cast<long>(f + 1);
-    run.append_snapshot(step, 1e-3 * static_cast<double>(f + 1),
-                        test::make_particles(counts[f], static_cast<int>(f)));
+    HostParticles p = test::make_particles(counts[f], static_cast<int>(f));
+    if (contents.angular_velocity)
+      for (int i = 0; i < counts[f]; ++i) p.angular_velocity.push_back(100.0 * f - i);
+    run.append_snapshot(step, 1e-3 * static_cast<double>(f + 1), p);
     TimeSeriesRow row;
     row.step = step;
     row.time = 1e-3 * static_cast<double>(f + 1);
@@ -40,7 +42,7 @@ void write_run(const std::filesystem::path& dir, const std::string& name, int di
   run.write_attribute("/summary", "mach_measured", 4.9);
   run.write_array("/fields/bin_sums", {1, 2, 3, 4, 5, 6}, {2, 3});
   write_particles_xdmf(dir / (name + ".xmf"), name + ".h5", run.frames(), run.dim(),
-                       run.particle_capacity());
+                       run.frame_view_arrays());
 }
 
 void write_sample_checkpoint(const std::filesystem::path& dir) {
@@ -77,7 +79,8 @@ void write_sample_checkpoint(const std::filesystem::path& dir) {
 }
 
 int bench(const std::filesystem::path& dir, int n, int dim) {
-  RunFile run = RunFile::create(dir / "bench.h5", "", "", dim);
+  // As a run of two species writes them: with each particle's radius and the frame views.
+  RunFile run = RunFile::create(dir / "bench.h5", "", "", dim, {{0.5e-3, 0.6e-3}, false});
   const HostParticles p = test::random_particles(n);
   const int frames = 10;
   const auto start = std::chrono::steady_clock::now();
@@ -180,8 +183,10 @@ int main(int argc, char** argv) {
     }
     const std::filesystem::path dir = argv[1];
     std::filesystem::create_directories(dir);
-    write_run(dir, "run", 2, {5, 12, 0, 3});
-    write_run(dir, "run3d", 3, {4, 2});
+    // 2-D with friction (radius and angular velocity), 3-D without (radius alone); the
+    // species of make_particles are 0, 1, 2.
+    write_run(dir, "run", 2, {5, 12, 0, 3}, {{0.5e-3, 0.6e-3, 0.75e-3}, true});
+    write_run(dir, "run3d", 3, {4, 2}, {{1e-3, 1e-3, 2e-3}, false});
     write_sample_checkpoint(dir);
     return 0;
   } catch (const std::exception& e) {

@@ -3,9 +3,11 @@
 // unmarked directory that is not empty is refused and left untouched; a running run
 // holds a lock; --resume follows the same rules.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <fstream>
+#include <functional>
 #include <map>
 
 #include "run_command.hpp"
@@ -261,4 +263,105 @@ TEST(RunDirectoryResume, RemovesATemporaryLeftByAKilledRunAndNamesAChangedKey) {
   same.resume = true;
   ASSERT_EQ(run_scene(same), 0);
   EXPECT_FALSE(fs::exists(run / "checkpoint.h5.tmp"));
+}
+
+TEST(RunDirectoryOverwrite, RefusesBeforeRemovingAnythingWhenAnOutputIsNotAFile) {
+  TempDir tmp;
+  const auto scene = tmp.write("small.toml", small_scene(true));
+  const fs::path run = tmp.path() / "run";
+  ASSERT_EQ(run_scene(short_run(scene, run)), 0);
+  ASSERT_TRUE(fs::exists(run / "run.h5") && fs::exists(run / "summary.json"));
+  // A user's folder under an output's name, a FIFO, and a file where figures/ goes.
+  const std::vector<std::pair<std::string, std::function<void()>>> plants = {
+      {"fields.h5' is a directory",
+       [&] {
+         fs::remove(run / "fields.h5");
+         write(run / "fields.h5" / "mine" / "data.csv", "the user's data");
+       }},
+      {"run.xmf.tmp' is not a regular file",
+       [&] { ASSERT_EQ(::mkfifo((run / "run.xmf.tmp").c_str(), 0644), 0); }},
+      {"figures' is not a directory", [&] { write(run / "figures", "a user's file"); }}};
+  for (const auto& [expected, plant] : plants) {
+    plant();
+    const auto before = tree(run);
+    RunOptions o = short_run(scene, run);
+    o.overwrite = true;
+    const std::string why = refusal(o);
+    EXPECT_NE(why.find(expected), std::string::npos) << why;
+    EXPECT_EQ(tree(run), before) << "a refused --overwrite changed the directory (" << expected
+                                 << ")";
+    fs::remove_all(run / "fields.h5");
+    fs::remove_all(run / "run.xmf.tmp");
+    fs::remove_all(run / "figures");
+  }
+  RunOptions o = short_run(scene, run);
+  o.overwrite = true;
+  EXPECT_EQ(run_scene(o), 0);
+}
+
+TEST(RunDirectoryRefuses, EveryOutputNamePlantedAsASymbolicLink) {
+  TempDir tmp;
+  const auto scene = tmp.write("small.toml", small_scene(true));
+  const auto outside = tmp.write("outside.txt", "not to be written");
+  const fs::path user_dir = tmp.path() / "user";
+  write(user_dir / "mach.png", "the user's figure");
+  const fs::path run = tmp.path() / "run";
+  RunOptions first = short_run(scene, run);
+  first.stop_after_steps = 1000;  // resumable
+  ASSERT_EQ(run_scene(first), 0);
+  std::vector<std::string> names = run_outputs();
+  names.push_back("figures");
+  for (const std::string& name : names) {
+    const fs::path planted = run / name;
+    const bool was_file = fs::is_regular_file(fs::symlink_status(planted));
+    const fs::path saved = tmp.path() / "saved";
+    if (was_file) fs::rename(planted, saved);
+    if (name == "figures") fs::remove_all(planted);
+    fs::create_directories(planted.parent_path());
+    fs::create_symlink(name == "figures" ? user_dir : fs::path(outside), planted);
+    for (const bool resume : {false, true}) {
+      RunOptions o = short_run(scene, run);
+      o.overwrite = !resume;
+      o.resume = resume;
+      const std::string why = refusal(o);
+      EXPECT_NE(why.find("'" + planted.string() + "' is a symbolic link"), std::string::npos)
+          << name << (resume ? " --resume: " : " --overwrite: ") << why;
+    }
+    EXPECT_EQ(read(outside), "not to be written") << name;
+    EXPECT_EQ(tree(user_dir),
+              (std::map<std::string, std::string>{{"mach.png", "the user's figure"}}))
+        << name;
+    fs::remove(planted);
+    if (was_file) fs::rename(saved, planted);
+  }
+  RunOptions again = short_run(scene, run);
+  again.resume = true;
+  EXPECT_EQ(run_scene(again), 0) << "the directory is usable once the links are gone";
+}
+
+// An empty marker is a claim cut short (a full disk, kill -9 between creating and
+// writing it): the directory is granshock's, in the current format, not "format 0".
+TEST(RunDirectoryEmptyMarker, IsTakenAsAClaimThatWasCutShort) {
+  TempDir tmp;
+  const auto scene = tmp.write("small.toml", small_scene(true));
+  const fs::path run = tmp.path() / "run";
+  ASSERT_EQ(run_scene(short_run(scene, run)), 0);
+  std::ofstream(run / kRunMarker, std::ios::trunc).close();
+  ASSERT_EQ(fs::file_size(run / kRunMarker), 0u);
+  RunOptions overwrite = short_run(scene, run);
+  overwrite.overwrite = true;
+  EXPECT_EQ(refusal(overwrite), "(accepted)");
+  EXPECT_NE(read(run / kRunMarker).find("format = 1"), std::string::npos);
+  // Without --overwrite it is a marked directory like any other.
+  std::ofstream(run / kRunMarker, std::ios::trunc).close();
+  EXPECT_NE(refusal(short_run(scene, run)).find("already holds a granshock run"),
+            std::string::npos);
+  // Nothing but an empty marker: the claim of a new directory that wrote nothing else,
+  // taken again by the same command.
+  const fs::path fresh = tmp.path() / "fresh";
+  fs::create_directories(fresh);
+  std::ofstream(fresh / kRunMarker).close();
+  EXPECT_EQ(refusal(short_run(scene, fresh)), "(accepted)");
+  EXPECT_TRUE(fs::exists(fresh / "run.h5"));
+  EXPECT_NE(read(fresh / kRunMarker).find("format = 1"), std::string::npos);
 }

@@ -12,6 +12,13 @@
 #                          Slurm script, and a bad one is refused before any case runs
 #   tradeoff_runs_and_tabulates  `granshock tradeoff`: the dry run, the 15 cases, the table,
 #                                the table read by `granshock run --accuracy`
+#   emit_slurm_hostile     hostile values (a newline and a command, $(...), quotes, '%', tab,
+#                          CR) in the study directory, the study file's path and [study] set,
+#                          --set and the program's path: the script runs case 1 and nothing else
+#   emit_slurm_many_cases  more array tasks than Slurm's default MaxArraySize: one warning line
+#   summary_extremes       a case's summary.json with wall_seconds = 1e300 (the time limit is
+#                          clamped), then nested 200 000 levels deep (one line, exit 2, for
+#                          study --collect, --emit slurm, fields and run --accuracy-table)
 set -u
 granshock=$1 source=$2 check=$3
 studies=$source/tests/study
@@ -154,7 +161,7 @@ emit_slurm)
   grep -qx '#SBATCH --cpus-per-task=4' "$script" || fail "cpus per task"
   grep -Eqx '#SBATCH --time=[0-9]+-[0-9]{2}:[0-9]{2}:00' "$script" || fail "time limit"
   grep -q 'OMP_NUM_THREADS="${SLURM_CPUS_PER_TASK' "$script" || fail "threads"
-  grep -Eq "^exec '/[^']*granshock' study '/[^']*/tiny.toml' --out '/[^']*' --case \"\\\$SLURM_ARRAY_TASK_ID\"$" \
+  grep -Fqx "exec '$granshock' study '$studies/tiny.toml' --out '$out' --case \"\$((10#\$SLURM_ARRAY_TASK_ID + 10#\$first_case))\"" \
     "$script" || fail "the command line: $(grep '^exec' "$script")"
   ls "$out" | grep -qv '^study.slurm$' && fail "--emit ran something: $(ls "$out")"
   # The script itself, as an array task of a job would run it.
@@ -248,6 +255,93 @@ if None not in errs:
     fail "--accuracy did not say that nothing met the budget: $(cat "$work/choice")"
   grep -q '# time.dt = .* is 0.01 t_c' "$work/choice" ||
     fail "--accuracy did not fall back to the reference's dt: $(cat "$work/choice")"
+  ;;
+emit_slurm_hostile)
+  hostile=$'x\ntouch PWNED #$(touch PWNED)`touch PWNED`\'"%A\t\r end'
+  mkdir -p "$work/bin$hostile" "$work/study$hostile" "$work/cwd" "$work/task"
+  cp "$granshock" "$work/bin$hostile/granshock"
+  study=$work/study$hostile/tiny.toml
+  # tiny.toml with the study directory in `out` and a [study] set value that hold a newline
+  # and a command (TOML escapes); the override is still valid TOML (v = 0.004, touch = "PWNED").
+  {
+    echo '[study]'
+    echo 'name = "tiny"'
+    echo "base = \"$source/scenes/default.toml\""
+    echo 'out = "outx\ntouch PWNED #$(touch PWNED)`touch PWNED`'"'"'\"%A\t\r end"'
+    sed -n '/^set = \[/,/\]$/p' "$studies/tiny.toml" | sed 's/^set = \[/set = ["time.duration=0.004\\ntouch = \\"PWNED\\"", /'
+    sed -n '/^\[\[axis\]\]/,$p' "$studies/tiny.toml"
+  } >"$study"
+  set_value=$'time.duration=0.003\t# $(touch PWNED) `touch PWNED` \'q\' "dq" %A\r\ntouch = "PWNED"'
+  (cd "$work/cwd" && "$work/bin$hostile/granshock" study "$study" --emit slurm --set "$set_value") \
+    >"$work/stdout" 2>"$work/stderr" || fail "--emit slurm failed: $(cat "$work/stderr")"
+  dir=$work/cwd/out$hostile
+  script=$dir/study.slurm
+  [ -s "$script" ] || fail "no study.slurm in the hostile study directory: $(ls -R "$work/cwd")"
+  bash -n "$script" || fail "bash -n refuses the script"
+  tr -d '\n' <"$script" | LC_ALL=C grep -q '[[:cntrl:]]' &&
+    fail "a raw control character in the script:"$'\n'"$(cat -A "$script")"
+  # sbatch reads #SBATCH lines up to the first command.
+  awk '/^#SBATCH/ && command { late = 1 } !/^#/ && !/^$/ { command = 1 } END { exit late }' \
+    "$script" || fail "an #SBATCH line after a command:"$'\n'"$(cat -A "$script")"
+  [ "$(grep -c '^#SBATCH' "$script")" -eq 5 ] || fail "expected 5 #SBATCH lines: $(grep '^#SBATCH' "$script")"
+  (cd "$work/task" && SLURM_JOB_ID=7 SLURM_ARRAY_JOB_ID=7 SLURM_ARRAY_TASK_ID=1 \
+    SLURM_CPUS_PER_TASK=1 bash "$script" >"$work/task.log" 2>&1) ||
+    fail "the script failed as array task 1: $(tail -3 "$work/task.log")"
+  pwned=$(find "$work" -name PWNED)
+  [ -z "$pwned" ] || fail "a command in a value ran: $pwned"
+  # Case 1 ran in the hostile directory with both overrides: 3 ms of 2e-7 s.
+  grep -q '"steps": 15000' "$dir/phi-0.1_e-0.8/summary.json" 2>/dev/null ||
+    fail "array task 1 did not run case 1 for 3 ms: $(tail -3 "$work/task.log")"
+  [ ! -e "$dir/phi-0.1_e-0.5" ] || fail "array task 1 ran case 0 as well"
+  ;;
+emit_slurm_many_cases)
+  # tiny.toml with 1002 values of time.duration: one more case than array indices 0-1000.
+  {
+    sed -n '1,/^\[\[axis\]\]/p' "$studies/tiny.toml" | sed '$d' |
+      sed "s|^base = .*|base = \"$source/scenes/default.toml\"|"
+    echo '[[axis]]'
+    echo 'name = "T"'
+    echo 'key = "time.duration"'
+    awk 'BEGIN { printf "values = ["; for (k = 0; k < 1002; ++k) printf "%s%.7f", k ? ", " : "", 0.004 + k * 1e-7; print "]" }'
+  } >"$work/many.toml"
+  "$granshock" study "$work/many.toml" --out "$out" --emit slurm >/dev/null 2>"$work/stderr" ||
+    fail "--emit slurm failed: $(cat "$work/stderr")"
+  grep -qx '#SBATCH --array=0-1001' "$out/study.slurm" || fail "array range: $(grep array "$out/study.slurm")"
+  [ "$(grep -vc '^Kokkos::' "$work/stderr")" -eq 1 ] || fail "expected one warning line: $(cat "$work/stderr")"
+  grep -q "warning: 1002 array tasks (0-1001) exceed Slurm's default MaxArraySize of 1001 .* sbatch --array=0-1000 '[^']*study.slurm' 0, then sbatch --array=0-0 '[^']*study.slurm' 1001 (docs/study.md" \
+    "$work/stderr" || fail "the warning: $(cat "$work/stderr")"
+  ;;
+summary_extremes)
+  "$granshock" study "$studies/tiny.toml" --out "$out" --quiet --case 0 2>"$work/stderr" ||
+    fail "--case 0 failed: $(cat "$work/stderr")"
+  case0=$out/phi-0.1_e-0.5
+  /usr/bin/python3 -c 'import json, sys; p = sys.argv[1]; s = json.load(open(p)); s["wall_seconds"] = 1e300; json.dump(s, open(p, "w"))' \
+    "$case0/summary.json"
+  "$granshock" study "$studies/tiny.toml" --out "$out" --emit slurm >/dev/null 2>"$work/stderr" ||
+    fail "--emit slurm failed: $(cat "$work/stderr")"
+  grep -qx '#SBATCH --time=365-00:00:00' "$out/study.slurm" ||
+    fail "the time limit: $(grep -- --time "$out/study.slurm")"
+  grep -q "warning: the time limit for the largest case .* is not below 365 days" "$work/stderr" ||
+    fail "no warning of the clamped limit: $(cat "$work/stderr")"
+  # 200 000 levels: the parser's callers overflowed the stack (exit 139).
+  /usr/bin/python3 -c 'import sys; n = 200000; open(sys.argv[1], "w").write("{\"a\": " * n + "1" + "}" * n)' \
+    "$work/deep.json"
+  cp "$work/deep.json" "$case0/summary.json"
+  expect_deep() {  # LABEL PATH COMMAND...: exit 2 and one line naming PATH
+    local label=$1 path=$2
+    shift 2
+    "$@" >/dev/null 2>"$work/stderr"
+    local code=$?
+    [ $code -eq 2 ] || fail "$label: exit code $code, expected 2: $(head -c 300 "$work/stderr")"
+    [ "$(grep -vc '^Kokkos::' "$work/stderr")" -eq 1 ] || fail "$label: expected one line: $(head -c 300 "$work/stderr")"
+    grep -qx "granshock: error: $path: JSON nested deeper than 64 levels" "$work/stderr" ||
+      fail "$label: the message: $(head -c 300 "$work/stderr")"
+  }
+  expect_deep "study --collect" "$case0/summary.json" "$granshock" study "$studies/tiny.toml" --out "$out" --collect
+  expect_deep "study --emit slurm" "$case0/summary.json" "$granshock" study "$studies/tiny.toml" --out "$out" --emit slurm
+  expect_deep "fields" "$case0/summary.json" "$granshock" fields "$case0"
+  expect_deep "run --accuracy-table" "$work/deep.json" "$granshock" run "$source/scenes/default.toml" \
+    --accuracy 1% --accuracy-table "$work/deep.json" --dry-run --out "$work/never"
   ;;
 *)
   echo "unknown check $check"

@@ -161,6 +161,13 @@ INSTANTIATE_TEST_SUITE_P(
                  "expected key=value"},
         BadStudy{"SlurmCpus", kHead + "[[case]]\nname = \"a\"\n[slurm]\ncpus_per_task = 0\n",
                  "cpus_per_task must be"},
+        BadStudy{"SlurmOptionWithNewline",
+                 kHead + "[[case]]\nname = \"a\"\n[slurm]\noptions = "
+                         "[\"--partition=short\\ntouch PWNED\"]\n",
+                 "option $'--partition=short\\x0atouch PWNED' must be one sbatch option"},
+        BadStudy{"SlurmOptionWithTab",
+                 kHead + "[[case]]\nname = \"a\"\n[slurm]\noptions = [\"--comment=a\\tb\"]\n",
+                 "without control characters"},
         BadStudy{"NotToml", kHead + "[[axis]\n", "not valid TOML"}),
     [](const ::testing::TestParamInfo<BadStudy>& p) { return std::string(p.param.name); });
 

@@ -1,0 +1,57 @@
+// The run directory of `granshock run` and who owns it (docs/output_format.md, "The run
+// directory"). A directory becomes a run directory when granshock writes its marker file
+// into it, before anything else; only a marked directory is ever cleaned, resumed or
+// analysed in place, and cleaning removes only the files a run writes (run_outputs()),
+// never a user's files. A run, and `granshock fields` in a run directory, hold an
+// exclusive lock on the marker while they write, so a second one is refused instead of
+// interleaving its writes.
+//
+// Checking and claiming are separate steps so that a refused command writes nothing:
+// check() only looks; claim() creates, marks, locks and cleans once it has been accepted.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "marked_directory.hpp"
+
+namespace granshock {
+
+// create, overwrite, resume: `granshock run` without a flag, with --overwrite, with
+// --resume. fields: `granshock fields DIR`, which writes the analysis of DIR/run.h5 into
+// the run directory DIR itself.
+enum class DirectoryMode { create, overwrite, resume, fields };
+
+// The layout version of run directories this granshock writes and reads.
+inline constexpr int kRunDirectoryFormat = 1;
+
+// Every path (relative to the run directory) that `granshock run` and `granshock fields`
+// write into a run directory, temporaries included; `--overwrite` removes these and
+// nothing else.
+const std::vector<std::string>& run_outputs();
+
+class RunDirectory {
+ public:
+  // Throws UserError, with one line saying why and what to do, when the directory may not
+  // be used in this mode: an unmarked directory that is not empty (for fields: any
+  // unmarked directory), a marked one without --overwrite/--resume, a run directory of
+  // another format, one locked by another granshock, --resume without a checkpoint, a
+  // path that cannot be created or written, an output name that is a symbolic link, a
+  // directory or a special file. Creates and changes nothing.
+  static void check(const std::filesystem::path& dir, DirectoryMode mode);
+
+  // Checks again, then creates the directory if needed, writes the marker, takes the
+  // lock and (overwrite) removes the previous run's files or (resume) stale temporaries.
+  static RunDirectory claim(const std::filesystem::path& dir, DirectoryMode mode);
+
+  const std::filesystem::path& path() const { return dir_; }
+
+ private:
+  RunDirectory(std::filesystem::path dir, DirectoryLock lock)
+      : dir_(std::move(dir)), lock_(std::move(lock)) {}
+  std::filesystem::path dir_;
+  DirectoryLock lock_;  // released with the object
+};
+
+}  // namespace granshock
