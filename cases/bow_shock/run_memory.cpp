@@ -9,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "device/backends.hpp"
 #include "sampling_plan.hpp"
 #include "user_error.hpp"
 
@@ -88,9 +89,10 @@ MemoryEstimate estimate_run_memory(const Scene& s, int processes, int threads) {
 }
 
 MemoryEstimate estimate_run_memory(const Scene& s, int processes) {
+  // The arrays follow the kernels' paths (docs/cuda.md, "Branch points"): per-thread list
+  // parts and field-sum copies on host paths only.
   using Space = Kokkos::DefaultExecutionSpace;
-  constexpr bool host =
-      Kokkos::SpaceAccessibility<Kokkos::HostSpace, Space::memory_space>::accessible;
+  constexpr bool host = uses_host_paths<Space>();
   return estimate_run_memory(s, processes, host ? Space().concurrency() : 0);
 }
 
