@@ -6,7 +6,7 @@
 # and 0.5), the default scene and a paper case for 0.05 s of simulated time, compares the
 # two runs with the host's (apps/bench/gpu_check_reference.json: counts, energies, field
 # sums, e_eff; apps/bench/gpu_check_compare.py) and prints one table. Every step has a
-# time box (timeout); the boxes add up to 475 s, under 8 minutes of device time.
+# time box (timeout); the boxes add up to 480 s, under 8 minutes of device time.
 #
 # Usage: apps/bench/gpu_check.sh [--record]
 #   GRANSHOCK_GPU_CHECK_DRY=1   the same steps on the host, on the device-path build
@@ -162,41 +162,41 @@ step paper_d50_u1000 40 scene_run paper_d50_u1000 scenes/paper/d50_u1000.toml \
   output.snapshot_interval=0.025 output.checkpoint_interval=0.025
 row "$(scene_result paper_d50_u1000)"
 
-# 6. The runs against the host's.
-compare_runs() {
-  local bad=0 name
-  for name in default_scene paper_d50_u1000; do
-    $python - "$reference" "$out/$name.json" "$name" >"$out/$name.reference.json" <<'PY' || return 1
+# 6. Each run against the host's (the reference's "runs").
+compare_run() {  # NAME
+  $python - "$reference" "$1" >"$out/$1.reference.json" <<'PY' &&
 import json, sys
-print(json.dumps(json.load(open(sys.argv[1]))["runs"][sys.argv[3]]))
+print(json.dumps(json.load(open(sys.argv[1]))["runs"][sys.argv[2]]))
 PY
-    echo "$name: $($python "$here/gpu_check_compare.py" compare "$out/$name.reference.json" \
-      "$out/$name.json")" || bad=1
-  done
-  return "$bad"
+    $python "$here/gpu_check_compare.py" compare "$out/$1.reference.json" "$out/$1.json"
 }
-export -f compare_runs
+export -f compare_run
 if [ "$mode" = record ]; then
-  step record 5 $python - "$out" "$reference" <<'PY'
-import json, os, sys
-out, reference = sys.argv[1], sys.argv[2]
-# The benchmark's host rates are kept where the reference has them (measured on an idle
-# host, docs/benchmarks.md); a loaded recording machine would understate them.
+  step record 5 $python - "$out" "$reference" "$(cut -d' ' -f1-3 /proc/loadavg)" <<'PY'
+import datetime, json, os, sys
+out, reference, load = sys.argv[1:4]
+cpu = next((l.split(":", 1)[1].strip() for l in open("/proc/cpuinfo") if l.startswith("model name")), "?")
+cases = ("gas_32000_phi_0.1", "gas_32000_phi_0.5", "gas_2000000_phi_0.1", "gas_2000000_phi_0.5")
+measured = {name: float("%.3g" % json.load(open(f"{out}/{name}.json"))["results"][0]["median"])
+            for name in cases}
+# The ratios' host rates stay those the reference has (measured on an idle host,
+# docs/benchmarks.md): a loaded recording machine understates them. This recording's own
+# rates are kept beside them, with the load it ran under.
 old = json.load(open(reference)) if os.path.exists(reference) else {}
-bench = old.get("bench")
-if not bench:
-    bench = {"source": "gpu_check.sh --record"}
-    for name in ("gas_32000_phi_0.1", "gas_32000_phi_0.5", "gas_2000000_phi_0.1",
-                 "gas_2000000_phi_0.5"):
-        bench[name] = float("%.3g" % json.load(open(f"{out}/{name}.json"))["results"][0]["median"])
+bench = old.get("bench") or dict(measured, source="gpu_check.sh --record")
 runs = {name: json.load(open(f"{out}/{name}.json")) for name in ("default_scene", "paper_d50_u1000")}
-json.dump({"bench": bench, "runs": runs}, open(reference, "w"), indent=1, sort_keys=True)
-print(f"recorded {reference}")
+recorded = {"date": datetime.date.today().isoformat(), "cpu": cpu, "cores": os.cpu_count(),
+            "load_average": load, "bench": measured}
+json.dump({"bench": bench, "recorded": recorded, "runs": runs}, open(reference, "w"),
+          indent=1, sort_keys=True)
+print(f"recorded {os.path.basename(reference)}: runs {', '.join(runs)}; rates {measured}")
 PY
   row "$(log_tail record)"
 else
-  step compare 5 compare_runs
-  row "$(sed 's/ (N /: N /' "$out/compare.log" | tr '\n' ';' | cut -c1-300)"
+  for name in default_scene paper_d50_u1000; do
+    step "compare_$name" 5 compare_run "$name"
+    row "$(tail -n 1 "$out/compare_$name.log" | cut -c1-400)"
+  done
 fi
 
 # The table (also in $out/table.md).
