@@ -171,4 +171,9 @@ std::unique_ptr<Solver> make_solver(const SolverSetup& setup, std::size_t capaci
                                     Backend backend = Backend::default_space,
                                     const Communicator* comm = nullptr);
 
+// The default backend's threads when it runs on the host's threads beside a separate
+// one-thread backend, so that a run may move between the two
+// (cases/bow_shock/backend_switch.hpp); 0 otherwise (a GPU, or Serial alone).
+int switchable_host_threads();
+
 }  // namespace granshock

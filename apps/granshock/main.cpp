@@ -116,11 +116,19 @@ void add_run_command(CLI::App& app, granshock::RunOptions& o) {
                   "'x' (across it, through the periodic faces; docs/parallel.md); the results "
                   "are the same bit for bit")
       ->check(CLI::IsMember({"x", "y"}));
-  cmd->add_option("--snapshot-output", o.snapshot_output,
-                  "under mpirun: snapshots 'gathered' to rank 0, written by every process at "
-                  "once ('collective', parallel HDF5), or 'auto': collective for frames of "
-                  "24,576 particles or more, as measured faster (docs/parallel.md); the files are the "
-                  "same bit for bit")
+  cmd->add_option("--backend-switch", o.backend_switch,
+                  "one process on several threads: 'auto' continues on one thread while the "
+                  "threads run slower than one would (another process busy on the machine) "
+                  "and tries the threads again later; 'off' keeps the threads; 'alternate' "
+                  "moves at every slice (a check that both give the same run); the results "
+                  "are the same bit for bit (docs/benchmarks.md, \"A busy machine\")")
+      ->check(CLI::IsMember({"auto", "off", "alternate"}));
+  cmd->add_option(
+         "--snapshot-output", o.snapshot_output,
+         "under mpirun: snapshots 'gathered' to rank 0, written by every process at "
+         "once ('collective', parallel HDF5), or 'auto': collective for frames of "
+         "24,576 particles or more, as measured faster (docs/parallel.md); the files are the "
+         "same bit for bit")
       ->check(CLI::IsMember({"auto", "gathered", "collective"}));
   cmd->add_flag("--dry-run", o.dry_run,
                 "check the scene and the output directory, print the resolved scene, write "
