@@ -396,8 +396,12 @@ void BowShockRun::finish(bool completed) {
   if (completed && run_file_) {
     // The field analysis reads run.h5, which must be closed first.
     run_file_.reset();
-    if (run_has_field_sums(dir_))
-      fields_command({dir_}, {}, FieldsCommandOptions{true, options_.quiet, &*run_directory_});
+    if (run_has_field_sums(dir_)) {
+      fields_command({dir_}, {},
+                     FieldsCommandOptions{options_.figures, options_.quiet, &*run_directory_});
+      if (!options_.figures && !options_.quiet)
+        std::cerr << figures_skipped_note({"granshock", "fields", dir_.string()}) << "\n";
+    }
   }
   if (completed && !options_.quiet)
     std::cout << fmt::format(
@@ -426,6 +430,7 @@ nlohmann::json BowShockRun::processes_summary() const {
       {"sync_share_per_rank", gather_to_root(comm_, wall > 0 ? halo.sync_seconds / wall : 0.0)},
       {"halo_bytes_sent_per_rank", gather_to_root(comm_, halo.bytes_sent)},
       {"rebalances", halo.rebalances},
+      {"migrated_per_rank", gather_to_root(comm_, halo.migrated)},
       // Output (docs/scaling.md): how snapshots were written, and rank 0's seconds per
       // snapshot (either way) and per checkpoint (gathered to rank 0, written there).
       {"snapshot_output", options_.snapshot_output},
