@@ -35,7 +35,7 @@ struct RunTarget {
 RunTarget target_mach(const fs::path& summary, double nominal) {
   std::error_code ec;
   if (!fs::exists(summary, ec)) return {nominal, false};
-  const nlohmann::json j = read_json_file(summary).value;
+  const nlohmann::json j = read_json_file(summary, "summary").value;
   if (!j.is_object() || !j.contains("ma_inf_target") || !j["ma_inf_target"].is_number())
     return {nominal, false};
   const bool at_inlet = j.contains("inflow_mach_at") && j["inflow_mach_at"] == "inlet_bins";

@@ -30,9 +30,10 @@ struct JsonFile {
   std::string error;     // then the parser's message
 };
 
-// Reads and parses `path`. Throws UserError for a file that cannot be opened, is not a
-// regular file (a FIFO would block), is longer than kMaxJsonFileBytes or is nested too
-// deeply; text that is not JSON is returned as a discarded value, for the caller to judge.
-JsonFile read_json_file(const std::filesystem::path& path);
+// Reads and parses `path`, a `what` ("summary", "accuracy table") for messages. Throws
+// UserError for a file that cannot be opened, is not a regular file (io/regular_file.hpp: a
+// FIFO would block), is longer than kMaxJsonFileBytes or is nested too deeply; text that is
+// not JSON is returned as a discarded value, for the caller to judge.
+JsonFile read_json_file(const std::filesystem::path& path, const std::string& what = "JSON file");
 
 }  // namespace granshock

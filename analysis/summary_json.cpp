@@ -12,7 +12,7 @@ nlohmann::json read_summary_json(const std::filesystem::path& path) {
     return nlohmann::json::object();
   // A regular file of bounded size and nesting (json_file.hpp): a FIFO or a device would
   // block the read or never end, a file nested on purpose would overflow the parser.
-  JsonFile existing = read_json_file(path);
+  JsonFile existing = read_json_file(path, "summary");
   if (existing.value.is_discarded())
     throw UserError("'" + path.string() + "' is not valid JSON (" + existing.error +
                     "); move it away to start a new one");

@@ -157,6 +157,9 @@ void check_extras(const CheckpointExtras& e) {
   if (!std::isfinite(e.wall_seconds_so_far) || e.wall_seconds_so_far < 0)
     fail(fmt::format("/run@wall_seconds_so_far = {} is not a finite time >= 0",
                      e.wall_seconds_so_far));
+  if (!e.run_id.empty() && (e.run_frames < 0 || e.run_rows < 0))
+    fail(fmt::format("/run@run_file_frames = {} and @run_file_rows = {} are not counts >= 0",
+                     e.run_frames, e.run_rows));
 
   const std::vector<long>& shape = e.bin_shape;
   if (shape.empty() && e.bin_sums.empty()) return;  // a run without field sums

@@ -19,6 +19,12 @@ struct CheckpointExtras {
   std::vector<double> bin_sums;
   std::vector<long> bin_shape;
   std::string scene_resolved;  // resume refuses to continue under a changed scene
+  // run.h5 as it was when the checkpoint was written (io/run_file.hpp, RunFileRecord): the
+  // run's id, its snapshot frames and time-series rows. Absent (empty, -1) in checkpoints
+  // from before the record.
+  std::string run_id;
+  long run_frames = -1;
+  long run_rows = -1;
 };
 
 }  // namespace granshock

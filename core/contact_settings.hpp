@@ -62,6 +62,9 @@ struct ContactSettings {
 
   static ContactSettings uniform(int n_species, double e, double mu);
   bool has_friction() const;
+  // The settings of the species `kept` alone (new index k is old kept[k]), in
+  // O(kept.size()^2): one pair's collision must not copy every pair's tables.
+  ContactSettings of_species(const std::vector<int>& kept) const;
 };
 
 }  // namespace granshock

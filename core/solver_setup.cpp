@@ -36,6 +36,36 @@ ContactSettings ContactSettings::uniform(int n, double e, double mu) {
   return m;
 }
 
+ContactSettings ContactSettings::of_species(const std::vector<int>& kept) const {
+  ContactSettings out;
+  out.model = model;
+  out.options = options;
+  out.restitution_mode = restitution_mode;
+  out.calibration_speed_m_per_s = calibration_speed_m_per_s;
+  out.softening = softening;
+  const auto square = [&](const std::vector<std::vector<double>>& from) {
+    std::vector<std::vector<double>> to;
+    for (const int a : kept) {
+      to.emplace_back();
+      for (const int b : kept) to.back().push_back(from.at(a).at(b));
+    }
+    return to;
+  };
+  const auto row = [&](const std::vector<double>& from) {
+    std::vector<double> to;
+    for (const int a : kept) to.push_back(from.at(a));
+    return to;
+  };
+  out.restitution = square(restitution);
+  out.friction = square(friction);
+  out.obstacle_restitution = row(obstacle_restitution);
+  out.obstacle_friction = row(obstacle_friction);
+  if (!calibrated_beta.empty()) out.calibrated_beta = square(calibrated_beta);
+  if (!obstacle_calibrated_beta.empty())
+    out.obstacle_calibrated_beta = row(obstacle_calibrated_beta);
+  return out;
+}
+
 bool ContactSettings::has_friction() const {
   for (const auto& row : friction)
     for (double mu : row)

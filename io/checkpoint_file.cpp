@@ -100,6 +100,11 @@ void write_extras(hid_t file, const CheckpointExtras& e) {
   h5::write_dataset(run.get(), "bin_shape", e.bin_shape,
                     {static_cast<hsize_t>(e.bin_shape.size())});
   h5::write_string_dataset(file, "/scene/resolved", e.scene_resolved);
+  if (!e.run_id.empty()) {
+    h5::write_attribute(run.get(), "run_id", e.run_id);
+    h5::write_attribute(run.get(), "run_file_frames", e.run_frames);
+    h5::write_attribute(run.get(), "run_file_rows", e.run_rows);
+  }
 }
 
 // HDF5 converts between numeric types on reading; a checkpoint holds each value in the
@@ -221,6 +226,13 @@ void read_extras(const Reader& in, hid_t file, CheckpointExtras& e) {
   e.bin_sums = in.dataset<double>("/run", "bin_sums");
   e.bin_shape = in.dataset<long>("/run", "bin_shape");
   e.scene_resolved = h5::read_string_dataset(file, "/scene/resolved");
+  // The record of run.h5; absent in checkpoints from before it.
+  Handle run = h5::open_group(file, "/run");
+  if (h5::has_attribute(run.get(), "run_id")) {
+    e.run_id = h5::read_string_attribute(run.get(), "run_id");
+    e.run_frames = in.attribute<long>("/run", "run_file_frames");
+    e.run_rows = in.attribute<long>("/run", "run_file_rows");
+  }
 }
 
 }  // namespace

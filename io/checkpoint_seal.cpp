@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "file_hash.hpp"
+#include "regular_file.hpp"
 #include "user_error.hpp"
 
 namespace granshock::seal {
@@ -130,8 +131,8 @@ void seal_file(const fs::path& file, int format_version) {
 
 void verify_file(const fs::path& file, int format_version) {
   const std::string where = "checkpoint '" + file.string() + "'";
-  const int fd = ::open(file.c_str(), O_RDONLY);
-  if (fd < 0) throw UserError("cannot read " + where + ": " + std::strerror(errno));
+  const RegularFile opened(file, "checkpoint");  // a FIFO would block the reads forever
+  const int fd = opened.fd();
   std::string block, signature;
   std::uint64_t size = 0;
   try {
@@ -141,10 +142,8 @@ void verify_file(const fs::path& file, int format_version) {
     if (::fstat(fd, &info) != 0) throw std::runtime_error(std::strerror(errno));
     size = std::uint64_t(info.st_size);
   } catch (const std::runtime_error& e) {
-    ::close(fd);
     throw UserError("cannot read " + where + ": " + e.what());
   }
-  ::close(fd);
 
   const std::string hdf5(kHdf5Signature, kSignatureBytes);
   if (size == 0) throw UserError("cannot read " + where + ": the file is empty");

@@ -35,7 +35,7 @@ void grow_vertex_index(hid_t file, hsize_t n) {
   if (!h5::exists(file, kVertexIndex)) {
     const hsize_t dims[1] = {0};
     const hsize_t max_dims[1] = {H5S_UNLIMITED};
-    const hsize_t chunk[1] = {16384};
+    const hsize_t chunk[1] = {kVertexIndexChunk};
     Handle space = h5::dataspace(H5Screate_simple(1, dims, max_dims), "creating a dataspace");
     Handle props = h5::plist(H5Pcreate(H5P_DATASET_CREATE), "creating dataset properties");
     h5::check(H5Pset_chunk(props.get(), 1, chunk), "setting the chunk shape");
@@ -136,6 +136,12 @@ void remove_views(hid_t file, long frame) {
 }
 
 }  // namespace
+
+long vertex_index_length(hid_t file) {
+  if (!h5::exists(file, kVertexIndex)) return 0;
+  Handle index = h5::open_dataset(file, kVertexIndex);
+  return long(h5::shape_of(index.get()).at(0));
+}
 
 std::string frame_view_group(long frame) {
   char name[48];

@@ -24,6 +24,12 @@ struct FrameViewArray {
   }
 };
 
+// The vertex index /xdmf/vertex_index is chunked by this many entries.
+inline constexpr unsigned long long kVertexIndexChunk = 16384;
+
+// The vertex index's length in `file` (0 before the first view).
+long vertex_index_length(hid_t file);
+
 // The group of frame K's views: "/xdmf/frame_000012".
 std::string frame_view_group(long frame);
 

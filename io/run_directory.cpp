@@ -86,6 +86,12 @@ void RunDirectory::check(const fs::path& dir, DirectoryMode mode) {
         "output directory '{}' already holds a granshock run; use --overwrite to replace its "
         "files or --resume to continue it",
         dir.string()));
+  if (mode == DirectoryMode::resume && !fs::exists(dir / "checkpoint.h5", ec) &&
+      fs::exists(dir / "run.h5", ec))
+    throw UserError(fmt::format(
+        "--resume: '{}' holds run.h5 but no checkpoint.h5: the run was stopped before its "
+        "first checkpoint; start again with --overwrite",
+        dir.string()));
   if (mode == DirectoryMode::resume &&
       (!fs::exists(dir / "checkpoint.h5", ec) || !fs::exists(dir / "run.h5", ec)))
     throw UserError(fmt::format("--resume: '{}' holds no checkpoint.h5 and run.h5 to resume from",

@@ -1,15 +1,23 @@
 #include "run_file.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <optional>
+#include <random>
 #include <stdexcept>
 #include <system_error>
 #include <utility>
 
+#include "failure_agreement.hpp"
+#include "file_room.hpp"
 #include "hdf5_helpers.hpp"
+#include "run_file_growth.hpp"
+#include "regular_file.hpp"
 #include "user_error.hpp"
 #include "version.hpp"
 
@@ -26,6 +34,8 @@ constexpr const char* kFileKind = "run";
 // 2: snapshots add radius and, with friction, angular_velocity (docs/output_format.md).
 constexpr int kFormatVersion = 2;
 constexpr const char* kSpeciesRadius = "/parameters/species_radius";
+constexpr const char* kRunIdAttribute = "run_id";
+constexpr std::uintmax_t kMostPromised = std::uintmax_t(1) << 20;
 
 // Time-indexed 1-D datasets grow by this many entries per chunk (2 KiB of int64).
 constexpr hsize_t kSeriesChunk = 256;
@@ -239,6 +249,7 @@ Handle open_existing(const fs::path& path, unsigned flags, const char* doing) {
   if (!fs::exists(path, ec)) {
     throw UserError(std::string("cannot ") + doing + " '" + path.string() + "': no such file");
   }
+  require_regular_file(path, "run file");  // HDF5 would block on a FIFO
   const hid_t id = H5Fopen(path.c_str(), flags, H5P_DEFAULT);
   if (id < 0) {
     throw UserError(std::string("cannot ") + doing + " '" + path.string() +
@@ -310,12 +321,120 @@ Handle attribute_source(hid_t file, const std::string& path) {
   return h5::object(H5Oopen(file, where.c_str(), H5P_DEFAULT), "opening '" + where + "'");
 }
 
+// A random identity for a new run, written into run.h5 and every checkpoint of the run so
+// that a resume never joins files of two runs (docs/output_format.md).
+std::string new_run_id() {
+  std::random_device random;
+  std::string id;
+  for (int k = 0; k < 4; ++k) id += fmt::format("{:08x}", std::uint32_t(random()));
+  return id;
+}
+
+std::string read_run_id(hid_t file) {
+  return h5::has_attribute(file, kRunIdAttribute) ? h5::read_string_attribute(file, kRunIdAttribute)
+                                                  : std::string();
+}
+
+// The entries of GROUP/step at or before `step`.
+struct Entries {
+  long up_to = 0;
+  long last_step = -1;  // the last of them; -1: none
+};
+
+Entries entries_up_to(hid_t file, const std::string& group_path, long step) {
+  const std::vector<long> steps = h5::read_dataset<long>(file, group_path + "/step");
+  Entries e;
+  for (long s : steps) {
+    if (s > step) break;
+    ++e.up_to;
+    e.last_step = s;
+  }
+  return e;
+}
+
+// A resume joins run.h5 to the checkpoint only when the checkpoint was written with this
+// file: the same run id, and the frames and rows it recorded, at or before its step.
+void check_against_checkpoint(hid_t file, const fs::path& path, long step,
+                              const RunFileRecord& checkpoint) {
+  // A checkpoint from before the record cannot be checked (and a resume that stopped
+  // before writing a checkpoint with a record must be able to start again from it).
+  if (checkpoint.run_id.empty()) return;
+  const std::string id = read_run_id(file);
+  if (checkpoint.run_id != id)
+    throw UserError(fmt::format(
+        "--resume: '{}' belongs to another run than the checkpoint.h5 beside it (run id "
+        "{}, the checkpoint's '{}'); put back the run.h5 of the checkpoint's run, or start "
+        "again with --overwrite",
+        path.string(), id.empty() ? std::string("none: it is older than run ids") : "'" + id + "'",
+        checkpoint.run_id));
+  const Entries frames = entries_up_to(file, std::string(kParticles) + "/count", step);
+  const Entries rows = entries_up_to(file, std::string(kObservables) + "/particles", step);
+  if (frames.up_to == checkpoint.frames && rows.up_to == checkpoint.rows) return;
+  const long last = std::max(frames.last_step, rows.last_step);
+  throw UserError(fmt::format(
+      "--resume: '{}' holds {} snapshot{} and {} time-series row{} up to step {}{}, but the "
+      "checkpoint.h5 beside it (step {}) was written when it held {} and {}; it is not the "
+      "run.h5 that checkpoint was written with: put that one back, or start again with "
+      "--overwrite",
+      path.string(), frames.up_to, frames.up_to == 1 ? "" : "s", rows.up_to,
+      rows.up_to == 1 ? "" : "s", step,
+      last >= 0 ? fmt::format(" (its last at step {})", last) : std::string(), step,
+      checkpoint.frames, checkpoint.rows));
+}
+
+// What one more entry adds to below `group` (/particles/all or /observables), as the file
+// holds it: the 1-D series of every time-indexed element (step, time, a scalar's value)
+// and the per-particle arrays (frame x particle [x components]), with their chunking, so
+// that the bounds of run_file_growth.hpp follow the layout.
+struct EntryLayout {
+  std::vector<run_growth::SeriesArray> series;
+  std::vector<run_growth::ParticleArray> particles;
+};
+
+EntryLayout entry_layout(hid_t file, const std::string& group) {
+  EntryLayout layout;
+  auto add = [&](const std::string& path) {
+    if (!h5::exists(file, path)) return;
+    Handle set = h5::open_dataset(file, path);
+    const std::vector<hsize_t> shape = h5::shape_of(set.get());
+    Handle props = h5::plist(H5Dget_create_plist(set.get()), "reading dataset properties");
+    std::vector<hsize_t> chunk(shape.size(), 0);
+    if (H5Pget_layout(props.get()) == H5D_CHUNKED)
+      h5::check(H5Pget_chunk(props.get(), int(chunk.size()), chunk.data()), "reading the chunks");
+    Handle type = h5::datatype(H5Dget_type(set.get()), "reading the type");
+    std::uintmax_t bytes = H5Tget_size(type.get());
+    if (shape.size() == 1) {
+      layout.series.push_back({chunk[0], bytes});
+      return;
+    }
+    for (std::size_t k = 2; k < shape.size(); ++k) bytes *= shape[k];
+    layout.particles.push_back({chunk.size() > 1 ? chunk[1] : 0, bytes});
+  };
+  Handle g = h5::open_group(file, group);
+  H5G_info_t info{};
+  h5::check(H5Gget_info(g.get(), &info), "listing '" + group + "'");
+  for (hsize_t k = 0; k < info.nlinks; ++k) {
+    const ssize_t length =
+        H5Lget_name_by_idx(g.get(), ".", H5_INDEX_NAME, H5_ITER_INC, k, nullptr, 0, H5P_DEFAULT);
+    h5::check(herr_t(length < 0 ? -1 : 0), "listing '" + group + "'");
+    std::string name(std::size_t(length) + 1, '\0');
+    H5Lget_name_by_idx(g.get(), ".", H5_INDEX_NAME, H5_ITER_INC, k, name.data(), name.size(),
+                       H5P_DEFAULT);
+    name.resize(std::size_t(length));
+    const std::string element = group + "/" + name;
+    if (!h5::exists(file, element + "/step")) continue;
+    for (const char* part : {"step", "time", "value"}) add(element + "/" + part);
+  }
+  return layout;
+}
+
 // The groups, header and empty time-indexed datasets of a new run file.
 void write_layout(hid_t f, const std::string& scene_toml_as_given,
                   const std::string& scene_toml_resolved, int dim,
                   const SnapshotContents& contents) {
   h5::write_attribute(f, "granshock_file", kFileKind);
   h5::write_attribute(f, "granshock_format_version", kFormatVersion);
+  h5::write_attribute(f, kRunIdAttribute, new_run_id());
 
   Handle h5md = h5::require_group(f, "/h5md");
   h5::write_attribute(h5md.get(), "version", std::vector<int>{1, 1});
@@ -380,6 +499,84 @@ RunFile::RunFile(fs::path path, h5::Handle file, int dim)
     : path_(std::move(path)), file_(std::move(file)), dim_(dim) {
   contents_ =
       h5::naming_file_in_errors(path_, "reading", [&] { return read_contents(file_.get()); });
+  settle();
+}
+
+void RunFile::settle() {
+  // HDF5's end of allocation, or the file's size when that is larger (H5Fget_eoa would
+  // be exact, but parallel HDF5's driver does not answer it).
+  hsize_t end = 0;
+  h5::naming_file_in_errors(path_, "reading", [&] {
+    h5::check(H5Fget_filesize(file_.get(), &end), "reading the end of allocation");
+  });
+  settled_ = end;
+  promised_ = 0;
+  // Bytes past the end are room reserved before and not used (allocated on disk).
+  reserved_ = std::max<std::uintmax_t>(end, file_bytes(path_));
+}
+
+int RunFile::try_make_room(std::uintmax_t growth) {
+  // The bounds of the changes since the last flush add up: past 1 MiB the file is flushed
+  // first (the rows of a time series, 16 KiB each, take a few bytes), so that the room
+  // reserved never runs far ahead of the file.
+  if (promised_ > 0 && promised_ + growth > kMostPromised) flush();
+  const std::uintmax_t end = settled_ + promised_ + growth;
+  if (end > reserved_) {
+    // In steps of 256 KiB: one reservation serves many rows of a time series.
+    const std::uintmax_t step = std::uintmax_t(1) << 18;
+    const std::uintmax_t until = (end + step - 1) / step * step;
+    if (const int refused = reserve_file_bytes(path_, reserved_, until); refused != 0)
+      return refused;
+    reserved_ = until;
+  }
+  promised_ += growth;
+  return 0;
+}
+
+void RunFile::make_room(std::uintmax_t growth, const std::string& what) {
+  if (const int refused = try_make_room(growth); refused != 0)
+    throw UserError(
+        fmt::format("writing '{}' failed: no room for {} ({:.2f} MB reserved before writing): {}",
+                    path_.string(), what, double(growth) / 1e6, std::strerror(refused)));
+}
+
+const RunFile::GrowthLayout& RunFile::growth_layout() const {
+  if (!growth_layout_) {
+    h5::naming_file_in_errors(path_, "reading", [&] {
+      EntryLayout frame = entry_layout(file_.get(), kParticles);
+      GrowthLayout layout;
+      layout.frame_series = std::move(frame.series);
+      layout.particles = std::move(frame.particles);
+      layout.row_series = entry_layout(file_.get(), kObservables).series;
+      growth_layout_ = std::move(layout);
+    });
+  }
+  return *growth_layout_;
+}
+
+std::uintmax_t RunFile::snapshot_growth(long total) const {
+  const long frames = long(h5::naming_file_in_errors(path_, "reading", [&] {
+    return series_end(file_.get(), std::string(kParticles) + "/count").entries;
+  }));
+  const long capacity = particle_capacity();
+  return run_growth::snapshot_rows(frames, capacity, std::max(capacity, total),
+                                   growth_layout().particles);
+}
+
+std::uintmax_t RunFile::completion_growth(long total) const {
+  return h5::naming_file_in_errors(path_, "reading", [&] {
+    const hid_t f = file_.get();
+    const long frames = long(series_end(f, std::string(kParticles) + "/count").entries);
+    // The new frame's views, and those of earlier frames without any (a file from before
+    // views, resumed).
+    long without_views = 1;
+    for (long k = 0; k < frames; ++k) without_views += h5::exists(f, frame_view_group(k)) ? 0 : 1;
+    const long vertices = vertex_index_length(f);
+    return run_growth::series_entries(frames, growth_layout().frame_series) +
+           run_growth::frame_views(without_views, frame_view_arrays().size() + 2, vertices,
+                                   std::max({vertices, total, particle_capacity()}),
+                                   kVertexIndexChunk);
+  });
 }
 
 RunFile RunFile::create(const fs::path& path, const std::string& scene_toml_as_given,
@@ -406,17 +603,34 @@ RunFile RunFile::create(const fs::path& path, const std::string& scene_toml_as_g
   return RunFile(path, std::move(file), dim);
 }
 
-RunFile RunFile::open_for_resume(const fs::path& path, long checkpoint_step) {
+RunFile RunFile::open_for_resume(const fs::path& path, long checkpoint_step,
+                                 const RunFileRecord& checkpoint) {
   Handle file = open_existing(path, H5F_ACC_RDWR, "resume");
-  const int dim = h5::naming_file_in_errors(path, "resuming", [&] {
-    std::vector<std::string> groups;
-    h5::check(H5Lvisit(file.get(), H5_INDEX_NAME, H5_ITER_INC, collect_step_groups, &groups),
-              "listing the time series");
-    for (const std::string& group : groups) truncate_after(file.get(), group, checkpoint_step);
-    h5::check(H5Fflush(file.get(), H5F_SCOPE_GLOBAL), "flushing");
-    return read_dim(file.get());
+  h5::naming_file_in_errors(path, "resuming", [&] {
+    check_against_checkpoint(file.get(), path, checkpoint_step, checkpoint);
   });
-  return RunFile(path, std::move(file), dim);
+  const int dim = h5::naming_file_in_errors(path, "resuming", [&] { return read_dim(file.get()); });
+  RunFile run(path, std::move(file), dim);
+  run.make_room(run_growth::truncation() + run_growth::attribute(64), "resuming");
+  h5::naming_file_in_errors(path, "resuming", [&] {
+    const hid_t f = run.file_.get();
+    std::vector<std::string> groups;
+    h5::check(H5Lvisit(f, H5_INDEX_NAME, H5_ITER_INC, collect_step_groups, &groups),
+              "listing the time series");
+    for (const std::string& group : groups) truncate_after(f, group, checkpoint_step);
+    // A run from before the record: from now on its checkpoints record this file.
+    if (read_run_id(f).empty()) h5::write_attribute(f, kRunIdAttribute, new_run_id());
+  });
+  run.flush();
+  return run;
+}
+
+void RunFile::check_resumable(const fs::path& path, long checkpoint_step,
+                              const RunFileRecord& checkpoint) {
+  Handle file = open_existing(path, H5F_ACC_RDONLY, "resume");
+  h5::naming_file_in_errors(path, "resuming", [&] {
+    check_against_checkpoint(file.get(), path, checkpoint_step, checkpoint);
+  });
 }
 
 RunFile RunFile::open_for_append(const fs::path& path) {
@@ -453,9 +667,13 @@ RunFile RunFile::open_read_only(const fs::path& path) {
 
 void RunFile::append_snapshot(long step, double time, const HostParticles& p) {
   const long n = long(p.size());
+  make_room(snapshot_growth(n) + completion_growth(n), "the next snapshot");
   const long frame = write_snapshot_rows(
       step, p, n > 0 ? std::vector<FileRows>{{0, n}} : std::vector<FileRows>{}, n);
   complete_snapshot(frame, step, time, n);
+  // Settled at once: the next append reserves room past this one's actual end, not past
+  // its bound (which deflate's worst case makes several times a small frame's size).
+  flush();
 }
 
 long RunFile::write_snapshot_rows(long step, const HostParticles& p,
@@ -572,6 +790,21 @@ void RunFile::append_snapshot_collectively(const std::filesystem::path& path, MP
   long frame = 0;
   {
     RunFile shared = open_collectively(path, comm);
+    // Room for the frame before any process writes, reserved by rank 0 and known to all:
+    // refused, every process leaves the file as it was (docs/parallel.md, "Errors").
+    // Every process reads the layout: datasets opened by rank 0 alone left the processes'
+    // metadata caches disagreeing, and the frame's chunks damaged ("inflate() failed").
+    const std::uintmax_t growth = shared.snapshot_growth(part.total);
+    int refused = rank == 0 ? shared.try_make_room(growth) : 0;
+    MPI_Bcast(&refused, 1, MPI_INT, 0, comm);
+    if (refused != 0) {
+      failure_agreed() = true;
+      if (rank != 0) throw PeerFailed(0);
+      throw UserError(fmt::format(
+          "writing '{}' failed: no room for the next snapshot ({:.2f} MB reserved before "
+          "writing): {}",
+          path.string(), double(growth) / 1e6, std::strerror(refused)));
+    }
     try {
       frame = shared.write_snapshot_rows(step, part.particles, part.rows, part.total);
     } catch (...) {
@@ -583,10 +816,17 @@ void RunFile::append_snapshot_collectively(const std::filesystem::path& path, MP
   }  // closed (collective) before rank 0 reopens it
   if (rank != 0) return;
   root_file.emplace(open_for_append(path));
+  root_file->make_room(root_file->completion_growth(part.total), "the next snapshot");
   root_file->complete_snapshot(frame, step, time, part.total);
+  root_file->flush();
 }
 
 void RunFile::append_time_series(const TimeSeriesRow& row) {
+  const long rows = long(h5::naming_file_in_errors(path_, "reading", [&] {
+    return series_end(file_.get(), std::string(kObservables) + "/particles").entries;
+  }));
+  make_room(run_growth::series_entries(rows, growth_layout().row_series),
+            "the next time-series row");
   h5::naming_file_in_errors(path_, "writing", [&] {
     const hid_t f = file_.get();
     const std::string root = kObservables;
@@ -622,6 +862,16 @@ std::vector<SnapshotFrame> RunFile::frames() const {
   });
 }
 
+RunFileRecord RunFile::record() const {
+  return h5::naming_file_in_errors(path_, "reading", [&] {
+    RunFileRecord r;
+    r.run_id = read_run_id(file_.get());
+    r.frames = long(series_end(file_.get(), std::string(kParticles) + "/count").entries);
+    r.rows = long(series_end(file_.get(), std::string(kObservables) + "/particles").entries);
+    return r;
+  });
+}
+
 long RunFile::particle_capacity() const {
   return h5::naming_file_in_errors(path_, "reading", [&] {
     Handle set = h5::open_dataset(file_.get(), std::string(kParticles) + "/position/value");
@@ -645,12 +895,14 @@ std::string RunFile::scene_resolved() const {
 }
 
 void RunFile::write_attribute(const std::string& object, const std::string& name, double value) {
+  make_room(run_growth::attribute(sizeof value), "an attribute");
   h5::naming_file_in_errors(path_, "writing", [&] {
     h5::write_attribute(attribute_target(file_.get(), object).get(), name, value);
   });
 }
 
 void RunFile::write_attribute(const std::string& object, const std::string& name, long value) {
+  make_room(run_growth::attribute(sizeof value), "an attribute");
   h5::naming_file_in_errors(path_, "writing", [&] {
     h5::write_attribute(attribute_target(file_.get(), object).get(), name, value);
   });
@@ -658,6 +910,7 @@ void RunFile::write_attribute(const std::string& object, const std::string& name
 
 void RunFile::write_attribute(const std::string& object, const std::string& name,
                               const std::string& value) {
+  make_room(run_growth::attribute(value.size()), "an attribute");
   h5::naming_file_in_errors(path_, "writing", [&] {
     h5::write_attribute(attribute_target(file_.get(), object).get(), name, value);
   });
@@ -694,6 +947,7 @@ void RunFile::write_array(const std::string& dataset, const std::vector<double>&
   if (elements != values.size()) {
     throw std::invalid_argument("RunFile::write_array: shape does not match the value count");
   }
+  make_room(run_growth::whole_dataset(values.size() * sizeof(double)), "'" + dataset + "'");
   h5::naming_file_in_errors(path_, "writing",
                             [&] { h5::write_dataset(file_.get(), dataset, values, dims); });
 }
@@ -711,6 +965,13 @@ std::vector<double> RunFile::read_array(const std::string& dataset,
 void RunFile::flush() {
   h5::naming_file_in_errors(
       path_, "flushing", [&] { h5::check(H5Fflush(file_.get(), H5F_SCOPE_GLOBAL), "H5Fflush"); });
+  // Everything is written: the room reserved past HDF5's end is given back.
+  haddr_t end = 0;
+  h5::naming_file_in_errors(path_, "flushing", [&] {
+    h5::check(H5Fget_eoa(file_.get(), &end), "reading the end of allocation");
+  });
+  trim_file(path_, end);
+  settle();
 }
 
 }  // namespace granshock

@@ -2,10 +2,16 @@
 // H5MD-style particle snapshots and the time series. Everything time-indexed is
 // appended frame by frame and can be cut back to a checkpoint's step on resume, so a
 // resumed run continues the same file as if it had never stopped.
+//
+// A full disk: HDF5 changes the file in place, and a write that fails half-way can leave
+// it unreadable. Every change first reserves on disk the most it can grow the file
+// (run_file_growth.hpp); a change that finds no room is refused before anything is
+// written, and the file stays as it was after the last one (docs/output_format.md).
 #pragma once
 
 #include <mpi.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -14,6 +20,7 @@
 #include "frame_views.hpp"
 #include "hdf5_handle.hpp"
 #include "host_particles.hpp"
+#include "run_file_growth.hpp"
 #include "snapshot_frame.hpp"
 #include "snapshot_part.hpp"
 #include "time_series.hpp"
@@ -30,18 +37,34 @@ struct SnapshotContents {
   bool angular_velocity = false;
 };
 
+// What a checkpoint records of the run file beside it (docs/output_format.md, "What a
+// resume checks"): the run's identity and the entries run.h5 held when it was written.
+struct RunFileRecord {
+  std::string run_id;  // empty: a checkpoint from before the record, which is not checked
+  long frames = -1;    // snapshot frames
+  long rows = -1;      // time-series rows
+};
+
 class RunFile {
  public:
-  // Creates (or replaces) the file. dim is 2 (positions and velocities store x, y) or 3.
-  // Throws UserError naming the path when it cannot be created.
+  // Creates (or replaces) the file, with a new random run id. dim is 2 (positions and
+  // velocities store x, y) or 3. Throws UserError naming the path when it cannot be created.
   static RunFile create(const std::filesystem::path& path, const std::string& scene_toml_as_given,
                         const std::string& scene_toml_resolved, int dim,
                         const SnapshotContents& contents = {});
 
   // Reopens an existing run file read-write and drops every time-indexed entry (snapshot
-  // frames, time-series rows) whose step is after checkpoint_step. Throws UserError when
-  // the file is missing or is not a granshock run file.
-  static RunFile open_for_resume(const std::filesystem::path& path, long checkpoint_step);
+  // frames, time-series rows) whose step is after checkpoint_step. Throws UserError, with
+  // the file unchanged, when it is missing, is not a granshock run file, or does not match
+  // the checkpoint's record: another run's, or holding other entries up to its step. A
+  // checkpoint from before the record is not checked; a file without a run id gets one.
+  static RunFile open_for_resume(const std::filesystem::path& path, long checkpoint_step,
+                                 const RunFileRecord& checkpoint);
+
+  // Whether open_for_resume would accept the file, changing nothing: throws its UserError
+  // when not, or when HDF5 cannot open it.
+  static void check_resumable(const std::filesystem::path& path, long checkpoint_step,
+                              const RunFileRecord& checkpoint);
 
   // Opens for reading only (granshock fields, tests).
   static RunFile open_read_only(const std::filesystem::path& path);
@@ -54,9 +77,9 @@ class RunFile {
   RunFile& operator=(const RunFile&) = delete;
   ~RunFile() = default;  // the handle closes the file
 
-  // Appends one frame. Steps must increase from frame to frame (resume relies on it);
-  // throws std::invalid_argument otherwise, when p's arrays differ in length (an empty
-  // angular_velocity stands for zeros) or when a species has no radius.
+  // Appends one frame, and flushes. Steps must increase from frame to frame (resume relies
+  // on it); throws std::invalid_argument otherwise, when p's arrays differ in length (an
+  // empty angular_velocity stands for zeros) or when a species has no radius.
   void append_snapshot(long step, double time, const HostParticles& p);
 
   // Several processes (docs/parallel.md, "Output"): appends one frame to the run file at
@@ -77,6 +100,8 @@ class RunFile {
 
   // The frames written so far, in order.
   std::vector<SnapshotFrame> frames() const;
+  // The run id and the frames and rows written so far, for a checkpoint to record.
+  RunFileRecord record() const;
   // The particle extent of the snapshot datasets (>= every frame's count).
   long particle_capacity() const;
   int dim() const { return dim_; }
@@ -108,11 +133,26 @@ class RunFile {
                                  std::vector<long>* shape = nullptr) const;
 
   // Pushes buffered data to the file (H5Fflush), so that a crash loses at most what was
-  // appended since.
+  // appended since, and gives back the room reserved for it that was not used.
   void flush();
 
  private:
   RunFile(std::filesystem::path path, h5::Handle file, int dim);
+  // Room on disk for `growth` more bytes than the changes since the last flush may take
+  // (io/file_room.hpp): 0, or the errno that refused it. make_room throws UserError.
+  int try_make_room(std::uintmax_t growth);
+  void make_room(std::uintmax_t growth, const std::string& what);
+  // HDF5's end of allocation now: what the file holds, written, after a flush or open.
+  void settle();
+  std::uintmax_t snapshot_growth(long total) const;  // the rows of a frame of `total`
+  // Its step, time, count and views (io/frame_views.hpp).
+  std::uintmax_t completion_growth(long total) const;
+  // The datasets those bounds count with, read from the file once (they do not change).
+  struct GrowthLayout {
+    std::vector<run_growth::SeriesArray> frame_series, row_series;
+    std::vector<run_growth::ParticleArray> particles;
+  };
+  const GrowthLayout& growth_layout() const;
   // Every process of `comm` at once, for write_snapshot_rows alone.
   static RunFile open_collectively(const std::filesystem::path& path, MPI_Comm comm);
   // A frame's particle data: `p` to the file `rows` of a frame of `total` rows (the next
@@ -126,6 +166,10 @@ class RunFile {
   h5::Handle transfer_;  // collective transfers: a file every process opened; else none
   int dim_ = 2;
   SnapshotContents contents_;
+  std::uintmax_t settled_ = 0;   // HDF5's end of allocation at the last flush or open
+  std::uintmax_t promised_ = 0;  // the most the changes since can have grown it
+  std::uintmax_t reserved_ = 0;  // the file's bytes allocated on disk
+  mutable std::optional<GrowthLayout> growth_layout_;
 };
 
 }  // namespace granshock

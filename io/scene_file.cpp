@@ -5,12 +5,10 @@
 #include <fmt/format.h>
 
 #include <toml++/toml.h>
-#include <cerrno>
-#include <cstring>
-#include <fstream>
 #include <set>
 #include <sstream>
 
+#include "regular_file.hpp"
 #include "scene_schema.hpp"
 #include "table_reader.hpp"
 #include "user_error.hpp"
@@ -122,27 +120,8 @@ std::vector<std::string> differing_keys(const std::string& toml_a, const std::st
 
 LoadedScene load_scene_file(const std::filesystem::path& path,
                             const std::vector<std::string>& overrides) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  const fs::file_status status = fs::status(path, ec);
-  if (!fs::exists(status))
-    throw UserError(fmt::format("cannot read scene file '{}': no such file", clip(path.string())));
-  if (fs::is_directory(status))
-    throw UserError(
-        fmt::format("scene file '{}' is a directory, not a TOML file", clip(path.string())));
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-    throw UserError(
-        fmt::format("cannot read scene file '{}': {}", clip(path.string()), std::strerror(errno)));
-  // Bounded read: a scene is a short text, and /dev/zero or a huge file must not hang us.
-  std::string text(kMaxSceneFileBytes + 1, '\0');
-  in.read(text.data(), std::streamsize(text.size()));
-  text.resize(std::size_t(in.gcount()));
-  if (text.size() > kMaxSceneFileBytes)
-    throw UserError(
-        fmt::format("scene file '{}' is longer than {} bytes; a scene is a short "
-                    "TOML text",
-                    clip(path.string()), kMaxSceneFileBytes));
+  // Bounded read: a scene is a short text, and a huge file must not hang us.
+  const std::string text = read_regular_file(path, "scene file", kMaxSceneFileBytes);
   return parse_scene(text, overrides, path.string());
 }
 

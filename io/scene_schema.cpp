@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <map>
@@ -24,6 +25,46 @@ namespace {
 
 // More blocks than this only divide the production window into noise (and memory).
 constexpr long kMaxBlocks = 10000;
+
+// The most species a scene may have (docs/scene_format.md, "Limits"). Every pair has its
+// own contact table, written in full into the resolved scene (about 160 KB of TOML at 64
+// species, 2.4 MB at 256: past the 1 MiB a scene file may hold), kept as the force
+// kernel's coefficient table (200 KB at 64, in cache) and collided twice for summary.json;
+// the field sums grow with the species as well. The paper's mixture has two.
+constexpr long kMaxSpecies = 64;
+
+// Physical ranges of the scene's numbers (docs/scene_format.md, "Keys"): values outside
+// them passed every check and failed late, as -nan particle counts (units.d = 1e-320),
+// a diameter of 1e-320 m, or a restitution of 1e-6 that ran the whole simulation before
+// its effective restitution could not be measured.
+struct Range {
+  double lo, hi;
+  const char* why;
+};
+// Particle sizes (and the unit d): micrometre powders to metre boulders.
+constexpr Range kDiameter = {1e-6, 1.0, "from a micrometre powder to a metre boulder"};
+constexpr Range kYoungsModulus = {1e3, 1e13, "from a hydrogel to past diamond's 1.2e12 Pa"};
+constexpr Range kDensity = {1.0, 1e5, "from an aerogel to past osmium's 22590 kg/m3"};
+// Below 0.01 the damped Hertz law's rebound creeps: a contact lasts 2.7 t_c at e = 0.01 and
+// 25 t_c at e = 1e-6, and the integrator at the usual steps returns under half of e
+// (docs/contact_model.md, "Restitution range").
+constexpr Range kRestitution = {
+    0.01, 1.0,
+    "below 0.01 the damped contact law's rebound is not resolved (docs/contact_model.md)"};
+constexpr Range kFriction = {0.0, 10.0, "Coulomb friction of real materials is below 2"};
+// Speeds: the inflow, its fluctuation and the speeds contacts are calibrated at.
+constexpr Range kSpeed = {1e-6, 1e4, "from a micrometre per second to hypervelocity"};
+constexpr Range kSigma = {0.0, 1e4, "at most hypervelocity"};
+constexpr Range kMach = {0.1, 1e4, "from a subsonic to a hypersonic gas"};
+constexpr Range kSoftening = {1.0, 1e9, "every modulus divided by this stays at least 1e-9 of it"};
+constexpr Range kNumberFraction = {1e-6, 1.0, "at least one particle in a million"};
+constexpr double kMinAreaFraction = 1e-6;
+// The domain's extent: positions are double, resolved to 2e-12 m at 10 km.
+constexpr double kMaxDomainLength = 1e4;
+constexpr Range kProgressInterval = {0.01, 1e9, "wall-clock seconds"};
+
+// A pair key's name for the obstacle ("a-obstacle"); no species may take it.
+const char* const kObstacleName = "obstacle";
 
 // A scene name names the run directory runs/<name>: it must be a plain file name.
 bool is_safe_name(const std::string& name) {
@@ -50,6 +91,7 @@ struct Reading {
   std::optional<double> calibration_speed;        // default: the inflow speed
   Material material;
   Species species;
+  std::map<std::string, int> species_by_name;  // pair names are looked up once per pair
   double number_fraction = 0;
   int pair_a = 0, pair_b = -1;  // pair_b < 0: "a-obstacle"
   Obstacle obstacle;
@@ -122,10 +164,8 @@ const Material& material_named(Reading& st, const std::string& key, const std::s
 }
 
 int find_species(const Reading& st, const std::string& name) {
-  const auto& species = st.s.setup.species;
-  for (std::size_t a = 0; a < species.size(); ++a)
-    if (species[a].name == name) return int(a);
-  return -1;
+  const auto it = st.species_by_name.find(name);
+  return it == st.species_by_name.end() ? -1 : it->second;
 }
 
 int species_index(const Reading& st, const std::string& key, const std::string& name) {
@@ -138,7 +178,9 @@ int species_index(const Reading& st, const std::string& key, const std::string& 
 
 const Key kUnitsKeys[] = {
     {"d", "number (m)",
-     [](TableReader& r, Reading& st, const std::string& k) { st.s.d_m = r.positive(k, 1e-3); },
+     [](TableReader& r, Reading& st, const std::string& k) {
+       st.s.d_m = r.number_within(k, kDiameter.lo, kDiameter.hi, 1e-3, kDiameter.why);
+     },
      [](const Writing& w, toml::table& t, const std::string& k) { t.insert(k, w.s.d_m); }},
 };
 const Table kUnits = table("units", kUnitsKeys);
@@ -178,7 +220,8 @@ const Table kScene = table("scene", kSceneKeys);
 const Key kMaterialKeys[] = {
     {"youngs_modulus", "number (Pa)",
      [](TableReader& r, Reading& st, const std::string& k) {
-       st.material.youngs_modulus_pa = r.positive(k);
+       st.material.youngs_modulus_pa =
+           r.number_within(k, kYoungsModulus.lo, kYoungsModulus.hi, {}, kYoungsModulus.why);
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.material->youngs_modulus_pa);
@@ -192,7 +235,7 @@ const Key kMaterialKeys[] = {
      }},
     {"density", "number (kg/m3)",
      [](TableReader& r, Reading& st, const std::string& k) {
-       st.material.density_kg_m3 = r.positive(k);
+       st.material.density_kg_m3 = r.number_within(k, kDensity.lo, kDensity.hi, {}, kDensity.why);
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.material->density_kg_m3);
@@ -200,12 +243,39 @@ const Key kMaterialKeys[] = {
 };
 const Table kMaterial = table("materials.NAME", kMaterialKeys);
 
+// A species' or material's name goes into table headers, CSV headers, file names' text and
+// messages: 1 to 64 characters, none of them a control character (a newline in a name
+// ended as an internal error in the resolved scene's TOML).
+// The name as a message shows it: quoted, control characters escaped ("st\\neel").
+std::string show_name(const std::string& name) {
+  std::string shown = "\"";
+  for (char c : name) {
+    if (c == '\n')
+      shown += "\\n";
+    else if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
+      shown += fmt::format("\\x{:02x}", int(static_cast<unsigned char>(c)));
+    else
+      shown += c;
+  }
+  return shown + '"';
+}
+
+void check_name(const std::string& path, const std::string& name) {
+  const bool control = std::any_of(name.begin(), name.end(), [](char c) {
+    return (static_cast<unsigned char>(c) < 0x20) || c == 0x7f;
+  });
+  if (control || name.empty() || name.size() > 64)
+    fail(path, show_name(name),
+         "a name is 1 to 64 characters, without control characters (newline, tab, ...)");
+}
+
 // Materials defined in the scene join the built-in steel and aluminium (or replace them).
 void read_materials(TableReader& top, Reading& st) {
   const toml::table* mt = top.table("materials");
   if (!mt) return;
   for (const auto& [key, value] : *mt) {
     const std::string name(key.str());
+    check_name("materials." + show_name(name), name);
     if (!value.is_table()) fail("materials." + name, show(value), "must be a table");
     TableReader r(value.as_table(), "materials." + name, st.s.d_m);
     st.material = Material{};
@@ -221,9 +291,13 @@ const Key kSpeciesKeys[] = {
     {"name", "string",
      [](TableReader& r, Reading& st, const std::string& k) {
        st.species.name = r.string(k);
-       for (const auto& other : st.s.setup.species)
-         if (other.name == st.species.name)
-           fail(r.key(k), '"' + st.species.name + '"', "species names must be unique");
+       check_name(r.key(k), st.species.name);
+       if (find_species(st, st.species.name) >= 0)
+         fail(r.key(k), '"' + st.species.name + '"', "species names must be unique");
+       if (st.species.name == kObstacleName || st.species.name.empty())
+         fail(r.key(k), '"' + st.species.name + '"',
+              "a species may not be named \"obstacle\" (contact.pairs.\"a-obstacle\" names "
+              "the obstacle) nor \"\"");
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.s.setup.species[w.species].name);
@@ -237,14 +311,15 @@ const Key kSpeciesKeys[] = {
      }},
     {"diameter", "length",
      [](TableReader& r, Reading& st, const std::string& k) {
-       st.species.diameter_m = r.positive_length(k);
+       st.species.diameter_m = r.length_within(k, kDiameter.lo, kDiameter.hi, {}, kDiameter.why);
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.s.setup.species[w.species].diameter_m);
      }},
     {"number_fraction", "number",
      [](TableReader& r, Reading& st, const std::string& k) {
-       st.number_fraction = r.number_in(k, 0, 1, true, false);
+       st.number_fraction =
+           r.number_within(k, kNumberFraction.lo, kNumberFraction.hi, {}, kNumberFraction.why);
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.s.inflow.number_fraction[w.species]);
@@ -252,10 +327,41 @@ const Key kSpeciesKeys[] = {
 };
 const Table kSpecies = table("[[species]]", kSpeciesKeys);
 
+// Every pair key ("a-b" in either order, "a-obstacle") must name one pair: a dash inside a
+// species name could make "a-b-c" both a with b-c and a-b with c, and a species named
+// "obstacle" would share its keys with the obstacle, so that one key set two pairs while
+// the resolved scene showed one. Checked over all pair keys once the species are known.
+void refuse_ambiguous_pair_keys(const Reading& st) {
+  const std::vector<Species>& species = st.s.setup.species;
+  const int n = int(species.size());
+  std::map<std::string, std::pair<int, int>> pair_of_key;  // b = -1: the obstacle
+  const auto claim = [&](const std::string& key, int a, int b) {
+    const std::pair<int, int> pair(b < 0 ? a : std::min(a, b), b < 0 ? b : std::max(a, b));
+    const auto [it, fresh] = pair_of_key.emplace(key, pair);
+    if (fresh || it->second == pair) return;
+    const auto name = [&](int k) { return k < 0 ? std::string(kObstacleName) : species[k].name; };
+    const int later = std::max({a, b, it->second.first, it->second.second});
+    fail(fmt::format("species.{}.name", later), '"' + species[later].name + '"',
+         fmt::format("the pair key \"{}\" would name both {} with {} and {} with {}; choose "
+                     "species names that no dash can split two ways",
+                     key, name(it->second.first), name(it->second.second), name(pair.first),
+                     name(pair.second)));
+  };
+  for (int a = 0; a < n; ++a) {
+    for (int b = 0; b < n; ++b) claim(species[a].name + "-" + species[b].name, a, b);
+    claim(species[a].name + "-" + kObstacleName, a, -1);
+  }
+}
+
 void read_species(TableReader& top, Reading& st) {
   const toml::node* sp = top.node("species");
   if (!sp || !sp->is_array_of_tables() || sp->as_array()->empty())
     fail("species", sp ? show(*sp) : "(missing)", "needs one or more [[species]] tables");
+  if (sp->as_array()->size() > std::size_t(kMaxSpecies))
+    fail("species", fmt::format("{} [[species]] tables", sp->as_array()->size()),
+         fmt::format("at most {} species (docs/scene_format.md, \"Limits\": every pair of "
+                     "species has its own contact table)",
+                     kMaxSpecies));
   double fraction_sum = 0;
   int index = 0;
   for (const auto& item : *sp->as_array()) {
@@ -264,12 +370,14 @@ void read_species(TableReader& top, Reading& st) {
     for (const Key& k : kSpecies) k.read(r, st, k.name);
     fraction_sum += st.number_fraction;
     st.s.inflow.number_fraction.push_back(st.number_fraction);
+    st.species_by_name[st.species.name] = int(st.s.setup.species.size());
     st.s.setup.species.push_back(st.species);
     r.finish();
   }
   if (std::abs(fraction_sum - 1.0) > 1e-9)
     fail("species.*.number_fraction", fmt::format("sum {}", fraction_sum),
          "the number fractions must add up to 1");
+  refuse_ambiguous_pair_keys(st);
 }
 
 // ---- [contact.pairs."a-b"] ---------------------------------------------------------------
@@ -280,9 +388,11 @@ const Key kPairKeys[] = {
        ContactSettings& c = st.s.setup.contacts;
        const int a = st.pair_a, b = st.pair_b;
        if (b < 0) {
-         c.obstacle_restitution[a] = r.number_in(k, 0, 1, true, false, c.obstacle_restitution[a]);
+         c.obstacle_restitution[a] = r.number_within(k, kRestitution.lo, kRestitution.hi,
+                                                     c.obstacle_restitution[a], kRestitution.why);
        } else {
-         const double e = r.number_in(k, 0, 1, true, false, c.restitution[a][b]);
+         const double e = r.number_within(k, kRestitution.lo, kRestitution.hi, c.restitution[a][b],
+                                          kRestitution.why);
          c.restitution[a][b] = c.restitution[b][a] = e;
        }
      },
@@ -296,9 +406,11 @@ const Key kPairKeys[] = {
        ContactSettings& c = st.s.setup.contacts;
        const int a = st.pair_a, b = st.pair_b;
        if (b < 0) {
-         c.obstacle_friction[a] = r.number_in(k, 0, INFINITY, false, true, c.obstacle_friction[a]);
+         c.obstacle_friction[a] =
+             r.number_within(k, kFriction.lo, kFriction.hi, c.obstacle_friction[a], kFriction.why);
        } else {
-         const double mu = r.number_in(k, 0, INFINITY, false, true, c.friction[a][b]);
+         const double mu =
+             r.number_within(k, kFriction.lo, kFriction.hi, c.friction[a][b], kFriction.why);
          c.friction[a][b] = c.friction[b][a] = mu;
        }
      },
@@ -363,7 +475,7 @@ void write_pairs(const Writing& w, toml::table& t, const std::string& k) {
 const Key kContactKeys[] = {
     {"restitution", "number",
      [](TableReader& r, Reading& st, const std::string& k) {
-       const double e = r.number_in(k, 0, 1, true, false);
+       const double e = r.number_within(k, kRestitution.lo, kRestitution.hi, {}, kRestitution.why);
        st.s.setup.contacts = ContactSettings::uniform(int(st.s.setup.species.size()), e, 0.0);
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
@@ -371,7 +483,7 @@ const Key kContactKeys[] = {
      }},
     {"friction", "number",
      [](TableReader& r, Reading& st, const std::string& k) {
-       const double mu = r.number_in(k, 0, INFINITY, false, true, 0.0);
+       const double mu = r.number_within(k, kFriction.lo, kFriction.hi, 0.0, kFriction.why);
        ContactSettings& c = st.s.setup.contacts;
        for (auto& row : c.friction) row.assign(row.size(), mu);
        c.obstacle_friction.assign(c.obstacle_friction.size(), mu);
@@ -390,14 +502,16 @@ const Key kContactKeys[] = {
     // Its default, the inflow speed, is known once [inflow] is read (read_scene).
     {"calibration_speed", "number (m/s)",
      [](TableReader& r, Reading& st, const std::string& k) {
-       if (r.has(k)) st.calibration_speed = r.positive(k);
+       if (r.has(k))
+         st.calibration_speed = r.number_within(k, kSpeed.lo, kSpeed.hi, {}, kSpeed.why);
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.s.setup.contacts.calibration_speed_m_per_s);
      }},
     {"softening", "number",
      [](TableReader& r, Reading& st, const std::string& k) {
-       st.s.setup.contacts.softening = r.number_in(k, 1, INFINITY, false, true, 1.0);
+       st.s.setup.contacts.softening =
+           r.number_within(k, kSoftening.lo, kSoftening.hi, 1.0, kSoftening.why);
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.s.setup.contacts.softening);
@@ -419,7 +533,8 @@ const Key kContactKeys[] = {
     // Its default, the inflow speed, is known once [inflow] is read (read_scene).
     {"characteristic_velocity", "number (m/s)",
      [](TableReader& r, Reading& st, const std::string& k) {
-       if (r.has(k)) st.characteristic_velocity = r.positive(k);
+       if (r.has(k))
+         st.characteristic_velocity = r.number_within(k, kSpeed.lo, kSpeed.hi, {}, kSpeed.why);
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.s.setup.contacts.options.characteristic_velocity_m_per_s);
@@ -485,6 +600,9 @@ const Key kDomainKeys[] = {
     {"width", "length",
      [](TableReader& r, Reading& st, const std::string& k) {
        st.s.setup.box.hi[0] = r.positive_length(k);
+       if (st.s.setup.box.hi[0] > kMaxDomainLength)
+         fail(r.key(k), fmt::format("{} m", st.s.setup.box.hi[0]),
+              fmt::format("must be at most {:g} m", kMaxDomainLength));
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.s.setup.box.hi[0]);
@@ -492,6 +610,9 @@ const Key kDomainKeys[] = {
     {"length", "length",
      [](TableReader& r, Reading& st, const std::string& k) {
        st.s.setup.box.hi[1] = r.positive_length(k);
+       if (st.s.setup.box.hi[1] > kMaxDomainLength)
+         fail(r.key(k), fmt::format("{} m", st.s.setup.box.hi[1]),
+              fmt::format("must be at most {:g} m", kMaxDomainLength));
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.s.setup.box.hi[1]);
@@ -503,7 +624,9 @@ void after_domain(Reading& st) {
   const double width = setup.box.hi[0], range = setup.max_diameter() + setup.skin_m;
   if (width < 3 * range)
     fail("domain.width", fmt::format("{} m", width),
-         fmt::format("must be at least 3 interaction ranges ({} m)", 3 * range));
+         fmt::format("must be at least 3 interaction ranges, each the largest diameter plus "
+                     "numerics.skin ({} m)",
+                     3 * range));
   setup.box.lo = {0, 0, 0};
   setup.box.hi[2] = setup.max_diameter();
   setup.box.periodic = {true, false, false};
@@ -517,6 +640,10 @@ const Key kInflowKeys[] = {
     {"area_fraction", "number",
      [](TableReader& r, Reading& st, const std::string& k) {
        const double phi = st.s.inflow.area_fraction = r.positive(k);
+       if (phi < kMinAreaFraction)
+         fail(r.key(k), fmt::format("{}", phi),
+              fmt::format("must be at least {}: a gas that dilute leaves the field bins empty",
+                          kMinAreaFraction));
        if (phi > kMaxInflowAreaFraction)
          fail(r.key(k), fmt::format("{}", phi),
               fmt::format("must be in (0, {}]: random insertion in the strip reaches about 0.42 "
@@ -530,7 +657,7 @@ const Key kInflowKeys[] = {
      }},
     {"velocity", "number (m/s)",
      [](TableReader& r, Reading& st, const std::string& k) {
-       st.s.inflow.speed_m_per_s = r.positive(k);
+       st.s.inflow.speed_m_per_s = r.number_within(k, kSpeed.lo, kSpeed.hi, {}, kSpeed.why);
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.s.inflow.speed_m_per_s);
@@ -541,13 +668,15 @@ const Key kInflowKeys[] = {
        if (r.has(k) == r.has("mach"))
          fail("inflow.sigma / inflow.mach", "(both or neither)",
               "give exactly one: sigma (m/s) or mach");
-       if (r.has(k)) st.s.inflow.sigma_m_per_s = r.number_in(k, 0, INFINITY, false, true);
+       if (r.has(k))
+         st.s.inflow.sigma_m_per_s = r.number_within(k, kSigma.lo, kSigma.hi, {}, kSigma.why);
      },
      [](const Writing& w, toml::table& t, const std::string& k) { t.insert(k, w.s.inflow.sigma); }},
     // Resolved into inflow.sigma (resolve_inflow), which carries it into the resolved scene.
     {"mach", "number",
      [](TableReader& r, Reading& st, const std::string& k) {
-       if (r.has(k)) st.s.inflow.target_mach = r.positive(k);
+       if (r.has(k))
+         st.s.inflow.target_mach = r.number_within(k, kMach.lo, kMach.hi, {}, kMach.why);
      },
      [](const Writing&, toml::table&, const std::string&) {}},
     // Where the Mach number is meant (docs/fields.md, "Three upstream Mach numbers"). Like
@@ -566,7 +695,8 @@ const Key kInflowKeys[] = {
        const double strip = st.s.inflow.strip_m = r.length(k, 2 * st.s.d_m);
        if (strip < st.s.setup.max_diameter() || strip >= st.s.setup.box.hi[1])
          fail(r.key(k), fmt::format("{} m", strip),
-              "must be at least one diameter and shorter than the domain");
+              fmt::format("must be at least one diameter and shorter than domain.length ({} m)",
+                          st.s.setup.box.hi[1]));
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.s.inflow.strip_m);
@@ -580,6 +710,13 @@ const Key kObstacleKeys[] = {
     {"diameter", "length",
      [](TableReader& r, Reading& st, const std::string& k) {
        st.obstacle.diameter_m = r.positive_length(k);
+       // The contact law treats the cylinder as a wall of infinite radius
+       // (core/pair_properties.hpp).
+       if (st.obstacle.diameter_m < st.s.setup.max_diameter())
+         fail(r.key(k), fmt::format("{} m", st.obstacle.diameter_m),
+              fmt::format("must be at least the largest particle diameter ({} m): the contact "
+                          "law treats the cylinder as a wall",
+                          st.s.setup.max_diameter()));
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.s.setup.obstacle->diameter_m);
@@ -635,7 +772,10 @@ const Key kTimeKeys[] = {
     {"production_start", "number (s)",
      [](TableReader& r, Reading& st, const std::string& k) {
        const double duration = st.s.run.duration_s;
-       st.s.run.production_start_s = r.number_in(k, 0, duration, false, true, 0.5 * duration);
+       const double start = st.s.run.production_start_s = r.number(k, 0.5 * duration);
+       if (!(start >= 0 && start < duration))
+         fail(r.key(k), fmt::format("{}", start),
+              fmt::format("must be in [0, {}): before the end of time.duration", duration));
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.s.run.production_start_s);
@@ -669,7 +809,8 @@ const Key kOutputKeys[] = {
      }},
     {"progress_interval", "number (s)",
      [](TableReader& r, Reading& st, const std::string& k) {
-       st.s.run.progress_interval_s = r.positive(k, 2.0);
+       st.s.run.progress_interval_s = r.number_within(k, kProgressInterval.lo, kProgressInterval.hi,
+                                                      2.0, kProgressInterval.why);
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.s.run.progress_interval_s);

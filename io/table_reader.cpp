@@ -85,6 +85,15 @@ double TableReader::number_in(const std::string& name, double lo, double hi, boo
   return v;
 }
 
+double TableReader::number_within(const std::string& name, double lo, double hi,
+                                  std::optional<double> fallback, const std::string& why) {
+  const double v = number(name, fallback);
+  if (!(v >= lo && v <= hi))
+    fail(key(name), fmt::format("{}", v),
+         fmt::format("must be in [{:g}, {:g}]{}{}", lo, hi, why.empty() ? "" : ": ", why));
+  return v;
+}
+
 double TableReader::positive(const std::string& name, std::optional<double> fallback) {
   const double v = number(name, fallback);
   if (!(v > 0)) fail(key(name), fmt::format("{}", v), "must be > 0");
@@ -135,22 +144,35 @@ double TableReader::length(const std::string& name, std::optional<double> fallba
 }
 
 double TableReader::length_of(const toml::node& n, const std::string& k) const {
-  if (auto v = n.value<double>(); v && !n.is_string() && !n.is_boolean()) return *v;
+  std::optional<double> metres;
+  if (auto v = n.value<double>(); v && !n.is_string() && !n.is_boolean()) metres = *v;
   if (n.is_string()) {
     std::istringstream in(*n.value<std::string>());
     double value = 0;
     std::string unit, rest;
     if (in >> value >> unit && !(in >> rest) && std::isfinite(value)) {
-      if (unit == "d") return value * d_m_;
-      if (unit == "m") return value;
+      if (unit == "d") metres = value * d_m_;
+      if (unit == "m") metres = value;
     }
   }
-  fail(k, show(n), "must be a length: a number in metres, or \"N d\" or \"N m\"");
+  if (!metres) fail(k, show(n), "must be a length: a number in metres, or \"N d\" or \"N m\"");
+  // nan, inf, or "1e300 d" past the largest double: no comparison with a limit holds.
+  if (!std::isfinite(*metres)) fail(k, show(n), "must be a finite length");
+  return *metres;
 }
 
 double TableReader::positive_length(const std::string& name, std::optional<double> fallback) {
   const double v = length(name, fallback);
   if (!(v > 0)) fail(key(name), fmt::format("{} m", v), "must be > 0");
+  return v;
+}
+
+double TableReader::length_within(const std::string& name, double lo, double hi,
+                                  std::optional<double> fallback, const std::string& why) {
+  const double v = length(name, fallback);
+  if (!(v >= lo && v <= hi))
+    fail(key(name), fmt::format("{} m", v),
+         fmt::format("must be in [{:g}, {:g}] m{}{}", lo, hi, why.empty() ? "" : ": ", why));
   return v;
 }
 

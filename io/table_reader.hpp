@@ -33,16 +33,22 @@ class TableReader {
   double number(const std::string& name, std::optional<double> fallback = std::nullopt);
   double number_in(const std::string& name, double lo, double hi, bool lo_open, bool hi_open,
                    std::optional<double> fallback = std::nullopt);
+  // A number in [lo, hi]; a refusal says why the range is what it is, when `why` is given.
+  double number_within(const std::string& name, double lo, double hi,
+                       std::optional<double> fallback = std::nullopt, const std::string& why = {});
   double positive(const std::string& name, std::optional<double> fallback = std::nullopt);
   long integer_at_least(const std::string& name, long lo, long fallback);
   bool boolean(const std::string& name, bool fallback);
   std::string string(const std::string& name, std::optional<std::string> fallback = std::nullopt);
   std::string choice(const std::string& name, const std::vector<std::string>& options,
                      const std::string& fallback);
-  // A length: a number in metres, or a string "N d" (N times d_m) or "N m".
+  // A length: a number in metres, or a string "N d" (N times d_m) or "N m"; finite.
   double length(const std::string& name, std::optional<double> fallback = std::nullopt);
   double length_of(const toml::node& n, const std::string& key) const;
   double positive_length(const std::string& name, std::optional<double> fallback = std::nullopt);
+  // A length in [lo, hi] metres.
+  double length_within(const std::string& name, double lo, double hi,
+                       std::optional<double> fallback = std::nullopt, const std::string& why = {});
   const toml::table* table(const std::string& name);
 
   // Refuses the first key of the table that was never asked for, listing those that were.

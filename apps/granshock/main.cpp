@@ -12,12 +12,14 @@
 #include <string>
 #include <string_view>
 
+#include "allocation_failure.hpp"
 #include "build_info.hpp"
 #include "device/kokkos_runtime.hpp"
 #include "failure_agreement.hpp"
 #include "fields_command.hpp"
 #include "hdf5_runtime.hpp"
 #include "head_on_collision.hpp"
+#include "interrupt.hpp"
 #include "mpi_communicator.hpp"
 #include "mpi_runtime.hpp"
 #include "run_command.hpp"
@@ -46,7 +48,7 @@ void add_collide_command(CLI::App& app, granshock::CollisionOptions& o, std::str
       ->required();
   cmd->add_option("--speed", o.speed_m_per_s, "relative normal impact speed (m/s)")->required();
   cmd->add_option("--dt", o.dt, "time step (s); default t_c/100");
-  cmd->add_option("--e", o.restitution, "coefficient of restitution, in (0, 1]; default 0.5");
+  cmd->add_option("--e", o.restitution, "coefficient of restitution, in [0.01, 1]; default 0.5");
   cmd->add_option("--model", model, "contact law: hertz (default) | hooke")
       ->check(CLI::IsMember({"hertz", "hooke"}));
   cmd->add_option("--characteristic-velocity", o.characteristic_velocity,
@@ -214,7 +216,21 @@ int run_fields_command(const std::vector<std::filesystem::path>& dirs,
 
 }  // namespace
 
+#if defined(__ELF__)
+// SIGINT and SIGTERM are held from before the shared libraries initialise (MPI, HDF5 and
+// Kokkos take milliseconds before main): an executable's .preinit_array runs right after
+// the dynamic loader, before any library's constructor.
+extern "C" void granshock_hold_interrupts_at_load(int, char**, char**) {
+  granshock::hold_interrupts();
+}
+__attribute__((section(".preinit_array"), used)) static void (*const hold_interrupts_at_load)(
+    int, char**, char**) = granshock_hold_interrupts_at_load;
+#endif
+
 int main(int argc, char** argv) {
+  // First (again, where .preinit_array is not): a signal while MPI and Kokkos start waits
+  // until the command is known (cases/bow_shock/interrupt.hpp).
+  granshock::hold_interrupts();
   CLI::App app{"granshock: GPU-portable DEM for granular gas dynamics"};
   app.require_subcommand(1);
   app.allow_extras(false);
@@ -283,6 +299,13 @@ int main(int argc, char** argv) {
               << "--help)\n";
     return 2;
   }
+  // A run stops at a safe point with a message, from its very start (docs/output_format.md,
+  // "Signals"); the other commands end as signals end them (a study catches them once it
+  // runs its cases: cases/study/study_runner.cpp).
+  if (app.got_subcommand("run"))
+    granshock::catch_interrupts();
+  else
+    granshock::release_interrupts();
   // Only `run` divides a scene among processes; the other commands would each do the whole
   // job N times into the same place. Every rank decides alike and returns, so none waits
   // for another; rank 0 alone says why.
@@ -337,8 +360,8 @@ int main(int argc, char** argv) {
         std::cerr << "granshock: warning: " << result.overlap.message << "\n";
       std::cout << granshock::to_json(result) << "\n";
     }
-  } catch (const granshock::PeerFailed&) {
-    return 2;  // another rank failed and said why
+  } catch (const granshock::PeerFailed& e) {
+    return e.exit_code();  // another rank failed and said why
   } catch (const granshock::NumericalFailure& e) {
     // From global sums: every rank meets it at the same step.
     return leave(4, std::string("granshock: error: ") + e.what(), true);
@@ -350,6 +373,9 @@ int main(int argc, char** argv) {
         "granshock: error: not enough memory (" + one_line(e.what()) + "); make the scene smaller",
         false);
   } catch (const std::exception& e) {
+    // Kokkos reports an allocation it could not make as a runtime_error.
+    if (const auto memory = granshock::allocation_failure(e.what()))
+      return leave(2, "granshock: error: " + *memory, false);
     return leave(3, std::string("granshock: internal error: ") + e.what(), false);
   }
   return 0;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <iostream>
 
 #include "atomic_file.hpp"
@@ -41,6 +42,31 @@ struct OutputTimer {
   }
 };
 
+// A write of the run's outputs that failed (a full disk, a file-size limit): the run says
+// what survives it (BowShockRun::what_survives). Other errors in the loop are said as
+// they are: making room would not help them.
+class WriteFailed : public UserError {
+ public:
+  explicit WriteFailed(const std::string& what) : UserError(what) {}
+};
+
+template <class Write>
+void writing(Write&& write) {
+  try {
+    write();
+  } catch (const WriteFailed&) {
+    throw;
+  } catch (const UserError& e) {
+    throw WriteFailed(e.what());
+  }
+}
+
+std::string signal_name(int signal) {
+  return signal == SIGINT    ? "SIGINT"
+         : signal == SIGTERM ? "SIGTERM"
+                             : fmt::format("signal {}", signal);
+}
+
 // Intervals longer than the run act once, at its end: clamping them to the duration keeps
 // the step count in range (run_checks.hpp bounds duration / dt).
 long every_seconds(double interval, double duration, double dt) {
@@ -59,44 +85,83 @@ BowShockRun::BowShockRun(const RunOptions& o, LoadedScene loaded, const Communic
       sampling_(scene_) {}
 
 int BowShockRun::execute() {
+  // Held since the program started (apps/granshock/main.cpp); in-process callers start here.
+  catch_interrupts();
+  try {
+    return execute_or_throw();
+  } catch (const Interrupted& e) {
+    // The rank that reports an agreed failure, or rank 0 where every rank stopped alike.
+    if (root_ || failure_agreed()) std::cerr << interrupted_message(e.signal()) << "\n";
+    return e.exit_code();
+  }
+}
+
+// Before the first checkpoint (docs/output_format.md, "Signals").
+std::string BowShockRun::interrupted_message(int signal) const {
+  if (!claimed_)
+    return fmt::format(
+        "granshock: interrupted by {} while setting up the run, before anything was written "
+        "to '{}'; run the same command again",
+        signal_name(signal), dir_.string());
+  return fmt::format(
+      "granshock: interrupted by {} before the first checkpoint (while prefilling the "
+      "domain); '{}' holds no checkpoint to resume: start again with --overwrite",
+      signal_name(signal), dir_.string());
+}
+
+int BowShockRun::execute_or_throw() {
   // Failures up to here are the same on every rank, or rank 0's alone (its directory and
   // files): all ranks agree on them before the first collective step (docs/parallel.md,
   // "Errors"). No step inside an agreement may itself be collective: a rank that failed
   // before it would meet the agreement's reduction instead.
   agree_on_failure(comm_, [&] { prepare(); });
   agree_on_failure(comm_, [&] {
+    throw_if_interrupted();
     // Every check is done: from here on the run owns the directory (and holds its lock).
     if (root_) run_directory_.emplace(RunDirectory::claim(dir_, mode_));
+    claimed_ = true;
     if (options_.resume) read_checkpoint_and_check();
     open_run_file();
   });
-  if (options_.resume) {
-    agree_on_failure(comm_, [&] { resume(); });
-  } else {
-    start_fresh();
-  }
-  first_step_ = solver_->steps_done();
-  meter_.emplace(first_step_, total_steps_, scene_.run.progress_interval_s);
-
-  catch_interrupts();
+  if (options_.resume) agree_on_failure(comm_, [&] { resume(); });
   try {
+    if (!options_.resume) start_fresh();  // writes the outputs of step 0
+    first_step_ = solver_->steps_done();
+    meter_.emplace(first_step_, total_steps_, scene_.run.progress_interval_s);
     return advance_to_end();
-  } catch (const UserError& e) {
-    // In the loop these are failed writes (a full disk): say what survives.
-    throw UserError(fmt::format(
-        "{}; {}", e.what(),
-        last_checkpoint_step_ >= 0
-            ? fmt::format("checkpoint.h5 (step {}) is intact: make room and continue with "
-                          "--resume",
-                          last_checkpoint_step_)
-            : std::string("no checkpoint had been written yet")));
+  } catch (const WriteFailed& e) {
+    throw UserError(fmt::format("{}; {}", e.what(), what_survives()));
   }
+}
+
+// After a failed write: whether the last checkpoint and run.h5 still make a run that
+// --resume continues (rank 0, which wrote them, says it).
+std::string BowShockRun::what_survives() {
+  if (last_checkpoint_step_ < 0)
+    return "no checkpoint had been written yet: make room and start again with --overwrite";
+  const std::string resume =
+      fmt::format("checkpoint.h5 (step {}) is intact: make room and continue with --resume",
+                  last_checkpoint_step_);
+  if (!root_ || !run_file_) return resume;
+  // run.h5 reserves room before every change (io/run_file.hpp), so a failed write leaves it
+  // as it was; checked all the same, as the resume will check it.
+  try {
+    run_file_.reset();
+    RunFile::check_resumable(dir_ / "run.h5", last_checkpoint_step_, last_record_);
+  } catch (const std::exception&) {
+    return fmt::format(
+        "checkpoint.h5 (step {}) is intact, but the failed write damaged run.h5, so the run "
+        "cannot be resumed: make room and start again with --overwrite",
+        last_checkpoint_step_);
+  }
+  return resume;
 }
 
 // The scene's checks and calibrations, the directory's check and the solver.
 void BowShockRun::prepare() {
   dir_ = run_directory_of(options_, scene_);
-  std::vector<std::string> warnings = check_scene_before_run(scene_, options_.force);
+  throw_if_interrupted();
+  std::vector<std::string> warnings = check_scene_before_run(scene_, options_.force, comm_.size());
   mode_ = options_.resume      ? DirectoryMode::resume
           : options_.overwrite ? DirectoryMode::overwrite
                                : DirectoryMode::create;
@@ -105,11 +170,13 @@ void BowShockRun::prepare() {
   // Again with a calibrated damping or sigma: the time-step guard depends on the damping
   // ratio and on the fastest impact.
   const bool damping_calibrated = calibrate_restitution();
+  throw_if_interrupted();
   if (calibrate_inflow() || damping_calibrated)
-    warnings = check_scene_before_run(scene_, options_.force);
+    warnings = check_scene_before_run(scene_, options_.force, comm_.size());
   if (root_)
     for (const std::string& w : warnings) std::cerr << "granshock: warning: " << w << "\n";
 
+  throw_if_interrupted();
   total_steps_ = scene_.total_steps();
   series_.every =
       every_seconds(scene_.run.series_interval_s, scene_.run.duration_s, scene_.setup.dt);
@@ -132,7 +199,11 @@ void BowShockRun::prepare() {
 void BowShockRun::open_run_file() {
   if (!root_) return;
   if (options_.resume) {
-    run_file_.emplace(RunFile::open_for_resume(dir_ / "run.h5", checkpoint_state_.step));
+    last_record_ = {checkpoint_extras_.run_id, checkpoint_extras_.run_frames,
+                    checkpoint_extras_.run_rows};
+    run_file_.emplace(
+        RunFile::open_for_resume(dir_ / "run.h5", checkpoint_state_.step, last_record_));
+    last_record_ = run_file_->record();  // cut back to the checkpoint (and given an id)
   } else {
     SnapshotContents contents;
     for (const Species& s : scene_.setup.species) contents.species_radius.push_back(s.radius_m());
@@ -249,7 +320,16 @@ long BowShockRun::agreed_next_step(long step) {
 
 void BowShockRun::start_fresh() {
   solver_->set_particles(HostParticles{});
-  inflow_.prefill(*solver_);
+  // A large prefill takes minutes: its progress, in the run's form (progress_meter.hpp),
+  // and a signal stops it between slabs, on every rank at the same slab (the insertion is
+  // collective).
+  ProgressMeter prefill(0, 0, scene_.run.progress_interval_s);
+  inflow_.prefill(*solver_, [&](long done, long slabs) {
+    if (const int signal = int(comm_.max(double(interrupt_signal()))); signal != 0)
+      throw Interrupted(signal);
+    if (root_ && !options_.quiet && prefill.due())
+      prefill.report_prefill(done, slabs, long(inflow_.inserted()));
+  });
   actions_at(0);
 }
 
@@ -318,7 +398,7 @@ void BowShockRun::write_series_row(long step) {
   row.deleted_outlet = removed.high[1];
   row.deleted_inlet = removed.low[1];
   if (!root_) return;
-  run_file_->append_time_series(row);
+  writing([&] { run_file_->append_time_series(row); });
   if (!warned_energy_) {
     const std::string energy =
         energy_warning(scene_, row.kinetic_energy, std::size_t(row.particles), row.time);
@@ -345,15 +425,19 @@ void BowShockRun::write_snapshot(long step) {
       (options_.snapshot_output == "auto" && RunFile::collective_pays(part.total));
   if (mpi != nullptr && collective) {
     ++output_.collective_snapshots;
-    RunFile::append_snapshot_collectively(dir_ / "run.h5", mpi->native(), step, time, part,
-                                          run_file_);
+    writing([&] {
+      RunFile::append_snapshot_collectively(dir_ / "run.h5", mpi->native(), step, time, part,
+                                            run_file_);
+    });
   } else {
     const HostParticles frame = gather_snapshot(comm_, part);
-    if (root_) run_file_->append_snapshot(step, time, frame);
+    if (root_) writing([&] { run_file_->append_snapshot(step, time, frame); });
   }
   if (!root_) return;
-  write_particles_xdmf(dir_ / "run.xmf", "run.h5", run_file_->frames(), run_file_->dim(),
-                       run_file_->frame_view_arrays());
+  writing([&] {
+    write_particles_xdmf(dir_ / "run.xmf", "run.h5", run_file_->frames(), run_file_->dim(),
+                         run_file_->frame_view_arrays());
+  });
 }
 
 void BowShockRun::write_checkpoint_now() {
@@ -361,12 +445,19 @@ void BowShockRun::write_checkpoint_now() {
   if (step == last_checkpoint_step_) return;
   const OutputTimer timer(output_.checkpoint_seconds, output_.checkpoints);
   const double wall = wall_before_ + (meter_ ? meter_->elapsed_s() : 0.0);
-  const CheckpointExtras extras =
-      pack_run_state(loaded_.resolved, *solver_, inflow_, samples_, wall);
+  CheckpointExtras extras = pack_run_state(loaded_.resolved, *solver_, inflow_, samples_, wall);
   const SolverState state = solver_->export_state();
   if (root_) {
-    run_file_->flush();
-    write_checkpoint(dir_ / "checkpoint.h5", state, extras);
+    writing([&] {
+      // run.h5 as this checkpoint continues it: a resume checks it against this record.
+      run_file_->flush();
+      const RunFileRecord record = run_file_->record();
+      extras.run_id = record.run_id;
+      extras.run_frames = record.frames;
+      extras.run_rows = record.rows;
+      write_checkpoint(dir_ / "checkpoint.h5", state, extras);
+      last_record_ = record;
+    });
   }
   // After the write: a failed one leaves the last good checkpoint's step for the message.
   last_checkpoint_step_ = step;
@@ -389,19 +480,16 @@ void BowShockRun::finish(bool completed) {
   // Several processes: how the work was shared (one process: nothing to say).
   if (comm_.size() > 1) j["processes"] = processes_summary();
   if (!root_) return;
-  write_field_sums(*run_file_, sums);
-  run_file_->flush();
   if (!options_.accuracy_choice.is_null()) j["accuracy_choice"] = options_.accuracy_choice;
-  write_file_atomically(dir_ / "summary.json", j.dump(2) + "\n");
+  writing([&] {
+    write_field_sums(*run_file_, sums);
+    run_file_->flush();
+    write_file_atomically(dir_ / "summary.json", j.dump(2) + "\n");
+  });
   if (completed && run_file_) {
     // The field analysis reads run.h5, which must be closed first.
     run_file_.reset();
-    if (run_has_field_sums(dir_)) {
-      fields_command({dir_}, {},
-                     FieldsCommandOptions{options_.figures, options_.quiet, &*run_directory_});
-      if (!options_.figures && !options_.quiet)
-        std::cerr << figures_skipped_note({"granshock", "fields", dir_.string()}) << "\n";
-    }
+    if (run_has_field_sums(dir_)) analyse();
   }
   if (completed && !options_.quiet)
     std::cout << fmt::format(
@@ -411,6 +499,24 @@ void BowShockRun::finish(bool completed) {
         scene_.name, steps, steps * scene_.setup.dt, wall,
         j["particle_steps_per_second"].get<double>(), j["particles_final"].get<long>(),
         dir_.string());
+}
+
+// The field analysis of a completed run (`granshock fields`): the run's data is complete,
+// so neither a failure nor a signal here calls for --resume.
+void BowShockRun::analyse() {
+  const std::string complete = fmt::format(
+      "the run's data is complete (checkpoint.h5, run.h5, summary.json): `granshock fields {}` "
+      "redoes the analysis",
+      dir_.string());
+  const ExitAtInterrupt at_signal("granshock: interrupted during the field analysis; " + complete);
+  try {
+    fields_command({dir_}, {},
+                   FieldsCommandOptions{options_.figures, options_.quiet, &*run_directory_});
+  } catch (const UserError& e) {
+    throw UserError(fmt::format("{}; {}", e.what(), complete));
+  }
+  if (!options_.figures && !options_.quiet)
+    std::cerr << figures_skipped_note({"granshock", "fields", dir_.string()}) << "\n";
 }
 
 // summary.json "processes": how many, and the particles each rank owns at the end (the

@@ -42,9 +42,13 @@ class BowShockRun {
     long next_after(long step) const { return (step / every + 1) * every; }
   };
 
+  int execute_or_throw();
   void prepare();
   void open_run_file();
   int advance_to_end();
+  std::string what_survives();
+  void analyse();
+  std::string interrupted_message(int signal) const;
   long agreed_next_step(long step);
   bool calibrate_inflow();       // true when it changed sigma (inflow.mach_at = "inlet_bins")
   bool calibrate_restitution();  // true when it set the damping (restitution_mode = "discrete")
@@ -79,6 +83,8 @@ class BowShockRun {
   double particle_steps_ = 0;  // particle-steps of this leg
   std::vector<long> samples_;  // field samples per block
   long last_checkpoint_step_ = -1;
+  RunFileRecord last_record_;  // run.h5 as the last checkpoint recorded it
+  bool claimed_ = false;       // the directory is the run's (marked, cleaned)
   std::optional<ProgressMeter> meter_;
   std::optional<RunDirectory> run_directory_;
   bool warned_inflow_ = false;

@@ -79,10 +79,13 @@ void InflowController::count_prefill() {
   });
 }
 
-void InflowController::prefill(Solver& solver) {
+void InflowController::prefill(Solver& solver,
+                               const std::function<void(long done, long slabs)>& progress) {
   count_prefill();
+  long done = 0;
   for_each_prefill_slab([&](double y, double top, double expected) {
     insert_batch(solver, y, top, expected, false);
+    if (progress) progress(++done, long(prefill_events_));
   });
   // Lists are rebuilt once, after the last slab (insertion itself needs only positions),
   // also when that slab placed nothing.

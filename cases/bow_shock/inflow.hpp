@@ -12,6 +12,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "scene.hpp"
@@ -27,8 +28,11 @@ class InflowController {
   double particles_per_batch() const { return per_batch_; }
 
   // Fills the domain downstream of the strip with the upstream state, batch by batch,
-  // so the flow starts developed instead of waiting one transit time.
-  void prefill(Solver& solver);
+  // so the flow starts developed instead of waiting one transit time. `progress`, when
+  // given, is called after each batch with the slabs filled and their number, on every
+  // process (a prefill of 3e7 particles takes minutes: a run reports progress and checks
+  // for signals there).
+  void prefill(Solver& solver, const std::function<void(long done, long slabs)>& progress = {});
   // Inserts a batch when `step` is an insertion step.
   void insert_if_due(Solver& solver, long step);
 

@@ -9,6 +9,7 @@
 #include "block_error.hpp"
 #include "field_physics.hpp"
 #include "inflow.hpp"
+#include "interrupt.hpp"
 #include "upstream_state.hpp"
 #include "user_error.hpp"
 
@@ -94,7 +95,7 @@ InletMach measure_inlet_mach(const Scene& scene, double sigma) {
   InflowController inflow(c);
   const std::unique_ptr<Solver> solver = make_solver(c.setup, c.capacity_estimate());
   solver->set_particles(HostParticles{});
-  inflow.prefill(*solver);
+  inflow.prefill(*solver, [](long, long) { throw_if_interrupted(); });
   inflow.insert_if_due(*solver, 0);
   const long total = c.total_steps();
   const long first = long(std::llround(c.run.production_start_s / c.setup.dt));
@@ -102,6 +103,7 @@ InletMach measure_inlet_mach(const Scene& scene, double sigma) {
   const long period = inflow.period_steps();
   long step = 0;
   while (step < total) {
+    throw_if_interrupted();  // a channel run can take minutes (docs/output_format.md, "Signals")
     long next = std::min(total, (step / period + 1) * period);
     const long sample = step < first ? first : first + ((step - first) / every + 1) * every;
     next = std::min(next, sample);

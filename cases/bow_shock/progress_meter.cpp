@@ -1,5 +1,6 @@
 #include "progress_meter.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace granshock {
@@ -33,6 +34,17 @@ void ProgressMeter::observe(long step) {
 
 long ProgressMeter::steps_per(double seconds, long fallback) const {
   return step_rate_ > 0 ? std::max(1L, long(step_rate_ * seconds)) : fallback;
+}
+
+void ProgressMeter::report_prefill(long slabs_done, long slabs, long particles) {
+  last_ = Clock::now();
+  const double elapsed = elapsed_s();
+  const double eta = slabs_done > 0 ? elapsed * double(slabs - slabs_done) / slabs_done : 0;
+  const int eta_s = int(std::lround(eta));
+  std::fprintf(out_, "prefill %ld/%ld slabs (%.1f%%)  particles %ld  ETA %d:%02d:%02d\n",
+               slabs_done, slabs, 100.0 * slabs_done / std::max(1L, slabs), particles, eta_s / 3600,
+               eta_s / 60 % 60, eta_s % 60);
+  std::fflush(out_);
 }
 
 void ProgressMeter::report(long step, double time_s, long particles, long contacts,

@@ -18,6 +18,8 @@ class ProgressMeter {
   // note: appended to the line when not empty (e.g. an inflow that falls short).
   void report(long step, double time_s, long particles, long contacts, double particle_steps,
               const std::string& note = {});
+  // The prefill's line, in the same form: slabs filled of all, particles placed, ETA.
+  void report_prefill(long slabs_done, long slabs, long particles);
   double elapsed_s() const;
   // The run has reached `step`: the step rate is measured from these calls, shown or not
   // (a --quiet run sizes its time slices by it as well).

@@ -5,6 +5,8 @@
 #include <cmath>
 
 #include "field_sampling_check.hpp"
+#include "run_memory.hpp"
+#include "run_summary.hpp"
 #include "user_error.hpp"
 
 namespace granshock {
@@ -16,6 +18,20 @@ void refuse_count(const char* key, double count, const char* what, double limit)
       fmt::format("scene key '{}': the run would {} {:.3g} times, more than the "
                   "{:.3g} granshock allows; choose a larger value",
                   key, what, count, limit));
+}
+
+// summary.json measures every pair's restitution at the run's dt (run_summary.hpp); a pair
+// whose collision cannot be measured there once ran the whole simulation and then ended
+// without a summary. The same collisions, before anything runs.
+void check_effective_restitution(const Scene& s) {
+  try {
+    effective_restitution_table(s);
+  } catch (const UserError& e) {
+    throw UserError(fmt::format(
+        "scene keys 'contact.restitution' / 'time.dt': the effective restitution of the pairs "
+        "at this step cannot be measured, as summary.json must: {}",
+        e.what()));
+  }
 }
 
 }  // namespace
@@ -37,12 +53,13 @@ double expected_insertions(const Scene& s) {
   return s.inflow.area_fraction * width * streamwise / disk;
 }
 
-std::vector<std::string> check_scene_before_run(const Scene& s, bool force) {
+std::vector<std::string> check_scene_before_run(const Scene& s, bool force, int processes) {
   std::vector<std::string> warnings;
   const double steps = s.run.duration_s / s.setup.dt;
   if (steps < 1)
     throw UserError(
-        fmt::format("scene key 'time.duration' = {:g} s: shorter than one time step ({:g} s)",
+        fmt::format("scene keys 'time.duration' / 'time.dt' = {:g} s / {:g} s: shorter than one "
+                    "time step",
                     s.run.duration_s, s.setup.dt));
   if (!(steps <= RunLimits::max_steps))
     throw UserError(fmt::format(
@@ -91,6 +108,11 @@ std::vector<std::string> check_scene_before_run(const Scene& s, bool force) {
   if (overlap.verdict == Verdict::refuse && !force) throw UserError(overlap.message);
   if (overlap.verdict != Verdict::ok) warnings.push_back(overlap.message);
   validate_field_sampling(s);  // before any output: no hours spent on empty fields
+  // Where the available memory cannot be read (no /proc), nothing is refused; an allocation
+  // that fails then ends the run as "not enough memory" (apps/granshock/main.cpp).
+  if (const auto available = available_memory_bytes())
+    check_run_memory(s, estimate_run_memory(s, processes), *available);
+  check_effective_restitution(s);
   return warnings;
 }
 

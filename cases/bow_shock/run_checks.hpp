@@ -24,8 +24,9 @@ struct RunLimits {
 };
 
 // Throws UserError for a scene that must not run; returns the warnings to print. `force`
-// turns the refusals of the time-step guard and of the overlap range into warnings.
-std::vector<std::string> check_scene_before_run(const Scene& scene, bool force);
+// turns the refusals of the time-step guard and of the overlap range into warnings. The
+// memory a run needs is checked for each of `processes` (run_memory.hpp).
+std::vector<std::string> check_scene_before_run(const Scene& scene, bool force, int processes = 1);
 
 // The time-step guard and the contact law's range at the fastest impact the scene can
 // produce (Scene::fastest_impact_speed).

@@ -29,7 +29,8 @@ nlohmann::json effective_restitution_table(const Scene& s) {
       for (const auto& [label, speed] :
            {std::pair<const char*, double>{"at_inflow_speed", s.inflow.speed_m_per_s},
             {"at_fastest_impact", s.fastest_impact_speed()}}) {
-        const CollisionResult r = collide_species(s.setup, a, b, speed, s.setup.dt, true);
+        const CollisionResult r =
+            collide_species(s.setup, a, b, speed, s.setup.dt, true, 1.0, {}, Backend::serial);
         entry[label] = {{"speed", speed}, {"e_eff", r.e_eff}, {"dt_over_tc", r.dt / r.t_c}};
         entry["e_in"] = r.e_in;
         out[r.pair] = entry;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <nlohmann/json.hpp>
 
 #include "solver.hpp"
@@ -40,7 +41,10 @@ struct Geometry {
   }
 };
 
-Geometry build(const SolverSetup& scene, int a, int b, double dt, const ImpactPlace& place) {
+// `dmax`: the largest diameter of the whole scene, which sizes the box and the cylinder
+// alike for every pair.
+Geometry build(const SolverSetup& scene, int a, int b, double dt, const ImpactPlace& place,
+               double dmax) {
   Geometry g;
   g.on_obstacle = b < 0;
   g.place = place;
@@ -48,7 +52,6 @@ Geometry build(const SolverSetup& scene, int a, int b, double dt, const ImpactPl
   g.setup.contacts = scene.contacts;
   g.setup.precision = scene.precision;
   g.setup.dt = dt;
-  const double dmax = scene.max_diameter();
   g.radius_a = scene.species[a].radius_m();
   g.radius_b = g.on_obstacle ? 0 : scene.species[b].radius_m();
   g.cylinder_radius = 5 * dmax;
@@ -93,10 +96,22 @@ std::vector<std::string> collision_pair_names() {
 }
 
 CollisionResult collide_species(const SolverSetup& given, int a, int b, double speed, double dt,
-                                bool force, double phase, const ImpactPlace& place) {
+                                bool force, double phase, const ImpactPlace& place,
+                                Backend backend) {
+  // The pair's own species alone (a -> 0, b -> 1 or 0): summary.json collides every pair
+  // of a scene, and a copy of every pair's tables per collision made that O(species^4).
+  SolverSetup scene;
+  std::vector<int> kept = {a};
+  if (b >= 0 && b != a) kept.push_back(b);
+  for (const int k : kept) scene.species.push_back(given.species.at(std::size_t(k)));
+  scene.contacts = given.contacts.of_species(kept);
+  scene.precision = given.precision;
+  scene.obstacle = given.obstacle;
+  const double dmax = given.max_diameter();
+  b = b < 0 ? -1 : b == a ? 0 : 1;
+  a = 0;
   // A scene without an obstacle collides with an aluminium cylinder: its pair properties
   // (softening, calibrated damping) then come from SolverSetup like any obstacle's.
-  SolverSetup scene = given;
   if (b < 0 && !scene.obstacle)
     scene.obstacle = Obstacle{ObstacleShape::cylinder, {}, 0, aluminium()};
   const PairProperties props = b >= 0 ? scene.pair(a, b) : scene.obstacle_pair(a);
@@ -112,13 +127,15 @@ CollisionResult collide_species(const SolverSetup& given, int a, int b, double s
   const ContactSettings& contacts = scene.contacts;
   r.t_c = collision_time(contacts.model, props, contacts.options, speed);
   r.dt = dt > 0 ? dt : r.t_c / 100.0;
+  // The overlap first: an impact past the law's range also makes t_c, and with it the
+  // default dt, meaningless.
+  r.overlap = assess_overlap({props}, contacts.model, contacts.options, speed);
+  if (r.overlap.verdict == TimeStepAssessment::Verdict::refuse && !force)
+    throw UserError(r.overlap.message);
   r.time_step = assess_time_step({props}, contacts.model, contacts.options, speed, r.dt,
                                  contacts.has_friction());
   if (r.time_step.verdict == TimeStepAssessment::Verdict::refuse && !force)
     throw UserError(r.time_step.message);
-  r.overlap = assess_overlap({props}, contacts.model, contacts.options, speed);
-  if (r.overlap.verdict == TimeStepAssessment::Verdict::refuse && !force)
-    throw UserError(r.overlap.message);
   if (20.0 * r.t_c / r.dt > kMaxCollisionSteps)
     throw UserError(fmt::format(
         "time step dt = {:.3g} s would take {:.3g} steps to integrate the {} collision (t_c = "
@@ -129,7 +146,19 @@ CollisionResult collide_species(const SolverSetup& given, int a, int b, double s
     throw UserError(fmt::format("the line of impact must be along x or y (axis {})", place.axis));
   for (const double c : place.centre)
     if (!std::isfinite(c)) throw UserError("the impact's place must be finite");
-  Geometry g = build(scene, a, b, r.dt, place);
+  const double drift = speed * r.dt;  // the relative drift of one step
+  const double farthest = kPlaceResolution * drift / std::numeric_limits<double>::epsilon();
+  for (const double c : place.centre)
+    if (std::abs(c) > farthest)
+      throw UserError(fmt::format(
+          "the impact's place ({:g}, {:g}) m is too far from the origin: positions there are "
+          "rounded to {:.3g} m, more than {:g} of the {:.3g} m the bodies approach per step at "
+          "this speed and dt; place the impact within {:.3g} m of the origin",
+          place.centre[0], place.centre[1],
+          std::max(std::abs(place.centre[0]), std::abs(place.centre[1])) *
+              std::numeric_limits<double>::epsilon(),
+          kPlaceResolution, drift, farthest));
+  Geometry g = build(scene, a, b, r.dt, place, dmax);
 
   // Start a few steps before contact, in the zero-momentum frame for two particles; the
   // sixth drift overlaps them by phase x speed x dt.
@@ -147,7 +176,7 @@ CollisionResult collide_species(const SolverSetup& given, int a, int b, double s
     start.add(g.at(-(g.radius_a + 0.5 * gap0)), velocity(speed * mb / (ma + mb)), a, 0);
     start.add(g.at(g.radius_b + 0.5 * gap0), velocity(-speed * ma / (ma + mb)), b, 1);
   }
-  auto solver = make_solver(g.setup, start.size());
+  auto solver = make_solver(g.setup, start.size(), backend);
   solver->set_particles(start);
   r.variant = solver->variant();
 
@@ -186,12 +215,17 @@ CollisionResult run_head_on_collision(const CollisionOptions& o) {
     throw UserError(fmt::format("--pair '{}' is not one of {}", o.pair, fmt::join(kPairs, ", ")));
   if (!(o.speed_m_per_s > 0) || !std::isfinite(o.speed_m_per_s))
     throw UserError(fmt::format("--speed {} must be a positive speed in m/s", o.speed_m_per_s));
-  if (!(o.restitution > 0 && o.restitution <= 1))
-    throw UserError(fmt::format("--e {} must be in (0, 1]", o.restitution));
+  if (o.speed_m_per_s > kMaxCollisionSpeed)
+    throw UserError(fmt::format(
+        "--speed {:g} m/s is past {:g} m/s: no granular contact law describes such an impact",
+        o.speed_m_per_s, kMaxCollisionSpeed));
+  // Below 0.01 the damped law's rebound is not resolved (docs/contact_model.md).
+  if (!(o.restitution >= 0.01 && o.restitution <= 1))
+    throw UserError(fmt::format("--e {} must be in [0.01, 1]", o.restitution));
   if (o.characteristic_velocity &&
-      !(*o.characteristic_velocity > 0 && std::isfinite(*o.characteristic_velocity)))
-    throw UserError(fmt::format("--characteristic-velocity {} must be a positive speed in m/s",
-                                *o.characteristic_velocity));
+      !(*o.characteristic_velocity > 0 && *o.characteristic_velocity <= kMaxCollisionSpeed))
+    throw UserError(fmt::format("--characteristic-velocity {:g} must be a speed in (0, {:g}] m/s",
+                                *o.characteristic_velocity, kMaxCollisionSpeed));
   if (o.dt && !(*o.dt > 0 && std::isfinite(*o.dt)))
     throw UserError(fmt::format("--dt {} must be a positive time step in s", *o.dt));
   if (!(o.phase > 0 && o.phase <= 1))

@@ -12,6 +12,7 @@
 
 #include "models/restitution_calibration.hpp"
 #include "models/time_step_guard.hpp"
+#include "solver.hpp"
 #include "solver_setup.hpp"
 
 namespace granshock {
@@ -43,6 +44,14 @@ struct CollisionOptions {
 };
 
 inline constexpr double kMaxCollisionSteps = 1e7;
+// The fastest impact and characteristic velocity collide takes (m/s), as a scene's speeds
+// (docs/scene_format.md): past hypervelocity no granular contact law applies, and at
+// 1e308 m/s the collision time underflowed to a time step of 0 s.
+inline constexpr double kMaxCollisionSpeed = 1e4;
+// The impact's place must resolve a step's drift: its position's rounding (double) at
+// most this fraction of the relative drift speed x dt; past it e_eff degrades, and at
+// 1e9 m the particles did not move at all.
+inline constexpr double kPlaceResolution = 1e-3;
 
 struct CollisionResult {
   std::string pair;
@@ -73,9 +82,12 @@ std::vector<std::string> collision_pair_names();
 CollisionResult run_head_on_collision(const CollisionOptions& options);
 // The same experiment for species a against species b of any setup, or against its
 // obstacle (b = -1), with that setup's contact parameters (its calibrated damping, if any);
-// dt = 0 picks t_c/100. The first contact step overlaps by phase x speed x dt.
+// dt = 0 picks t_c/100. The first contact step overlaps by phase x speed x dt. The serial
+// backend gives the same numbers bit for bit (docs/design.md, "The solver") without a parallel
+// region per step, for the many small collisions of summary.json.
 CollisionResult collide_species(const SolverSetup& setup, int a, int b, double speed, double dt,
-                                bool force, double phase = 1.0, const ImpactPlace& place = {});
+                                bool force, double phase = 1.0, const ImpactPlace& place = {},
+                                Backend backend = Backend::default_space);
 std::string to_json(const CollisionResult& r);
 // One pair's damping calibration (restitution_calibration.hpp), as `collide` and
 // summary.json's `restitution_calibration` print it.

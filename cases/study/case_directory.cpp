@@ -27,7 +27,7 @@ std::string to_string(CaseState state) {
 nlohmann::json read_summary(const fs::path& dir) {
   std::error_code ec;
   if (!fs::exists(dir / "summary.json", ec)) return nullptr;
-  JsonFile summary = read_json_file(dir / "summary.json");
+  JsonFile summary = read_json_file(dir / "summary.json", "summary");
   return summary.value.is_object() ? std::move(summary.value) : nlohmann::json();
 }
 

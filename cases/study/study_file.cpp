@@ -6,13 +6,12 @@
 
 #include <toml++/toml.h>
 #include <cctype>
-#include <cerrno>
 #include <cstring>
-#include <fstream>
 #include <set>
 
 #include "axis_values.hpp"
 #include "shell_text.hpp"
+#include "regular_file.hpp"
 #include "user_error.hpp"
 
 namespace granshock {
@@ -244,22 +243,7 @@ StudySpec parse_study(const std::string& text, const fs::path& path) {
 }
 
 StudySpec load_study_file(const fs::path& path) {
-  std::error_code ec;
-  const fs::file_status status = fs::status(path, ec);
-  if (!fs::exists(status))
-    throw UserError(fmt::format("cannot read study file '{}': no such file", path.string()));
-  if (fs::is_directory(status))
-    throw UserError(fmt::format("study file '{}' is a directory, not a TOML file", path.string()));
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-    throw UserError(
-        fmt::format("cannot read study file '{}': {}", path.string(), std::strerror(errno)));
-  std::string text(kMaxStudyFileBytes + 1, '\0');
-  in.read(text.data(), std::streamsize(text.size()));
-  text.resize(std::size_t(in.gcount()));
-  if (text.size() > kMaxStudyFileBytes)
-    throw UserError(
-        fmt::format("study file '{}' is longer than {} bytes", path.string(), kMaxStudyFileBytes));
+  const std::string text = read_regular_file(path, "study file", kMaxStudyFileBytes);
   return parse_study(text, path);
 }
 

@@ -18,10 +18,56 @@ namespace {
 
 using nlohmann::json;
 
-std::optional<double> number_at(const json& row, const std::string& key) {
+// Ranges of a case's columns, as a scene's (docs/scene_format.md): a value outside them
+// was measured by no run, and used as given it ended in an internal error or a time step
+// of 1e-320 s.
+constexpr double kMaxDtOverTc = 10;        // past the stable limit of any contact law
+constexpr double kMinDtOverTc = 1e-6;      // a million steps per contact
+constexpr double kMaxSoftening = 1e9;      // contact.softening
+constexpr double kMaxSpeedup = 1e6;        // of one case over another
+constexpr double kMaxRelativeError = 1e6;  // e_eff error, differences over the reference
+
+// Every refusal: "accuracy table PATH: WHAT", one line.
+class TableFail {
+ public:
+  explicit TableFail(const std::filesystem::path& path) : path_(path) {}
+  [[noreturn]] void operator()(const std::string& why) const {
+    throw UserError(fmt::format("accuracy table {}: {}", path_.string(), why));
+  }
+
+ private:
+  const std::filesystem::path& path_;
+};
+
+// A member that must be a finite number in [lo, hi], or absent/null when optional.
+std::optional<double> number_at(const TableFail& fail, const json& row, const std::string& where,
+                                const std::string& key, double lo, double hi, bool required) {
   const auto it = row.find(key);
-  if (it == row.end() || !it->is_number()) return std::nullopt;
-  return it->get<double>();
+  if (it == row.end() || it->is_null()) {
+    if (required)
+      fail(
+          fmt::format("{} lacks \"{}\" (a table from before it was recorded: run "
+                      "cases/tradeoff/trade_table.py again)",
+                      where, key));
+    return std::nullopt;
+  }
+  if (!it->is_number())
+    fail(fmt::format("{}: \"{}\" = {} must be a number", where, key, it->dump()));
+  const double v = it->get<double>();
+  // Subnormal numbers (a dt_over_tc of 1e-320) are below every lower bound here but 0.
+  if (!std::isfinite(v) || v < lo || v > hi || (v != 0 && std::abs(v) < 1e-300))
+    fail(fmt::format("{}: \"{}\" = {} must be a number in [{:g}, {:g}]", where, key, it->dump(), lo,
+                     hi));
+  return v;
+}
+
+std::string string_at(const TableFail& fail, const json& row, const std::string& where,
+                      const std::string& key, const std::string& fallback) {
+  const auto it = row.find(key);
+  if (it == row.end()) return fallback;
+  if (!it->is_string())
+    fail(fmt::format("{}: \"{}\" = {} must be a string", where, key, it->dump()));
+  return it->get<std::string>();
 }
 
 std::vector<std::string> words(const std::string& text) {
@@ -31,26 +77,56 @@ std::vector<std::string> words(const std::string& text) {
   return out;
 }
 
+MeasuredSetting read_setting(const TableFail& fail, const json& row, const std::string& where) {
+  MeasuredSetting s;
+  s.name = string_at(fail, row, where, "case", "");
+  const std::string at = fmt::format("case \"{}\"", s.name);
+  s.dt_over_tc = *number_at(fail, row, at, "dt_over_tc", kMinDtOverTc, kMaxDtOverTc, true);
+  s.softening = *number_at(fail, row, at, "softening", 1, kMaxSoftening, true);
+  s.speedup = *number_at(fail, row, at, "speedup", 1 / kMaxSpeedup, kMaxSpeedup, true);
+  s.e_eff_error = *number_at(fail, row, at, "e_eff_error", 0, kMaxRelativeError, true);
+  if (!row.contains("precision"))
+    fail(
+        fmt::format("{} lacks \"precision\" (a table from before it was recorded: run "
+                    "cases/tradeoff/trade_table.py again)",
+                    at));
+  const std::string precision = string_at(fail, row, at, "precision", "");
+  if (precision != "double" && precision != "single")
+    fail(fmt::format("{}: \"precision\" = \"{}\" must be \"double\" or \"single\"", at, precision));
+  s.single_precision = precision == "single";
+  s.changed = words(string_at(fail, row, at, "changed", ""));
+  return s;
+}
+
 }  // namespace
 
 AccuracyTable read_accuracy_table(const std::filesystem::path& path) {
-  const auto fail = [&](const std::string& why) {
-    return UserError(fmt::format("accuracy table {}: {}", path.string(), why));
-  };
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec))
-    throw fail("cannot be read (make one with `granshock tradeoff SCENE.toml`)");
-  JsonFile file = read_json_file(path);
-  if (file.value.is_discarded()) throw fail("is not JSON: " + file.error);
+  const TableFail fail(path);
+  JsonFile file;
+  try {
+    // Bounded size and nesting (analysis/json_file.hpp), a regular file only.
+    file = read_json_file(path, "accuracy table");
+  } catch (const UserError& e) {
+    throw UserError(std::string(e.what()) + " (make one with `granshock tradeoff SCENE.toml`)");
+  }
+  if (file.value.is_discarded()) fail("is not JSON: " + file.error);
   json doc = std::move(file.value);
-  if (!doc.contains("cases") || !doc["cases"].is_array() || !doc.contains("noise"))
-    throw fail("has no \"cases\" and \"noise\" (not a trade.json of granshock tradeoff)");
+  if (!doc.is_object() || !doc.contains("cases") || !doc["cases"].is_array() ||
+      !doc.contains("noise") || !doc["noise"].is_object())
+    fail("has no \"cases\" and \"noise\" (not a trade.json of granshock tradeoff)");
 
   std::map<std::string, json> by_name;
-  for (const json& row : doc["cases"])
-    if (row.contains("case") && row["case"].is_string()) by_name[row["case"]] = row;
+  for (std::size_t k = 0; k < doc["cases"].size(); ++k) {
+    const json& row = doc["cases"][k];
+    const std::string where = fmt::format("cases[{}]", k);
+    if (!row.is_object()) fail(fmt::format("{} = {} must be an object", where, row.dump()));
+    const std::string name = string_at(fail, row, where, "case", "");
+    if (name.empty()) fail(fmt::format("{} has no \"case\" name", where));
+    if (!by_name.emplace(name, row).second)
+      fail(fmt::format("{}: case \"{}\" appears twice", where, name));
+  }
   for (const char* needed : {"reference", "scene", "seed-2"})
-    if (!by_name.count(needed)) throw fail(fmt::format("has no case \"{}\"", needed));
+    if (!by_name.count(needed)) fail(fmt::format("has no case \"{}\"", needed));
   const json& reference = by_name["reference"];
 
   AccuracyTable table;
@@ -59,8 +135,11 @@ AccuracyTable read_accuracy_table(const std::filesystem::path& path) {
   // bounds nothing.
   std::map<std::string, double> reference_value, relative_noise;
   for (const std::string& answer : kBudgetAnswers) {
-    const auto value = number_at(reference, answer);
-    const auto noise = number_at(doc["noise"], answer);
+    const auto value =
+        number_at(fail, reference, "case \"reference\"", answer,
+                  -std::numeric_limits<double>::max(), std::numeric_limits<double>::max(), false);
+    const auto noise = number_at(fail, doc["noise"], "noise", answer, 0,
+                                 std::numeric_limits<double>::max(), false);
     if (!value || *value == 0 || !noise) continue;
     reference_value[answer] = std::abs(*value);
     relative_noise[answer] = *noise / std::abs(*value);
@@ -70,28 +149,15 @@ AccuracyTable read_accuracy_table(const std::filesystem::path& path) {
     }
   }
 
-  for (const json& row : doc["cases"]) {
-    MeasuredSetting s;
-    s.name = row.value("case", "");
-    const auto dt_over_tc = number_at(row, "dt_over_tc");
-    const auto softening = number_at(row, "softening");
-    const auto speedup = number_at(row, "speedup");
-    const auto e_eff = number_at(row, "e_eff_error");
-    if (!dt_over_tc || !softening || !speedup || !e_eff || !row.contains("precision"))
-      throw fail(fmt::format(
-          "case \"{}\" lacks dt_over_tc, softening, precision, speedup or e_eff_error (a table "
-          "from before they were recorded: run cases/tradeoff/trade_table.py again)",
-          s.name));
-    s.changed = words(row.value("changed", ""));
-    s.dt_over_tc = *dt_over_tc;
-    s.softening = *softening;
-    s.single_precision = row["precision"] == "single";
-    s.speedup = *speedup;
-    s.e_eff_error = *e_eff;
+  for (std::size_t k = 0; k < doc["cases"].size(); ++k) {
+    const json& row = doc["cases"][k];
+    MeasuredSetting s = read_setting(fail, row, fmt::format("cases[{}]", k));
+    const std::string at = fmt::format("case \"{}\"", s.name);
     s.error_bound = s.e_eff_error;
     s.bound_by = "e_eff";
     for (const auto& [answer, ref] : reference_value) {
-      const auto diff = number_at(row, "diff." + answer);
+      const auto diff =
+          number_at(fail, row, at, "diff." + answer, 0, std::numeric_limits<double>::max(), false);
       const double bound = diff ? std::max(*diff / ref, relative_noise[answer])
                                 : std::numeric_limits<double>::infinity();
       if (bound > s.error_bound) {

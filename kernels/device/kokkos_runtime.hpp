@@ -2,11 +2,14 @@
 // OMP_PROC_BIND on stdout when it is unset, which would corrupt JSON output. The OpenMP
 // runtime has already read its environment by then, so stating its default
 // (OMP_PROC_BIND=false: threads are not bound) changes nothing but the message; a
-// user's own setting is kept.
+// user's own setting is kept. Thread requests past what Kokkos and the machine can take
+// are lowered first (device/thread_cap.hpp).
 #pragma once
 
 #include <Kokkos_Core.hpp>
 #include <cstdlib>
+
+#include "device/thread_cap.hpp"
 
 namespace granshock {
 
@@ -14,6 +17,7 @@ class KokkosRuntime {
  public:
   KokkosRuntime(int& argc, char** argv) {
     setenv("OMP_PROC_BIND", "false", /*overwrite=*/0);
+    cap_host_threads(argc, argv);
     Kokkos::initialize(argc, argv);
   }
   ~KokkosRuntime() { Kokkos::finalize(); }

@@ -18,6 +18,8 @@ namespace {
 constexpr double kBetaLow = -0.9999;
 constexpr double kBetaHigh = 0.5;
 constexpr int kBisections = 60;
+// A sticking impact (e = 0 at the strongest damping) is followed this long (in t_c).
+constexpr double kStickingContacts = 50;
 
 template <class Model>
 double one_impact(const PairProperties& p, const ContactOptions& o, double dt, double speed,
@@ -29,7 +31,7 @@ double one_impact(const PairProperties& p, const ContactOptions& o, double dt, d
   bool touched = false;
   // A contact lasts about t_c; this bound only stops a pair that never parts.
   const double t_c = Model::collision_time(p, o, speed);
-  const long max_steps = long(50.0 * t_c / dt) + 100;
+  const long max_steps = long(kStickingContacts * t_c / dt) + 100;
   for (long step = 0; step < max_steps; ++step) {
     rate += half * force * inv_m;
     gap += dt * rate;
@@ -76,8 +78,39 @@ double phase_averaged_restitution(ContactModelKind model, const PairProperties& 
   return over_phases(model, p, o, dt, speed).mean;
 }
 
+double calibration_steps(ContactModelKind model, const std::vector<PairProperties>& pairs,
+                         const ContactOptions& o, double dt, double speed) {
+  // Per phase: the continuous beta, both bounds, the bisections and the calibrated beta at
+  // the calibration speed, each at most one contact long, except the strongest damping,
+  // which may stick for kStickingContacts; then one impact per residual speed.
+  const double contacts_at_speed = 3 + kBisections + kStickingContacts;
+  double steps = 0;
+  for (const PairProperties& p : pairs) {
+    double contacts = contacts_at_speed * (collision_time(model, p, o, speed) / dt + 1);
+    for (double f : kResidualSpeedFactors)
+      contacts += collision_time(model, p, o, f * speed) / dt + 1;
+    steps += kCalibrationPhases * contacts;
+  }
+  return steps;
+}
+
+void check_calibration_cost(ContactModelKind model, const std::vector<PairProperties>& pairs,
+                            const ContactOptions& o, double dt, double speed) {
+  const double steps = calibration_steps(model, pairs, o, dt, speed);
+  if (steps <= kMaxCalibrationSteps) return;
+  // Steps scale as 1/dt once t_c/dt is large.
+  const double t_c = pairs.empty() ? 0 : collision_time(model, pairs.front(), o, speed);
+  throw UserError(fmt::format(
+      "restitution mode \"discrete\": calibrating the damping of {} pair{} at dt = {:.3g} s "
+      "(t_c/dt = {:.3g} at {:g} m/s) would take about {:.3g} integration steps, more than the "
+      "{:.0e} allowed; use dt >= {:.3g} s, or the continuous mode, which is exact as dt -> 0",
+      pairs.size(), pairs.size() == 1 ? "" : "s", dt, t_c / dt, speed, steps, kMaxCalibrationSteps,
+      dt * steps / kMaxCalibrationSteps));
+}
+
 PairCalibration calibrate_pair(ContactModelKind model, const PairProperties& requested,
                                const ContactOptions& o, double dt, double speed) {
+  check_calibration_cost(model, {requested}, o, dt, speed);
   PairCalibration c;
   c.pair = requested.name;
   c.restitution = requested.restitution;
@@ -127,6 +160,7 @@ RestitutionCalibration apply_restitution_mode(SolverSetup& setup) {
         "contact.restitution_mode = \"discrete\" needs a positive calibration speed (got {:g} "
         "m/s): set contact.calibration_speed",
         out.speed));
+  check_calibration_cost(contacts.model, setup.all_pairs(), contacts.options, setup.dt, out.speed);
   const int n = int(setup.species.size());
   std::vector<std::vector<double>> beta(n, std::vector<double>(n, 0.0));
   std::vector<double> obstacle_beta(n, 0.0);

@@ -57,8 +57,24 @@ struct RestitutionCalibration {
   std::vector<PairCalibration> pairs;
 };
 
+// The most integration steps of the reduced integrator a calibration may take (every
+// pair together), about 100 s on one core (docs/stability.md, "Limits"): each pair takes
+// about kCalibrationImpacts collisions of t_c/dt steps, so a tiny dt (1e-12 s for a t_c
+// of microseconds) would calibrate for hours.
+inline constexpr double kMaxCalibrationSteps = 1e9;
+
+// The integration steps calibrate_pair takes for `pairs` at this dt and speed, estimated
+// from each pair's t_c before anything is integrated.
+double calibration_steps(ContactModelKind model, const std::vector<PairProperties>& pairs,
+                         const ContactOptions& o, double dt, double speed);
+// Throws UserError when calibration_steps passes kMaxCalibrationSteps, naming the dt that
+// would fit.
+void check_calibration_cost(ContactModelKind model, const std::vector<PairProperties>& pairs,
+                            const ContactOptions& o, double dt, double speed);
+
 // Finds beta for one pair; throws UserError when no beta returns e at this dt (an
-// integrator that cannot reach e, e.g. e near 0 at a coarse step).
+// integrator that cannot reach e, e.g. e near 0 at a coarse step), or when the
+// calibration would pass kMaxCalibrationSteps.
 PairCalibration calibrate_pair(ContactModelKind model, const PairProperties& p,
                                const ContactOptions& o, double dt, double speed);
 

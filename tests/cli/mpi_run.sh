@@ -14,8 +14,9 @@
 #   resume [A B [OUTPUT]]  stopped on 2 processes half way (slabs along A, default y),
 #               resumed on 3 (along B, default A), snapshots OUTPUT on both: the same as one
 #               process
-#   full_disk   the disk fills during a collective snapshot on 2 processes: said once,
-#               no process left waiting, and the run resumes to its end
+#   full_disk [OUTPUT]  the disk fills during a snapshot on 2 processes, written OUTPUT
+#               (--snapshot-output, default collective): said once, no process left
+#               waiting, and the run resumes to its end
 #   errors      bad input (a scene, a directory, a box too narrow for the slabs) said once,
 #               by one rank, exit code 2, no rank left waiting; other
 #               commands than `run` refused under mpirun
@@ -149,10 +150,10 @@ full_disk)
   dir=$(mktemp -d)
   trap 'rm -rf "$dir"' EXIT
   tight=(--set output.snapshot_interval=0.0002 --set output.checkpoint_interval=0.001
-         --set 'numerics.bin_size="6 d"' --set output.blocks=2 --snapshot-output collective)
-  # The limit (1600 KiB) is met in a snapshot of this run, after its second checkpoint
-  # (step 10000 of 20000; about 110 KiB a snapshot); where exactly depends on the layout (run.h5 of format 2 adds radius and frame views): at some limits the write that
-  # fails leaves run.h5 unreadable, which --resume then refuses (docs/output_format.md).
+         --set 'numerics.bin_size="6 d"' --set output.blocks=2 --snapshot-output "${6:-collective}")
+  # The limit (1600 KiB) is met in a snapshot of this run (run.h5 of format 2, with radius
+  # and frame views), after its first checkpoint (20 snapshots, a checkpoint every 5000 of
+  # the 20000 steps); room is reserved before every change, so the resume always works.
   # Shared memory between the processes would meet the limit too (MPI warns and falls
   # back): TCP over the loopback between them keeps the test about granshock's write.
   timeout 120 "$mpiexec" --oversubscribe --mca btl self,tcp --mca btl_tcp_if_include lo -np 2 \

@@ -31,6 +31,9 @@ def check_run(path, dim, counts, species_radius, spin):
         expect(text(f["h5md/creator"].attrs["name"]) == "granshock", f"{path}: creator name")
         expect("version" in f["h5md/creator"].attrs, f"{path}: creator version")
         expect(text(f["h5md/author"].attrs["name"]) == "granshock", f"{path}: author name")
+        run_id = text(f.attrs["run_id"]) if "run_id" in f.attrs else ""
+        expect(len(run_id) == 32 and all(c in "0123456789abcdef" for c in run_id),
+               f"{path}: @run_id '{run_id}' is not 32 hex digits")
         expect(text(f["scene/as_given"][()]).startswith("# as given"), f"{path}: scene as given")
         expect(text(f["scene/resolved"][()]).startswith("# resolved"), f"{path}: scene resolved")
         expect(int(f["particles/all/box"].attrs["dimension"]) == dim, f"{path}: box dimension")

@@ -123,7 +123,7 @@ TEST(FrameViews, ResumeReplacesTheViewsOfFramesItCutAway) {
     run.append_snapshot(30, 0.3, spinning(5, 2));
   }
   {
-    RunFile run = RunFile::open_for_resume(path, 10);
+    RunFile run = RunFile::open_for_resume(path, 10, {});
     run.append_snapshot(25, 0.25, spinning(2, 5));
   }
   EXPECT_EQ(test::read_array<int>(path, view(1, "id")).values, spinning(2, 5).id);
@@ -146,7 +146,7 @@ TEST(FrameViews, AFormatOneFileKeepsItsLayoutAndGainsViews) {
   rewrite_as_format(path, 1, "/xdmf");
   EXPECT_EQ(RunFile::open_read_only(path).frames().size(), 2u);
   {
-    RunFile run = RunFile::open_for_resume(path, 20);
+    RunFile run = RunFile::open_for_resume(path, 20, {});
     EXPECT_TRUE(run.contents().species_radius.empty());
     EXPECT_FALSE(run.contents().angular_velocity);
     run.append_snapshot(30, 0.3, spinning(5, 2));
@@ -174,7 +174,7 @@ TEST(FrameViews, ANewerFormatIsRefusedByName) {
               std::string::npos)
         << e.what();
   }
-  EXPECT_THROW(RunFile::open_for_resume(path, 0), UserError);
+  EXPECT_THROW(RunFile::open_for_resume(path, 0, {}), UserError);
 }
 
 TEST(FrameViews, ASpeciesWithoutARadiusWritesNothing) {

@@ -170,16 +170,18 @@ TEST(RunFile, TimeSeriesRoundTrips) {
 TEST(RunFile, ResumeTruncatesToTheCheckpointStep) {
   TempDir dir;
   const auto path = dir / "run.h5";
+  RunFileRecord at_frame_3;  // what a checkpoint at step 300 records
   {
     RunFile run = RunFile::create(path, "", "", 2);
     for (int f = 1; f <= 5; ++f) {
       run.append_snapshot(100 * f, 0.1 * f, make_particles(2 + f, f));
       run.append_time_series(make_row(100 * f));
+      if (f == 3) at_frame_3 = run.record();
     }
   }
   {
     // The checkpoint was taken at the step of frame 3; frames 4 and 5 are redone.
-    RunFile run = RunFile::open_for_resume(path, 300);
+    RunFile run = RunFile::open_for_resume(path, 300, at_frame_3);
     EXPECT_EQ(run.frames().size(), 3u);
     run.append_snapshot(400, 0.4, make_particles(1, 40));
     run.append_snapshot(500, 0.5, make_particles(2, 50));
@@ -211,12 +213,14 @@ TEST(RunFile, ResumeTruncatesToTheCheckpointStep) {
 TEST(RunFile, ResumeBeforeTheFirstFrameEmptiesTheSeries) {
   TempDir dir;
   const auto path = dir / "run.h5";
+  RunFileRecord at_step_0;
   {
     RunFile run = RunFile::create(path, "", "", 2);
+    at_step_0 = run.record();
     run.append_snapshot(10, 0.1, make_particles(3, 0));
     run.append_time_series(make_row(10));
   }
-  RunFile run = RunFile::open_for_resume(path, 0);
+  RunFile run = RunFile::open_for_resume(path, 0, at_step_0);
   EXPECT_TRUE(run.frames().empty());
   run.append_snapshot(10, 0.1, make_particles(2, 0));
   EXPECT_EQ(run.frames().size(), 1u);
@@ -250,9 +254,9 @@ TEST(RunFile, CreateInAMissingDirectoryIsAUserError) {
 
 TEST(RunFile, OpeningWhatIsNotARunFileIsAUserError) {
   TempDir dir;
-  EXPECT_THROW(RunFile::open_for_resume(dir / "missing.h5", 0), UserError);
+  EXPECT_THROW(RunFile::open_for_resume(dir / "missing.h5", 0, {}), UserError);
   std::ofstream(dir / "text.h5") << "not hdf5";
-  EXPECT_THROW(RunFile::open_for_resume(dir / "text.h5", 0), UserError);
+  EXPECT_THROW(RunFile::open_for_resume(dir / "text.h5", 0, {}), UserError);
   // An HDF5 file that is not ours.
   const hid_t f = H5Fcreate((dir / "other.h5").c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
   ASSERT_GE(f, 0);

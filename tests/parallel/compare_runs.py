@@ -1,10 +1,11 @@
 """Two run directories of the same scene, one from one process and one from several
-(docs/parallel.md): the checkpoint's particle state and run.h5's particle snapshots must
-be the same bit for bit; the field sums and energy series, whose sums run in another
-order, the same to within 1e-11 of each array's largest magnitude. The runs must be long
-enough to mean something: the run on several processes must have crossed MIN_LIST_BUILDS
-neighbour-list rebuilds and handed MIN_MIGRATED particles between slabs (summary.json,
-"processes"). Prints what differs; exit status 1 if anything does.
+(docs/parallel.md), or from one process that was stopped and resumed: the checkpoint's
+particle state and run.h5's particle snapshots must be the same bit for bit; the field
+sums and energy series, whose sums run in another order, the same to within 1e-11 of each
+array's largest magnitude. A run on several processes must also be long enough to mean
+something: it must have crossed MIN_LIST_BUILDS neighbour-list rebuilds and handed
+MIN_MIGRATED particles between slabs (summary.json, "processes"). Prints what differs;
+exit status 1 if anything does.
 Usage: compare_runs.py ONE_PROCESS_DIR OTHER_DIR RANKS
 """
 import json
@@ -62,23 +63,29 @@ def main():
         print(f"{name}: {compared} datasets compared")
     summary = json.load(open(f"{other}/summary.json"))
     reference = json.load(open(f"{one}/summary.json"))
-    if summary["processes"]["count"] != ranks:
-        problems.append(f"summary.json: processes.count is {summary['processes']['count']}")
-    per_rank = summary["processes"]["particles_per_rank"]
-    if len(per_rank) != ranks or sum(per_rank) != reference["particles_final"]:
-        problems.append(f"summary.json: particles_per_rank {per_rank} against "
-                        f"{reference['particles_final']} particles in one process")
+    # One process against one (a resumed run, tests/cli/full_disk.sh): no "processes".
+    per_rank = [reference["particles_final"]]
+    if ranks > 1:
+        if summary["processes"]["count"] != ranks:
+            problems.append(f"summary.json: processes.count is {summary['processes']['count']}")
+        per_rank = summary["processes"]["particles_per_rank"]
+        if len(per_rank) != ranks or sum(per_rank) != reference["particles_final"]:
+            problems.append(f"summary.json: particles_per_rank {per_rank} against "
+                            f"{reference['particles_final']} particles in one process")
     for key in ("particles_final", "inserted", "steps", "list_builds"):
         if summary.get(key) != reference.get(key):
             problems.append(f"summary.json: {key} {summary.get(key)} against {reference.get(key)}")
-    builds, migrated = summary.get("list_builds", 0), summary["processes"].get("migrated_per_rank")
-    print(f"list builds: {builds}, particles migrated per rank: {migrated}, "
-          f"slab cuts moved: {summary['processes'].get('rebalances')}")
     too_short = []
-    if builds < MIN_LIST_BUILDS:
-        too_short.append(f"{builds} list builds, fewer than {MIN_LIST_BUILDS}")
-    if migrated is None or sum(migrated) < MIN_MIGRATED:
-        too_short.append(f"particles migrated per rank {migrated}, fewer than {MIN_MIGRATED} in all")
+    if ranks > 1:
+        builds = summary.get("list_builds", 0)
+        migrated = summary["processes"].get("migrated_per_rank")
+        print(f"list builds: {builds}, particles migrated per rank: {migrated}, "
+              f"slab cuts moved: {summary['processes'].get('rebalances')}")
+        if builds < MIN_LIST_BUILDS:
+            too_short.append(f"{builds} list builds, fewer than {MIN_LIST_BUILDS}")
+        if migrated is None or sum(migrated) < MIN_MIGRATED:
+            too_short.append(
+                f"particles migrated per rank {migrated}, fewer than {MIN_MIGRATED} in all")
     for p in problems:
         print("DIFFERS:", p)
     for p in too_short:

@@ -211,4 +211,44 @@ TEST(DiscreteRestitution, UnreachableRestitutionIsAUserError) {
   EXPECT_THROW(apply_restitution_mode(s), UserError);
 }
 
+// The calibration integrates about 3,700 collisions per pair: at dt = 1e-12 s (t_c/dt of
+// 3e6) `collide --restitution-mode discrete` ran for more than 12 minutes. It is refused
+// before any step, naming a dt that fits the cap, both in a scene and in collide.
+TEST(DiscreteRestitution, ACalibrationPastTheStepCapIsRefusedUpFront) {
+  SolverSetup s;
+  s.species = {{"steel", steel(), 1e-3}, {"aluminium", aluminium(), 1e-3}};
+  s.contacts = ContactSettings::uniform(2, 0.5, 0.0);
+  s.contacts.restitution_mode = RestitutionMode::discrete;
+  s.contacts.calibration_speed_m_per_s = 1.0;
+  s.dt = 1e-12;
+  const std::vector<PairProperties> pairs = s.all_pairs();
+  const double steps =
+      calibration_steps(ContactModelKind::hertz, pairs, s.contacts.options, s.dt, 1.0);
+  EXPECT_GT(steps, kMaxCalibrationSteps);
+  // Per pair: 32 phases of at least 113 contacts at the calibration speed, each t_c/dt.
+  const double t_c = collision_time(ContactModelKind::hertz, pairs[0], s.contacts.options, 1.0);
+  EXPECT_GT(steps, 3 * 32 * 113 * t_c / s.dt);
+  try {
+    apply_restitution_mode(s);
+    ADD_FAILURE() << "a calibration of " << steps << " steps was started";
+  } catch (const UserError& e) {
+    EXPECT_NE(std::string(e.what()).find("calibrating the damping of 3 pairs at dt = 1e-12 s"),
+              std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find("more than the 1e+09 allowed; use dt >= "),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_TRUE(s.contacts.calibrated_beta.empty());
+
+  CollisionOptions o = impact("steel-steel", 1.0, 0.5);
+  o.restitution_mode = RestitutionMode::discrete;
+  o.dt = 1e-12;
+  EXPECT_THROW(run_head_on_collision(o), UserError);
+  // The paper's dt (about t_c/5) is far inside the cap, for every pair of 64 species.
+  EXPECT_LT(calibration_steps(ContactModelKind::hertz, std::vector<PairProperties>(2144, pairs[0]),
+                              s.contacts.options, t_c / 5, 1.0),
+            kMaxCalibrationSteps / 10);
+}
+
 }  // namespace

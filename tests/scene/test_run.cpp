@@ -106,8 +106,10 @@ INSTANTIATE_TEST_SUITE_P(
         BadRun{"snapshots_every_step",
                {"output.snapshot_interval=1e-12"},
                "write a particle snapshot"},
-        BadRun{
-            "huge_domain", {"domain.length=\"1e9 d\""}, "more than the 2.68e+08 one process holds"},
+        // 1 km x 10 km, within the range of lengths (at most 10 km each).
+        BadRun{"huge_domain",
+               {"domain.width=\"1e6 d\"", "domain.length=\"1e7 d\""},
+               "more than the 2.68e+08 one process holds"},
         // A custom material so soft that impacts overlap by a diameter.
         BadRun{"overlap_past_the_contact_law",
                {"materials.soft.youngs_modulus=1000", "materials.soft.poisson_ratio=0.3",

@@ -11,7 +11,9 @@
 #include <random>
 #include <sstream>
 
+#include "run_checks.hpp"
 #include "run_command.hpp"
+#include "scene_file.hpp"
 #include "scene_fixtures.hpp"
 #include "user_error.hpp"
 
@@ -238,4 +240,73 @@ TEST(SceneFuzz, DryRunOfTheProgramWritesNothingAndAnswersInOneLine) {
   }
   std::printf("[ measured ] 40 dry runs: %d exit 0, %d exit 2\n", codes[0], codes[2]);
   EXPECT_GE(codes[0], 2);
+}
+
+namespace {
+
+// The --set path of a documented key in small_scene(), with the overrides it needs
+// (materials.NAME needs all three keys), and the line of small_scene() it replaces.
+struct ConcreteKey {
+  std::string path;
+  std::vector<std::string> with;
+  std::string drop;
+};
+
+ConcreteKey concrete(const std::string& documented) {
+  const std::string material = "materials.NAME.";
+  if (documented.rfind(material, 0) == 0) {
+    const std::string name = documented.substr(material.size());
+    std::vector<std::string> with;
+    for (const char* k : {"youngs_modulus=1e9", "poisson_ratio=0.2", "density=2500.0"})
+      if (std::string(k).rfind(name + "=", 0) != 0)
+        with.push_back("materials.glass." + std::string(k));
+    return {"materials.glass." + name, with, ""};
+  }
+  if (documented.rfind("[[species]] ", 0) == 0)
+    return {"species.0." + documented.substr(12), {}, ""};
+  const std::string pairs = "contact.pairs.\"a-b\".";
+  if (documented.rfind(pairs, 0) == 0)
+    return {"contact.pairs.steel-aluminium." + documented.substr(pairs.size()), {}, ""};
+  if (documented == "inflow.mach") return {documented, {}, "sigma = 0.1\n"};
+  return {documented, {}, ""};
+}
+
+}  // namespace
+
+// Every number of the schema, vectors included, must be finite: obstacle.centre = [nan,
+// nan] passed validation and the run blew up later, blaming time.dt. A value far outside
+// the physical range (1e-320, 1e308, -1) is refused naming its key, or accepted by every
+// check the run makes before it starts.
+TEST(SceneFuzz, EveryNumberIsFiniteAndOutOfRangeValuesNameTheirKey) {
+  long cases = 0;
+  for (const SceneKey& key : scene_keys()) {
+    const bool vector = key.type == "[length, length]";
+    if (key.type.rfind("number", 0) != 0 && key.type != "length" && !vector) continue;
+    const ConcreteKey k = concrete(key.name);
+    std::string text = small_scene();
+    if (!k.drop.empty()) text.erase(text.find(k.drop), k.drop.size());
+    const std::string named = k.path + (vector ? "[0]" : "");
+    for (const std::string value : {"nan", "inf", "-inf", "1e-320", "1e308", "-1"}) {
+      std::vector<std::string> sets = k.with;
+      sets.push_back(k.path + "=" + (vector ? "[" + value + ", \"35 d\"]" : value));
+      std::string refusal;
+      try {
+        Scene s = parse_scene(text, sets).scene;
+        check_scene_before_run(s, false);
+      } catch (const UserError& e) {
+        refusal = e.what();
+      }
+      ++cases;
+      const bool finite = value != "nan" && value != "inf" && value != "-inf";
+      if (!finite) {
+        EXPECT_NE(refusal.find("scene key '" + named + "' = "), std::string::npos)
+            << named << " = " << value << ": " << (refusal.empty() ? "accepted" : refusal);
+      } else if (!refusal.empty()) {
+        EXPECT_NE(refusal.find(k.path.substr(k.path.rfind('.') + 1)), std::string::npos)
+            << named << " = " << value << " is refused naming another key: " << refusal;
+      }
+    }
+  }
+  std::printf("[ measured ] %ld values of the scene's numeric keys\n", cases);
+  EXPECT_GE(cases, 150);  // 6 values of each of some 30 keys
 }

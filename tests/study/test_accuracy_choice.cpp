@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <limits>
 
 #include "accuracy_choice.hpp"
@@ -139,6 +140,65 @@ TEST(AccuracyTable, UnreadableTablesNameFileAndCause) {
   old["cases"][1].erase("softening");
   EXPECT_NE(message(old.dump()).find("case \"dt-tc25\" lacks"), std::string::npos);
   EXPECT_THROW(read_accuracy_table(dir.path() / "missing.json"), UserError);
+}
+
+// A malformed table ("case": 5, a subnormal dt_over_tc) ended in an internal error (exit 3):
+// every field's type and range is checked, and each refusal is one line naming the field.
+TEST(AccuracyTable, MalformedTablesAreRefusedNamingTheField) {
+  TempDir dir;
+  const auto message = [&](const nlohmann::json& doc) {
+    try {
+      read_accuracy_table(dir.write("t.json", doc.dump()));
+    } catch (const UserError& e) {
+      EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const auto with = [](const std::function<void(nlohmann::json&)>& edit) {
+    nlohmann::json doc = fake_trade_table();
+    edit(doc);
+    return doc;
+  };
+  const std::vector<std::pair<nlohmann::json, std::string>> cases = {
+      {with([](auto& d) { d["cases"][0]["case"] = 5; }), "cases[0]: \"case\" = 5 must be a string"},
+      {with([](auto& d) { d["cases"][1]["dt_over_tc"] = 1e-320; }),
+       "case \"dt-tc25\": \"dt_over_tc\" = 1e-320 must be a number in [1e-06, 10]"},
+      {with([](auto& d) { d["cases"][1]["dt_over_tc"] = -0.04; }),
+       "case \"dt-tc25\": \"dt_over_tc\" = -0.04 must be a number in [1e-06, 10]"},
+      {with([](auto& d) { d["cases"][1]["dt_over_tc"] = "0.04"; }),
+       "case \"dt-tc25\": \"dt_over_tc\" = \"0.04\" must be a number"},
+      {with([](auto& d) { d["cases"][1]["dt_over_tc"] = nullptr; }),
+       "case \"dt-tc25\" lacks \"dt_over_tc\""},
+      {with([](auto& d) { d["cases"][2]["speedup"] = 0; }),
+       "case \"scene\": \"speedup\" = 0 must be a number in [1e-06, 1e+06]"},
+      {with([](auto& d) { d["cases"][2]["softening"] = 0.5; }),
+       "case \"scene\": \"softening\" = 0.5 must be a number in [1, 1e+09]"},
+      {with([](auto& d) { d["cases"][2]["e_eff_error"] = -1; }),
+       "case \"scene\": \"e_eff_error\" = -1 must be a number in [0, 1e+06]"},
+      {with([](auto& d) { d["cases"][2]["precision"] = "quad"; }),
+       "case \"scene\": \"precision\" = \"quad\" must be \"double\" or \"single\""},
+      {with([](auto& d) { d["cases"][2]["precision"] = 3; }),
+       "case \"scene\": \"precision\" = 3 must be a string"},
+      {with([](auto& d) { d["cases"][2]["changed"] = nlohmann::json::array(); }),
+       "case \"scene\": \"changed\" = [] must be a string"},
+      {with([](auto& d) { d["cases"][2]["diff.phi_peak"] = -0.1; }),
+       "case \"scene\": \"diff.phi_peak\" = -0.1 must be a number in [0, "},
+      {with([](auto& d) { d["cases"][0]["phi_peak"] = true; }),
+       "case \"reference\": \"phi_peak\" = true must be a number"},
+      {with([](auto& d) { d["noise"]["phi_peak"] = "x"; }),
+       "noise: \"phi_peak\" = \"x\" must be a number"},
+      {with([](auto& d) { d["cases"][3]["case"] = "scene"; }),
+       "cases[3]: case \"scene\" appears twice"},
+      {with([](auto& d) { d["cases"][4] = 1; }), "cases[4] = 1 must be an object"},
+      {with([](auto& d) { d["cases"] = nlohmann::json::array(); }), "has no case \"reference\""},
+      {with([](auto& d) { d["noise"] = nlohmann::json::array(); }),
+       "has no \"cases\" and \"noise\""},
+      {nlohmann::json::array(), "has no \"cases\" and \"noise\""},
+  };
+  for (const auto& [doc, expected] : cases)
+    EXPECT_NE(message(doc).find("t.json: " + expected), std::string::npos)
+        << "expected: " << expected << "\ngot: " << message(doc);
 }
 
 // The case's dt / t_c carries over to another scene, at the chosen softening; the fields are
