@@ -135,9 +135,14 @@ collect_lists_missing)
   [ $? -eq 2 ] || fail "--collect without a study directory must be a user error"
   "$granshock" study "$studies/tiny.toml" --out "$out" --quiet --case 2 2>"$work/stderr" ||
     fail "--case 2 failed: $(cat "$work/stderr")"
-  "$granshock" study "$studies/tiny.toml" --out "$out" --collect --quiet >"$work/stdout" 2>"$work/stderr"
+  # --no-figures where the environment asks for figures: none drawn, and the study's own
+  # closing note (which --quiet keeps) names the --collect that draws them.
+  GRANSHOCK_FIGURES=1 "$granshock" study "$studies/tiny.toml" --out "$out" --collect --quiet \
+    --no-figures >"$work/stdout" 2>"$work/stderr"
   code=$?
   [ $code -eq 1 ] || fail "--collect with missing cases: exit code $code, expected 1"
+  [ "$(grep 'figures not drawn' "$work/stderr")" = "granshock: figures not drawn (--no-figures); draw them later with: granshock study $studies/tiny.toml --out $out --collect" ] ||
+    fail "--collect --no-figures: the closing note: $(grep 'not drawn' "$work/stderr")"
   grep -q "3 of 4 cases not finished: phi-0.1_e-0.5 (missing), phi-0.1_e-0.8 (missing), phi-0.12_e-0.8 (missing)" \
     "$work/stderr" || fail "the missing cases are not listed: $(cat "$work/stderr")"
   [ "$(tail -n +2 "$out/study.csv" | wc -l)" -eq 4 ] || fail "study.csv should have 4 rows"
@@ -145,9 +150,10 @@ collect_lists_missing)
   grep -q '^"phi-0.12_e-0.5",2,"finished",' "$out/study.csv" || fail "case 2 is not finished"
   head -1 "$out/study.csv" | tr ',' '\n' | grep -qx delta_over_D || fail "no summary columns"
   [ ! -e "$out/phi-0.1_e-0.5" ] || fail "--collect ran a case"
-  # GRANSHOCK_FIGURES=0 (ctest's environment): neither the run nor --collect drew a figure.
+  # Neither the run (GRANSHOCK_FIGURES=0, ctest's environment) nor --collect --no-figures
+  # drew a figure.
   [ ! -e "$out/phi-0.12_e-0.5/figures" ] && [ ! -e "$out/figures" ] ||
-    fail "figures drawn with GRANSHOCK_FIGURES=0: $(ls "$out/figures" "$out/phi-0.12_e-0.5/figures" 2>&1)"
+    fail "figures drawn without figures: $(ls "$out/figures" "$out/phi-0.12_e-0.5/figures" 2>&1)"
   # A case analysed by an older granshock (its summary.json without the keys of today's
   # analysis) is analysed again before it is tabulated, and its figures drawn from the new
   # analysis (old ones would show the old fronts).
@@ -249,6 +255,15 @@ tradeoff_runs_and_tabulates)
     for f in pareto.png reference/figures/mach.png seed-2/figures/stagnation_profiles.png; do
       [ -s "$out/$f" ] || fail "the note's command did not draw $f"
     done
+    # --collect --no-figures where the environment asks for figures: none drawn again.
+    rm -r "$out/pareto.png" "$out/reference/figures"
+    GRANSHOCK_FIGURES=1 "$granshock" tradeoff "$source/scenes/default.toml" --out "$out" \
+      --quiet --collect --no-figures "${tiny[@]}" >"$work/stdout" 2>"$work/stderr" ||
+      fail "tradeoff --collect --no-figures failed: $(tail -5 "$work/stderr")"
+    [ ! -e "$out/pareto.png" ] && [ ! -e "$out/reference/figures" ] ||
+      fail "tradeoff --no-figures drew figures"
+    grep -q '^granshock: figures not drawn (--no-figures); draw them later with: granshock tradeoff .* --collect$' \
+      "$work/stderr" || fail "tradeoff --no-figures: the closing note: $(cat "$work/stderr")"
   fi
   /usr/bin/python3 -c '
 import json, sys
