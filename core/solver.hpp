@@ -77,6 +77,7 @@ struct HaloStats {
   double bytes_sent = 0;  // to the neighbours
   long ghosts = 0;        // ghosts held since the last list rebuild
   long rebalances = 0;    // times the slab boundaries moved (--balance particles, work)
+  long migrated = 0;      // particles handed to another slab at rebuilds (once per hop)
   double exchange_seconds() const { return seconds + rebuild_seconds; }
 };
 

@@ -513,10 +513,13 @@ void BowShockRun::analyse() {
       dir_.string());
   const ExitAtInterrupt at_signal("granshock: interrupted during the field analysis; " + complete);
   try {
-    fields_command({dir_}, {}, FieldsCommandOptions{true, options_.quiet, &*run_directory_});
+    fields_command({dir_}, {},
+                   FieldsCommandOptions{options_.figures, options_.quiet, &*run_directory_});
   } catch (const UserError& e) {
     throw UserError(fmt::format("{}; {}", e.what(), complete));
   }
+  if (!options_.figures && !options_.quiet)
+    std::cerr << figures_skipped_note({"granshock", "fields", dir_.string()}) << "\n";
 }
 
 // One slice of the time loop, timed for the choice between threads and one thread.
@@ -595,6 +598,7 @@ nlohmann::json BowShockRun::processes_summary() const {
       {"sync_share_per_rank", gather_to_root(comm_, wall > 0 ? halo.sync_seconds / wall : 0.0)},
       {"halo_bytes_sent_per_rank", gather_to_root(comm_, halo.bytes_sent)},
       {"rebalances", halo.rebalances},
+      {"migrated_per_rank", gather_to_root(comm_, halo.migrated)},
       // Output (docs/scaling.md): how snapshots were written, and rank 0's seconds per
       // snapshot (either way) and per checkpoint (gathered to rank 0, written there).
       {"snapshot_output", options_.snapshot_output},

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "communicator.hpp"
+#include "figure_switch.hpp"
 #include "run_observables.hpp"  // NumericalFailure
 #include "scene.hpp"
 
@@ -25,6 +26,8 @@ struct RunOptions {
   bool force = false;             // run past the stable time step
   long stop_after_steps = 0;      // > 0: checkpoint and stop after this many steps (batch jobs)
   bool quiet = false;             // no progress lines
+  // The figures at the end (--no-figures, GRANSHOCK_FIGURES: figure_switch.hpp).
+  bool figures = figures_by_default();
   std::string balance = "equal";  // several processes: "equal", "particles" or "work"
   std::string slabs = "y";        // several processes: slabs along "x" or "y"
   // Several processes: how snapshots reach run.h5, "gathered" to rank 0, "collective"
