@@ -21,6 +21,7 @@ repeats=${REPEATS:-3}
 loads=${LOADS:-"0 1 2 g"}
 configs=${CONFIGS:-"2:auto 2:off 1:off"}
 reference=${1:-}
+production=$(awk -v d="$duration" 'BEGIN { print d / 2 }')  # sampling in the second half
 work=$(mktemp -d)
 busy=()
 stop_load() {
@@ -41,7 +42,8 @@ start_load() {  # LOAD: 0, N busy `yes`, or g (a granshock on one thread, run af
     g)
       (while :; do
         OMP_NUM_THREADS=1 "$granshock" run "$root/scenes/default.toml" --quiet \
-          --set time.duration=0.05 --out "$work/load" --overwrite >/dev/null 2>&1
+          --set time.duration=0.05 --set time.production_start=0.025 --backend-switch off \
+          --out "$work/load" --overwrite >/dev/null 2>&1
       done) &
       busy+=($!)
       ;;
@@ -57,12 +59,13 @@ start_load() {  # LOAD: 0, N busy `yes`, or g (a granshock on one thread, run af
 
 granshock_rate() {  # THREADS SWITCH -> "rate wall moves" of one run
   OMP_NUM_THREADS=$1 "$granshock" run "$root/scenes/default.toml" --quiet \
-    --set time.duration="$duration" --backend-switch "$2" --out "$work/run" --overwrite \
+    --set time.duration="$duration" --set time.production_start="$production" \
+    --backend-switch "$2" --out "$work/run" --overwrite \
     >/dev/null 2>"$work/err" || { echo "nan nan nan"; return; }
   /usr/bin/python3 - "$work/run/summary.json" <<'PY'
 import json, sys
 s = json.load(open(sys.argv[1]))
-moves = s.get("backend", {}).get("moves", 0)
+moves = s.get("backend_switch", {}).get("moves", 0)
 print("%.3g %.1f %d" % (s["particle_steps_per_second"], s["wall_seconds"], moves))
 PY
 }
