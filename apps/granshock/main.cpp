@@ -76,8 +76,8 @@ void add_collide_command(CLI::App& app, granshock::CollisionOptions& o, std::str
 void add_no_figures_flag(CLI::App& cmd, bool& figures) {
   cmd.add_flag_callback(
       "--no-figures", [&figures] { figures = false; },
-      "write every output but the PNG figures (also GRANSHOCK_FIGURES=0); "
-      "`granshock fields DIR` draws them later");
+      "write every output but the PNG figures (also GRANSHOCK_FIGURES=0); a last line "
+      "names the command that draws them later");
 }
 
 // --stop-after-steps of run and study: CLI11's message when it is not a positive count.

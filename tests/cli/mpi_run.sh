@@ -1,8 +1,8 @@
 #!/bin/bash
 # `mpirun -np N granshock run` against one process (docs/parallel.md), on the default
-# scene shortened to 4 ms (3,800 particles, 20,000 steps, 41 list rebuilds, 5 snapshots):
-# enough to cross many rebuilds, migrations and (balanced) moves of the slab cuts, which
-# compare_runs.py counts and requires.
+# scene shortened to 4 ms (3,767 particles at the end, 20,000 steps, 41 list rebuilds, 5
+# snapshots): enough to cross many rebuilds, migrations and (balanced) moves of the slab
+# cuts, which compare_runs.py counts and requires.
 # Usage: mpi_run.sh MPIEXEC GRANSHOCK SCENE WORK MODE [RANKS]
 #   reference   the one-process runs, into WORK/one and WORK/one_big (a 60 d obstacle):
 #               the fixture of the others
@@ -120,6 +120,8 @@ errors)
     fail "a locked directory was not said once"
   # Slabs along x in a box too narrow across x for 3 processes (4 cell columns, at least 2
   # per slab through the periodic faces): said once, naming the axis, nothing created.
+  # (output.sample_every: enough field samples in 4 ms for the sampling check, which would
+  # refuse the 1 d bins first.)
   timeout 120 "$mpiexec" --oversubscribe -np 3 "$granshock" run "$scene" "${short[@]}" \
     --out "$dir/narrow" --slabs x --set 'domain.width="6 d"' --set 'obstacle.diameter="3 d"' \
     --set 'obstacle.centre=["3 d", "120 d"]' --set 'numerics.bin_size="1 d"' \
@@ -152,8 +154,9 @@ full_disk)
   tight=(--set output.snapshot_interval=0.0002 --set output.checkpoint_interval=0.001
          --set 'numerics.bin_size="6 d"' --set output.blocks=2 --snapshot-output "${6:-collective}")
   # The limit (1600 KiB) is met in a snapshot of this run (run.h5 of format 2, with radius
-  # and frame views), after its first checkpoint (20 snapshots, a checkpoint every 5000 of
-  # the 20000 steps); room is reserved before every change, so the resume always works.
+  # and frame views, reserves about 1 MB before a snapshot), before the checkpoint of step
+  # 5000: the one of step 0 is intact. Room is reserved before every change, so the resume
+  # always works.
   # Shared memory between the processes would meet the limit too (MPI warns and falls
   # back): TCP over the loopback between them keeps the test about granshock's write.
   timeout 120 "$mpiexec" --oversubscribe --mca btl self,tcp --mca btl_tcp_if_include lo -np 2 \

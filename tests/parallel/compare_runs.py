@@ -16,8 +16,8 @@ import numpy as np
 
 ROUNDING = 1e-11
 # A shortened run still exercises what several processes do between and at rebuilds. In
-# tests/cli/mpi_run.sh's 4 ms (41 rebuilds) slabs along y hand over 70 to 280 particles,
-# slabs along x, crossed by the thermal motion alone, about 10.
+# tests/cli/mpi_run.sh's 4 ms (41 rebuilds) slabs along y hand over 71 to 281 particles in
+# all, slabs along x, crossed by the thermal motion alone, 7 to 20 (docs/parallel.md).
 MIN_LIST_BUILDS = 20
 MIN_MIGRATED = 5
 

@@ -23,7 +23,8 @@ reaches an emitted script or table (scripts).
 Usage: hostile_user.py GRANSHOCK SOURCE_DIR [--deep] [--only CATEGORY[,CATEGORY...]]
 --deep (or GRANSHOCK_PROBE_DEEP=1) runs the whole matrix (every output name for every
 writer, more file-size limits and signal times); the default is a selection of every
-category that runs in about two minutes on 2 cores.
+category that runs in about a minute on 2 cores (with figures only in the categories whose
+checks cover them: WITH_FIGURES).
 """
 
 import argparse
