@@ -188,7 +188,9 @@ int fields_command(const std::vector<fs::path>& run_dirs, const fs::path& out,
 
   if (o.figures) {
     require_plotting_python();
-    for (const Done& d : done) plot_run_figures(d.dest / "fields.h5", d.dest / "figures");
+    std::vector<std::pair<fs::path, fs::path>> runs;
+    for (const Done& d : done) runs.emplace_back(d.dest / "fields.h5", d.dest / "figures");
+    plot_run_figures(runs);
     if (several)
       plot_detachment_figure(out / "detachment.json", out / "figures" / "detachment_length.png");
   }

@@ -5,13 +5,15 @@
 #include <filesystem>
 #include <vector>
 
+#include "figure_switch.hpp"
 #include "run_directory.hpp"
 
 namespace granshock {
 
 struct FieldsCommandOptions {
-  bool figures = true;  // draw the PNG figures (needs Python with matplotlib)
-  bool quiet = false;   // no result line on stdout
+  // Draw the PNG figures (needs Python with matplotlib; figure_switch.hpp).
+  bool figures = figures_by_default();
+  bool quiet = false;  // no result line on stdout
   // The run directory the caller has claimed already (`granshock run` analysing its own
   // run at its end): written under the caller's lock instead of taking it again.
   const RunDirectory* held = nullptr;

@@ -102,8 +102,17 @@ void require_plotting_python() {
 // The figures' directory is one granshock makes itself, never a link to elsewhere; the
 // scripts write each PNG under a new temporary name and rename it (figure_files.py).
 void plot_run_figures(const fs::path& fields_h5, const fs::path& figures_dir) {
-  make_real_directory(figures_dir);
-  run_figure_script(figure_script("plot_fields.py"), {fields_h5.string(), figures_dir.string()});
+  plot_run_figures({{fields_h5, figures_dir}});
+}
+
+void plot_run_figures(const std::vector<std::pair<fs::path, fs::path>>& runs) {
+  if (runs.empty()) return;
+  std::vector<std::string> args;
+  for (const auto& [fields_h5, figures_dir] : runs) {
+    make_real_directory(figures_dir);
+    args.insert(args.end(), {fields_h5.string(), figures_dir.string()});
+  }
+  run_figure_script(figure_script("plot_fields.py"), args);
 }
 
 void plot_detachment_figure(const fs::path& table_json, const fs::path& png) {

@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace granshock {
@@ -37,6 +38,9 @@ void require_plotting_python();
 // Writes figures_dir/{solid_fraction,temperature,mach,stagnation_profiles}.png from fields.h5.
 void plot_run_figures(const std::filesystem::path& fields_h5,
                       const std::filesystem::path& figures_dir);
+// The same for several runs, each a (fields.h5, figures directory) pair, in one interpreter.
+void plot_run_figures(
+    const std::vector<std::pair<std::filesystem::path, std::filesystem::path>>& runs);
 
 // Writes png: delta/D against D/d for each Ma_inf, with error bars, from the table JSON of
 // detachment_table.hpp.

@@ -36,7 +36,6 @@ void check_json_depth(std::string_view text, const std::string& where) {
     throw UserError(fmt::format("{}: JSON nested deeper than {} levels", where, kMaxJsonDepth));
 }
 
-
 JsonFile read_json_file(const std::filesystem::path& path, const std::string& what) {
   const std::string text = read_regular_file(path, what, kMaxJsonFileBytes);
   check_json_depth(text, path.string());

@@ -4,11 +4,12 @@ paper's Figs. 3-5: solid fraction, normalised temperature and Mach number on the
 grid (axes in units of the particle diameter d, the obstacle drawn, the sonic line and the
 shock front over the Mach field), and the stagnation-line profiles of phi, T and Ma.
 
-Usage: plot_fields.py FIELDS_H5 FIGURES_DIR
+Usage: plot_fields.py FIELDS_H5 FIGURES_DIR [FIELDS_H5 FIGURES_DIR ...]
 
 Writes FIGURES_DIR/{solid_fraction,temperature,mach,stagnation_profiles}.png, each whole
 and never through a symbolic link (figure_files.py); FIGURES_DIR is created when absent
-and must not be a link. Needs
+and must not be a link. Several runs are drawn in one call, in the order given (starting
+Python and matplotlib takes longer than drawing one run). Needs
 numpy, h5py and matplotlib (Debian: python3-numpy python3-h5py python3-matplotlib).
 """
 import sys
@@ -190,12 +191,14 @@ def profile_figure(run, figures, png):
 
 
 def main():
-    if len(sys.argv) != 3:
+    args = sys.argv[1:]
+    if not args or len(args) % 2 != 0:
         print(__doc__, file=sys.stderr)
         return 2
-    run = Run(sys.argv[1])
-    with FigureDirectory(sys.argv[2]) as out:
-        draw_figures(run, out)
+    for fields_h5, figures_dir in zip(args[0::2], args[1::2]):
+        run = Run(fields_h5)
+        with FigureDirectory(figures_dir) as out:
+            draw_figures(run, out)
     return 0
 
 

@@ -77,6 +77,7 @@ struct HaloStats {
   double bytes_sent = 0;  // to the neighbours
   long ghosts = 0;        // ghosts held since the last list rebuild
   long rebalances = 0;    // times the slab boundaries moved (--balance particles, work)
+  long migrated = 0;      // particles handed to another slab at rebuilds (once per hop)
   double exchange_seconds() const { return seconds + rebuild_seconds; }
 };
 
@@ -170,5 +171,10 @@ enum class Backend { default_space, serial };
 std::unique_ptr<Solver> make_solver(const SolverSetup& setup, std::size_t capacity,
                                     Backend backend = Backend::default_space,
                                     const Communicator* comm = nullptr);
+
+// The default backend's threads when it runs on the host's threads beside a separate
+// one-thread backend, so that a run may move between the two
+// (cases/bow_shock/backend_switch.hpp); 0 otherwise (a GPU, or Serial alone).
+int switchable_host_threads();
 
 }  // namespace granshock

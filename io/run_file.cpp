@@ -16,8 +16,8 @@
 #include "failure_agreement.hpp"
 #include "file_room.hpp"
 #include "hdf5_helpers.hpp"
-#include "run_file_growth.hpp"
 #include "regular_file.hpp"
+#include "run_file_growth.hpp"
 #include "user_error.hpp"
 #include "version.hpp"
 

@@ -72,6 +72,14 @@ void add_collide_command(CLI::App& app, granshock::CollisionOptions& o, std::str
       ->check(CLI::IsMember({"x", "y"}));
 }
 
+// --no-figures of run, fields, study and tradeoff (analysis/figure_switch.hpp).
+void add_no_figures_flag(CLI::App& cmd, bool& figures) {
+  cmd.add_flag_callback(
+      "--no-figures", [&figures] { figures = false; },
+      "write every output but the PNG figures (also GRANSHOCK_FIGURES=0); a last line "
+      "names the command that draws them later");
+}
+
 // --stop-after-steps of run and study: CLI11's message when it is not a positive count.
 std::string positive_step_count(const std::string& steps) {
   return std::strtol(steps.c_str(), nullptr, 10) >= 1
@@ -116,11 +124,19 @@ void add_run_command(CLI::App& app, granshock::RunOptions& o) {
                   "'x' (across it, through the periodic faces; docs/parallel.md); the results "
                   "are the same bit for bit")
       ->check(CLI::IsMember({"x", "y"}));
-  cmd->add_option("--snapshot-output", o.snapshot_output,
-                  "under mpirun: snapshots 'gathered' to rank 0, written by every process at "
-                  "once ('collective', parallel HDF5), or 'auto': collective for frames of "
-                  "24,576 particles or more, as measured faster (docs/parallel.md); the files are the "
-                  "same bit for bit")
+  cmd->add_option("--backend-switch", o.backend_switch,
+                  "one process on several threads: 'auto' continues on one thread while the "
+                  "threads run slower than one would (another process busy on the machine) "
+                  "and tries the threads again later; 'off' keeps the threads; 'alternate' "
+                  "moves at every slice (a check that both give the same run); the results "
+                  "are the same bit for bit (docs/benchmarks.md, \"A busy machine\")")
+      ->check(CLI::IsMember({"auto", "off", "alternate"}));
+  cmd->add_option(
+         "--snapshot-output", o.snapshot_output,
+         "under mpirun: snapshots 'gathered' to rank 0, written by every process at "
+         "once ('collective', parallel HDF5), or 'auto': collective for frames of "
+         "24,576 particles or more, as measured faster (docs/parallel.md); the files are the "
+         "same bit for bit")
       ->check(CLI::IsMember({"auto", "gathered", "collective"}));
   cmd->add_flag("--dry-run", o.dry_run,
                 "check the scene and the output directory, print the resolved scene, write "
@@ -132,10 +148,11 @@ void add_run_command(CLI::App& app, granshock::RunOptions& o) {
                   "the trade.json of `granshock tradeoff` to choose from (default: the paper "
                   "case's, docs/results/tradeoff/paper_d50_u2375)")
       ->check(CLI::ExistingFile);
+  add_no_figures_flag(*cmd, o.figures);
 }
 
 void add_fields_command(CLI::App& app, std::vector<std::filesystem::path>& dirs,
-                        std::filesystem::path& out) {
+                        std::filesystem::path& out, granshock::FieldsCommandOptions& o) {
   auto* cmd = app.add_subcommand("fields",
                                  "recompute fields, figures and summary from DIR/run.h5; "
                                  "with several DIRs also the delta/D table and figure");
@@ -143,6 +160,7 @@ void add_fields_command(CLI::App& app, std::vector<std::filesystem::path>& dirs,
   cmd->add_option("--out", out,
                   "where to write (required with several DIRs): a new or empty directory, or "
                   "one granshock fields wrote before");
+  add_no_figures_flag(*cmd, o.figures);
 }
 
 void add_study_command(CLI::App& app, granshock::StudyOptions& o) {
@@ -173,6 +191,7 @@ void add_study_command(CLI::App& app, granshock::StudyOptions& o) {
                   "the study with it")
       ->check(positive_step_count);
   cmd->add_flag("--quiet", o.quiet, "no progress lines from the runs");
+  add_no_figures_flag(*cmd, o.figures);
 }
 
 void add_tradeoff_command(CLI::App& app, granshock::TradeoffOptions& o) {
@@ -188,6 +207,19 @@ void add_tradeoff_command(CLI::App& app, granshock::TradeoffOptions& o) {
   cmd->add_flag("--dry-run", o.dry_run,
                 "list the cases with their overrides and expected cost; write nothing");
   cmd->add_flag("--quiet", o.quiet, "no progress lines from the runs");
+  add_no_figures_flag(*cmd, o.figures);
+}
+
+// `granshock fields`, and without figures the note of how to draw them later.
+int run_fields_command(const std::vector<std::filesystem::path>& dirs,
+                       const std::filesystem::path& out, const granshock::FieldsCommandOptions& o) {
+  const int code = granshock::fields_command(dirs, out, o);
+  if (o.figures) return code;
+  std::vector<std::string> redraw{"granshock", "fields"};
+  for (const std::filesystem::path& dir : dirs) redraw.push_back(dir.string());
+  if (!out.empty()) redraw.insert(redraw.end(), {"--out", out.string()});
+  std::cerr << granshock::figures_skipped_note(redraw) << "\n";
+  return code;
 }
 
 }  // namespace
@@ -218,7 +250,8 @@ int main(int argc, char** argv) {
   add_run_command(app, run);
   std::vector<std::filesystem::path> field_dirs;
   std::filesystem::path field_out;
-  add_fields_command(app, field_dirs, field_out);
+  granshock::FieldsCommandOptions field_options;
+  add_fields_command(app, field_dirs, field_out, field_options);
   granshock::StudyOptions study;
   add_study_command(app, study);
   granshock::TradeoffOptions tradeoff;
@@ -316,7 +349,8 @@ int main(int argc, char** argv) {
       const granshock::MpiCommunicator world;
       return granshock::run_scene(run, world);
     }
-    if (app.got_subcommand("fields")) return granshock::fields_command(field_dirs, field_out);
+    if (app.got_subcommand("fields"))
+      return run_fields_command(field_dirs, field_out, field_options);
     if (app.got_subcommand("study")) return granshock::study_command(study);
     if (app.got_subcommand("tradeoff")) return granshock::tradeoff_command(tradeoff);
     if (info->parsed()) {

@@ -186,12 +186,13 @@ void BowShockRun::prepare() {
       every_seconds(scene_.run.checkpoint_interval_s, scene_.run.duration_s, scene_.setup.dt);
   solver_ = make_solver(scene_.setup, scene_.capacity_estimate(), Backend::default_space, &comm_);
   solver_->configure_sampling(sampling_.layout());
-  Decomposition decomposition;
-  decomposition.axis = options_.slabs == "x" ? SlabAxis::x : SlabAxis::y;
-  decomposition.balance = options_.balance == "work"        ? SlabBalance::work
-                          : options_.balance == "particles" ? SlabBalance::particles
-                                                            : SlabBalance::equal;
-  solver_->decompose(decomposition);
+  decomposition_.axis = options_.slabs == "x" ? SlabAxis::x : SlabAxis::y;
+  decomposition_.balance = options_.balance == "work"        ? SlabBalance::work
+                           : options_.balance == "particles" ? SlabBalance::particles
+                                                             : SlabBalance::equal;
+  solver_->decompose(decomposition_);
+  if (options_.backend_switch != "off" && comm_.size() == 1 && switchable_host_threads() > 1)
+    backend_switch_.emplace();
   samples_.assign(std::size_t(sampling_.blocks()), 0);
 }
 
@@ -264,7 +265,8 @@ int BowShockRun::advance_to_end() {
   while (step < total_steps_) {
     // Advance to the next event (insertion, output) or a slice of about 0.25 s of wall
     // time, so that progress and signals are answered promptly.
-    long next = std::min(total_steps_, step + meter_->steps_per(0.25, 50));
+    const double slice_s = backend_switch_ ? backend_switch_->slice_seconds() : 0.25;
+    long next = std::min(total_steps_, step + meter_->steps_per(slice_s, 50));
     next = std::min(next, (step / inflow_.period_steps() + 1) * inflow_.period_steps());
     for (const Schedule* s : {&series_, &snapshots_, &checkpoints_})
       next = std::min(next, s->next_after(step));
@@ -272,8 +274,7 @@ int BowShockRun::advance_to_end() {
     if (options_.stop_after_steps > 0)
       next = std::min(next, first_step_ + options_.stop_after_steps);
     next = agreed_next_step(next);
-    particle_steps_ += double(solver_->global_size()) * double(next - step);
-    solver_->advance(next - step);
+    advance_slice(next - step);
     step = next;
     meter_->observe(step);
     actions_at(step);
@@ -297,6 +298,7 @@ int BowShockRun::advance_to_end() {
             step);
       return 128 + signal;
     }
+    if (backend_switch_ && next_backend() != backend_) move_solver_to(next_backend());
     if (options_.stop_after_steps > 0 && step >= first_step_ + options_.stop_after_steps &&
         step < total_steps_) {
       write_checkpoint_now();
@@ -479,6 +481,7 @@ void BowShockRun::finish(bool completed) {
                                  completed, {wall, meter_->elapsed_s(), particle_steps_});
   // Several processes: how the work was shared (one process: nothing to say).
   if (comm_.size() > 1) j["processes"] = processes_summary();
+  if (backend_switch_) j["backend_switch"] = backend_summary();
   if (!root_) return;
   if (!options_.accuracy_choice.is_null()) j["accuracy_choice"] = options_.accuracy_choice;
   writing([&] {
@@ -510,10 +513,72 @@ void BowShockRun::analyse() {
       dir_.string());
   const ExitAtInterrupt at_signal("granshock: interrupted during the field analysis; " + complete);
   try {
-    fields_command({dir_}, {}, FieldsCommandOptions{true, options_.quiet, &*run_directory_});
+    fields_command({dir_}, {},
+                   FieldsCommandOptions{options_.figures, options_.quiet, &*run_directory_});
   } catch (const UserError& e) {
     throw UserError(fmt::format("{}; {}", e.what(), complete));
   }
+  if (!options_.figures && !options_.quiet)
+    std::cerr << figures_skipped_note({"granshock", "fields", dir_.string()}) << "\n";
+}
+
+// One slice of the time loop, timed for the choice between threads and one thread.
+void BowShockRun::advance_slice(long steps) {
+  const double particle_steps = double(solver_->global_size()) * double(steps);
+  particle_steps_ += particle_steps;
+  const auto start = std::chrono::steady_clock::now();
+  solver_->advance(steps);
+  if (!backend_switch_) return;
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  backend_switch_->observe(particle_steps, seconds);
+}
+
+// The backend the next slice runs on: the switch's choice, or with --backend-switch
+// alternate (a check that both give the same run, not a speed-up) the other one each time.
+Backend BowShockRun::next_backend() const {
+  if (options_.backend_switch != "alternate") return backend_switch_->current();
+  return backend_ == Backend::serial ? Backend::default_space : Backend::serial;
+}
+
+// The solver's whole state moves to a solver on `backend`, as a resume would move it from
+// a checkpoint: the trajectory goes on bitwise the same (docs/benchmarks.md, "A busy
+// machine"). The old solver is released first, so that the two never hold memory at once.
+void BowShockRun::move_solver_to(Backend backend) {
+  const SolverState state = solver_->export_state();
+  const std::vector<double> grid = solver_->field_sums(false);
+  const std::vector<double> profile = solver_->field_sums(true);
+  const std::size_t capacity = std::max<std::size_t>(scene_.capacity_estimate(), state.size());
+  solver_.reset();
+  solver_ = make_solver(scene_.setup, capacity, backend, &comm_);
+  solver_->configure_sampling(sampling_.layout());
+  solver_->decompose(decomposition_);
+  solver_->import_state(state);
+  solver_->restore_field_sums(grid, profile);
+  backend_ = backend;
+  ++backend_moves_;
+  if (root_ && !options_.quiet && options_.backend_switch == "auto")
+    std::cerr << fmt::format(
+        "granshock: note: {} ({:.3g} particle-steps/s on {} threads, {:.3g} on one); "
+        "trying the other again later (--backend-switch off keeps the threads)\n",
+        backend == Backend::serial ? "continuing on one thread: the threads run slower than one "
+                                     "would (another process is busy on this machine)"
+                                   : "back to the threads: they run faster again",
+        backend_switch_->threads_rate(), switchable_host_threads(),
+        backend_switch_->one_thread_rate());
+}
+
+// summary.json "backend_switch": the moves between threads and one thread, for runs that
+// can move (this leg of the run).
+nlohmann::json BowShockRun::backend_summary() const {
+  return {{"mode", options_.backend_switch},
+          {"ended_on", backend_ == Backend::serial ? "one thread" : "threads"},
+          {"moves", backend_moves_},
+          {"tries", backend_switch_->tries()},
+          {"seconds_on_one_thread", backend_switch_->seconds_on_one_thread()},
+          {"seconds_timed", backend_switch_->seconds_total()},
+          {"last_threads_rate", backend_switch_->threads_rate()},
+          {"last_one_thread_rate", backend_switch_->one_thread_rate()}};
 }
 
 // summary.json "processes": how many, and the particles each rank owns at the end (the
@@ -533,6 +598,7 @@ nlohmann::json BowShockRun::processes_summary() const {
       {"sync_share_per_rank", gather_to_root(comm_, wall > 0 ? halo.sync_seconds / wall : 0.0)},
       {"halo_bytes_sent_per_rank", gather_to_root(comm_, halo.bytes_sent)},
       {"rebalances", halo.rebalances},
+      {"migrated_per_rank", gather_to_root(comm_, halo.migrated)},
       // Output (docs/scaling.md): how snapshots were written, and rank 0's seconds per
       // snapshot (either way) and per checkpoint (gathered to rank 0, written there).
       {"snapshot_output", options_.snapshot_output},

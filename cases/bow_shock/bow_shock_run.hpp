@@ -14,6 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "backend_switch.hpp"
 #include "checkpoint_extras.hpp"
 #include "communicator.hpp"
 #include "inflow.hpp"
@@ -63,6 +64,10 @@ class BowShockRun {
   void finish(bool completed);
   void warn_if_inflow_falls_short();
   std::string inflow_note() const;
+  void advance_slice(long steps);
+  Backend next_backend() const;
+  void move_solver_to(Backend backend);
+  nlohmann::json backend_summary() const;
 
   const RunOptions& options_;
   const Communicator& comm_;
@@ -76,6 +81,12 @@ class BowShockRun {
   InflowController inflow_;
   SamplingPlan sampling_;
   std::unique_ptr<Solver> solver_;
+  Decomposition decomposition_;
+  // Threads or one thread, from measured rates (backend_switch.hpp); none where the run
+  // cannot move (several processes, one thread, a GPU, --backend-switch off).
+  std::optional<BackendSwitch> backend_switch_;
+  Backend backend_ = Backend::default_space;
+  long backend_moves_ = 0;
   std::optional<RunFile> run_file_;
   Schedule series_{1}, snapshots_{1}, checkpoints_{1};
   long total_steps_ = 0, first_step_ = 0;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "communicator.hpp"
+#include "figure_switch.hpp"
 #include "run_observables.hpp"  // NumericalFailure
 #include "scene.hpp"
 
@@ -25,11 +26,17 @@ struct RunOptions {
   bool force = false;             // run past the stable time step
   long stop_after_steps = 0;      // > 0: checkpoint and stop after this many steps (batch jobs)
   bool quiet = false;             // no progress lines
+  // The figures at the end (--no-figures, GRANSHOCK_FIGURES: figure_switch.hpp).
+  bool figures = figures_by_default();
   std::string balance = "equal";  // several processes: "equal", "particles" or "work"
   std::string slabs = "y";        // several processes: slabs along "x" or "y"
   // Several processes: how snapshots reach run.h5, "gathered" to rank 0, "collective"
   // (parallel HDF5) or "auto" (collective for large frames: RunFile::collective_pays).
   std::string snapshot_output = "auto";
+  // One process on the host's threads: "auto" moves the run to one thread while the
+  // threads run slower than one would (a busy machine) and back (backend_switch.hpp);
+  // "off" keeps the threads; "alternate" moves at every slice (a check: the same run).
+  std::string backend_switch = "auto";
   bool dry_run = false;  // check the scene and the directory, print the resolved scene
   std::string accuracy;  // an error budget ("2%"): settings from a measured table
   std::filesystem::path accuracy_table;  // that table; empty: default_accuracy_table()

@@ -58,13 +58,28 @@ int emit_slurm(const StudyPlan& plan) {
   return 0;
 }
 
-int collect(const StudyPlan& plan, bool quiet) {
+int collect(const StudyPlan& plan, const StudyOptions& o) {
   if (check_study_directory(plan.out, plan.spec.name) != StudyDirectoryState::this_study)
     throw UserError(fmt::format(
         "--collect: '{}' holds no study (no {} marker); run the study first, or give its "
         "directory with --out",
         plan.out.string(), kStudyMarker));
-  return write_study_results(plan, {}, quiet);
+  return write_study_results(plan, {}, o.quiet, o.figures);
+}
+
+// Once the results are written: without figures, how to draw them later (one of the
+// study's own lines, which --quiet keeps).
+int finish(int code, const StudyOptions& o) {
+  if (o.figures) return code;
+  std::vector<std::string> redraw = o.redraw;
+  if (redraw.empty()) {
+    redraw = {"granshock", "study", o.study_file.string()};
+    if (!o.out_dir.empty()) redraw.insert(redraw.end(), {"--out", o.out_dir.string()});
+    for (const std::string& set : o.overrides) redraw.insert(redraw.end(), {"--set", set});
+    redraw.push_back("--collect");
+  }
+  std::cerr << figures_skipped_note(redraw) << "\n";
+  return code;
 }
 
 }  // namespace
@@ -76,7 +91,7 @@ int study_command(const StudyOptions& o) {
   spec.command_line_set = o.overrides;
   const StudyPlan plan = plan_study(spec, o.out_dir.empty() ? spec.out : o.out_dir);
   const std::vector<std::size_t> selected = selection(plan, o.only_case);
-  if (o.collect) return collect(plan, o.quiet);
+  if (o.collect) return finish(collect(plan, o), o);
 
   check_study_directory(plan.out, spec.name);
   check_case_directories(plan, selected);
@@ -91,7 +106,7 @@ int study_command(const StudyOptions& o) {
 
   claim_study_directory(plan.out, spec.name);
   const StudyRunResult result =
-      run_study_cases(plan, selected, StudyRunOptions{o.stop_after_steps, o.quiet});
+      run_study_cases(plan, selected, StudyRunOptions{o.stop_after_steps, o.quiet, o.figures});
   if (result.stopped) return result.exit_code;
   for (const auto& [index, why] : result.failures)
     std::cerr << fmt::format("granshock study: case {} (--case {}) failed: {}\n",
@@ -102,7 +117,7 @@ int study_command(const StudyOptions& o) {
                    "--collect once every case has run\n";
     return result.failures.empty() ? 0 : 1;
   }
-  return write_study_results(plan, result.failures, o.quiet);
+  return finish(write_study_results(plan, result.failures, o.quiet, o.figures), o);
 }
 
 }  // namespace granshock

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "figure_switch.hpp"
+
 namespace granshock {
 
 struct StudyOptions {
@@ -19,6 +21,11 @@ struct StudyOptions {
   bool dry_run = false;                // list the cases with their overrides and cost
   long stop_after_steps = 0;           // passed to the case that runs: it stops, and the study
   bool quiet = false;                  // no progress lines from the runs
+  // Each case's, the comparison's and the axes' figures (figure_switch.hpp).
+  bool figures = figures_by_default();
+  // Without figures: the command the closing note names to draw them later (default: this
+  // study with --collect).
+  std::vector<std::string> redraw;
 };
 
 // The process exit code: 0 every case (or case K) finished; 1 a case failed or, after the

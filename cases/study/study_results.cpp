@@ -27,17 +27,20 @@ void warn(const std::string& what) {
 // of the current analysis before it is tabulated), detachment.csv/json and, with Python,
 // figures/detachment_length.png and each case's figures drawn again (the ones its run drew
 // showed the analysis of that time).
-void compare_finished(const StudyPlan& plan, const std::vector<fs::path>& finished, bool quiet) {
+void compare_finished(const StudyPlan& plan, const std::vector<fs::path>& finished, bool quiet,
+                      bool figures) {
   if (finished.size() == 1) fields_command(finished, {}, FieldsCommandOptions{false, quiet});
   if (finished.size() >= 2) fields_command(finished, plan.out, FieldsCommandOptions{false, quiet});
   if (finished.size() < 2 && !quiet)
     std::cerr << "granshock study: the comparison of detachment lengths needs two finished "
                  "cases; "
               << finished.size() << " so far\n";
-  if (finished.empty()) return;
+  if (finished.empty() || !figures) return;
   try {
     require_plotting_python();
-    for (const fs::path& dir : finished) plot_run_figures(dir / "fields.h5", dir / "figures");
+    std::vector<std::pair<fs::path, fs::path>> runs;
+    for (const fs::path& dir : finished) runs.emplace_back(dir / "fields.h5", dir / "figures");
+    plot_run_figures(runs);
     if (finished.size() >= 2)
       plot_detachment_figure(plan.out / "detachment.json",
                              plan.out / "figures" / "detachment_length.png");
@@ -49,7 +52,7 @@ void compare_finished(const StudyPlan& plan, const std::vector<fs::path>& finish
 }  // namespace
 
 int write_study_results(const StudyPlan& plan, const std::map<int, std::string>& failures,
-                        bool quiet) {
+                        bool quiet, bool figures) {
   std::vector<fs::path> finished;
   std::vector<std::string> not_finished;
   const StudyTable states = study_table(plan, failures);
@@ -62,7 +65,7 @@ int write_study_results(const StudyPlan& plan, const std::map<int, std::string>&
   }
   int code = 0;
   try {
-    compare_finished(plan, finished, quiet);
+    compare_finished(plan, finished, quiet, figures);
   } catch (const UserError& e) {
     std::cerr << "granshock study: error: the comparison of the finished cases failed: " << e.what()
               << "\n";
@@ -73,7 +76,7 @@ int write_study_results(const StudyPlan& plan, const std::map<int, std::string>&
   write_study_table(plan.out, table);
   write_claims(plan.out, check_paper_claims(table));
   try {
-    plot_study_figures(plan);
+    if (figures) plot_study_figures(plan);
   } catch (const UserError& e) {
     warn(std::string("no axis figures: ") + e.what());
   }

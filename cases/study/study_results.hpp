@@ -10,10 +10,11 @@
 
 namespace granshock {
 
-// Writes the table, the comparison and the figures into plan.out; a missing Python or
-// matplotlib costs only the PNGs (a warning). Lists the cases that are not finished.
-// Returns 0 when every case is finished, 1 otherwise (the table has their rows).
+// Writes the table, the comparison and (with `figures`) the figures into plan.out; a
+// missing Python or matplotlib costs only the PNGs (a warning). Lists the cases that are
+// not finished. Returns 0 when every case is finished, 1 otherwise (the table has their
+// rows).
 int write_study_results(const StudyPlan& plan, const std::map<int, std::string>& failures,
-                        bool quiet);
+                        bool quiet, bool figures);
 
 }  // namespace granshock

@@ -82,7 +82,7 @@ class StudyProgress {
 int run_case(const StudyPlan& plan, const PlannedCase& c, const CaseAction& a,
              const StudyRunOptions& o) {
   if (a.state == CaseState::needs_fields) {
-    fields_command({c.dir}, {}, FieldsCommandOptions{true, o.quiet});
+    fields_command({c.dir}, {}, FieldsCommandOptions{o.figures, o.quiet});
     return 0;
   }
   RunOptions run;
@@ -93,6 +93,7 @@ int run_case(const StudyPlan& plan, const PlannedCase& c, const CaseAction& a,
   run.overwrite = a.overwrite;
   run.stop_after_steps = o.stop_after_steps;
   run.quiet = o.quiet;
+  run.figures = o.figures;
   return run_scene(run);
 }
 

@@ -14,6 +14,7 @@ namespace granshock {
 struct StudyRunOptions {
   long stop_after_steps = 0;  // > 0: a case stops after this many steps, and the study with it
   bool quiet = false;         // no progress lines from the runs (the study's own remain)
+  bool figures = true;        // each case's figures at its end
 };
 
 struct StudyRunResult {

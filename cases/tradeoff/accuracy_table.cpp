@@ -102,13 +102,11 @@ MeasuredSetting read_setting(const TableFail& fail, const json& row, const std::
 
 AccuracyTable read_accuracy_table(const std::filesystem::path& path) {
   const TableFail fail(path);
-  JsonFile file;
-  try {
-    // Bounded size and nesting (analysis/json_file.hpp), a regular file only.
-    file = read_json_file(path, "accuracy table");
-  } catch (const UserError& e) {
-    throw UserError(std::string(e.what()) + " (make one with `granshock tradeoff SCENE.toml`)");
-  }
+  std::error_code ec;
+  if (!std::filesystem::exists(std::filesystem::symlink_status(path, ec)))
+    fail("cannot be read: no such file (make one with `granshock tradeoff SCENE.toml`)");
+  // Bounded size and nesting (analysis/json_file.hpp), a regular file only.
+  JsonFile file = read_json_file(path, "accuracy table");
   if (file.value.is_discarded()) fail("is not JSON: " + file.error);
   json doc = std::move(file.value);
   if (!doc.is_object() || !doc.contains("cases") || !doc["cases"].is_array() ||

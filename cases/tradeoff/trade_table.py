@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """The speed-against-accuracy table of `granshock tradeoff` (docs/accuracy.md).
 
-Usage: /usr/bin/python3 trade_table.py STUDY_DIR OUT_DIR (granshock tradeoff runs it)
+Usage: /usr/bin/python3 trade_table.py STUDY_DIR OUT_DIR [--no-figures] (granshock tradeoff
+runs it; --no-figures: the tables without pareto.png)
 
 Every case is compared with the case "reference" (the most accurate settings) and the
 difference set beside the noise: the same comparison between the case "scene" (the scene
@@ -100,7 +101,7 @@ def differences(case, ref):
     return out
 
 
-def main(study, out_dir):
+def main(study, out_dir, figures=True):
     names = [r["case"] for r in csv.DictReader(open(os.path.join(study, "study.csv")))]
     runs = {n: load(study, n) for n in names}
     ref = runs["reference"]
@@ -170,6 +171,8 @@ def main(study, out_dir):
         f"{k} {v:.3g}" for k, v in noise.items() if v is not None))
     open(os.path.join(out_dir, "trade.md"), "w").write("\n".join(lines) + "\n")
     print("\n".join(lines))
+    if not figures:
+        return
 
     import matplotlib
     matplotlib.use("Agg")
@@ -201,4 +204,6 @@ def main(study, out_dir):
 
 
 if __name__ == "__main__":
-    main(sys.argv[1], sys.argv[2])
+    if len(sys.argv) not in (3, 4) or sys.argv[3:] not in ([], ["--no-figures"]):
+        sys.exit("usage: trade_table.py STUDY_DIR OUT_DIR [--no-figures]")
+    main(sys.argv[1], sys.argv[2], figures=sys.argv[3:] != ["--no-figures"])

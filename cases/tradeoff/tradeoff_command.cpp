@@ -44,6 +44,12 @@ int tradeoff_command(const TradeoffOptions& o) {
   study.collect = o.collect;
   study.dry_run = o.dry_run;
   study.quiet = o.quiet;
+  study.figures = o.figures;
+  study.redraw = {"granshock", "tradeoff", o.scene_file.string()};
+  if (!o.out_dir.empty()) study.redraw.insert(study.redraw.end(), {"--out", o.out_dir.string()});
+  for (const std::string& set : o.overrides)
+    study.redraw.insert(study.redraw.end(), {"--set", set});
+  study.redraw.push_back("--collect");
   const int code = study_command(study);
   std::error_code ec;
   if (!o.dry_run && fs::is_directory(out))
@@ -54,8 +60,9 @@ int tradeoff_command(const TradeoffOptions& o) {
     return code;
   }
   require_plotting_python();
-  run_figure_script(figure_script("trade_table.py", GRANSHOCK_TRADEOFF_SCRIPT_DIR),
-                    {out.string(), out.string()});
+  std::vector<std::string> args{out.string(), out.string()};
+  if (!o.figures) args.push_back("--no-figures");  // the tables without pareto.png
+  run_figure_script(figure_script("trade_table.py", GRANSHOCK_TRADEOFF_SCRIPT_DIR), args);
   if (!o.quiet) std::cout << "granshock tradeoff: table in " << (out / "trade.md").string() << "\n";
   return 0;
 }

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "figure_switch.hpp"
+
 namespace granshock {
 
 struct TradeoffOptions {
@@ -17,6 +19,8 @@ struct TradeoffOptions {
   bool collect = false;                // the table from finished cases, run nothing
   bool dry_run = false;                // list the cases and their cost, write nothing
   bool quiet = false;
+  // The cases' figures and pareto.png (figure_switch.hpp).
+  bool figures = figures_by_default();
 };
 
 // Writes OUT/tradeoff.toml (the study), runs it as `granshock study` does (skips finished

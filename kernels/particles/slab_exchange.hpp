@@ -215,6 +215,7 @@ class SlabExchange {
       }
       if (pass > 0 && !comm_.any(int(keep.size()) < p.n)) break;
       const std::vector<char> to_lower = pack_all(p, down), to_upper = pack_all(p, up);
+      stats_.migrated += long(down.size() + up.size());
       if (int(keep.size()) < p.n) {
         Kokkos::View<int*, Kokkos::HostSpace> order_host("keep_order", keep.size());
         for (std::size_t k = 0; k < keep.size(); ++k) order_host(k) = keep[k];

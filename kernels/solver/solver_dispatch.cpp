@@ -2,6 +2,8 @@
 // (docs/design.md, "The variant table"): precision and backend here, dimension, contact
 // law, friction and obstacle shape in make_solver_variant (variant_table.hpp). Chosen
 // once, at start-up; nothing is re-decided per pair.
+#include <type_traits>
+
 #include "device/backends.hpp"
 #include "solver.hpp"
 #include "solver/variant_table.hpp"
@@ -21,6 +23,15 @@ std::unique_ptr<Solver> make_solver(const SolverSetup& setup, std::size_t capaci
 #endif
   return single ? make_solver_variant<float, Kokkos::DefaultExecutionSpace>(setup, capacity, c)
                 : make_solver_variant<double, Kokkos::DefaultExecutionSpace>(setup, capacity, c);
+}
+
+int switchable_host_threads() {
+#if GRANSHOCK_SEPARATE_SERIAL
+  using Default = Kokkos::DefaultExecutionSpace;
+  return std::is_same_v<Default::memory_space, Kokkos::HostSpace> ? Default().concurrency() : 0;
+#else
+  return 0;
+#endif
 }
 
 }  // namespace granshock

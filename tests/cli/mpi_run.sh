@@ -1,6 +1,8 @@
 #!/bin/bash
 # `mpirun -np N granshock run` against one process (docs/parallel.md), on the default
-# scene shortened to 0.02 s (3,800 particles, 100,000 steps).
+# scene shortened to 4 ms (3,767 particles at the end, 20,000 steps, 41 list rebuilds, 5
+# snapshots): enough to cross many rebuilds, migrations and (balanced) moves of the slab
+# cuts, which compare_runs.py counts and requires.
 # Usage: mpi_run.sh MPIEXEC GRANSHOCK SCENE WORK MODE [RANKS]
 #   reference   the one-process runs, into WORK/one and WORK/one_big (a 60 d obstacle):
 #               the fixture of the others
@@ -21,7 +23,8 @@
 set -u
 mpiexec=$1 granshock=$2 scene=$3 work=$4 mode=$5
 here=$(cd "$(dirname "$0")" && pwd)
-short=(--quiet --set time.duration=0.02 --set time.production_start=0.01)
+short=(--quiet --set time.duration=0.004 --set time.production_start=0.002
+  --set output.snapshot_interval=0.001)
 mpi() { "$mpiexec" --oversubscribe -np "$@"; }
 # compare DIR RANKS [ONE_PROCESS_DIR]
 compare() { /usr/bin/python3 "$here/../parallel/compare_runs.py" "${3:-$work/one}" "$1" "$2"; }
@@ -75,10 +78,10 @@ resume)
   first=${6:-y} second=${7:-${6:-y}} output=${8:-auto}
   out=$work/resumed_${first}_${second}_$output
   rm -rf "$out"
-  mpi 2 "$granshock" run "$scene" "${short[@]}" --out "$out" --stop-after-steps 50000 \
+  mpi 2 "$granshock" run "$scene" "${short[@]}" --out "$out" --stop-after-steps 10000 \
     --slabs "$first" --snapshot-output "$output" 2>"$work/stop.err" ||
     { cat "$work/stop.err"; fail "the first half on 2 processes"; }
-  grep -q "stopped after 50000 steps" "$work/stop.err" || fail "no stop message"
+  grep -q "stopped after 10000 steps" "$work/stop.err" || fail "no stop message"
   mpi 3 "$granshock" run "$scene" "${short[@]}" --out "$out" --resume --slabs "$second" \
     --snapshot-output "$output" || fail "the resume on 3 processes"
   compare "$out" 3 || fail "2 (along $first) then 3 processes (along $second) differ from one"
@@ -117,10 +120,12 @@ errors)
     fail "a locked directory was not said once"
   # Slabs along x in a box too narrow across x for 3 processes (4 cell columns, at least 2
   # per slab through the periodic faces): said once, naming the axis, nothing created.
+  # (output.sample_every: enough field samples in 4 ms for the sampling check, which would
+  # refuse the 1 d bins first.)
   timeout 120 "$mpiexec" --oversubscribe -np 3 "$granshock" run "$scene" "${short[@]}" \
     --out "$dir/narrow" --slabs x --set 'domain.width="6 d"' --set 'obstacle.diameter="3 d"' \
     --set 'obstacle.centre=["3 d", "120 d"]' --set 'numerics.bin_size="1 d"' \
-    >"$dir/out" 2>"$dir/err"
+    --set output.sample_every=10 >"$dir/out" 2>"$dir/err"
   status=$?
   cat "$dir/err"
   [ "$status" -eq 2 ] || fail "a box too narrow for slabs along x: exit status $status, not 2"
@@ -146,10 +151,12 @@ full_disk)
   # process left waiting in the collective write; then the run resumes to its end.
   dir=$(mktemp -d)
   trap 'rm -rf "$dir"' EXIT
-  tight=(--set output.snapshot_interval=0.0005 --set output.checkpoint_interval=0.002
+  tight=(--set output.snapshot_interval=0.0002 --set output.checkpoint_interval=0.001
          --set 'numerics.bin_size="6 d"' --set output.blocks=2 --snapshot-output "${6:-collective}")
   # The limit (1600 KiB) is met in a snapshot of this run (run.h5 of format 2, with radius
-  # and frame views); room is reserved before every change, so the resume always works.
+  # and frame views, reserves about 1 MB before a snapshot), before the checkpoint of step
+  # 5000: the one of step 0 is intact. Room is reserved before every change, so the resume
+  # always works.
   # Shared memory between the processes would meet the limit too (MPI warns and falls
   # back): TCP over the loopback between them keeps the test about granshock's write.
   timeout 120 "$mpiexec" --oversubscribe --mca btl self,tcp --mca btl_tcp_if_include lo -np 2 \

@@ -88,11 +88,12 @@ prefill)
   ;;
 analysis)
   # Imports anything at once (the check before the figures), then draws until granshock
-  # is gone (at most 20 s: a granshock that ignored the signal waits for it).
+  # is gone (at most 20 s: a granshock that ignored the signal waits for it). The figures
+  # are asked for: they are the analysis' step that lasts until the signal.
   printf '#!/bin/sh\n[ "$1" = -c ] && exit 0\nfor i in $(seq 400); do kill -0 $PPID 2>/dev/null || exit 0; sleep 0.05; done\n' \
     >"$work/python"
   chmod +x "$work/python"
-  GRANSHOCK_PYTHON=$work/python "$granshock" run "$scene" --out "$out" "${short[@]}" --quiet \
+  GRANSHOCK_FIGURES=1 GRANSHOCK_PYTHON=$work/python "$granshock" run "$scene" --out "$out" "${short[@]}" --quiet \
     2>"$work/err" &
   pid=$!
   # summary.json is written just before the analysis starts.

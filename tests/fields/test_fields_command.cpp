@@ -199,7 +199,11 @@ TEST(FieldsCommand, SeveralRunsGiveTheDetachmentTableAndFigure) {
                            FieldsCommandOptions{true, true}),
             0);
   EXPECT_TRUE(is_png(out / "figures" / "detachment_length.png"));
-  EXPECT_TRUE(is_png(tmp.path() / "d18" / "figures" / "mach.png"));
+  // Each run's figures, both drawn by one call of plot_fields.py.
+  for (const char* run : {"d12", "d18"})
+    for (const char* png :
+         {"solid_fraction.png", "temperature.png", "mach.png", "stagnation_profiles.png"})
+      EXPECT_TRUE(is_png(tmp.path() / run / "figures" / png)) << run << "/" << png;
   const nlohmann::json table = nlohmann::json::parse(read_text(out / "detachment.json"));
   ASSERT_EQ(table.size(), 2u);
   EXPECT_DOUBLE_EQ(table[0]["D_over_d"].get<double>(), 12.0);

@@ -17,7 +17,8 @@ import h5py
 import numpy
 
 # summary.json keys that measure the machine, not the physics.
-MACHINE_KEYS = {"wall_seconds", "particle_steps_per_second", "threads", "backend", "variant"}
+MACHINE_KEYS = {"wall_seconds", "particle_steps_per_second", "threads", "backend", "variant",
+                "backend_switch"}
 
 
 def sha(array):

@@ -160,11 +160,13 @@ TEST(RunDirectoryOverwrite, CleansAMarkedRunDirectoryCompletely) {
   TempDir tmp;
   const auto scene = tmp.write("small.toml", small_scene(true));
   const fs::path run = tmp.path() / "run";
-  // A full run writes everything: fields, figures, summary.
+  // A full run writes everything: fields, figures (whatever GRANSHOCK_FIGURES says), summary.
   RunOptions full = short_run(scene, run);
   full.overrides = {"time.duration=0.002", "time.production_start=0.001", "output.sample_every=10"};
+  full.figures = true;
   ASSERT_EQ(run_scene(full), 0);
   ASSERT_TRUE(fs::exists(run / "fields.h5"));
+  ASSERT_TRUE(fs::exists(run / "figures" / "mach.png"));
   // Nothing a run writes is missing from run_outputs(): otherwise --overwrite would leave
   // stale results behind.
   for (const auto& [name, content] : tree(run)) {

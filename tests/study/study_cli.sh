@@ -2,16 +2,20 @@
 # `granshock study` end to end on tiny studies (tests/study/tiny.toml, interrupt.toml):
 # one check per call, named by CHECK (docs/study.md describes what each one relies on).
 # Usage: study_cli.sh GRANSHOCK SOURCE_DIR CHECK
-#   runs_and_tabulates     every case runs; study.csv/json, detachment table and figures
+#   runs_and_tabulates     every case runs; study.csv/json, detachment table and figures (the
+#                          one check that draws every figure of a study: ctest runs the others
+#                          with GRANSHOCK_FIGURES=0)
 #   skips_finished         a finished case is skipped and its run files are left untouched
 #   interrupts_and_resumes --stop-after-steps and SIGINT stop a case; the next call resumes it
-#   collect_lists_missing  --collect tabulates what is there and lists the missing cases
+#   collect_lists_missing  --collect tabulates what is there and lists the missing cases, and
+#                          redraws the figures of a case it analyses again
 #   emit_slurm             --emit slurm writes a script that bash accepts and that runs a case
 #   refuses_before_running a bad late case or a foreign directory: one line, exit 2, no case run
 #   set_reaches_every_case --set overrides every case after the file's [study] set, reaches the
 #                          Slurm script, and a bad one is refused before any case runs
-#   tradeoff_runs_and_tabulates  `granshock tradeoff`: the dry run, the 15 cases, the table,
-#                                the table read by `granshock run --accuracy`
+#   tradeoff_runs_and_tabulates  `granshock tradeoff`: the dry run, the 15 cases without
+#                                figures, the table, the note's command drawing the figures
+#                                (--collect), the table read by `granshock run --accuracy`
 #   emit_slurm_hostile     hostile values (a newline and a command, $(...), quotes, '%', tab,
 #                          CR) in the study directory, the study file's path and [study] set,
 #                          --set and the program's path: the script runs case 1 and nothing else
@@ -35,7 +39,8 @@ fingerprint() { for f in "$@"; do stat -c '%Y %s' "$f"; md5sum <"$f"; done; }
 case $check in
 runs_and_tabulates)
   start=$(date +%s%N)
-  "$granshock" study "$studies/tiny.toml" --out "$out" --quiet >"$work/stdout" 2>"$work/stderr"
+  GRANSHOCK_FIGURES=1 "$granshock" study "$studies/tiny.toml" --out "$out" --quiet \
+    >"$work/stdout" 2>"$work/stderr"
   code=$?
   echo "the tiny study (4 cases) took $((($(date +%s%N) - start) / 1000000)) ms"
   [ $code -eq 0 ] || { fail "exit code $code"; cat "$work/stderr"; }
@@ -66,8 +71,9 @@ assert all(len(r) == len(rows[0]) for r in rows)
 EOF
   [ "$(($(wc -l <"$out/detachment.csv") - 1))" -eq 4 ] || fail "detachment.csv should have 4 rows"
   if /usr/bin/python3 -c "import matplotlib, h5py, numpy" 2>/dev/null; then
-    for png in phi e detachment_length; do
-      [ -s "$out/figures/$png.png" ] || fail "no figure figures/$png.png"
+    for png in phi e detachment_length phi-0.1_e-0.5/figures/mach.png phi-0.12_e-0.8/figures/mach.png; do
+      png=${png%.png}.png
+      [ -s "$out/figures/$png" ] || [ -s "$out/$png" ] || fail "no figure $png"
     done
   else
     grep -q "no axis figures" "$work/stderr" || fail "no warning about the missing figures"
@@ -129,9 +135,14 @@ collect_lists_missing)
   [ $? -eq 2 ] || fail "--collect without a study directory must be a user error"
   "$granshock" study "$studies/tiny.toml" --out "$out" --quiet --case 2 2>"$work/stderr" ||
     fail "--case 2 failed: $(cat "$work/stderr")"
-  "$granshock" study "$studies/tiny.toml" --out "$out" --collect --quiet >"$work/stdout" 2>"$work/stderr"
+  # --no-figures where the environment asks for figures: none drawn, and the study's own
+  # closing note (which --quiet keeps) names the --collect that draws them.
+  GRANSHOCK_FIGURES=1 "$granshock" study "$studies/tiny.toml" --out "$out" --collect --quiet \
+    --no-figures >"$work/stdout" 2>"$work/stderr"
   code=$?
   [ $code -eq 1 ] || fail "--collect with missing cases: exit code $code, expected 1"
+  [ "$(grep 'figures not drawn' "$work/stderr")" = "granshock: figures not drawn (--no-figures); draw them later with: granshock study $studies/tiny.toml --out $out --collect" ] ||
+    fail "--collect --no-figures: the closing note: $(grep 'not drawn' "$work/stderr")"
   grep -q "3 of 4 cases not finished: phi-0.1_e-0.5 (missing), phi-0.1_e-0.8 (missing), phi-0.12_e-0.8 (missing)" \
     "$work/stderr" || fail "the missing cases are not listed: $(cat "$work/stderr")"
   [ "$(tail -n +2 "$out/study.csv" | wc -l)" -eq 4 ] || fail "study.csv should have 4 rows"
@@ -139,17 +150,25 @@ collect_lists_missing)
   grep -q '^"phi-0.12_e-0.5",2,"finished",' "$out/study.csv" || fail "case 2 is not finished"
   head -1 "$out/study.csv" | tr ',' '\n' | grep -qx delta_over_D || fail "no summary columns"
   [ ! -e "$out/phi-0.1_e-0.5" ] || fail "--collect ran a case"
+  # Neither the run (GRANSHOCK_FIGURES=0, ctest's environment) nor --collect --no-figures
+  # drew a figure.
+  [ ! -e "$out/phi-0.12_e-0.5/figures" ] && [ ! -e "$out/figures" ] ||
+    fail "figures drawn without figures: $(ls "$out/figures" "$out/phi-0.12_e-0.5/figures" 2>&1)"
   # A case analysed by an older granshock (its summary.json without the keys of today's
-  # analysis) is analysed again before it is tabulated.
+  # analysis) is analysed again before it is tabulated, and its figures drawn from the new
+  # analysis (old ones would show the old fronts).
   /usr/bin/python3 -c 'import json, sys; p = sys.argv[1]; s = json.load(open(p)); s.pop("detachment"); json.dump(s, open(p, "w"))' \
     "$out/phi-0.12_e-0.5/summary.json"
-  # Its figures are drawn again from the new analysis (they showed the old fronts).
-  rm "$out/phi-0.12_e-0.5/figures/stagnation_profiles.png"
-  "$granshock" study "$studies/tiny.toml" --out "$out" --collect --quiet >/dev/null 2>&1
+  GRANSHOCK_FIGURES=1 "$granshock" study "$studies/tiny.toml" --out "$out" --collect --quiet \
+    >/dev/null 2>&1
   head -1 "$out/study.csv" | tr ',' '\n' | grep -qx detachment.temperature_jump.delta_over_D ||
     fail "the table holds the stale summary: $(head -1 "$out/study.csv")"
-  [ -s "$out/phi-0.12_e-0.5/figures/stagnation_profiles.png" ] ||
-    fail "--collect analysed the case again but did not redraw its figures"
+  if /usr/bin/python3 -c "import matplotlib, h5py, numpy" 2>/dev/null; then
+    for png in solid_fraction temperature mach stagnation_profiles; do
+      [ -s "$out/phi-0.12_e-0.5/figures/$png.png" ] ||
+        fail "--collect analysed the case again but did not draw figures/$png.png"
+    done
+  fi
   ;;
 emit_slurm)
   "$granshock" study "$studies/tiny.toml" --out "$out" --emit slurm >"$work/stdout" 2>"$work/stderr" ||
@@ -210,6 +229,8 @@ tradeoff_runs_and_tabulates)
   # `granshock tradeoff` on the default scene shrunk as tiny.toml shrinks it, 2 ms simulated
   # (docs/accuracy.md):
   # a dry run writes nothing; the run makes 15 cases, the study file and the trade table.
+  # Without figures (GRANSHOCK_FIGURES=0 from ctest), then drawn by the command the closing
+  # note names, as a user would (a `granshock` on PATH).
   tiny=(--set "domain.width=40 d" --set "domain.length=60 d" --set "obstacle.diameter=10 d"
     --set 'obstacle.centre=["20 d", "35 d"]' --set time.duration=0.002
     --set time.production_start=0.001 --set output.sample_every=20
@@ -219,11 +240,31 @@ tradeoff_runs_and_tabulates)
     >"$work/stdout" 2>"$work/stderr" || fail "--dry-run failed: $(cat "$work/stderr")"
   grep -q -- "--case 14  seed-2" "$work/stdout" || fail "the dry run lists no 15th case: $(cat "$work/stdout")"
   [ ! -e "$out" ] || fail "--dry-run wrote $out"
-  "$granshock" tradeoff "$source/scenes/default.toml" --out "$out" --quiet "${tiny[@]}" \
+  GRANSHOCK_FIGURES=0 "$granshock" tradeoff "$source/scenes/default.toml" --out "$out" --quiet "${tiny[@]}" \
     >"$work/stdout" 2>"$work/stderr" || fail "the trade-off failed: $(tail -5 "$work/stderr")"
   [ -s "$out/tradeoff.toml" ] || fail "no tradeoff.toml"
   [ "$(tail -n +2 "$out/trade.csv" | wc -l)" -eq 15 ] || fail "trade.csv should have 15 rows"
-  for f in trade.md trade.json pareto.png; do [ -s "$out/$f" ] || fail "no $f"; done
+  for f in trade.md trade.json; do [ -s "$out/$f" ] || fail "no $f"; done
+  [ ! -e "$out/pareto.png" ] && [ ! -e "$out/reference/figures" ] || fail "figures drawn without figures"
+  note=$(grep '^granshock: figures not drawn (GRANSHOCK_FIGURES=0); draw them later with: GRANSHOCK_FIGURES=1 granshock tradeoff ' "$work/stderr")
+  [ "$(printf '%s' "$note" | grep -c .)" -eq 1 ] || fail "expected one closing note: $(grep 'not drawn' "$work/stderr")"
+  if /usr/bin/python3 -c "import matplotlib, h5py, numpy" 2>/dev/null; then
+    mkdir "$work/bin" && ln -s "$(realpath "$granshock")" "$work/bin/granshock"
+    (PATH=$work/bin:$PATH && eval "${note#*draw them later with: }") >"$work/redraw" 2>&1 ||
+      fail "the note's command failed: ${note#*with: }: $(tail -5 "$work/redraw")"
+    for f in pareto.png reference/figures/mach.png seed-2/figures/stagnation_profiles.png; do
+      [ -s "$out/$f" ] || fail "the note's command did not draw $f"
+    done
+    # --collect --no-figures where the environment asks for figures: none drawn again.
+    rm -r "$out/pareto.png" "$out/reference/figures"
+    GRANSHOCK_FIGURES=1 "$granshock" tradeoff "$source/scenes/default.toml" --out "$out" \
+      --quiet --collect --no-figures "${tiny[@]}" >"$work/stdout" 2>"$work/stderr" ||
+      fail "tradeoff --collect --no-figures failed: $(tail -5 "$work/stderr")"
+    [ ! -e "$out/pareto.png" ] && [ ! -e "$out/reference/figures" ] ||
+      fail "tradeoff --no-figures drew figures"
+    grep -q '^granshock: figures not drawn (--no-figures); draw them later with: granshock tradeoff .* --collect$' \
+      "$work/stderr" || fail "tradeoff --no-figures: the closing note: $(cat "$work/stderr")"
+  fi
   /usr/bin/python3 -c '
 import json, sys
 t = json.load(open(sys.argv[1]))

@@ -1,0 +1,65 @@
+// Threads or one thread, chosen from measured rates while a run goes (docs/benchmarks.md,
+// "A busy machine"). On a machine where another process keeps a core busy, the threaded
+// step waits at every barrier for a thread the kernel has descheduled: 2 threads beside
+// one busy process ran 35 times slower than 1 thread. The run therefore measures its own
+// rate in windows of wall time, tries the other backend for one window now and then (at
+// doubling gaps, and at once when the rate falls well below what it was), and stays on
+// whichever ran faster. Both backends give bitwise the same trajectory (the solver's state
+// moves between them as a resume would), so the choice changes only the speed.
+#pragma once
+
+#include "solver.hpp"
+
+namespace granshock {
+
+struct BackendSwitchPolicy {
+  double window_s = 0.3;        // a rate is measured over at least this much wall time
+  double first_gap_s = 2.0;     // the first try of the other backend, after this long
+  double longest_gap_s = 60.0;  // the gaps between tries double up to this
+  // The settled backend's rate falling below this share of its rate when it was last
+  // compared (or the best since) is a sign of new load: the other backend is tried at once.
+  double drop = 0.6;
+  // The threads must beat one thread by this factor to be taken back: the rates are
+  // noisy, and one thread is the safe choice on a busy machine.
+  double threads_margin = 1.05;
+};
+
+class BackendSwitch {
+ public:
+  explicit BackendSwitch(BackendSwitchPolicy policy = {});
+
+  // A slice of the run: `particle_steps` done in `seconds` of wall time on current().
+  // Returns the backend the next slice runs on.
+  Backend observe(double particle_steps, double seconds);
+
+  Backend current() const { return current_; }
+  // The wall time the next slice should last: short while the other backend is tried, so
+  // that a try of threads that have collapsed costs about a second, not a whole slice at
+  // a thirtieth of the speed.
+  double slice_seconds() const { return trying_ ? 0.03 : 0.25; }
+  long switches() const { return switches_; }
+  long tries() const { return tries_; }
+  double seconds_on_one_thread() const { return serial_seconds_; }
+  double seconds_total() const { return total_seconds_; }
+  // The rates of the last comparison (particle-steps per second; 0 before the first).
+  double threads_rate() const { return threads_rate_; }
+  double one_thread_rate() const { return serial_rate_; }
+
+ private:
+  void start_trying();
+  void decide(double tried_rate);
+
+  BackendSwitchPolicy policy_;
+  Backend current_ = Backend::default_space;
+  Backend settled_ = Backend::default_space;
+  bool trying_ = false;
+  double settled_rate_ = 0;    // the settled backend's rate before the try
+  double reference_rate_ = 0;  // the settled backend's rate to compare new windows with
+  double window_steps_ = 0, window_seconds_ = 0;
+  double since_try_s_ = 0, gap_s_ = 0;
+  long switches_ = 0, tries_ = 0;
+  double serial_seconds_ = 0, total_seconds_ = 0;
+  double threads_rate_ = 0, serial_rate_ = 0;
+};
+
+}  // namespace granshock
