@@ -60,7 +60,7 @@ start_load() {  # LOAD: 0, N busy `yes`, or g (a granshock on one thread, run af
 granshock_rate() {  # THREADS SWITCH -> "rate wall moves" of one run
   OMP_NUM_THREADS=$1 "$granshock" run "$root/scenes/default.toml" --quiet \
     --set time.duration="$duration" --set time.production_start="$production" \
-    --backend-switch "$2" --out "$work/run" --overwrite \
+    --backend-switch "$2" --out "$work/run" --overwrite --no-figures \
     >/dev/null 2>"$work/err" || { echo "nan nan nan"; return; }
   /usr/bin/python3 - "$work/run/summary.json" <<'PY'
 import json, sys

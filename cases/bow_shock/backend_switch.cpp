@@ -20,7 +20,7 @@ Backend BackendSwitch::observe(double particle_steps, double seconds) {
   if (current_ == Backend::serial) serial_seconds_ += seconds;
   window_steps_ += particle_steps;
   window_seconds_ += seconds;
-  if (window_seconds_ < policy_.window_s) return current_;
+  if (window_seconds_ < (trying_ ? policy_.try_window_s : policy_.window_s)) return current_;
   const double rate = window_steps_ / window_seconds_;
   const double window = window_seconds_;
   window_steps_ = window_seconds_ = 0;

@@ -14,7 +14,9 @@ namespace granshock {
 
 struct BackendSwitchPolicy {
   double window_s = 0.3;        // a rate is measured over at least this much wall time
-  double first_gap_s = 2.0;     // the first try of the other backend, after this long
+  double try_window_s = 0.1;    // and a try's over this much: on an idle machine a try of
+                                // one thread costs about half of it
+  double first_gap_s = 1.0;     // the first try of the other backend, after this long
   double longest_gap_s = 60.0;  // the gaps between tries double up to this
   // The settled backend's rate falling below this share of its rate when it was last
   // compared (or the best since) is a sign of new load: the other backend is tried at once.

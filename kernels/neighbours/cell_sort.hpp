@@ -7,6 +7,7 @@
 
 #include <Kokkos_Core.hpp>
 
+#include "device/space_alloc.hpp"
 #include "neighbours/cell_grid.hpp"
 
 namespace granshock {
@@ -25,18 +26,18 @@ class CellSort {
   void sort(const CellGrid<Dim, Real>& grid, const PositionView& x, const IdView& id, int n) {
     const int ncell = grid.total();
     if (int(cell_start.extent(0)) != ncell + 1) {
-      cell_start = Kokkos::View<int*, Mem>("cell_start", ncell + 1);
-      fill_ = Kokkos::View<int*, Mem>("cell_fill", ncell);
+      cell_start = Kokkos::View<int*, Mem>(alloc_on<ExecSpace>("cell_start"), ncell + 1);
+      fill_ = Kokkos::View<int*, Mem>(alloc_on<ExecSpace>("cell_fill"), ncell);
     }
     if (int(order.extent(0)) < n) {
-      order = Kokkos::View<int*, Mem>("cell_order", n + n / 4 + 16);
-      cell_of_ = Kokkos::View<int*, Mem>("cell_of", order.extent(0));
+      order = Kokkos::View<int*, Mem>(alloc_on<ExecSpace>("cell_order"), n + n / 4 + 16);
+      cell_of_ = Kokkos::View<int*, Mem>(alloc_on<ExecSpace>("cell_of"), order.extent(0));
     }
     auto start = cell_start;
     auto fill = fill_;
     auto cell_of = cell_of_;
     auto ord = order;
-    Kokkos::deep_copy(fill, 0);
+    Kokkos::deep_copy(ExecSpace(), fill, 0);
 
     Kokkos::parallel_for(
         "cell_sort::count", Policy(0, n), KOKKOS_LAMBDA(const int i) {
@@ -52,7 +53,7 @@ class CellSort {
           running += count;
           if (final && c == ncell - 1) start(ncell) = running;
         });
-    Kokkos::deep_copy(fill, 0);
+    Kokkos::deep_copy(ExecSpace(), fill, 0);
     Kokkos::parallel_for(
         "cell_sort::place", Policy(0, n), KOKKOS_LAMBDA(const int i) {
           const int c = cell_of(i);

@@ -16,6 +16,7 @@
 #include "device/host_mirror.hpp"
 #include "device/position.hpp"
 #include "device/share.hpp"
+#include "device/space_alloc.hpp"
 #include "device/vec.hpp"
 #include "neighbours/cell_grid.hpp"
 
@@ -73,7 +74,7 @@ class VerletList {
              const StartView& cell_start, const PositionView& x, const SpeciesView& species,
              const RadiusView& radius, Real skin, int n, const Ghosts& ghosts = {}) {
     if (int(offsets.extent(0)) < n + 1)
-      offsets = Kokkos::View<int*, Mem>("verlet_offsets", n + n / 4 + 16);
+      offsets = Kokkos::View<int*, Mem>(alloc_on<ExecSpace>("verlet_offsets"), n + n / 4 + 16);
     if constexpr (Paths::host) {
       if (visit_once)
         return build_visiting_once(grid, box, cell_start, x, species, radius, skin, n, ghosts);
@@ -97,7 +98,8 @@ class VerletList {
         sum);
     total = sum;
     if (int(neighbours.extent(0)) < total)
-      neighbours = Kokkos::View<int*, Mem>("verlet_neighbours", total + total / 4 + 64);
+      neighbours =
+          Kokkos::View<int*, Mem>(alloc_on<ExecSpace>("verlet_neighbours"), total + total / 4 + 64);
     auto nb = neighbours;
     Kokkos::parallel_for(
         "verlet::fill", Policy(0, n), KOKKOS_LAMBDA(const int i) {
@@ -122,15 +124,14 @@ class VerletList {
                            const RadiusView& radius, Real skin, int n, const Ghosts& ghosts) {
     const int shares = ExecSpace().concurrency();
     if (int(share_count_.extent(0)) < shares)
-      share_count_ = Kokkos::View<long*, Mem>("verlet_share_count", shares);
+      share_count_ = Kokkos::View<long*, Mem>(alloc_on<ExecSpace>("verlet_share_count"), shares);
     if (part_capacity_ == 0) part_capacity_ = 8L * (n / shares + 1) + 256;
     auto off = offsets;
     auto count = share_count_;
     for (;;) {
       if (long(parts_.extent(0)) < part_capacity_ * shares)
-        parts_ =
-            Kokkos::View<int*, Mem>(Kokkos::view_alloc("verlet_parts", Kokkos::WithoutInitializing),
-                                    part_capacity_ * shares);
+        parts_ = Kokkos::View<int*, Mem>(alloc_uninitialised_on<ExecSpace>("verlet_parts"),
+                                         part_capacity_ * shares);
       auto parts = parts_;
       const long capacity = part_capacity_;
       Kokkos::parallel_for(
@@ -161,7 +162,8 @@ class VerletList {
       part_capacity_ = largest + largest / 4 + 256;
     }
     if (int(neighbours.extent(0)) < total)
-      neighbours = Kokkos::View<int*, Mem>("verlet_neighbours", total + total / 4 + 64);
+      neighbours =
+          Kokkos::View<int*, Mem>(alloc_on<ExecSpace>("verlet_neighbours"), total + total / 4 + 64);
     auto nb = neighbours;
     auto parts = parts_;
     const long capacity = part_capacity_;

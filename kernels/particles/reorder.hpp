@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "device/device_lambda.hpp"
+#include "device/space_alloc.hpp"
 
 namespace granshock {
 
@@ -17,7 +18,7 @@ void gather_in_place(View& view, View& scratch, const OrderView& order, int n) {
   if (view.extent(0) == 0) return;
   if (scratch.extent(0) != view.extent(0) ||
       (View::rank > 1 && scratch.extent(1) != view.extent(1)))
-    scratch = View(view.label() + "_scratch", view.layout());
+    scratch = View(alloc_uninitialised_on<ExecSpace>(view.label() + "_scratch"), view.layout());
   auto src = view;
   auto dst = scratch;
   Kokkos::parallel_for(

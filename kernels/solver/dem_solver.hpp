@@ -21,6 +21,7 @@
 #include "communicator.hpp"
 #include "device/backends.hpp"
 #include "device/host_mirror.hpp"
+#include "device/space_alloc.hpp"
 #include "neighbours/cell_grid.hpp"
 #include "neighbours/cell_sort.hpp"
 #include "neighbours/pair_loop.hpp"
@@ -225,7 +226,7 @@ class DemSolver final : public Solver {
     } else {
       list_.build(grid_, box_, sort_.cell_start, p_.x, p_.species, table_.radius, skin_, p_.n);
     }
-    Kokkos::deep_copy(p_.x_ref, p_.x);
+    copy_prefix<ExecSpace>(p_.x_ref, p_.x, int(p_.x.extent(0)));  // space_alloc.hpp: not on OpenMP
     watch_.rebuilt();
     ++builds_;
     last_build_step_ = steps_;
@@ -276,9 +277,10 @@ class DemSolver final : public Solver {
   // The fused pass from the current buffers into the second ones, or (back) the reverse.
   FusedStepKernel<V, ExecSpace, Paths> fused_kernel(bool by_speed, bool back) {
     if (int(x_next_.extent(0)) < p_.capacity()) {
-      x_next_ = decltype(x_next_)("x_next", p_.capacity());
-      v_next_ = decltype(v_next_)("v_next", p_.capacity());
-      if constexpr (V::friction) omega_next_ = decltype(omega_next_)("omega_next", p_.capacity());
+      x_next_ = decltype(x_next_)(alloc_on<ExecSpace>("x_next"), p_.capacity());
+      v_next_ = decltype(v_next_)(alloc_on<ExecSpace>("v_next"), p_.capacity());
+      if constexpr (V::friction)
+        omega_next_ = decltype(omega_next_)(alloc_on<ExecSpace>("omega_next"), p_.capacity());
     }
     Store from = p_;
     PairLoop<Dim, Real, Mem> pairs = pair_loop();
@@ -324,7 +326,7 @@ class DemSolver final : public Solver {
   }
   Kokkos::View<double*, Mem> top_speed2_of_steps(long steps) {
     if (long(top_speed2_.extent(0)) < steps)
-      top_speed2_ = decltype(top_speed2_)("top_speed2", steps);
+      top_speed2_ = decltype(top_speed2_)(alloc_on<ExecSpace>("top_speed2"), steps);
     return top_speed2_;
   }
 
@@ -423,7 +425,8 @@ class DemSolver final : public Solver {
     const GridIndex profile = GridIndex::of(sampling_.profile);
     const ScatterStrategy strategy = Accumulator::resolve(sampling_.strategy);
     if (strategy == ScatterStrategy::rows) return sample_by_row_owners(block, grid, profile);
-    if (int(virial_.extent(0)) < p_.n) virial_ = decltype(virial_)("virial", p_.capacity());
+    if (int(virial_.extent(0)) < p_.n)
+      virial_ = decltype(virial_)(alloc_on<ExecSpace>("virial"), p_.capacity());
     ContactForceKernel<V, ExecSpace, ForceMode::virial> kernel{
         p_, pair_loop(), table_, obstacle_, Real(setup_.dt), history_overflow_, virial_};
     Kokkos::parallel_for("contact_virial", Policy(0, p_.n), kernel);
@@ -454,7 +457,7 @@ class DemSolver final : public Solver {
         profile,     p_, {}, block * profile_sums_.block_size(), quantities, BinLayout::per_species,
         virial_terms};
     if (int(sample_bins_.extent(0)) < p_.n)
-      sample_bins_ = decltype(sample_bins_)("sample_bins", p_.capacity());
+      sample_bins_ = decltype(sample_bins_)(alloc_on<ExecSpace>("sample_bins"), p_.capacity());
     Kokkos::parallel_for("fields::locate", Policy(0, p_.n),
                          LocateSampleBins<decltype(p_.x), decltype(sample_bins_)>{
                              grid, profile, !profile_sums_.empty(), p_.x, sample_bins_});
