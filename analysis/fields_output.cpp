@@ -88,12 +88,19 @@ FieldsFileContent fields_file_content(const FieldAnalysis& a) {
                      as_arrays(a.front.threshold_lines)});
   c.lines.push_back({"shock_max_gradient", "shock front: steepest rise of phi per column",
                      as_arrays(a.front.gradient_lines)});
+  c.lines.push_back({"shock_temperature",
+                     "shock front: half-rise of the largest rise of T per column (the primary "
+                     "definition of delta/D)",
+                     as_arrays(a.front.temperature_lines)});
 
   c.series.push_back({"/front/x", "m", "bin column centres", a.front.x});
   c.series.push_back({"/front/y_threshold", "m", "front position (threshold rule), NaN: no front",
                       a.front.y_threshold});
   c.series.push_back(
       {"/front/y_max_gradient", "m", "front position (maximum gradient)", a.front.y_max_gradient});
+  c.series.push_back({"/front/y_temperature", "m",
+                      "front position (half-rise of the largest rise of T), NaN: no front",
+                      a.front.y_temperature});
   c.series.push_back({"/front/phi_peak", "", "largest phi of the searched rows", a.front.phi_peak});
   c.series.push_back(
       {"/front/threshold", "", "phi_up + fraction (phi_peak - phi_up)", a.front.threshold});
