@@ -50,6 +50,16 @@ void resize_all(BinFields& f) {
 
 }  // namespace
 
+bool temperature_resolved(double fluctuation, double kinetic, double samples,
+                          const MaskRule& rule) {
+  // Summing N terms rounds by at most about N eps of their sum (naive summation), and T
+  // subtracts sums of that size; the factor covers the three sums of Q and the pooling
+  // over blocks.
+  const double roundoff =
+      rule.roundoff_factor * samples * std::numeric_limits<double>::epsilon() * kinetic;
+  return std::isfinite(fluctuation) && fluctuation > roundoff;
+}
+
 BinFields compute_bin_fields(const BinSums& sums, const FieldPhysics& phys, const MaskRule& rule) {
   sums.check_consistent();
   BinFields f;
@@ -100,7 +110,7 @@ BinFields compute_bin_fields(const BinSums& sums, const FieldPhysics& phys, cons
 
       const double ux = mass_cx / mass_count, uy = mass_cy / mass_count;
       // Fluctuation tensors about the mixture velocity u (eq. 4): sum (c-u)(c-u).
-      double kxx = 0, kxy = 0, kyy = 0, trace_mass = 0;
+      double kxx = 0, kxy = 0, kyy = 0, trace_mass = 0, kinetic_mass = 0;
       std::vector<double> xi(ns);
       for (std::size_t a = 0; a < ns; ++a) {
         const int ai = static_cast<int>(a);
@@ -113,16 +123,18 @@ BinFields compute_bin_fields(const BinSums& sums, const FieldPhysics& phys, cons
         kxy += phys.mass[a] * qxy;
         kyy += phys.mass[a] * qyy;
         trace_mass += phys.mass[a] * (qxx + qyy);
+        const double kinetic_a = q(ai, BinLayout::sum_vxvx) + q(ai, BinLayout::sum_vyvy);
+        kinetic_mass += phys.mass[a] * kinetic_a;
         xi[a] = na / count;
         if (na > 0) {
           f.species_ux[a][k] = cx / na;
           f.species_uy[a][k] = cy / na;
         }
-        if (na >= rule.min_particle_samples)
+        if (na >= rule.min_particle_samples && temperature_resolved(qxx + qyy, kinetic_a, na, rule))
           f.species_temperature[a][k] = phys.mass[a] * (qxx + qyy) / (dim * na);
       }
       const double temperature = trace_mass / (dim * count);  // sum_a xi_a T_a
-      if (!(temperature > 0) || !std::isfinite(temperature)) {
+      if (!temperature_resolved(trace_mass, kinetic_mass, count, rule)) {
         for (std::size_t a = 0; a < ns; ++a)
           f.species_temperature[a][k] = f.species_ux[a][k] = f.species_uy[a][k] = kNaN;
         continue;

@@ -23,12 +23,22 @@ namespace granshock {
 
 // A bin is masked when fewer than min_particle_samples particles were counted in it over
 // all samples (sum_a N_a < 20: an average below one particle in every few samples gives
-// no usable velocity or temperature), or when its temperature is not positive. Masked
-// bins hold NaN in every velocity, temperature, stress and Mach field; number densities
-// and phi are kept wherever the bin was sampled (an empty bin has phi = 0).
+// no usable velocity or temperature), or when its temperature is not resolved above zero.
+// T comes from sum m (c - u)^2 = sum m c^2 - N m u^2, a difference of two sums of
+// particle samples: when the velocities hardly fluctuate (one particle in free flight,
+// sampled hundreds of times as it crosses a wake bin) it is their rounding error, of
+// either sign, and Ma = |u|/a becomes 10^7 or infinite. T counts as resolved only above
+// roundoff_factor N eps sum m c^2 (docs/fields.md, "Masking"). Masked bins hold NaN in
+// every velocity, temperature, stress and Mach field; number densities and phi are kept
+// wherever the bin was sampled (an empty bin has phi = 0).
 struct MaskRule {
   double min_particle_samples = 20;
+  double roundoff_factor = 4;
 };
+
+// Whether sum m (c - u)^2 = `fluctuation`, computed from `samples` particle samples whose
+// sum m c^2 is `kinetic`, lies above its rounding error (MaskRule).
+bool temperature_resolved(double fluctuation, double kinetic, double samples, const MaskRule& rule);
 
 struct BinFields {
   int nx = 0, ny = 0, n_species = 0;

@@ -110,8 +110,12 @@ DetachmentConvergence detachment_convergence(const ConvergenceInput& in, const F
       if (ratio > 1) {
         v.consistent = false;
         char text[200];
-        std::snprintf(text, sizeof text, "%s differs by %.3g d (two errors: %.3g d)",
-                      c.label.c_str(), deviation / d, tol / d);
+        if (std::isfinite(tol))
+          std::snprintf(text, sizeof text, "%s differs by %.3g d (two errors: %.3g d)",
+                        c.label.c_str(), deviation / d, tol / d);
+        else  // neither delta carries an error: nothing to compare the change with
+          std::snprintf(text, sizeof text, "%s differs by %.3g d (two errors: n/a)",
+                        c.label.c_str(), deviation / d);
         failures += (failures.empty() ? "" : "; ") + std::string(text);
       }
     }

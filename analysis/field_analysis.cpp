@@ -167,6 +167,8 @@ FieldAnalysis analyse_fields(const Scene& scene, BinSums grid, std::optional<Bin
                         " bins is masked (too few particle samples)";
   set_target_mach(a, phys.nominal_mach(phys.mass_definition));
   a.features = measure_flow_features(a);
+  a.steadiness = assess_steadiness(a.series, a.grid.production_start, a.grid.production_end, phys,
+                                   a.convergence);
   return a;
 }
 
@@ -181,7 +183,13 @@ FieldAnalysis analyse_run_file(const std::filesystem::path& run_h5, const FieldA
   BinSums grid = read_grid_sums(run);
   std::optional<BinSums> profile;
   if (has_profile_sums(run)) profile = read_profile_sums(run);
-  return analyse_fields(scene.scene, std::move(grid), std::move(profile), o);
+  FieldAnalysis a = analyse_fields(scene.scene, std::move(grid), std::move(profile), o);
+  a.series.time = run.read_array("/observables/particles/time");
+  a.series.particles = run.read_array("/observables/particles/value");
+  a.series.kinetic_energy = run.read_array("/observables/kinetic_energy/value");
+  a.steadiness = assess_steadiness(a.series, a.grid.production_start, a.grid.production_end,
+                                   a.physics, a.convergence);
+  return a;
 }
 
 }  // namespace granshock

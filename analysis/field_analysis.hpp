@@ -21,6 +21,7 @@
 #include "inflow_check.hpp"
 #include "polyline.hpp"
 #include "shock_front.hpp"
+#include "steadiness.hpp"
 #include "upstream_state.hpp"
 
 namespace granshock {
@@ -64,11 +65,13 @@ struct FieldAnalysis {
   std::string ma_target_reason;
   InflowCheck inflow;     // measured upstream state against the targets
   FlowFeatures features;  // the paper's qualitative claims as numbers
+  RunSeries series;       // run.h5 /observables (empty for sums without a run file)
+  Steadiness steadiness;  // whether the window is steady (docs/fields.md, section 12)
 };
 
 FieldAnalysis analyse_fields(const Scene& scene, BinSums grid, std::optional<BinSums> profile,
                              const FieldAnalysisOptions& options = {});
-// Reads DIR/run.h5 (its resolved scene and field sums) and analyses it.
+// Reads DIR/run.h5 (its resolved scene, field sums and time series) and analyses it.
 FieldAnalysis analyse_run_file(const std::filesystem::path& run_h5,
                                const FieldAnalysisOptions& options = {});
 

@@ -53,6 +53,7 @@ std::string number(double v, int digits) {
 struct Done {
   fs::path run_dir, dest;
   DetachmentRow row;
+  std::string steady_warning;  // empty when the window is steady (docs/fields.md, section 12)
 };
 
 // One line per run; an undeterminable number is "n/a", and delta/D and the shock angle say
@@ -71,6 +72,7 @@ std::string result_line(const Done& d) {
     line += " (" + r.delta_over_D_reason + ")";
   line += "; shock angle " + number(r.shock_angle_deg, 3) + " deg";
   if (!std::isfinite(r.shock_angle_deg)) line += " (" + r.shock_angle_deg_reason + ")";
+  if (!d.steady_warning.empty()) line += "; NOT YET STEADY (see the warning)";
   return line + "; results in " + d.dest.string();
 }
 
@@ -178,7 +180,8 @@ int fields_command(const std::vector<fs::path>& run_dirs, const fs::path& out,
       merge_summary_json(dest / "summary.json", keys);  // read again, under the lock
     else
       write_summary_json(dest / "summary.json", summaries[i], keys);
-    done.push_back({dir, dest, detachment_row(dir, analyses[i], target.mach)});
+    done.push_back(
+        {dir, dest, detachment_row(dir, analyses[i], target.mach), analyses[i].steadiness.warning});
   }
   if (several) {
     std::vector<DetachmentRow> rows;
@@ -195,11 +198,12 @@ int fields_command(const std::vector<fs::path>& run_dirs, const fs::path& out,
       plot_detachment_figure(out / "detachment.json", out / "figures" / "detachment_length.png");
   }
 
-  // A short inflow is a warning about the data, printed even when the result line is not.
+  // A short inflow and an unsteady window are warnings about the data, printed even when
+  // the result line is not.
   for (const Done& d : done)
-    if (!d.row.inflow_warning.empty())
-      std::cerr << "granshock: warning: " << d.run_dir.string() << ": " << d.row.inflow_warning
-                << "\n";
+    for (const std::string* warning : {&d.row.inflow_warning, &d.steady_warning})
+      if (!warning->empty())
+        std::cerr << "granshock: warning: " << d.run_dir.string() << ": " << *warning << "\n";
   if (!o.quiet) {
     for (const Done& d : done) std::cout << result_line(d) << "\n";
     if (several) std::cout << "granshock fields: comparison in " << out.string() << "\n";

@@ -88,12 +88,19 @@ FieldsFileContent fields_file_content(const FieldAnalysis& a) {
                      as_arrays(a.front.threshold_lines)});
   c.lines.push_back({"shock_max_gradient", "shock front: steepest rise of phi per column",
                      as_arrays(a.front.gradient_lines)});
+  c.lines.push_back({"shock_temperature",
+                     "shock front: half-rise of the largest rise of T per column (the primary "
+                     "definition of delta/D)",
+                     as_arrays(a.front.temperature_lines)});
 
   c.series.push_back({"/front/x", "m", "bin column centres", a.front.x});
   c.series.push_back({"/front/y_threshold", "m", "front position (threshold rule), NaN: no front",
                       a.front.y_threshold});
   c.series.push_back(
       {"/front/y_max_gradient", "m", "front position (maximum gradient)", a.front.y_max_gradient});
+  c.series.push_back({"/front/y_temperature", "m",
+                      "front position (half-rise of the largest rise of T), NaN: no front",
+                      a.front.y_temperature});
   c.series.push_back({"/front/phi_peak", "", "largest phi of the searched rows", a.front.phi_peak});
   c.series.push_back(
       {"/front/threshold", "", "phi_up + fraction (phi_peak - phi_up)", a.front.threshold});
@@ -187,14 +194,19 @@ FieldsFileContent fields_file_content(const FieldAnalysis& a) {
 
   const nlohmann::json summary = summary_keys(a);
   for (const auto& [key, value] : summary.items()) {
-    const bool text_key = key.size() > 7 && key.compare(key.size() - 7, 7, "_reason") == 0;
+    const std::string& name = key;  // a structured binding cannot be captured (C++17)
+    auto ends_with = [&name](const std::string& tail) {
+      return name.size() > tail.size() &&
+             name.compare(name.size() - tail.size(), tail.size(), tail) == 0;
+    };
+    const bool text_key = ends_with("_reason");
     if (value.is_boolean())
       c.attributes.push_back({"/summary", key, value.get<bool>() ? 1.0 : 0.0});
     else if (value.is_number())
       c.attributes.push_back({"/summary", key, value.get<double>()});
     else if (value.is_string())
       c.text_attributes.push_back({"/summary", key, value.get<std::string>()});
-    else if (value.is_null() && !text_key && key != "inflow_warning")
+    else if (value.is_null() && !text_key && !ends_with("_warning"))
       c.attributes.push_back({"/summary", key, kNaN});  // an undeterminable number
   }
   return c;
@@ -286,6 +298,47 @@ void add_convergence_keys(nlohmann::json& j, const FieldAnalysis& a) {
 
 }  // namespace
 
+namespace {
+
+nlohmann::json reason_or_null(const std::string& reason) {
+  return reason.empty() ? nlohmann::json() : nlohmann::json(reason);
+}
+
+nlohmann::json trend_keys(const HalvesTrend& t) {
+  return {{"rows", t.rows},
+          {"first_half_mean", number_or_null(t.first_mean)},
+          {"second_half_mean", number_or_null(t.second_mean)},
+          {"scatter", number_or_null(t.scatter)},
+          {"drift_over_scatter", number_or_null(t.drift_over_scatter)},
+          {"relative_drift", number_or_null(t.relative_drift)},
+          {"steady", t.determined ? nlohmann::json(t.steady) : nlohmann::json()},
+          {"reason", reason_or_null(t.reason)}};
+}
+
+// `steady`, `steady_warning` and the checks behind them (docs/fields.md, section 12).
+void add_steadiness_keys(nlohmann::json& j, const Steadiness& s) {
+  j["steady"] = s.steady;
+  j["steady_warning"] = reason_or_null(s.warning);
+  const FrontHalves& f = s.front;
+  j["steadiness"] = {{"window_start_s", s.window_start},
+                     {"window_end_s", s.window_end},
+                     {"flow_through_time_s", number_or_null(s.flow_through_time)},
+                     {"washout_time_s", number_or_null(s.washout_time)},
+                     {"start_after_washout", s.start_after_washout},
+                     {"particles", trend_keys(s.particles)},
+                     {"kinetic_energy", trend_keys(s.kinetic_energy)},
+                     {"delta_over_D_halves",
+                      {{"first_half", number_or_null(f.first_over_D)},
+                       {"first_half_err", number_or_null(f.first_err)},
+                       {"second_half", number_or_null(f.second_over_D)},
+                       {"second_half_err", number_or_null(f.second_err)},
+                       {"shift_over_error", number_or_null(f.shift_over_error)},
+                       {"steady", f.determined ? nlohmann::json(f.steady) : nlohmann::json()},
+                       {"reason", reason_or_null(f.reason)}}}};
+}
+
+}  // namespace
+
 nlohmann::json summary_keys(const FieldAnalysis& a) {
   nlohmann::json j;
   // Every number that can be undeterminable comes with KEY_reason: null when KEY is a
@@ -340,6 +393,7 @@ nlohmann::json summary_keys(const FieldAnalysis& a) {
   for (int m : a.fields.masked) masked += m;
   j["fields_masked_bins"] = masked;
   j["fields_bins"] = static_cast<long>(a.fields.size());
+  add_steadiness_keys(j, a.steadiness);
   return j;
 }
 

@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """The detachment length of several runs, like the paper's Fig. 6: delta/D against D/d,
-one series per upstream Mach number, with the block-average errors as error bars; one panel
+one series per upstream Mach number, with the block-average errors as error bars (a point
+whose error is undeterminable is drawn open, without a bar); one panel
 per definition of the shock front (docs/fields.md, section 6), and in each Billig's
 correlation for the bow-shock stand-off of a cylinder in a perfect gas (gamma = 1.4),
 delta/R = 0.386 exp(4.67 / Ma^2) (F. S. Billig, "Shock-wave shapes around spherical- and
@@ -11,7 +12,8 @@ Usage: plot_detachment.py DETACHMENT_JSON OUT_PNG
 DETACHMENT_JSON is the table `granshock fields DIR... --out OUT` writes
 (OUT/detachment.json). OUT_PNG is written whole and never through a symbolic link
 (figure_files.py). Runs are grouped by their target Ma_inf (rounded to 3 significant
-digits). Needs matplotlib (Debian: python3-matplotlib).
+digits). Runs that all share one D/d (a study over e or phi) are placed one per run along
+x, named, instead of on one vertical line. Needs matplotlib (Debian: python3-matplotlib).
 """
 import json
 import math
@@ -29,6 +31,22 @@ from figure_files import FigureDirectory  # noqa: E402
 
 def number(value):
     return float("nan") if value is None else float(value)
+
+
+def draw_points(ax, x, y, err, marker, color, label):
+    """Points with an error bar filled, with caps; points whose error is undeterminable
+    (n/a) open, without a bar, so that they do not pass for exact values."""
+    with_err = [i for i, e in enumerate(err) if math.isfinite(e)]
+    without = [i for i, e in enumerate(err) if not math.isfinite(e)]
+    ax.plot(x, y, color=color, linewidth=1.0, label=label, marker=None)
+    if with_err:
+        ax.errorbar([x[i] for i in with_err], [y[i] for i in with_err],
+                    yerr=[err[i] for i in with_err], marker=marker, color=color, capsize=3,
+                    linestyle="none")
+    if without:
+        ax.plot([x[i] for i in without], [y[i] for i in without], marker=marker, color=color,
+                markerfacecolor="white", linestyle="none")
+    return len(without)
 
 
 def main():
@@ -52,6 +70,14 @@ def main():
     markers = "osD^v<>"
     order = sorted(groups, key=lambda k: (math.isnan(k), k))
     all_x = [number(r["D_over_d"]) for r in rows if math.isfinite(number(r["D_over_d"]))]
+    # Runs that share one D/d (a study over e or phi at fixed D/d) would stand on one
+    # vertical line: then each run is its own place on the x axis, named by its run.
+    one_size = len({round(v, 9) for v in all_x}) == 1 and len(rows) > 1
+    names = [str(r.get("run", i)) for i, r in enumerate(rows)]
+
+    def x_of(row):
+        return float(rows.index(row)) if one_size else number(row["D_over_d"])
+    no_error_bar = 0
     for ax, (definition, title) in zip(axes.flat, definitions):
         key_y = f"delta_over_D_{definition}"
         # Tables before granshock 0.9 have the density threshold only, as delta_over_D.
@@ -74,15 +100,13 @@ def main():
             left_out += len(groups[key]) - len(usable)
             if not usable:
                 continue
-            series = sorted(usable, key=lambda r: number(r["D_over_d"]))
-            x = [number(r["D_over_d"]) for r in series]
+            series = sorted(usable, key=x_of)
+            x = [x_of(r) for r in series]
             y = [number(r[key_y]) for r in series]
             err = [number(r.get(key_y + "_err") if key_y != "delta_over_D" else r["delta_over_D_err"])
                    for r in series]
-            err = [e if math.isfinite(e) else 0.0 for e in err]
             label = f"Ma$_\\infty$ = {key:g}" if math.isfinite(key) else "Ma$_\\infty$ unknown"
-            ax.errorbar(x, y, yerr=err, marker=markers[i % len(markers)], color=color, capsize=3,
-                        linewidth=1.0, label=label)
+            no_error_bar += draw_points(ax, x, y, err, markers[i % len(markers)], color, label)
         if left_out:
             ax.text(0.98, 0.02, f"{left_out} of {len(rows)} runs without a determinable $\\delta$/D",
                     transform=ax.transAxes, ha="right", va="bottom", fontsize=7, color="0.3")
@@ -92,7 +116,15 @@ def main():
         ax.set_title(f"Detachment length: {title}", fontsize=9)
         ax.grid(alpha=0.3)
     for ax in axes[-1]:
-        ax.set_xlabel("D / d")
+        if one_size:
+            ax.set_xticks(range(len(rows)))
+            ax.set_xticklabels(names, rotation=30, ha="right", fontsize=7)
+            ax.set_xlabel(f"run (all at D / d = {all_x[0]:g})")
+        else:
+            ax.set_xlabel("D / d")
+    if no_error_bar:  # named in the legend (a note under the axes would meet their labels)
+        axes[0, 0].plot([], [], marker="o", color="0.4", markerfacecolor="white",
+                        linestyle="none", label="open: no error bar (n/a)")
     for ax in axes[:, 0]:
         ax.set_ylabel("$\\delta$ / D")
     if axes[0, 0].get_legend_handles_labels()[0]:

@@ -21,6 +21,7 @@ matplotlib.use("Agg")  # files only, no display
 
 import h5py  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.ticker  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.colors import LogNorm  # noqa: E402
 from matplotlib.patches import Circle, Rectangle  # noqa: E402
@@ -55,7 +56,11 @@ class Run:
             # A masked bin holds too few particle samples for any field, phi included: blank.
             self.fields["phi"] = np.where(self.fields["masked"] != 0, np.nan, self.fields["phi"])
             self.sonic = [line / self.d for line in read_lines(f, "sonic")]
+            # The density threshold per column (what the shock angle is fitted to) and the
+            # primary definition's front, the T half-rise (what delta/D measures; files
+            # before it was written have none).
             self.front = [line / self.d for line in read_lines(f, "shock_threshold")]
+            self.front_temperature = [line / self.d for line in read_lines(f, "shock_temperature")]
             profile = f["profile"]
             self.profile = {name: profile[name][...] for name in ("y", "phi", "T_norm", "Ma")}
             self.profile["y"] = self.profile["y"] / self.d
@@ -65,6 +70,8 @@ class Run:
             self.fronts = {name: float(profile.attrs["y_shock_" + name]) / self.d
                            for name in FRONT_STYLES if "y_shock_" + name in profile.attrs}
             self.surface = float(profile.attrs["surface"]) / self.d
+            primary = profile.attrs.get("primary_definition", "density_threshold")
+            self.primary = primary.decode() if isinstance(primary, bytes) else str(primary)
             self.delta_over_d = float(profile.attrs["delta_over_D"])
             self.delta_over_d_err = float(profile.attrs["delta_over_D_err"])
             summary = f["summary"].attrs
@@ -92,8 +99,10 @@ class Run:
         return ", ".join(parts)
 
 
-def field_figure(run, values, label, title, figures, png, norm=None, cmap="viridis", lines=()):
-    """One field on the bin grid; masked (NaN) bins show a hatched background."""
+def field_figure(run, values, label, title, figures, png, norm=None, cmap="viridis", lines=(),
+                 ticks=None):
+    """One field on the bin grid; masked (NaN) bins show a hatched background, named in
+    the legend (a note under the axes overlapped the x label)."""
     width = run.x_nodes[-1] - run.x_nodes[0]
     height = run.y_nodes[-1] - run.y_nodes[0]
     fig_w = 6.0
@@ -104,15 +113,21 @@ def field_figure(run, values, label, title, figures, png, norm=None, cmap="virid
                            edgecolor="0.6", linewidth=0, zorder=0))
     data = np.ma.masked_invalid(values)
     mesh = ax.pcolormesh(run.x_nodes, run.y_nodes, data, shading="flat", cmap=cmap, norm=norm)
-    fig.colorbar(mesh, ax=ax, label=label, shrink=0.9)
+    bar = fig.colorbar(mesh, ax=ax, label=label, shrink=0.9)
+    if ticks is not None:
+        bar.set_ticks(ticks)
     for line_set, style in lines:
         style = dict(style)
         label = style.pop("label", None)
         for i, line in enumerate(line_set):
             if len(line) > 1:
                 ax.plot(line[:, 0], line[:, 1], **style, label=label if i == 0 else None)
-    if ax.get_legend_handles_labels()[0]:
-        ax.legend(loc="lower left", fontsize=8, framealpha=0.8)
+    handles, labels = ax.get_legend_handles_labels()
+    if not run.all_masked and np.isnan(values).any():
+        handles.append(Rectangle((0, 0), 1, 1, hatch="///", fill=False, edgecolor="0.6"))
+        labels.append("masked: too few particles")
+    if handles:
+        ax.legend(handles, labels, loc="lower left", fontsize=7, framealpha=0.8)
     run.draw_obstacle(ax)
     ax.set_xlim(run.x_nodes[0], run.x_nodes[-1])
     ax.set_ylim(run.y_nodes[0], run.y_nodes[-1])
@@ -124,9 +139,6 @@ def field_figure(run, values, label, title, figures, png, norm=None, cmap="virid
         ax.text(0.5, 0.5, "every bin is masked:\ntoo few particle samples", transform=ax.transAxes,
                 ha="center", va="center", fontsize=11, color="0.2",
                 bbox=dict(facecolor="white", edgecolor="0.5"), zorder=5)
-    elif np.isnan(values).any():
-        ax.text(1.0, -0.06, "hatched: masked bins (too few particles)", transform=ax.transAxes,
-                ha="right", va="top", fontsize=7, color="0.3")
     figures.save(fig, png, dpi=150)
     plt.close(fig)
 
@@ -147,6 +159,22 @@ FRONT_STYLES = {
     "density_threshold": ("C0", "--", "front: phi half-way"),
     "density_max_gradient": ("C0", ":", "front: steepest phi rise"),
 }
+
+
+def profile_range(run):
+    """The y range around the fronts and the surface: the whole line from the inlet put
+    a front 5 d from the face into the last 5 % of the axis. With the layer from the first
+    front to the surface (at least 5 d thick): from three layers upstream of the front to
+    0.3 of a layer past the surface, so the fronts sit at about three quarters of the
+    axis; None (the whole line) without a front."""
+    fronts = [y for y in (run.fronts or {"density_threshold": run.y_shock}).values()
+              if np.isfinite(y)]
+    if not fronts or not np.isfinite(run.surface):
+        return None
+    first = min(fronts)
+    layer = max(run.surface - first, 5.0)
+    y = run.profile["y"]
+    return max(first - 3 * layer, y[0] - 0.5), run.surface + 0.3 * layer
 
 
 def profile_figure(run, figures, png):
@@ -175,6 +203,10 @@ def profile_figure(run, figures, png):
     axes[-1].set_xlabel("y / d (along the stagnation line)")
     if p["y"].size and not np.isfinite(p["phi"]).any():  # every bin masked: the whole profile
         axes[-1].set_xlim(p["y"][0], max(p["y"][-1], np.nan_to_num(run.surface, nan=p["y"][-1])))
+    else:
+        limits = profile_range(run)
+        if limits is not None:
+            axes[-1].set_xlim(*limits)
     title = run.title("Stagnation line")
     if np.isfinite(run.delta_over_d):
         title += f", $\\delta/D$ = {run.delta_over_d:.3g}"
@@ -202,23 +234,43 @@ def main():
     return 0
 
 
+def front_lines(run, color):
+    """The fronts the field figures draw, each named by its definition: the T half-rise
+    (the primary definition, which delta/D measures) and the phi half-way rule (what the
+    shock angle is fitted to), docs/fields.md sections 5-6."""
+    lines = []
+    if run.front_temperature:
+        lines.append((run.front_temperature,
+                      dict(color=color, linestyle="-", linewidth=1.3,
+                           label="shock front: T half-rise (primary, as $\\delta$/D)")))
+    lines.append((run.front, dict(color=color, linestyle=":", linewidth=1.1,
+                                  label="shock front: $\\phi$ half-way (angle fit)")))
+    return lines
+
+
+def mach_ticks(vmax):
+    """Colour-bar ticks of the Mach field: 0, 1 (the sonic value, white) and a few above."""
+    above = [t for t in matplotlib.ticker.MaxNLocator(5).tick_values(1.0, vmax)
+             if 1.0 < t <= vmax]
+    return [0.0, 1.0] + above
+
+
 def draw_figures(run, out):
     f = run.fields
-    front_style = dict(color="w", linestyle="--", linewidth=1.0, label="shock front")
     field_figure(run, f["phi"], "solid fraction $\\phi$", run.title("Solid fraction"),
-                 out, "solid_fraction.png", cmap="viridis",
-                 lines=((run.front, dict(front_style, color="r")),))
+                 out, "solid_fraction.png", cmap="viridis", lines=front_lines(run, "r"))
     field_figure(run, f["T_norm"], "$T/(m_{av}U_\\infty^2)$", run.title("Granular temperature"),
                  out, "temperature.png", norm=positive_norm(f["T_norm"]), cmap="inferno")
     ma = f["Ma"]
     finite = ma[np.isfinite(ma)]
-    # The 95th percentile: a few sparse, cold bins (in the wake) can have a huge Ma.
-    vmax = np.percentile(finite, 95) if finite.size else 1.0
+    # The 95th percentile: the few sparse bins of the wake still reach Ma 20-30.
+    vmax = max(np.percentile(finite, 95) if finite.size else 1.0, 2.0)
     field_figure(run, ma, f"Ma ({run.mass_definition})", run.title("Mach number"),
                  out, "mach.png", cmap="coolwarm",
-                 norm=matplotlib.colors.TwoSlopeNorm(vmin=0.0, vcenter=1.0, vmax=max(vmax, 2.0)),
+                 norm=matplotlib.colors.TwoSlopeNorm(vmin=0.0, vcenter=1.0, vmax=vmax),
+                 ticks=mach_ticks(vmax),
                  lines=((run.sonic, dict(color="k", linewidth=1.4, label="sonic line Ma = 1")),
-                        (run.front, front_style)))
+                        *front_lines(run, "w")))
     profile_figure(run, out, "stagnation_profiles.png")
 
 

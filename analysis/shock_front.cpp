@@ -75,8 +75,9 @@ ShockFront find_shock_front(const BinFields& f, const BinSums& grid, const Field
   s.y_max_gradient.assign(nx, kNaN);
   s.phi_peak.assign(nx, kNaN);
   s.threshold.assign(nx, kNaN);
+  s.y_temperature.assign(nx, kNaN);
   std::vector<double> y(static_cast<std::size_t>(grid.ny)),
-      column(static_cast<std::size_t>(grid.ny));
+      column(static_cast<std::size_t>(grid.ny)), temperature(static_cast<std::size_t>(grid.ny));
   for (int iy = 0; iy < grid.ny; ++iy) y[static_cast<std::size_t>(iy)] = grid.y_centre(iy);
   for (int ix = 0; ix < grid.nx; ++ix) {
     const std::size_t i = static_cast<std::size_t>(ix);
@@ -84,9 +85,12 @@ ShockFront find_shock_front(const BinFields& f, const BinSums& grid, const Field
     for (int iy = 0; iy < grid.ny; ++iy) {
       const std::size_t k = f.index(iy, ix);
       column[static_cast<std::size_t>(iy)] = f.masked[k] ? kNaN : f.phi[k];
+      temperature[static_cast<std::size_t>(iy)] = f.masked[k] ? kNaN : f.temperature[k];
     }
-    const FrontCrossing c =
-        find_front_crossing(column, y, row_begin, search_end(grid, phys, s.x[i]), phi_up, rule);
+    const int end = search_end(grid, phys, s.x[i]);
+    const FrontCrossing hot = find_largest_rise(temperature, y, row_begin, end, rule);
+    if (hot.found && hot.y_threshold >= y_upstream_end) s.y_temperature[i] = hot.y_threshold;
+    const FrontCrossing c = find_front_crossing(column, y, row_begin, end, phi_up, rule);
     if (!c.found || c.y_threshold < y_upstream_end) continue;
     s.y_threshold[i] = c.y_threshold;
     s.y_max_gradient[i] = c.y_max_gradient;
@@ -95,6 +99,7 @@ ShockFront find_shock_front(const BinFields& f, const BinSums& grid, const Field
   }
   s.threshold_lines = runs_of_finite(s.x, s.y_threshold);
   s.gradient_lines = runs_of_finite(s.x, s.y_max_gradient);
+  s.temperature_lines = runs_of_finite(s.x, s.y_temperature);
 
   s.left = s.right = fit_flank({}, {});
   s.angle_deg = kNaN;

@@ -32,7 +32,11 @@ struct ShockFront {
   std::vector<double> x;                                                 // column centres, m [nx]
   std::vector<double> y_threshold, y_max_gradient, phi_peak, threshold;  // NaN where no front [nx]
   std::vector<Polyline> threshold_lines, gradient_lines;  // consecutive columns with a front
-  FlankFit left, right;                                   // x < xc and x > xc
+  // The primary definition's front (T half-rise of the largest rise, docs/fields.md section
+  // 6) per column: what the figures draw beside delta/D. NaN where no front [nx].
+  std::vector<double> y_temperature;
+  std::vector<Polyline> temperature_lines;
+  FlankFit left, right;      // x < xc and x > xc
   double angle_deg = 0;      // mean of the flanks that have a fit (NaN if none)
   std::string angle_reason;  // why angle_deg is NaN (empty when it is a number)
 };

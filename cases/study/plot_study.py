@@ -1,8 +1,8 @@
 #!/usr/bin/python3
 """The figures of a granshock study (docs/study.md, "Figures"): for each axis, the
-detachment length delta/D (with its block error), the peak solid fraction phi_peak and the
-measured upstream Mach number Ma_inf (with its target) against the axis value, one PNG per
-axis.
+detachment length delta/D (with its block error; a point without one is drawn open), the
+peak solid fraction phi_peak and the measured upstream Mach number Ma_inf (with its target)
+against the axis value, one PNG per axis; a case whose window is not yet steady is crossed.
 
 Usage: plot_study.py STUDY_JSON FIGURES_DIR MODE AXIS [AXIS ...]
 
@@ -73,19 +73,36 @@ def plot_axis(rows, axis, axes, mode, png):
     markers = "osD^v<>"
     groups = series_of(finished, axis, axes, mode)
     for panel, (key, err_key, label) in zip(panels, PANELS):
-        drawn = 0
+        drawn = no_error_bar = not_steady = 0
         for i, (group, members) in enumerate(sorted(groups.items(), key=lambda g: str(g[0]))):
             points = sorted((r for r in members if math.isfinite(number(r.get(key)))), key=x_of)
             if not points:
                 continue
             x = [x_of(r) for r in points]
             y = [number(r[key]) for r in points]
-            err = None
+            marker = markers[i % len(markers)]
+            line = panel.plot(x, y, marker=marker, linewidth=1.0, label=series_label(group))[0]
             if err_key:
+                # A point with an error gets its bar; one whose error is undeterminable (n/a)
+                # is drawn open, so that it does not pass for an exact value.
                 err = [number(r.get(err_key)) for r in points]
-                err = [e if math.isfinite(e) else 0.0 for e in err]
-            panel.errorbar(x, y, yerr=err, marker=markers[i % len(markers)], capsize=3,
-                           linewidth=1.0, label=series_label(group))
+                bars = [k for k, e in enumerate(err) if math.isfinite(e)]
+                if bars:
+                    panel.errorbar([x[k] for k in bars], [y[k] for k in bars],
+                                   yerr=[err[k] for k in bars], color=line.get_color(),
+                                   marker="none", linestyle="none", capsize=3)
+                open_points = [k for k, e in enumerate(err) if not math.isfinite(e)]
+                if open_points:
+                    panel.plot([x[k] for k in open_points], [y[k] for k in open_points],
+                               marker=marker, color=line.get_color(), markerfacecolor="white",
+                               linestyle="none")
+                    no_error_bar += len(open_points)
+            # A case whose window is not yet steady (docs/fields.md, section 12) is crossed.
+            unsteady = [k for k, r in enumerate(points) if r.get("steady") is False]
+            if unsteady:
+                panel.scatter([x[k] for k in unsteady], [y[k] for k in unsteady], marker="x",
+                              s=60, color="k", zorder=4)
+                not_steady += len(unsteady)
             drawn += len(points)
         if key == "ma_inf_measured":
             targets = [r for r in finished if math.isfinite(number(r.get("ma_inf_target")))]
@@ -105,6 +122,11 @@ def plot_axis(rows, axis, axes, mode, png):
         if not numeric:
             panel.set_xticks(range(len(categories)))
             panel.set_xticklabels([str(c) for c in categories], rotation=30, ha="right", fontsize=8)
+        if no_error_bar:
+            panel.plot([], [], marker="o", color="0.4", markerfacecolor="white", linestyle="none",
+                       label="open: no error bar (n/a)")
+        if not_steady:
+            panel.scatter([], [], marker="x", color="k", label="x: not yet steady")
         handles, labels = panel.get_legend_handles_labels()
         if any(labels):
             panel.legend(fontsize=7)

@@ -136,6 +136,14 @@ TEST(FieldsCommand, OneRunWritesFieldsXdmfFiguresAndSummary) {
   for (const char* png :
        {"solid_fraction.png", "temperature.png", "mach.png", "stagnation_profiles.png"})
     EXPECT_TRUE(is_png(run / "figures" / png)) << png;
+  // What the figures say: each front named by its definition, the primary one drawn, a
+  // colour-bar tick at Ma = 1, no note over the x label, the profile's fronts in view.
+  if (python_with_h5py()) {
+    const std::string check = "/usr/bin/python3 " GRANSHOCK_TEST_FIELDS_DIR
+                              "/check_figure_content.py '" +
+                              (run / "fields.h5").string() + "' " GRANSHOCK_SOURCE_DIR "/analysis";
+    EXPECT_EQ(std::system(check.c_str()), 0) << check;
+  }
 
   // fields.xmf: every data item is a dataset of fields.h5 with the declared shape.
   const std::string xmf = read_text(run / "fields.xmf");
@@ -153,8 +161,9 @@ TEST(FieldsCommand, OneRunWritesFieldsXdmfFiguresAndSummary) {
                               (run / "fields.xmf").string() + "'";
     EXPECT_EQ(std::system(check.c_str()), 0) << check;
   }
-  for (const char* dataset : {"/lines/sonic/points", "/lines/shock_threshold/offsets",
-                              "/profile/phi", "/front/y_threshold", "/grid/x", "/grid/y"})
+  for (const char* dataset :
+       {"/lines/sonic/points", "/lines/shock_threshold/offsets", "/lines/shock_temperature/points",
+        "/front/y_temperature", "/profile/phi", "/front/y_threshold", "/grid/x", "/grid/y"})
     EXPECT_NE(dataset_dimensions(run / "fields.h5", dataset), "missing") << dataset;
 
   // summary.json: the run's keys kept, the fields' keys added.

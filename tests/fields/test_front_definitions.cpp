@@ -306,6 +306,23 @@ TEST(FrontDefinitions, ConvergenceTableCoversEveryChoice) {
   EXPECT_EQ(csv.rfind("choice,kind,size_d,temperature_jump,temperature_jump_err,", 0), 0u);
 }
 
+// One block: no delta carries an error, so a cut that moves delta cannot be judged by
+// two errors. The verdict says "n/a", never "two errors: nan d".
+TEST(FrontDefinitions, AVerdictWithoutErrorsSaysNotApplicable) {
+  const FieldPhysics phys = test::physics_of(kScene);
+  const test::BowShockSums bow = test::bow_shock_sums(phys, 12, 1, 1000);
+  const BinSums profile = layered_profile(phys, 12, 0.5 * kD, 0, 0.5 * kD, 1, {0.1 * kD});
+  const FieldAnalysis a = analyse_fields(parse_scene(kScene).scene, bow.grid, profile);
+  ASSERT_TRUE(a.detachment.found) << a.detachment.reason;
+  EXPECT_TRUE(std::isnan(a.detachment.delta_err));
+  int judged_without_errors = 0;
+  for (const ConvergenceVerdict& v : a.convergence.verdicts) {
+    EXPECT_EQ(v.text.find("nan"), std::string::npos) << v.text;
+    if (v.text.find("(two errors: n/a)") != std::string::npos) ++judged_without_errors;
+  }
+  EXPECT_GT(judged_without_errors, 0);  // the grid column's delta differs from the strip's
+}
+
 }  // namespace
 
 namespace {
