@@ -18,6 +18,10 @@ BackendSwitch::BackendSwitch(BackendSwitchPolicy policy)
 Backend BackendSwitch::observe(double particle_steps, double seconds) {
   total_seconds_ += seconds;
   if (current_ == Backend::serial) serial_seconds_ += seconds;
+  if (first_slice_) {  // the run's first slice holds its start-up (list build, allocations)
+    first_slice_ = false;
+    return current_;
+  }
   window_steps_ += particle_steps;
   window_seconds_ += seconds;
   if (window_seconds_ < (trying_ ? policy_.try_window_s : policy_.window_s)) return current_;

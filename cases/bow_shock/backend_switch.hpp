@@ -16,7 +16,7 @@ struct BackendSwitchPolicy {
   double window_s = 0.3;        // a rate is measured over at least this much wall time
   double try_window_s = 0.1;    // and a try's over this much: on an idle machine a try of
                                 // one thread costs about half of it
-  double first_gap_s = 1.0;     // the first try of the other backend, after this long
+  double first_gap_s = 0.5;     // the first try of the other backend, after this long
   double longest_gap_s = 60.0;  // the gaps between tries double up to this
   // The settled backend's rate falling below this share of its rate when it was last
   // compared (or the best since) is a sign of new load: the other backend is tried at once.
@@ -35,10 +35,11 @@ class BackendSwitch {
   Backend observe(double particle_steps, double seconds);
 
   Backend current() const { return current_; }
-  // The wall time the next slice should last: short while the other backend is tried, so
-  // that a try of threads that have collapsed costs about a second, not a whole slice at
-  // a thirtieth of the speed.
-  double slice_seconds() const { return trying_ ? 0.03 : 0.25; }
+  // The wall time the next slice should last, at the rate of the backend settled on:
+  // short while the other one is tried, so that a try of threads that have collapsed (35
+  // times slower) lasts about one try window, not a whole slice at a thirty-fifth of the
+  // speed.
+  double slice_seconds() const { return trying_ ? 0.003 : 0.25; }
   long switches() const { return switches_; }
   long tries() const { return tries_; }
   double seconds_on_one_thread() const { return serial_seconds_; }
@@ -58,6 +59,7 @@ class BackendSwitch {
   double settled_rate_ = 0;    // the settled backend's rate before the try
   double reference_rate_ = 0;  // the settled backend's rate to compare new windows with
   double window_steps_ = 0, window_seconds_ = 0;
+  bool first_slice_ = true;  // the run's first: start-up costs, not a rate
   double since_try_s_ = 0, gap_s_ = 0;
   long switches_ = 0, tries_ = 0;
   double serial_seconds_ = 0, total_seconds_ = 0;

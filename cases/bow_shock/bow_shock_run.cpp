@@ -531,7 +531,21 @@ void BowShockRun::advance_slice(long steps) {
   if (!backend_switch_) return;
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const long switches = backend_switch_->switches();
   backend_switch_->observe(particle_steps, seconds);
+  // One note when the run settles on the other backend (a try alone says nothing).
+  if (backend_switch_->switches() == switches || !root_ || options_.quiet ||
+      options_.backend_switch != "auto")
+    return;
+  const bool one_thread = backend_switch_->current() == Backend::serial;
+  std::cerr << fmt::format(
+      "granshock: note: {} ({:.3g} particle-steps/s on {} threads, {:.3g} on one); trying "
+      "the other again later (--backend-switch off keeps the threads)\n",
+      one_thread ? "continuing on one thread: the threads run slower than one would (another "
+                   "process is busy on this machine)"
+                 : "back to the threads: they run faster again",
+      backend_switch_->threads_rate(), switchable_host_threads(),
+      backend_switch_->one_thread_rate());
 }
 
 // The backend the next slice runs on: the switch's choice, or with --backend-switch
@@ -557,15 +571,6 @@ void BowShockRun::move_solver_to(Backend backend) {
   solver_->restore_field_sums(grid, profile);
   backend_ = backend;
   ++backend_moves_;
-  if (root_ && !options_.quiet && options_.backend_switch == "auto")
-    std::cerr << fmt::format(
-        "granshock: note: {} ({:.3g} particle-steps/s on {} threads, {:.3g} on one); "
-        "trying the other again later (--backend-switch off keeps the threads)\n",
-        backend == Backend::serial ? "continuing on one thread: the threads run slower than one "
-                                     "would (another process is busy on this machine)"
-                                   : "back to the threads: they run faster again",
-        backend_switch_->threads_rate(), switchable_host_threads(),
-        backend_switch_->one_thread_rate());
 }
 
 // summary.json "backend_switch": the moves between threads and one thread, for runs that

@@ -77,6 +77,19 @@ TEST(BackendSwitch, ABusyMachineMovesToOneThread) {
   EXPECT_GT(o.particle_steps / (1.25e8 * o.wall), 0.9);
 }
 
+// A short run beside a busy process (the default scene's 0.03 s, about 8 s on one thread):
+// the first slice is discarded (start-up), the first try comes after a 0.5 s window and
+// lasts one try window, and a try of the collapsed threads lasts about one try window too.
+// The run keeps 0.85 of one thread's rate: what is lost is the first 0.85 s on the threads.
+TEST(BackendSwitch, AShortRunBesideABusyProcessKeepsMostOfOneThread) {
+  BackendSwitch s;
+  const Machine busy{[](double) { return 3.6e6; }, [](double) { return 1.25e8; }};
+  const Outcome o = simulate(s, busy, 8);
+  EXPECT_EQ(s.current(), Backend::serial);
+  EXPECT_LT(o.switched_to_one_thread_at, 1.0);
+  EXPECT_GT(o.particle_steps / (1.25e8 * o.wall), 0.85);
+}
+
 // Load that arrives during the run: the rate's drop starts a try at once, long before the
 // next regular one (60 s apart by then). The slice under way when the load came was sized
 // at the idle rate and lasts 55 times longer (0.25 s x 2e8 / 3.6e6 = 14 s): that, a
@@ -104,8 +117,8 @@ TEST(BackendSwitch, LoadLiftingReturnsToTheThreads) {
 }
 
 // Rates that scatter by +-15 % from window to window (a noisy shared machine) with the
-// threads 1.8x faster: no move, and no try more often than the doubling gaps allow (1, 2,
-// 4, 8, 16 and 32 s, then every 60 s: 15 tries in 600 s).
+// threads 1.8x faster: no move, and no try more often than the doubling gaps allow (0.5,
+// 1, 2, 4, 8, 16 and 32 s, then every 60 s: 15 tries in 600 s).
 TEST(BackendSwitch, NoiseDoesNotMoveTheRun) {
   BackendSwitch s;
   const Machine noisy{[](double t) { return 2.0e8 * (1 + 0.15 * std::sin(7.3 * t)); },
