@@ -279,8 +279,9 @@ int BowShockRun::advance_to_end() {
     meter_->observe(step);
     actions_at(step);
     warn_if_inflow_falls_short();
-    // Collective: every rank takes part in the counts rank 0 reports.
-    if (comm_.any(meter_->due() && !options_.quiet)) {
+    // Collective: every rank takes part in the counts rank 0 reports. Rank 0's clock alone
+    // says when: the other ranks' meters never report, so they would be due at every slice.
+    if (comm_.any(root_ && meter_->due() && !options_.quiet)) {
       const long particles = solver_->global_size();
       const long contacts = solver_->diagnostics().contacts;
       if (root_)
