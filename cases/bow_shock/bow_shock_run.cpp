@@ -147,12 +147,15 @@ int BowShockRun::execute_or_throw() {
     // Every check is done: from here on the run owns the directory (and holds its lock).
     if (root_) run_directory_.emplace(RunDirectory::claim(dir_, mode_));
     claimed_ = true;
-    log_.open(dir_);
-    if (options_.resume && root_) read_earlier_summary();
     if (options_.resume) read_checkpoint_and_check();
     open_run_file();
   });
   if (options_.resume) agree_on_failure(comm_, [&] { resume(); });
+  // The log once the run is accepted: a refused --resume leaves the directory as it was.
+  agree_on_failure(comm_, [&] {
+    log_.open(dir_);
+    if (options_.resume && root_) read_earlier_summary();
+  });
   try {
     if (!options_.resume) start_fresh();  // writes the outputs of step 0
     first_step_ = solver_->steps_done();

@@ -1,8 +1,8 @@
 // What a run says (docs/output_format.md, "log.txt"): every line it shows on stderr is also
 // appended, after the wall-clock time, to log.txt in the run directory, and its warnings
-// are kept for summary.json. Lines said before the run owns its directory (the scene's
-// warnings, the calibrations) wait in memory and are written with their own times once
-// it does; a run refused before that writes nothing.
+// are kept for summary.json. Lines said before the run is accepted (the scene's warnings,
+// the calibrations, the checks of the directory and of a checkpoint to resume) wait in
+// memory and are written with their own times once it is; a refused run writes nothing.
 //
 // log.txt follows the run directory's rules (io/run_directory.hpp): it is one of the run's
 // outputs (replaced by --overwrite, never written through a symbolic link), and it is only
