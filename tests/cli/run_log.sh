@@ -81,6 +81,12 @@ for p in problems:
 sys.exit(1 if problems else 0)
 PY
 
+# A refused --resume (a scene key changed) leaves the log as it was.
+cp "$dir/run/log.txt" "$dir/log.before"
+"$granshock" run "$scene" "${tiny[@]}" --set contact.restitution=0.6 --out "$dir/run" --resume \
+  >/dev/null 2>&1
+[ $? -eq 2 ] || fail "a --resume with another scene was not refused"
+cmp -s "$dir/log.before" "$dir/run/log.txt" || fail "a refused --resume wrote to log.txt"
 # --overwrite starts a new log.
 "$granshock" run "$scene" "${tiny[@]}" --out "$dir/run" --overwrite --quiet >/dev/null 2>&1 ||
   fail "the --overwrite run"
