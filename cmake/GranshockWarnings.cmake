@@ -54,6 +54,17 @@ if(GRANSHOCK_NATIVE AND NOT GRANSHOCK_NVCC AND CMAKE_CXX_COMPILER_ID MATCHES "GN
     target_compile_options(granshock_fp INTERFACE $<$<COMPILE_LANGUAGE:CXX>:-march=native>)
   endif()
 endif()
+# What the build says of its instruction set (summary.json "build", granshock --version):
+# native and, where GCC tells, the CPU it stands for.
+set(GRANSHOCK_MARCH "default")
+if(GRANSHOCK_HAS_MARCH_NATIVE AND GRANSHOCK_NATIVE AND NOT GRANSHOCK_NVCC)
+  set(GRANSHOCK_MARCH "native")
+  execute_process(COMMAND ${CMAKE_CXX_COMPILER} -march=native -Q --help=target
+                  OUTPUT_VARIABLE target_help ERROR_QUIET)
+  if(target_help MATCHES "\n[ \t]*-march=[ \t]*([A-Za-z0-9_.-]+)")
+    set(GRANSHOCK_MARCH "native (${CMAKE_MATCH_1})")
+  endif()
+endif()
 if(GRANSHOCK_NVCC)
   target_compile_options(granshock_fp INTERFACE $<$<COMPILE_LANGUAGE:CXX>:--fmad=false>)
 endif()

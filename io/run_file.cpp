@@ -430,8 +430,8 @@ EntryLayout entry_layout(hid_t file, const std::string& group) {
 
 // The groups, header and empty time-indexed datasets of a new run file.
 void write_layout(hid_t f, const std::string& scene_toml_as_given,
-                  const std::string& scene_toml_resolved, int dim,
-                  const SnapshotContents& contents) {
+                  const std::string& scene_toml_resolved, int dim, const SnapshotContents& contents,
+                  const std::string& build) {
   h5::write_attribute(f, "granshock_file", kFileKind);
   h5::write_attribute(f, "granshock_format_version", kFormatVersion);
   h5::write_attribute(f, kRunIdAttribute, new_run_id());
@@ -441,6 +441,7 @@ void write_layout(hid_t f, const std::string& scene_toml_as_given,
   Handle creator = h5::require_group(f, "/h5md/creator");
   h5::write_attribute(creator.get(), "name", "granshock");
   h5::write_attribute(creator.get(), "version", GRANSHOCK_VERSION_STRING);
+  if (!build.empty()) h5::write_attribute(creator.get(), "build", build);
   Handle author = h5::require_group(f, "/h5md/author");
   h5::write_attribute(author.get(), "name", "granshock");
 
@@ -581,7 +582,7 @@ std::uintmax_t RunFile::completion_growth(long total) const {
 
 RunFile RunFile::create(const fs::path& path, const std::string& scene_toml_as_given,
                         const std::string& scene_toml_resolved, int dim,
-                        const SnapshotContents& contents) {
+                        const SnapshotContents& contents, const std::string& build) {
   if (dim != 2 && dim != 3) throw std::invalid_argument("RunFile: dim must be 2 or 3");
   h5::silence_error_printing();
   const hid_t id = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
@@ -591,7 +592,7 @@ RunFile RunFile::create(const fs::path& path, const std::string& scene_toml_as_g
   Handle file(id, H5Fclose);
   try {
     h5::naming_file_in_errors(path, "creating", [&] {
-      write_layout(file.get(), scene_toml_as_given, scene_toml_resolved, dim, contents);
+      write_layout(file.get(), scene_toml_as_given, scene_toml_resolved, dim, contents, build);
     });
   } catch (...) {
     // No half-made run file left behind.

@@ -48,10 +48,12 @@ struct RunFileRecord {
 class RunFile {
  public:
   // Creates (or replaces) the file, with a new random run id. dim is 2 (positions and
-  // velocities store x, y) or 3. Throws UserError naming the path when it cannot be created.
+  // velocities store x, y) or 3. `build`: the program's build (JSON text), kept in
+  // /h5md/creator@build when not empty. Throws UserError naming the path when it cannot be
+  // created.
   static RunFile create(const std::filesystem::path& path, const std::string& scene_toml_as_given,
                         const std::string& scene_toml_resolved, int dim,
-                        const SnapshotContents& contents = {});
+                        const SnapshotContents& contents = {}, const std::string& build = {});
 
   // Reopens an existing run file read-write and drops every time-indexed entry (snapshot
   // frames, time-series rows) whose step is after checkpoint_step. Throws UserError, with

@@ -10,6 +10,7 @@
 
 #include "regular_file.hpp"
 #include "scene_schema.hpp"
+#include "shortest_floats.hpp"
 #include "table_reader.hpp"
 #include "user_error.hpp"
 
@@ -128,7 +129,7 @@ LoadedScene load_scene_file(const std::filesystem::path& path,
 std::string scene_to_toml(const Scene& s) {
   std::ostringstream os;
   os << scene_toml::write_scene(s) << "\n";
-  return os.str();
+  return with_shortest_floats(os.str());
 }
 
 }  // namespace granshock

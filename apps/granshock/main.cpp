@@ -13,7 +13,9 @@
 #include <string_view>
 
 #include "allocation_failure.hpp"
+#include "build_description.hpp"
 #include "build_info.hpp"
+#include "cpu_check.hpp"
 #include "device/kokkos_runtime.hpp"
 #include "failure_agreement.hpp"
 #include "fields_command.hpp"
@@ -230,6 +232,9 @@ int run_fields_command(const std::vector<std::filesystem::path>& dirs,
 // the dynamic loader, before any library's constructor.
 extern "C" void granshock_hold_interrupts_at_load(int, char**, char**) {
   granshock::hold_interrupts();
+  // Also before the static constructors of the solver's code (this executable's
+  // .init_array), which a -march=native build compiles for its build machine's CPU.
+  granshock::exit_unless_this_cpu_runs_the_build();
 }
 __attribute__((section(".preinit_array"), used)) static void (*const hold_interrupts_at_load)(
     int, char**, char**) = granshock_hold_interrupts_at_load;
@@ -239,7 +244,12 @@ int main(int argc, char** argv) {
   // First (again, where .preinit_array is not): a signal while MPI and Kokkos start waits
   // until the command is known (cases/bow_shock/interrupt.hpp).
   granshock::hold_interrupts();
+  // Before any of the solver's code, which may use instructions this CPU lacks (again,
+  // where .preinit_array is not).
+  granshock::exit_unless_this_cpu_runs_the_build();
   CLI::App app{"granshock: GPU-portable DEM for granular gas dynamics"};
+  app.set_version_flag("--version", granshock::version_line(),
+                       "print the version, commit and build, and exit");
   app.require_subcommand(1);
   app.allow_extras(false);
   granshock::CollisionOptions collide;

@@ -9,12 +9,14 @@
 #include <iostream>
 
 #include "atomic_file.hpp"
+#include "build_description.hpp"
 #include "checkpoint_checks.hpp"
 #include "checkpoint_file.hpp"
 #include "failure_agreement.hpp"
 #include "field_sums_file.hpp"
 #include "fields_command.hpp"
 #include "interrupt.hpp"
+#include "json_file.hpp"
 #include "models/restitution_calibration.hpp"
 #include "mpi_communicator.hpp"
 #include "run_checks.hpp"
@@ -79,6 +81,7 @@ BowShockRun::BowShockRun(const RunOptions& o, LoadedScene loaded, const Communic
     : options_(o),
       comm_(comm),
       root_(comm.is_root()),
+      log_(root_),
       loaded_(std::move(loaded)),
       scene_(loaded_.scene),
       inflow_(scene_),
@@ -91,8 +94,22 @@ int BowShockRun::execute() {
     return execute_or_throw();
   } catch (const Interrupted& e) {
     // The rank that reports an agreed failure, or rank 0 where every rank stopped alike.
-    if (root_ || failure_agreed()) std::cerr << interrupted_message(e.signal()) << "\n";
+    if (root_)
+      log_.say(interrupted_message(e.signal()));
+    else if (failure_agreed())
+      std::cerr << interrupted_message(e.signal()) << "\n";
     return e.exit_code();
+  } catch (const PeerFailed&) {
+    throw;  // said by the rank that failed
+  } catch (const NumericalFailure& e) {
+    log_.record(std::string("granshock: error: ") + e.what());  // said by main()
+    throw;
+  } catch (const UserError& e) {
+    log_.record(std::string("granshock: error: ") + e.what());
+    throw;
+  } catch (const std::exception& e) {
+    log_.record(std::string("granshock: internal error: ") + e.what());
+    throw;
   }
 }
 
@@ -110,6 +127,16 @@ std::string BowShockRun::interrupted_message(int signal) const {
 }
 
 int BowShockRun::execute_or_throw() {
+  // The log's first line: what ran, and which program (log.txt of every leg).
+  log_.record(fmt::format("{}: run {} {}{} on {} process{}", version_line(),
+                          options_.scene_file.string(),
+                          options_.resume      ? "(--resume)"
+                          : options_.overwrite ? "(--overwrite)"
+                                               : "(new)",
+                          options_.overrides.empty()
+                              ? std::string()
+                              : fmt::format(" --set {}", fmt::join(options_.overrides, " --set ")),
+                          comm_.size(), comm_.size() == 1 ? "" : "es"));
   // Failures up to here are the same on every rank, or rank 0's alone (its directory and
   // files): all ranks agree on them before the first collective step (docs/parallel.md,
   // "Errors"). No step inside an agreement may itself be collective: a rank that failed
@@ -124,10 +151,16 @@ int BowShockRun::execute_or_throw() {
     open_run_file();
   });
   if (options_.resume) agree_on_failure(comm_, [&] { resume(); });
+  // The log once the run is accepted: a refused --resume leaves the directory as it was.
+  agree_on_failure(comm_, [&] {
+    log_.open(dir_);
+    if (options_.resume && root_) read_earlier_summary();
+  });
   try {
     if (!options_.resume) start_fresh();  // writes the outputs of step 0
     first_step_ = solver_->steps_done();
-    meter_.emplace(first_step_, total_steps_, scene_.run.progress_interval_s);
+    meter_.emplace(first_step_, total_steps_, scene_.run.progress_interval_s,
+                   [this](const std::string& line) { log_.say(line); });
     return advance_to_end();
   } catch (const WriteFailed& e) {
     throw UserError(fmt::format("{}; {}", e.what(), what_survives()));
@@ -173,8 +206,7 @@ void BowShockRun::prepare() {
   throw_if_interrupted();
   if (calibrate_inflow() || damping_calibrated)
     warnings = check_scene_before_run(scene_, options_.force, comm_.size());
-  if (root_)
-    for (const std::string& w : warnings) std::cerr << "granshock: warning: " << w << "\n";
+  for (const std::string& w : warnings) log_.warn(w);
 
   throw_if_interrupted();
   total_steps_ = scene_.total_steps();
@@ -210,7 +242,7 @@ void BowShockRun::open_run_file() {
     for (const Species& s : scene_.setup.species) contents.species_radius.push_back(s.radius_m());
     contents.angular_velocity = scene_.setup.contacts.has_friction();
     run_file_.emplace(RunFile::create(dir_ / "run.h5", loaded_.as_given, loaded_.resolved,
-                                      scene_.setup.dim, contents));
+                                      scene_.setup.dim, contents, build_description().dump()));
   }
 }
 
@@ -219,13 +251,13 @@ void BowShockRun::open_run_file() {
 bool BowShockRun::calibrate_restitution() {
   if (scene_.setup.contacts.restitution_mode != RestitutionMode::discrete) return false;
   const RestitutionCalibration c = apply_restitution_mode(loaded_.scene.setup);
-  if (!options_.quiet && root_)
+  if (!options_.quiet)
     for (const PairCalibration& p : c.pairs)
-      std::cerr << fmt::format(
+      log_.say(fmt::format(
           "granshock: restitution of {} calibrated at dt = {:.3g} s, {:g} m/s: beta {:.5f} "
-          "(continuous {:.5f}) returns e = {:.5f} for {:g} (continuous: {:.5f})\n",
+          "(continuous {:.5f}) returns e = {:.5f} for {:g} (continuous: {:.5f})",
           p.pair, c.dt, c.speed, p.beta, p.beta_continuous, p.e_eff, p.restitution,
-          p.e_eff_continuous);
+          p.e_eff_continuous));
   return true;
 }
 
@@ -235,27 +267,27 @@ bool BowShockRun::calibrate_restitution() {
 // run.h5 and the checkpoint) carries it.
 bool BowShockRun::calibrate_inflow() {
   if (scene_.inflow.mach_at != MachReference::inlet_bins) return false;
-  if (!options_.quiet && root_)
-    std::cerr << fmt::format(
-        "granshock: calibrating sigma so that Ma over the two inlet bin rows is {:g} "
-        "(inflow.mach_at = \"inlet_bins\")\n",
-        *scene_.inflow.target_mach);
+  if (!options_.quiet)
+    log_.say(
+        fmt::format("granshock: calibrating sigma so that Ma over the two inlet bin rows is {:g} "
+                    "(inflow.mach_at = \"inlet_bins\")",
+                    *scene_.inflow.target_mach));
   calibration_ = calibrate_inlet_mach(scene_);
   loaded_.scene.inflow.sigma = calibration_->sigma;
   loaded_.resolved = scene_to_toml(loaded_.scene);
   const InletMach& last = calibration_->chosen();
   if (!root_) return true;
   if (!calibration_->converged)
-    std::cerr << fmt::format(
-        "granshock: warning: the inflow calibration did not converge in {} runs: sigma = {:.4g} "
-        "m/s gives Ma = {:.3f} at the inlet rows against the target {:g}\n",
-        calibration_->iterations.size(), calibration_->sigma, last.mach, calibration_->target);
+    log_.warn(fmt::format(
+        "the inflow calibration did not converge in {} runs: sigma = {:.4g} m/s gives Ma = "
+        "{:.3f} at the inlet rows against the target {:g}",
+        calibration_->iterations.size(), calibration_->sigma, last.mach, calibration_->target));
   else if (!options_.quiet)
-    std::cerr << fmt::format(
+    log_.say(fmt::format(
         "granshock: sigma = {:.4g} m/s (inserted convention: {:.4g}): Ma = {:.3f} +- {:.3f} at "
-        "the inlet rows after {} channel run{}\n",
+        "the inlet rows after {} channel run{}",
         calibration_->sigma, calibration_->sigma_inserted, last.mach, last.mach_err,
-        calibration_->iterations.size(), calibration_->iterations.size() == 1 ? "" : "s");
+        calibration_->iterations.size(), calibration_->iterations.size() == 1 ? "" : "s"));
   return true;
 }
 
@@ -279,8 +311,9 @@ int BowShockRun::advance_to_end() {
     meter_->observe(step);
     actions_at(step);
     warn_if_inflow_falls_short();
-    // Collective: every rank takes part in the counts rank 0 reports.
-    if (comm_.any(meter_->due() && !options_.quiet)) {
+    // Collective: every rank takes part in the counts rank 0 reports. Rank 0's clock alone
+    // says when: the other ranks' meters never report, so they would be due at every slice.
+    if (comm_.any(root_ && meter_->due() && !options_.quiet)) {
       const long particles = solver_->global_size();
       const long contacts = solver_->diagnostics().contacts;
       if (root_)
@@ -292,10 +325,8 @@ int BowShockRun::advance_to_end() {
     if (signal != 0) {
       write_checkpoint_now();
       finish(false);
-      if (root_)
-        std::cerr << fmt::format(
-            "granshock: interrupted at step {}; checkpoint written, continue with --resume\n",
-            step);
+      log_.say(fmt::format(
+          "granshock: interrupted at step {}; checkpoint written, continue with --resume", step));
       return 128 + signal;
     }
     if (backend_switch_ && next_backend() != backend_) move_solver_to(next_backend());
@@ -303,10 +334,8 @@ int BowShockRun::advance_to_end() {
         step < total_steps_) {
       write_checkpoint_now();
       finish(false);
-      if (root_)
-        std::cerr << fmt::format(
-            "granshock: stopped after {} steps at step {}; continue with --resume\n",
-            options_.stop_after_steps, step);
+      log_.say(fmt::format("granshock: stopped after {} steps at step {}; continue with --resume",
+                           options_.stop_after_steps, step));
       return 0;
     }
   }
@@ -325,7 +354,8 @@ void BowShockRun::start_fresh() {
   // A large prefill takes minutes: its progress, in the run's form (progress_meter.hpp),
   // and a signal stops it between slabs, on every rank at the same slab (the insertion is
   // collective).
-  ProgressMeter prefill(0, 0, scene_.run.progress_interval_s);
+  ProgressMeter prefill(0, 0, scene_.run.progress_interval_s,
+                        [this](const std::string& line) { log_.say(line); });
   inflow_.prefill(*solver_, [&](long done, long slabs) {
     if (const int signal = int(comm_.max(double(interrupt_signal()))); signal != 0)
       throw Interrupted(signal);
@@ -340,8 +370,13 @@ void BowShockRun::read_checkpoint_and_check() {
   const fs::path path = dir_ / "checkpoint.h5";
   checkpoint_state_ = read_checkpoint(path, checkpoint_extras_);
   const CheckpointExtras& extras = checkpoint_extras_;
-  if (extras.scene_resolved != loaded_.resolved) {
-    const std::vector<std::string> keys = differing_keys(extras.scene_resolved, loaded_.resolved);
+  // The same values written in other digits (a checkpoint of a granshock that wrote every
+  // number with 17: io/shortest_floats.hpp) are the same scene.
+  const std::vector<std::string> keys =
+      extras.scene_resolved == loaded_.resolved
+          ? std::vector<std::string>()
+          : differing_keys(extras.scene_resolved, loaded_.resolved);
+  if (!keys.empty()) {
     throw UserError(fmt::format(
         "--resume: scene key{} {} differ{} from the run in '{}'; resume with the same scene "
         "file and --set options (docs/scene_format.md: no key may change on resume)",
@@ -353,6 +388,25 @@ void BowShockRun::read_checkpoint_and_check() {
               run_fit(scene_, inflow_, sampling_, checkpoint_state_.step));
   } catch (const InvalidCheckpoint& e) {
     throw refuse_checkpoint(path, e);
+  }
+}
+
+// --resume (rank 0): the warnings and rate the earlier legs' summary.json recorded. A
+// summary that cannot be read (removed, damaged) only loses them: the run's own state is
+// in the checkpoint.
+void BowShockRun::read_earlier_summary() {
+  const fs::path path = dir_ / "summary.json";
+  std::error_code ec;
+  if (!fs::is_regular_file(fs::symlink_status(path, ec))) return;
+  try {
+    const JsonFile earlier = read_json_file(path, "summary");
+    if (!earlier.value.is_object()) return;
+    const nlohmann::json warnings = earlier.value.value("warnings", nlohmann::json());
+    if (warnings.is_array() && std::all_of(warnings.begin(), warnings.end(),
+                                           [](const nlohmann::json& w) { return w.is_string(); }))
+      earlier_warnings_ = warnings;
+    earlier_rate_ = earlier.value.value("particle_steps_per_second", nlohmann::json());
+  } catch (const UserError&) {
   }
 }
 
@@ -405,12 +459,12 @@ void BowShockRun::write_series_row(long step) {
     const std::string energy =
         energy_warning(scene_, row.kinetic_energy, std::size_t(row.particles), row.time);
     warned_energy_ = !energy.empty();
-    if (warned_energy_) std::cerr << "granshock: warning: " << energy << "\n";
+    if (warned_energy_) log_.warn(energy);
   }
   if (!warned_backflow_) {
     const std::string backflow = inlet_backflow_warning(row.deleted_inlet, row.inserted, row.time);
     warned_backflow_ = !backflow.empty();
-    if (warned_backflow_) std::cerr << "granshock: warning: " << backflow << "\n";
+    if (warned_backflow_) log_.warn(backflow);
   }
 }
 
@@ -484,6 +538,16 @@ void BowShockRun::finish(bool completed) {
   if (backend_switch_) j["backend_switch"] = backend_summary();
   if (!root_) return;
   if (!options_.accuracy_choice.is_null()) j["accuracy_choice"] = options_.accuracy_choice;
+  // A leg that ran no step (--resume of a completed run) measured no rate: the earlier
+  // leg's stays.
+  if (particle_steps_ == 0 && earlier_rate_.is_number())
+    j["particle_steps_per_second"] = earlier_rate_;
+  // Every leg's warnings (docs/stability.md), the earlier legs' first.
+  nlohmann::json warnings =
+      earlier_warnings_.is_array() ? earlier_warnings_ : nlohmann::json::array();
+  for (const std::string& w : log_.warnings())
+    if (std::find(warnings.begin(), warnings.end(), w) == warnings.end()) warnings.push_back(w);
+  j["warnings"] = warnings;
   writing([&] {
     write_field_sums(*run_file_, sums);
     run_file_->flush();
@@ -494,14 +558,14 @@ void BowShockRun::finish(bool completed) {
     run_file_.reset();
     if (run_has_field_sums(dir_)) analyse();
   }
-  if (completed && !options_.quiet)
-    std::cout << fmt::format(
-        "granshock: {} done: {} steps, {:.4g} s simulated in {:.1f} s wall, {:.3g} "
-        "particle-steps/s, "
-        "{} particles at the end; results in {}\n",
-        scene_.name, steps, steps * scene_.setup.dt, wall,
-        j["particle_steps_per_second"].get<double>(), j["particles_final"].get<long>(),
-        dir_.string());
+  const std::string done = fmt::format(
+      "granshock: {} done: {} steps, {:.4g} s simulated in {:.1f} s wall, {:.3g} "
+      "particle-steps/s, {} particles at the end; results in {}",
+      scene_.name, steps, steps * scene_.setup.dt, wall,
+      j["particle_steps_per_second"].get<double>(), j["particles_final"].get<long>(),
+      dir_.string());
+  if (completed) log_.record(done);
+  if (completed && !options_.quiet) std::cout << done << "\n";
 }
 
 // The field analysis of a completed run (`granshock fields`): the run's data is complete,
@@ -519,7 +583,7 @@ void BowShockRun::analyse() {
     throw UserError(fmt::format("{}; {}", e.what(), complete));
   }
   if (!options_.figures && !options_.quiet)
-    std::cerr << figures_skipped_note({"granshock", "fields", dir_.string()}) << "\n";
+    log_.say(figures_skipped_note({"granshock", "fields", dir_.string()}));
 }
 
 // One slice of the time loop, timed for the choice between threads and one thread.
@@ -533,19 +597,22 @@ void BowShockRun::advance_slice(long steps) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const long switches = backend_switch_->switches();
   backend_switch_->observe(particle_steps, seconds);
-  // One note when the run settles on the other backend (a try alone says nothing).
-  if (backend_switch_->switches() == switches || !root_ || options_.quiet ||
-      options_.backend_switch != "auto")
-    return;
+  // One note when the run settles on the other backend (a try alone says nothing); with
+  // --quiet, in the log alone.
+  if (backend_switch_->switches() == switches || options_.backend_switch != "auto") return;
   const bool one_thread = backend_switch_->current() == Backend::serial;
-  std::cerr << fmt::format(
+  const std::string note = fmt::format(
       "granshock: note: {} ({:.3g} particle-steps/s on {} threads, {:.3g} on one); trying "
-      "the other again later (--backend-switch off keeps the threads)\n",
+      "the other again later (--backend-switch off keeps the threads)",
       one_thread ? "continuing on one thread: the threads run slower than one would (another "
                    "process is busy on this machine)"
                  : "back to the threads: they run faster again",
       backend_switch_->threads_rate(), switchable_host_threads(),
       backend_switch_->one_thread_rate());
+  if (options_.quiet)
+    log_.record(note);
+  else
+    log_.say(note);
 }
 
 // The backend the next slice runs on: the switch's choice, or with --backend-switch
@@ -620,13 +687,12 @@ nlohmann::json BowShockRun::processes_summary() const {
 void BowShockRun::warn_if_inflow_falls_short() {
   if (warned_inflow_ || !inflow_.falls_short()) return;
   warned_inflow_ = true;
-  if (!root_) return;
-  std::cerr << fmt::format(
-      "granshock: warning: the inflow falls short: {:.0f} of {:.0f} requested particles "
-      "({:.1f}%) found no room in the insertion strip by t = {:.4g} s; phi_inf will be below "
-      "its target {:g} (summary.json: inflow)\n",
+  log_.warn(fmt::format(
+      "the inflow falls short: {:.0f} of {:.0f} requested particles ({:.1f}%) found no room "
+      "in the insertion strip by t = {:.4g} s; phi_inf will be below its target {:g} "
+      "(summary.json: inflow)",
       inflow_.shortfall(), inflow_.requested(), 100 * inflow_.shortfall() / inflow_.requested(),
-      solver_->time(), scene_.inflow.area_fraction);
+      solver_->time(), scene_.inflow.area_fraction));
 }
 
 std::string BowShockRun::inflow_note() const {

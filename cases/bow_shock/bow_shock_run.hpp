@@ -23,6 +23,7 @@
 #include "run_command.hpp"
 #include "run_directory.hpp"
 #include "run_file.hpp"
+#include "run_log.hpp"
 #include "sampling_plan.hpp"
 #include "scene_file.hpp"
 #include "solver.hpp"
@@ -62,6 +63,7 @@ class BowShockRun {
   void write_snapshot(long step);
   void write_checkpoint_now();
   void finish(bool completed);
+  void read_earlier_summary();
   void warn_if_inflow_falls_short();
   std::string inflow_note() const;
   void advance_slice(long steps);
@@ -72,6 +74,7 @@ class BowShockRun {
   const RunOptions& options_;
   const Communicator& comm_;
   const bool root_;  // rank 0: writes the files and speaks
+  RunLog log_;       // stderr and log.txt (rank 0's)
   LoadedScene loaded_;
   const Scene& scene_;
   std::filesystem::path dir_;
@@ -92,6 +95,8 @@ class BowShockRun {
   long total_steps_ = 0, first_step_ = 0;
   double wall_before_ = 0;     // wall seconds of earlier legs (resumed runs)
   double particle_steps_ = 0;  // particle-steps of this leg
+  // --resume: what the summary.json of the earlier legs said (null where it said nothing).
+  nlohmann::json earlier_warnings_, earlier_rate_;
   std::vector<long> samples_;  // field samples per block
   long last_checkpoint_step_ = -1;
   RunFileRecord last_record_;  // run.h5 as the last checkpoint recorded it

@@ -1,15 +1,24 @@
 #include "progress_meter.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace granshock {
 
 ProgressMeter::ProgressMeter(long first_step, long total_steps, double interval_s, std::FILE* out)
+    : ProgressMeter(first_step, total_steps, interval_s, [out](const std::string& line) {
+        std::fprintf(out, "%s\n", line.c_str());
+        std::fflush(out);
+      }) {}
+
+ProgressMeter::ProgressMeter(long first_step, long total_steps, double interval_s, LineSink sink)
     : first_step_(first_step),
       total_steps_(total_steps),
       interval_s_(interval_s),
-      out_(out),
+      sink_(std::move(sink)),
       start_(Clock::now()),
       last_(start_),
       rate_since_(start_),
@@ -41,10 +50,9 @@ void ProgressMeter::report_prefill(long slabs_done, long slabs, long particles) 
   const double elapsed = elapsed_s();
   const double eta = slabs_done > 0 ? elapsed * double(slabs - slabs_done) / slabs_done : 0;
   const int eta_s = int(std::lround(eta));
-  std::fprintf(out_, "prefill %ld/%ld slabs (%.1f%%)  particles %ld  ETA %d:%02d:%02d\n",
-               slabs_done, slabs, 100.0 * slabs_done / std::max(1L, slabs), particles, eta_s / 3600,
-               eta_s / 60 % 60, eta_s % 60);
-  std::fflush(out_);
+  sink_(fmt::format("prefill {}/{} slabs ({:.1f}%)  particles {}  ETA {}:{:02d}:{:02d}", slabs_done,
+                    slabs, 100.0 * slabs_done / std::max(1L, slabs), particles, eta_s / 3600,
+                    eta_s / 60 % 60, eta_s % 60));
 }
 
 void ProgressMeter::report(long step, double time_s, long particles, long contacts,
@@ -55,13 +63,12 @@ void ProgressMeter::report(long step, double time_s, long particles, long contac
   const double overall = elapsed > 0 ? double(step - first_step_) / elapsed : 0;
   const double eta = overall > 0 ? double(total_steps_ - step) / overall : 0;
   const int eta_s = int(std::lround(eta));
-  std::fprintf(out_,
-               "step %ld/%ld (%.1f%%)  t = %.4f s  particles %ld  contacts %ld  "
-               "%.3g particle-steps/s  ETA %d:%02d:%02d%s%s\n",
-               step, total_steps_, 100.0 * step / std::max(1L, total_steps_), time_s, particles,
-               contacts, elapsed > 0 ? particle_steps / elapsed : 0.0, eta_s / 3600,
-               eta_s / 60 % 60, eta_s % 60, note.empty() ? "" : "  ", note.c_str());
-  std::fflush(out_);
+  sink_(
+      fmt::format("step {}/{} ({:.1f}%)  t = {:.4f} s  particles {}  contacts {}  "
+                  "{:.3g} particle-steps/s  ETA {}:{:02d}:{:02d}{}{}",
+                  step, total_steps_, 100.0 * step / std::max(1L, total_steps_), time_s, particles,
+                  contacts, elapsed > 0 ? particle_steps / elapsed : 0.0, eta_s / 3600,
+                  eta_s / 60 % 60, eta_s % 60, note.empty() ? "" : "  ", note));
 }
 
 }  // namespace granshock

@@ -5,13 +5,17 @@
 
 #include <chrono>
 #include <cstdio>
+#include <functional>
 #include <string>
 
 namespace granshock {
 
 class ProgressMeter {
  public:
+  // Each line, without its newline (a run sends them to its log: run_log.hpp).
+  using LineSink = std::function<void(const std::string&)>;
   ProgressMeter(long first_step, long total_steps, double interval_s, std::FILE* out = stderr);
+  ProgressMeter(long first_step, long total_steps, double interval_s, LineSink sink);
 
   bool due() const;
   // particle_steps: done since the meter started (for the rate).
@@ -34,7 +38,7 @@ class ProgressMeter {
   using Clock = std::chrono::steady_clock;
   long first_step_, total_steps_;
   double interval_s_;
-  std::FILE* out_;
+  LineSink sink_;
   Clock::time_point start_, last_, rate_since_;
   long rate_since_step_ = 0;
   double step_rate_ = 0;  // steps per wall second

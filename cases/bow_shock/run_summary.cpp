@@ -3,6 +3,7 @@
 #include <Kokkos_Core.hpp>
 #include <utility>
 
+#include "build_description.hpp"
 #include "head_on_collision.hpp"
 #include "models/restitution_calibration.hpp"
 #include "run_checks.hpp"
@@ -108,6 +109,7 @@ nlohmann::json run_summary(const Scene& s, const Solver& solver, const InflowCon
   // The rate of this leg only (earlier legs of a resumed run are in wall_seconds).
   j["particle_steps_per_second"] =
       times.leg_seconds > 0 ? times.particle_steps / times.leg_seconds : 0.0;
+  j["build"] = build_description();  // this leg's program (run.h5: the first leg's)
   j["effective_restitution_at_dt"] = effective_restitution_table(s);
   j["restitution_calibration"] = restitution_calibration_summary(s);
   return j;

@@ -294,7 +294,13 @@ std::string to_json(const CollisionResult& r) {
   j["t_c"] = r.t_c;
   j["dt_over_tc"] = r.dt / r.t_c;
   j["e_in"] = r.e_in;
-  j["e_eff"] = r.e_eff;
+  // e_eff is what the restitution mode gives (docs/contact_model.md, "Restitution at the
+  // chosen time step"): continuous, this collision; discrete, the average over the phase
+  // of the first contact step, which the damping is calibrated to return. e_eff_is says
+  // which; e_eff_at_phase is this one collision (at --phase) in either mode.
+  j["e_eff"] = r.calibration ? r.calibration->e_eff : r.e_eff;
+  j["e_eff_is"] = r.calibration ? "phase_average" : "this_collision";
+  j["e_eff_at_phase"] = r.e_eff;
   j["t_contact"] = r.t_contact;
   j["t_contact_over_tc"] = r.t_contact / r.t_c;
   j["max_overlap"] = r.max_overlap;

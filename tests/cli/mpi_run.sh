@@ -20,6 +20,8 @@
 #   errors      bad input (a scene, a directory, a box too narrow for the slabs) said once,
 #               by one rank, exit code 2, no rank left waiting; other
 #               commands than `run` refused under mpirun
+#   progress    2 processes print progress lines at output.progress_interval, not at
+#               every slice
 set -u
 mpiexec=$1 granshock=$2 scene=$3 work=$4 mode=$5
 here=$(cd "$(dirname "$0")" && pwd)
@@ -172,6 +174,22 @@ full_disk)
   /usr/bin/python3 -c 'import json, sys
 sys.exit(0 if json.load(open(sys.argv[1]))["completed"] else 1)' "$dir/run/summary.json" ||
     fail "the resumed run did not complete"
+  ;;
+progress)
+  # The slices end every 50 steps in the production window (output.sample_every): rank 0's
+  # clock alone decides when a line is due, so about one a second, however many slices.
+  dir=$(mktemp -d)
+  trap 'rm -rf "$dir"' EXIT
+  start=$(date +%s)
+  timeout 120 "$mpiexec" --oversubscribe -np 2 "$granshock" run "$scene" --no-figures \
+    --set time.duration=0.01 --set time.production_start=0.002 \
+    --set output.progress_interval=1 --out "$dir/run" >"$dir/out" 2>"$dir/err" ||
+    { cat "$dir/err"; fail "the run on 2 processes"; }
+  seconds=$(($(date +%s) - start))
+  lines=$(grep -c "^step " "$dir/err")
+  allowed=$((seconds + 3))
+  echo "$lines progress lines in $seconds s (at most $allowed)"
+  [ "$lines" -le "$allowed" ] || fail "$lines progress lines in $seconds s at 1 s intervals"
   ;;
 *)
   fail "unknown mode $mode"

@@ -57,7 +57,8 @@ ATOMIC_OUTPUTS = ["run.xmf", "checkpoint.h5", "summary.json", "fields.h5", "fiel
                   "detachment_convergence.csv"]
 FIGURES = ["figures/solid_fraction.png", "figures/temperature.png", "figures/mach.png",
            "figures/stagnation_profiles.png"]
-OUTPUTS = ["run.h5"] + ATOMIC_OUTPUTS + [n + ".tmp" for n in ATOMIC_OUTPUTS] + FIGURES
+# log.txt: appended to, never replaced (cases/bow_shock/run_log.hpp).
+OUTPUTS = ["run.h5", "log.txt"] + ATOMIC_OUTPUTS + [n + ".tmp" for n in ATOMIC_OUTPUTS] + FIGURES
 
 # The categories whose checks cover what the figures write (a link in place of figures/ or
 # of a PNG, a full disk or a signal while they are drawn) draw them, as a user's commands
@@ -259,7 +260,8 @@ class Probe:
 
     # --- dirs: directories and links for every command that writes --------------------------
     def dirs(self):
-        names = OUTPUTS if self.deep else ["run.h5", "fields.h5", "fields.xmf.tmp", "summary.json",
+        names = OUTPUTS if self.deep else ["run.h5", "log.txt", "fields.h5", "fields.xmf.tmp",
+                                           "summary.json",
                                            "summary.json.tmp", "detachment_convergence.csv",
                                            "figures/mach.png"]
         for writer in ("run", "fields"):

@@ -16,9 +16,9 @@ import sys
 import h5py
 import numpy
 
-# summary.json keys that measure the machine, not the physics.
+# summary.json keys that measure the machine, or name the program, not the physics.
 MACHINE_KEYS = {"wall_seconds", "particle_steps_per_second", "threads", "backend", "variant",
-                "backend_switch"}
+                "backend_switch", "build"}
 
 
 def sha(array):
