@@ -1,5 +1,6 @@
 #include "fields_command.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iostream>
@@ -55,6 +56,14 @@ struct Done {
   DetachmentRow row;
   std::string steady_warning;  // empty when the window is steady (docs/fields.md, section 12)
 };
+
+// The warnings about a run's data (a short inflow, an unsteady window), each naming the run.
+std::vector<std::string> data_warnings(const Done& d) {
+  std::vector<std::string> out;
+  for (const std::string* warning : {&d.row.inflow_warning, &d.steady_warning})
+    if (!warning->empty()) out.push_back(d.run_dir.string() + ": " + *warning);
+  return out;
+}
 
 // One line per run; an undeterminable number is "n/a", and delta/D and the shock angle say
 // why in brackets.
@@ -175,13 +184,21 @@ int fields_command(const std::vector<fs::path>& run_dirs, const fs::path& out,
     const RunTarget target = target_mach(dir / "summary.json", analyses[i].ma_target);
     set_target_mach(analyses[i], target.mach, target.at_inlet);
     write_fields_outputs(analyses[i], dest);
-    const nlohmann::json keys = summary_keys(analyses[i]);
+    Done d{dir, dest, detachment_row(dir, analyses[i], target.mach),
+           analyses[i].steadiness.warning};
+    nlohmann::json keys = summary_keys(analyses[i]);
+    // summary.json keeps every warning printed about its run (docs/output_format.md): the
+    // run's own, then these about its data.
+    nlohmann::json warnings = summaries[i].value("warnings", nlohmann::json::array());
+    if (!warnings.is_array()) warnings = nlohmann::json::array();
+    for (const std::string& w : data_warnings(d))
+      if (std::find(warnings.begin(), warnings.end(), w) == warnings.end()) warnings.push_back(w);
+    keys["warnings"] = warnings;
     if (in_place)
       merge_summary_json(dest / "summary.json", keys);  // read again, under the lock
     else
       write_summary_json(dest / "summary.json", summaries[i], keys);
-    done.push_back(
-        {dir, dest, detachment_row(dir, analyses[i], target.mach), analyses[i].steadiness.warning});
+    done.push_back(d);
   }
   if (several) {
     std::vector<DetachmentRow> rows;
@@ -201,9 +218,13 @@ int fields_command(const std::vector<fs::path>& run_dirs, const fs::path& out,
   // A short inflow and an unsteady window are warnings about the data, printed even when
   // the result line is not.
   for (const Done& d : done)
-    for (const std::string* warning : {&d.row.inflow_warning, &d.steady_warning})
-      if (!warning->empty())
-        std::cerr << "granshock: warning: " << d.run_dir.string() << ": " << *warning << "\n";
+    for (const std::string& w : data_warnings(d)) {
+      const std::string line = "granshock: warning: " + w;
+      if (o.say)
+        o.say(line);
+      else
+        std::cerr << line << "\n";
+    }
   if (!o.quiet) {
     for (const Done& d : done) std::cout << result_line(d) << "\n";
     if (several) std::cout << "granshock fields: comparison in " << out.string() << "\n";

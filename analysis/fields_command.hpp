@@ -3,6 +3,8 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
+#include <string>
 #include <vector>
 
 #include "figure_switch.hpp"
@@ -17,6 +19,9 @@ struct FieldsCommandOptions {
   // The run directory the caller has claimed already (`granshock run` analysing its own
   // run at its end): written under the caller's lock instead of taking it again.
   const RunDirectory* held = nullptr;
+  // Where the warning lines go (`granshock run`: its log, stderr and log.txt); stderr when
+  // empty.
+  std::function<void(const std::string&)> say = nullptr;
 };
 
 // For each run directory DIR: reads DIR/run.h5, writes fields.h5, fields.xmf,

@@ -578,7 +578,8 @@ void BowShockRun::analyse() {
   const ExitAtInterrupt at_signal("granshock: interrupted during the field analysis; " + complete);
   try {
     fields_command({dir_}, {},
-                   FieldsCommandOptions{options_.figures, options_.quiet, &*run_directory_});
+                   FieldsCommandOptions{options_.figures, options_.quiet, &*run_directory_,
+                                        [this](const std::string& line) { log_.say(line); }});
   } catch (const UserError& e) {
     throw UserError(fmt::format("{}; {}", e.what(), complete));
   }
