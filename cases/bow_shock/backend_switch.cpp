@@ -59,8 +59,8 @@ void BackendSwitch::decide(double tried_rate) {
     settled_ = current_;
     ++switches_;
     reference_rate_ = tried_rate;
-    // The load that made the change may lift soon: look again after the first gap.
-    gap_s_ = policy_.first_gap_s;
+    // The load that made the change may lift soon: look again after a short gap.
+    gap_s_ = policy_.gap_after_move_s;
   } else {
     current_ = settled_;
     reference_rate_ = settled_rate_;

@@ -18,6 +18,10 @@ struct BackendSwitchPolicy {
                                 // one thread costs about half of it
   double first_gap_s = 0.5;     // the first try of the other backend, after this long
   double longest_gap_s = 60.0;  // the gaps between tries double up to this
+  // After a move the first try of the backend left comes after this long: the load that
+  // made the move may lift, but each try of collapsed threads costs a try window and two
+  // moves, so they are not tried as early as at the start.
+  double gap_after_move_s = 2.0;
   // The settled backend's rate falling below this share of its rate when it was last
   // compared (or the best since) is a sign of new load: the other backend is tried at once.
   double drop = 0.6;
