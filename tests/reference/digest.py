@@ -50,6 +50,9 @@ def main(run_dir):
                 digest["fields"][path] = fingerprint(f[path][()])
     with open(f"{run_dir}/summary.json") as f:
         summary = json.load(f)
+    # A warning about the run's data names its directory, which is the machine's: RUN.
+    if isinstance(summary.get("warnings"), list):
+        summary["warnings"] = [w.replace(str(run_dir), "RUN") for w in summary["warnings"]]
     digest["summary"] = {k: v for k, v in sorted(summary.items()) if k not in MACHINE_KEYS}
     json.dump(digest, sys.stdout, indent=1, sort_keys=True)
     sys.stdout.write("\n")
