@@ -43,11 +43,10 @@ constexpr hsize_t kSeriesChunk = 256;
 // by a viewer) as a whole, so chunks never span frames. 16384 particles x 2 doubles is
 // 256 KiB, large enough for fast sequential I/O.
 constexpr hsize_t kParticleChunk = 16384;
-// Snapshots are stored byte-shuffled and gzip level 1 (0 = uncompressed). Measured for
-// 100k particles in 2-D (random positions, thermal velocities; docs/output_format.md):
-// none 7 ms and 4.6 MB per snapshot, shuffle+gzip-1 130 ms and 3.0 MB. Compression also
+// Snapshots are stored byte-shuffled and gzip level 1 (0 = uncompressed): a third smaller
+// for a few times the write time (docs/output_format.md, "Storage"). Compression also
 // keeps small runs small: a frame's last chunk is padded with fill values up to the
-// chunk size, 0.66 MB for a 1000-particle frame uncompressed, 0.04 MB compressed.
+// chunk size, and the padding compresses to almost nothing.
 constexpr unsigned kSnapshotDeflate = 1;
 
 constexpr double kFloatFill = std::numeric_limits<double>::quiet_NaN();
@@ -771,10 +770,9 @@ void RunFile::complete_snapshot(long frame, long step, double time, long total) 
   });
 }
 
-// Measured on 2 processes (docs/scaling.md, "Output"): collective / gathered 1.5 at
-// 16,000 particles, 1.07 at 24,000, 0.88 at 31,600, 0.8 at 40,000 (medians over repeated
-// runs). From one and a half chunks on, the second chunk is large enough for the
-// processes to share the compression.
+// docs/scaling.md, "Output: gathered or collective": from one and a half chunks on, the
+// second chunk is large enough for the processes to share the compression: writing
+// collectively then breaks even with gathering to rank 0, and wins above.
 bool RunFile::collective_pays(long total) {
   return total >= long(3 * kParticleChunk / 2);
 }

@@ -37,9 +37,9 @@ struct CylinderShape {
       return g;
     }
 
-    // Forced inline, like every per-pair or per-particle function of the force kernel:
-    // GCC 12 outlined this one, and the call (its arguments passed through the stack) took
-    // a quarter of a step of the default scene (perf; docs/benchmarks.md).
+    // Forced inline, like every per-pair or per-particle function of the force kernel: an
+    // outlined call here was a large share of a step (docs/benchmarks.md, "Old against
+    // new: the restructuring, and inlining"; cli.force_kernel_helpers_are_inlined checks it).
     // A particle of radius r at x touches the surface when its distance from the axis is
     // below r + R: then dn = r + R - |x - x_c| and n is the radial unit vector.
     KOKKOS_FORCEINLINE_FUNCTION bool touches(const Vec<Dim, Position>& x, Real r, Real& dn,

@@ -1,6 +1,6 @@
 // Domain decomposition in slabs of cell rows along x or y (docs/parallel.md): the exchange
-// half of the communication seam for several processes (particle_exchange.hpp is the
-// one-process half). A "row" here is a layer of cells along the slab axis: a row of the
+// half of the communication seam for several processes (communicator.hpp moves the
+// bytes; population.hpp inserts and deletes across ranks). A "row" here is a layer of cells along the slab axis: a row of the
 // grid for slabs along y, a column for slabs along x. At each list rebuild, particles whose
 // row belongs to another slab migrate to it, and each slab sends its lowest and highest
 // rows to the slabs below and above as ghosts, appended after the owned particles. A row

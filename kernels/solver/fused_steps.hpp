@@ -19,10 +19,9 @@
 
 namespace granshock {
 
-// Regions of many steps pay where a step is short. Measured on 2 threads (gas,
-// docs/benchmarks.md, "Many steps per region"): 2.0x at 1,000 particles, 1.12x at 4,000,
-// 0.90-1.0x at 32,000, where the host team's reduction costs more than the region it
-// saves. Above this many particles per thread the solver keeps one region per step.
+// Regions of many steps pay where a step is short; where the host team's reduction costs
+// more than the region it saves they do not (docs/benchmarks.md, "Many steps per region").
+// Above this many particles per thread the solver keeps one region per step.
 constexpr int step_regions_particles_per_thread = 8192;
 
 template <class V, class ExecSpace, class Paths = DefaultPaths<ExecSpace>>

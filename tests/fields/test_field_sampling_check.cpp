@@ -64,7 +64,7 @@ TEST(FieldSamplingCheck, BinsSmallerThanAParticle) {
 }
 
 TEST(FieldSamplingCheck, TooFewBinsAcrossTheDomainOrTheObstacle) {
-  // Defect 2 of the field-analysis issue: one bin of 1000 d.
+  // One bin of 1000 d (docs/fields.md, the sampling check).
   expect_refused({"numerics.bin_size=1000 d"},
                  {"numerics.bin_size = 1000 d", "bins across the domain", "domain.width = 150 d",
                   "at least 3", "numerics.bin_size <= 50 d"});
@@ -89,7 +89,7 @@ TEST(FieldSamplingCheck, TooFewRowsBetweenTheStripAndTheObstacle) {
 
 // Exactly at a limit is enough: 5 d between the strip and a surface at 19 d - 12 d, in
 // bins of 1 d, is 0.005 / 0.001 m = 4.999... in binary and was refused (found by the
-// inflow tests of the data-safety issue).
+// inflow tests).
 TEST(FieldSamplingCheck, ALimitMetExactlyInUnitsOfDPasses) {
   EXPECT_EQ(refusal(default_scene({"obstacle.centre=[\"75 d\", \"19 d\"]", "obstacle.diameter=24 d",
                                    "numerics.bin_size=1 d"})),
@@ -106,7 +106,7 @@ TEST(FieldSamplingCheck, BinSumsBeyondTheMemoryCap) {
 }
 
 TEST(FieldSamplingCheck, TooFewSamplesInTheProductionWindow) {
-  // Defect 1 of the field-analysis issue: one sample in the window.
+  // One sample in the window (docs/fields.md, the sampling check).
   expect_refused({"output.sample_every=1000000000"},
                  {"output.sample_every = 1000000000", "[time.production_start, time.duration]",
                   "holds 1 field samples", "output.blocks = 10 need at least 100 (10 per block)",

@@ -1,4 +1,4 @@
-// Test (5) of the field-analysis issue: `granshock fields` on small synthetic run
+// docs/fields.md: `granshock fields` on small synthetic run
 // directories writes fields.h5, a fields.xmf whose every data item points at an existing
 // dataset of the declared shape, the figures (PNG) and the summary keys; several
 // directories also give the detachment table and figure (the paper's Fig. 6); bad input

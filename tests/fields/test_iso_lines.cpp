@@ -1,4 +1,4 @@
-// Test (3a) of the field-analysis issue: the sonic line of an analytic Mach field Ma = r/r0,
+// docs/fields.md: the sonic line of an analytic Mach field Ma = r/r0,
 // sampled on bin centres, is found within a tenth of a bin of r = r0 by marching squares;
 // masked (NaN) bins break the line.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Test (3b, 3c) of the field-analysis issue: the shock front and the detachment length of
+// docs/fields.md: the shock front and the detachment length of
 // a synthetic phi field with a known step are found within one bin, the far-field angle of
 // a straight oblique front is recovered, and the uncertainty of delta from block averages
 // shrinks as blocks are added.

@@ -1,4 +1,4 @@
-// Test (2) of the field-analysis issue: the sound speed of the paper's eq. 6 against a hand
+// docs/fields.md: the sound speed of the paper's eq. 6 against a hand
 // calculation at phi = 0.1, 0.3, 0.5 for e = 0.5 in 2-D, for both masses of eq. 7, through
 // the kinetic-theory functions and through the field computation of a bin.
 #include <gtest/gtest.h>

@@ -216,7 +216,7 @@ TEST(CheckpointChecks, StateAgainstTheSolver) {
          x.s.history_spring[0] = 0;
        },
        "lacks particle 1"},
-      // Issue 11, the extremes: particles overlapping by 0.3 d, and a centre inside the
+      // docs/stability.md, the extremes: particles overlapping by 0.3 d, and a centre inside the
       // obstacle, are states the solver cannot have made.
       {"overlap past the contact law's range", [](Sample& x) { x.s.position[2] = 0.0107; },
        "particles 0 and 1 overlap by 0.3 of a diameter, past the contact law's range (0.2)"},

@@ -1,4 +1,4 @@
-// Test 5 of the foundation issue: an oblique impact of a steel sphere on the fixed
+// docs/contact_model.md: an oblique impact of a steel sphere on the fixed
 // aluminium cylinder with Coulomb friction mu = 0.3 (limit_force on, so Fn >= 0 and the
 // Coulomb bound mu |Fn| integrates to mu times the normal impulse).
 //  - Sliding regime (v_t/v_n = 4, above the gross-slip threshold

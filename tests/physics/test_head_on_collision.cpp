@@ -1,4 +1,4 @@
-// Test 1 of the foundation issue: head-on impacts through the solver's kernels
+// docs/contact_model.md: head-on impacts through the solver's kernels
 // (`granshock collide`) against an independent, high-accuracy integration of the same
 // contact law written here (classical RK4 with 20 000 steps per contact, not the
 // solver's force function). Effective restitution within 0.5 % of e, contact duration
@@ -112,7 +112,7 @@ TEST(HeadOnCollisionSinglePrecision, RestitutionWithinHalfAPercent) {
 
 }  // namespace
 
-// Issue 11: contact.softening divides every Young's modulus. Hertz theory (Johnson, Contact
+// docs/contact_model.md: contact.softening divides every Young's modulus. Hertz theory (Johnson, Contact
 // Mechanics, eq. 11.24) makes the collision time and the peak overlap grow as
 // softening^(2/5) and keeps the restitution: measured through the solver's kernels at
 // dt = t_c/100 of each setting, for a particle pair and a particle against the (fallback

@@ -1,4 +1,4 @@
-// Stability at the extremes (issue 11, part 4; docs/stability.md): every case of the
+// Stability at the extremes (docs/stability.md): every case of the
 // matrix ends either in a correct run (no NaN, mass balance at every row, energy bounded by
 // what the inflow brings, the flow upstream still the inflow) or in a diagnosis with its
 // exit code (UserError: 2, NumericalFailure: 4), never in silent garbage. The scene is the
@@ -166,7 +166,7 @@ TEST_P(ExtremesMatrix, EndsCorrectOrWithADiagnosis) {
 // The guard's stable limit for this scene is 7.47e-7 s (steel-steel at the fastest impact,
 // 2.8 m/s; t_c = 2.45e-6 s).
 INSTANTIATE_TEST_SUITE_P(
-    Issue11, ExtremesMatrix,
+    Stability, ExtremesMatrix,
     ::testing::Values(
         Extreme{"dt_0_9_stable", {}, 0.9, false, Outcome::correct_with_note, "lose accuracy"},
         Extreme{"dt_1_1_stable_forced",

@@ -1,4 +1,4 @@
-// Test 1 of the bow-shock issue: the inflow reproduces the requested upstream state.
+// docs/scene_format.md, [inflow]: the inflow reproduces the requested upstream state.
 // A channel without obstacle, e = 1 (elastic, so the gas does not cool between the strip
 // and the measurement region and the requested temperature is the reference), 400 d
 // wide so that the statistics are good to ~1 %. In the first two 3 d bin rows downstream
@@ -77,7 +77,7 @@ TEST(Inflow, ReproducesTheUpstreamState) {
   EXPECT_NEAR(count[1] / particles, 0.5, 0.05 * 0.5);
 }
 
-// The data-safety issue: what the inflow asks for must be insertable. A channel 100 d wide
+// docs/scene_format.md: what the inflow asks for must be insertable. A channel 100 d wide
 // fed by the inflow for 0.02 s (50 batches): at the scene limit kMaxInflowAreaFraction
 // (0.4) the inflow inserts what it requests within 3 %; far above it, insertion saturates
 // near an area fraction of 0.42 (the value docs/scene_format.md and core/scene.hpp state),

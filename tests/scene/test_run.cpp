@@ -1,4 +1,4 @@
-// `granshock run` end to end (tests 2-4 and 6 of the bow-shock issue): mass balance,
+// `granshock run` end to end (docs/output_format.md, docs/scene_format.md): mass balance,
 // bitwise resume, bad input leaving no output, and the default scene's bow shock.
 #include <gtest/gtest.h>
 
@@ -96,7 +96,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadRun{"dt_past_stable_limit", {"time.dt=5e-6"}, "past the stable limit"},
         BadRun{"unknown_key", {"time.dtt=1"}, "unknown key"},
         BadRun{"phi_out_of_range", {"inflow.area_fraction=0.8"}, "must be in (0, 0.4]"},
-        // Untrusted-input issue: counts that overflowed.
+        // Untrusted input (docs/scene_format.md): counts that overflowed.
         BadRun{
             "duration_overflows_steps", {"time.duration=1e13"}, "5e+19 steps, more than the 1e+12"},
         BadRun{"dt_tiny", {"time.dt=1e-30"}, "steps, more than the 1e+12"},
@@ -126,7 +126,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadRun{"blocks_beyond_limit", {"output.blocks=1000000000"}, "must be at most 10000"},
         BadRun{
             "unknown_restitution_mode", {"contact.restitution_mode=\"exact\""}, "restitution_mode"},
-        // Issue 11: a step the guard accepts (at the fastest impact, 2.8 m/s) but at
+        // docs/stability.md: a step the guard accepts (at the fastest impact, 2.8 m/s) but at
         // which no damping returns e = 0.01 for impacts at 50 m/s (dt/t_c = 0.36).
         BadRun{"discrete_restitution_unreachable",
                {"contact.restitution_mode=\"discrete\"", "contact.restitution=0.01",
@@ -134,7 +134,7 @@ INSTANTIATE_TEST_SUITE_P(
                "no damping makes the steel-steel pair return e = 0.01"}),
     [](const auto& param_info) { return std::string(param_info.param.name); });
 
-// Issue 11: contact.restitution_mode = "discrete" calibrates every pair at the run's dt,
+// docs/contact_model.md: contact.restitution_mode = "discrete" calibrates every pair at the run's dt,
 // reports it in summary.json, changes the trajectory (the kernels run with the calibrated
 // damping) and resumes bitwise (the calibration is a pure function of the scene).
 TEST(RunDiscreteRestitution, CalibratedReportedUsedAndResumedBitwise) {
@@ -244,7 +244,7 @@ TEST(RunStability, ForcedUnstableStepStopsWithADiagnosis) {
   }
 }
 
-// The data-safety issue: an inflow that cannot be met is reported, not carried forward
+// docs/stability.md: an inflow that cannot be met is reported, not carried forward
 // without end. phi_inf = 0.4 (the limit) into a 30 d channel nearly closed by a cylinder
 // of 26 d, e = 0.2: the particles it stops pile up into the strip, and the narrow gaps
 // beside it cannot take the prefill. summary.json tells requested, inserted, backlog and

@@ -1,4 +1,4 @@
-// The run directory belongs to the user unless granshock marked it (data-safety issue):
+// The run directory belongs to the user unless granshock marked it (docs/output_format.md):
 // --overwrite removes only what a run writes, only where granshock's marker is; an
 // unmarked directory that is not empty is refused and left untouched; a running run
 // holds a lock; --resume follows the same rules.

@@ -105,12 +105,12 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"phi_too_high",
                  {"inflow.area_fraction=0.7"},
                  "'inflow.area_fraction' = 0.7: must be in (0, 0.4]"},
-        // The data-safety issue: 0.69 ran silently at phi 0.21; the limit names its source.
+        // docs/scene_format.md: 0.69 ran silently at phi 0.21; the limit names its source.
         BadInput{"phi_not_insertable",
                  {"inflow.area_fraction=0.69"},
                  "random sequential adsorption of discs jams at 0.547"},
         BadInput{"phi_zero", {"inflow.area_fraction=0"}, "'inflow.area_fraction' = 0: must be > 0"},
-        // Untrusted-input issue: a scene name is used as a path.
+        // Untrusted input (docs/scene_format.md): a scene name is used as a path.
         BadInput{
             "name_escapes", {"scene.name=\"../../victim\""}, "'scene.name' = \"../../victim\""},
         BadInput{"name_absolute", {"scene.name=\"/tmp/victim\""}, "must be 1 to 64 characters"},

@@ -1,4 +1,4 @@
-// Fuzzing the scene checks of `granshock run --dry-run` (data-safety issue): mutated copies
+// Fuzzing the scene checks of `granshock run --dry-run` (docs/scene_format.md): mutated copies
 // of the shipped scenes (deleted, duplicated and swapped lines, truncations, random bytes,
 // extreme values) must each be accepted or refused with one UserError, never end in
 // another exception, a crash or a hang, and never write a file. The seed is fixed, so a

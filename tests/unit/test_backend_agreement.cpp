@@ -1,4 +1,4 @@
-// Test 6 of the foundation issue: the OpenMP backend with 2 threads and the Serial
+// docs/design.md: the OpenMP backend with 2 threads and the Serial
 // backend give bitwise identical trajectories; and the fused step gives those of the
 // separate velocity-Verlet halves. Why bitwise is possible: every particle
 // sums its own forces over a full neighbour list in a fixed order (no atomics), cells

@@ -1,4 +1,4 @@
-// Field sampling on the device (issue "Field analysis", test 4): atomic, ScatterView and
+// Field sampling on the device (docs/fields.md): atomic, ScatterView and
 // row-owner accumulation equal a serial reference accumulation on the host; row owners
 // give bitwise the same sums with 1 and 2 threads. Counts are exact; the
 // velocity moments and the contact virial agree to round-off (summation order differs),

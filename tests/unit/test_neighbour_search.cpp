@@ -1,4 +1,4 @@
-// Test 4 of the foundation issue: the contacts the solver finds through its cell list
+// docs/design.md: the contacts the solver finds through its cell list
 // and Verlet list equal those of a brute-force O(N^2) search with minimum-image
 // periodic distances, for dilute and dense random configurations, with particles on
 // and across the periodic boundaries, two particle sizes, and while particles move

@@ -1,4 +1,4 @@
-// Test 7 of the foundation issue: the time-step guard warns past t_c/10, refuses a dt
+// docs/stability.md: the time-step guard warns past t_c/10, refuses a dt
 // past the stable limit with a message naming t_c and a safe dt, and --force overrides.
 #include <gtest/gtest.h>
 
