@@ -109,10 +109,8 @@ void check_samples(const Scene& s) {
                                    s.run.blocks, needed, Limits::samples_per_block,
                                    std::max(1L, long(window / s.setup.dt / double(needed)))));
   // Particles an upstream grid bin counts per sample at phi_inf.
-  double disk = 0;
-  for (std::size_t a = 0; a < s.setup.species.size(); ++a)
-    disk += s.inflow.number_fraction[a] * M_PI * std::pow(s.setup.species[a].diameter_m, 2) / 4;
-  const double per_sample = s.inflow.area_fraction * s.bin_size_m * s.bin_size_m / disk;
+  const double per_sample =
+      s.inflow.area_fraction * s.bin_size_m * s.bin_size_m / s.mean_particle_area();
   const double expected = per_sample * double(samples);
   if (expected < Limits::upstream_particle_samples)
     throw UserError(

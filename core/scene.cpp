@@ -30,17 +30,25 @@ double Scene::mean_restitution() const {
   return e;
 }
 
-double Scene::expected_particles() const {
-  double disk = 0;
+double Scene::mean_particle_area() const {
+  double area = 0;
   for (std::size_t a = 0; a < setup.species.size(); ++a)
-    disk += inflow.number_fraction[a] * M_PI * std::pow(setup.species[a].diameter_m, 2) / 4;
+    area += inflow.number_fraction[a] * M_PI * std::pow(setup.species[a].diameter_m, 2) / 4;
+  return area;
+}
+
+double Scene::inflow_number_density() const {
+  return inflow.area_fraction / mean_particle_area();
+}
+
+double Scene::capacity_unbounded() const {
   const double area = setup.box.length(0) * setup.box.length(1);
-  return 1.5 * inflow.area_fraction * area / disk + 1024;
+  return 1.5 * inflow.area_fraction * area / mean_particle_area() + 1024;
 }
 
 std::size_t Scene::capacity_estimate() const {
   // Bounded so that the conversion is defined; run_checks.cpp refuses scenes near it.
-  return std::size_t(std::min(expected_particles(), 1e15));
+  return std::size_t(std::min(capacity_unbounded(), 1e15));
 }
 
 MachReference parse_mach_reference(const std::string& name) {

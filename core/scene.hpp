@@ -68,10 +68,15 @@ struct Scene {
   // Particles expected in the domain: phi_inf over the area, plus a margin for the
   // dense region in front of the obstacle; the solver's initial capacity.
   std::size_t capacity_estimate() const;
-  double expected_particles() const;  // the same estimate, unrounded and unbounded
+  double capacity_unbounded() const;  // the same estimate, unrounded and unbounded
   // Mean particle mass and the restitution used in the sound speed.
   double mean_mass() const;
   double mean_restitution() const;
+  // The mean particle's area in the plane (pi d^2 / 4), by number fraction: phi_inf over
+  // it is the number of particles per unit area upstream.
+  double mean_particle_area() const;
+  // Particles per unit area upstream, n_inf = phi_inf / mean_particle_area().
+  double inflow_number_density() const;
 };
 
 // Computes inflow.sigma from the given sigma or from target_mach (docs/fields.md).

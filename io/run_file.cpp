@@ -11,6 +11,7 @@
 #include <random>
 #include <stdexcept>
 #include <system_error>
+#include <type_traits>
 #include <utility>
 
 #include "failure_agreement.hpp"
@@ -294,19 +295,19 @@ int read_dim(hid_t file) {
   return h5::read_attribute<int>(box.get(), "dimension");
 }
 
-struct ObservableSpec {
-  const char* name;
-  bool integer;
-  const char* unit;
-};
-
-// The /observables series, one per TimeSeriesRow field (time_series.hpp).
-constexpr ObservableSpec kObservableSpecs[] = {
-    {"particles", true, nullptr},     {"kinetic_energy", false, "J"},
-    {"temperature", false, "J"},      {"contacts", true, nullptr},
-    {"inserted", true, nullptr},      {"deleted_outlet", true, nullptr},
-    {"deleted_inlet", true, nullptr},
-};
+// The /observables series, one per TimeSeriesRow field (core/time_series.hpp): calls
+// visit(name, value, unit) for each, "particles" last (its step marks a row as complete:
+// series_end reads it). The one list of them, for creating and for appending.
+template <class Visit>
+void for_each_observable(const TimeSeriesRow& row, Visit&& visit) {
+  visit("kinetic_energy", row.kinetic_energy, "J");
+  visit("temperature", row.temperature, "J");
+  visit("contacts", row.contacts, nullptr);
+  visit("inserted", row.inserted, nullptr);
+  visit("deleted_outlet", row.deleted_outlet, nullptr);
+  visit("deleted_inlet", row.deleted_inlet, nullptr);
+  visit("particles", row.particles, nullptr);
+}
 
 // Opens the object at `path` (group or dataset) for attributes, creating a group when
 // nothing is there yet.
@@ -471,11 +472,12 @@ void write_layout(hid_t f, const std::string& scene_toml_as_given,
   }
   create_time_element(f, all + "/count", H5T_STD_I64LE, {}, nullptr, H5T_NATIVE_LONG, nullptr);
 
-  for (const ObservableSpec& spec : kObservableSpecs) {
-    create_time_element(f, std::string(kObservables) + "/" + spec.name,
-                        spec.integer ? H5T_STD_I64LE : H5T_IEEE_F64LE, {}, nullptr,
-                        H5T_NATIVE_DOUBLE, spec.unit);
-  }
+  for_each_observable(TimeSeriesRow{}, [&](const char* name, auto value, const char* unit) {
+    const bool integer = std::is_integral_v<decltype(value)>;
+    create_time_element(f, std::string(kObservables) + "/" + name,
+                        integer ? H5T_STD_I64LE : H5T_IEEE_F64LE, {}, nullptr, H5T_NATIVE_DOUBLE,
+                        unit);
+  });
   h5::check(H5Fflush(f, H5F_SCOPE_GLOBAL), "flushing");
 }
 
@@ -832,20 +834,9 @@ void RunFile::append_time_series(const TimeSeriesRow& row) {
     const SeriesEnd end = series_end(f, root + "/particles");
     require_increasing(end, row.step, "time-series row");
     const hsize_t index = end.entries;
-    auto put_long = [&](const char* name, long value) {
-      append_scalar<long>(f, root + "/" + name, index, row.step, row.time, value);
-    };
-    auto put_double = [&](const char* name, double value) {
-      append_scalar<double>(f, root + "/" + name, index, row.step, row.time, value);
-    };
-    // "particles" last: its step marks the row as complete (series_end reads it).
-    put_double("kinetic_energy", row.kinetic_energy);
-    put_double("temperature", row.temperature);
-    put_long("contacts", row.contacts);
-    put_long("inserted", row.inserted);
-    put_long("deleted_outlet", row.deleted_outlet);
-    put_long("deleted_inlet", row.deleted_inlet);
-    put_long("particles", row.particles);
+    for_each_observable(row, [&](const char* name, auto value, const char*) {
+      append_scalar<decltype(value)>(f, root + "/" + name, index, row.step, row.time, value);
+    });
   });
 }
 

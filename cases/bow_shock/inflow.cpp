@@ -13,11 +13,7 @@ InflowController::InflowController(const Scene& scene) : scene_(scene) {
   // The strip length actually swept between batches (the period is a whole number of
   // steps), so the rate n_inf U W is met exactly.
   const double swept = period_steps_ * scene.setup.dt * in.speed_m_per_s;
-  double mean_disk_area = 0;
-  for (std::size_t a = 0; a < scene.setup.species.size(); ++a)
-    mean_disk_area +=
-        in.number_fraction[a] * M_PI * std::pow(scene.setup.species[a].diameter_m, 2) / 4;
-  per_batch_ = in.area_fraction * scene.setup.box.length(0) * swept / mean_disk_area;
+  per_batch_ = in.area_fraction * scene.setup.box.length(0) * swept / scene.mean_particle_area();
 }
 
 double InflowController::requested() const {

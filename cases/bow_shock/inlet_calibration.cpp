@@ -34,11 +34,7 @@ Scene inlet_channel(const Scene& s, double sigma) {
   c.inflow.sigma = sigma;
   c.inflow.sigma_m_per_s = sigma;
 
-  double disk = 0;
-  for (std::size_t a = 0; a < s.setup.species.size(); ++a)
-    disk += s.inflow.number_fraction[a] * M_PI * std::pow(s.setup.species[a].diameter_m, 2) / 4;
-  const double flux =
-      s.inflow.area_fraction / disk * c.setup.box.length(0) * s.inflow.speed_m_per_s;
+  const double flux = s.inflow_number_density() * c.setup.box.length(0) * s.inflow.speed_m_per_s;
   // Prefilled, the channel is developed after one transit; two make sure.
   const double spin_up = 2 * c.setup.box.length(1) / s.inflow.speed_m_per_s;
   c.run.production_start_s = spin_up;

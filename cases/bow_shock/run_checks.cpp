@@ -45,12 +45,9 @@ OverlapAssessment assess_overlap(const Scene& s) {
 }
 
 double expected_insertions(const Scene& s) {
-  double disk = 0;
-  for (std::size_t a = 0; a < s.setup.species.size(); ++a)
-    disk += s.inflow.number_fraction[a] * M_PI * std::pow(s.setup.species[a].diameter_m, 2) / 4;
   const double width = s.setup.box.length(0);
   const double streamwise = s.setup.box.length(1) + s.inflow.speed_m_per_s * s.run.duration_s;
-  return s.inflow.area_fraction * width * streamwise / disk;
+  return s.inflow.area_fraction * width * streamwise / s.mean_particle_area();
 }
 
 std::vector<std::string> check_scene_before_run(const Scene& s, bool force, int processes) {
@@ -76,11 +73,11 @@ std::vector<std::string> check_scene_before_run(const Scene& s, bool force, int 
     refuse_count("output.checkpoint_interval", s.run.duration_s / s.run.checkpoint_interval_s,
                  "write a checkpoint", RunLimits::max_checkpoints);
 
-  if (!(s.expected_particles() <= RunLimits::max_particles))
+  if (!(s.capacity_unbounded() <= RunLimits::max_particles))
     throw UserError(fmt::format(
         "scene keys 'domain.width' x 'domain.length' at 'inflow.area_fraction' = {:g}: about "
         "{:.3g} particles, more than the {:.3g} one process holds",
-        s.inflow.area_fraction, s.expected_particles(), RunLimits::max_particles));
+        s.inflow.area_fraction, s.capacity_unbounded(), RunLimits::max_particles));
   const double range = s.setup.max_diameter() + s.setup.skin();
   const double cells = (s.setup.box.length(0) / range) * (s.setup.box.length(1) / range);
   if (!(cells <= RunLimits::max_cells))

@@ -8,9 +8,7 @@
 namespace granshock {
 
 double expected_particles(const Scene& s) {
-  double disk = 0;  // the mean particle's area, by number
-  for (std::size_t a = 0; a < s.setup.species.size(); ++a)
-    disk += s.inflow.number_fraction[a] * M_PI * std::pow(s.setup.species[a].diameter_m, 2) / 4;
+  const double disk = s.mean_particle_area();
   double free_area = s.setup.box.length(0) * s.setup.box.length(1);
   if (s.setup.obstacle) free_area -= M_PI * std::pow(s.setup.obstacle->diameter_m, 2) / 4;
   return disk > 0 ? s.inflow.area_fraction * std::max(0.0, free_area) / disk : 0.0;

@@ -7,6 +7,7 @@
 
 #include "models/models.hpp"
 #include "models/time_step_guard.hpp"
+#include "solver/kick.hpp"
 #include "user_error.hpp"
 
 namespace granshock {
@@ -33,10 +34,10 @@ double one_impact(const PairProperties& p, const ContactOptions& o, double dt, d
   const double t_c = Model::collision_time(p, o, speed);
   const long max_steps = long(kStickingContacts * t_c / dt) + 100;
   for (long step = 0; step < max_steps; ++step) {
-    rate += half * force * inv_m;
+    half_kick(rate, half, force, inv_m, 0.0);
     gap += dt * rate;
     force = gap < 0 ? Model::normal(c, -gap, rate).force : 0.0;
-    rate += half * force * inv_m;
+    half_kick(rate, half, force, inv_m, 0.0);
     if (gap < 0) touched = true;
     if (touched && gap >= 0) return rate / speed;
   }

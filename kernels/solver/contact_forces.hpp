@@ -99,9 +99,7 @@ struct ContactForceKernel {
             Vec<2, Real> xi_t = Vec<2, Real>::zero();
             if (slot >= 0)
               xi_t = {{p.history_spring(i, Dim * slot), p.history_spring(i, Dim * slot + 1)}};
-            const auto spring = Model::tangential(c, normal);
-            const Vec<2, Real> ft =
-                tangential_force(spring.kt, spring.gt, c.friction, normal.force, n, vc, dt, xi_t);
+            const Vec<2, Real> ft = friction(c, normal, n, vc, xi_t);
             if constexpr (Mode == ForceMode::forces) {
               if (slot >= 0) {
                 p.history_spring(i, Dim * slot) = xi_t[0];
@@ -116,6 +114,16 @@ struct ContactForceKernel {
             for (int a = 0; a < Dim; ++a)
               for (int b = 0; b < Dim; ++b) w[a * Dim + b] += Real(0.5) * dx[a] * pair_force[b];
         });
+  }
+
+  // The tangential force of a contact with normal force `normal` (docs/contact_model.md,
+  // "Tangential force"); advances the spring xi_t.
+  template <class Coefficients, class Normal>
+  KOKKOS_FORCEINLINE_FUNCTION Vec<2, Real> friction(const Coefficients& c, const Normal& normal,
+                                                    const Vec<Dim, Real>& n, const Vec<2, Real>& vc,
+                                                    Vec<2, Real>& xi_t) const {
+    const auto spring = Model::tangential(c, normal);
+    return tangential_force(spring.kt, spring.gt, c.friction, normal.force, n, vc, dt, xi_t);
   }
 
   KOKKOS_FORCEINLINE_FUNCTION Vec<Dim, Real> velocity(int i) const {
@@ -142,9 +150,7 @@ struct ContactForceKernel {
     if constexpr (V::friction) {
       const Vec<2, Real> vc = contact_point_velocity(vi, n, ri * p.omega(i));
       Vec<2, Real> xi_t{{p.obstacle_spring(i, 0), p.obstacle_spring(i, 1)}};
-      const auto spring = Model::tangential(c, normal);
-      const Vec<2, Real> ft =
-          tangential_force(spring.kt, spring.gt, c.friction, normal.force, n, vc, dt, xi_t);
+      const Vec<2, Real> ft = friction(c, normal, n, vc, xi_t);
       p.obstacle_spring(i, 0) = xi_t[0];
       p.obstacle_spring(i, 1) = xi_t[1];
       force += ft;

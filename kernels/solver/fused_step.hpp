@@ -20,6 +20,7 @@
 
 #include "device/backends.hpp"
 #include "solver/contact_forces.hpp"
+#include "solver/kick.hpp"
 
 namespace granshock {
 
@@ -77,8 +78,8 @@ struct FusedStepKernel {
     Real d2 = 0;
     for (int d = 0; d < Dim; ++d) {
       Real v = vi[d];
-      v += half * (f[d] * im + g[d]);       // second half of this step
-      v += half * (f[d] * im + g[d]);       // first half of the next
+      half_kick(v, half, f[d], im, g[d]);   // second half of this step
+      half_kick(v, half, f[d], im, g[d]);   // first half of the next
       const Position x = xi[d] + step * v;  // the drift: a Real step onto a Position
       v_next(i, d) = v;
       x_next(i, d) = x;
@@ -92,8 +93,8 @@ struct FusedStepKernel {
     if constexpr (V::friction) {
       const Real ii = forces.table.inv_inertia(s);
       Real w = p.omega(i);
-      w += half * torque * ii;
-      w += half * torque * ii;
+      half_spin_kick(w, half, torque, ii);
+      half_spin_kick(w, half, torque, ii);
       omega_next(i) = w;
     }
     if (d2 > worst) worst = d2;

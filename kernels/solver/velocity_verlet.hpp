@@ -11,6 +11,7 @@
 #include "device/device_lambda.hpp"
 #include "device/vec.hpp"
 #include "particles/particle_store.hpp"
+#include "solver/kick.hpp"
 #include "solver/pair_table.hpp"
 
 namespace granshock {
@@ -47,12 +48,12 @@ struct VelocityVerlet {
           const Real im = inv_mass(s);
           Real d2 = 0;
           for (int d = 0; d < Dim; ++d) {
-            v(i, d) += half * (f(i, d) * im + g[d]);
+            half_kick(v(i, d), half, f(i, d), im, g[d]);
             x(i, d) += step * v(i, d);
             const Real moved = Real(x(i, d) - x_ref(i, d));
             d2 += moved * moved;
           }
-          if constexpr (V::friction) omega(i) += half * torque(i) * inv_inertia(s);
+          if constexpr (V::friction) half_spin_kick(omega(i), half, torque(i), inv_inertia(s));
           if (d2 > worst) worst = d2;
         },
         Kokkos::Max<Real>(max_d2));
@@ -90,8 +91,8 @@ struct VelocityVerlet {
           capture_before_if_constexpr(omega, torque, inv_inertia);
           const int s = species(i);
           const Real im = inv_mass(s);
-          for (int d = 0; d < Dim; ++d) v(i, d) += half * (f(i, d) * im + g[d]);
-          if constexpr (V::friction) omega(i) += half * torque(i) * inv_inertia(s);
+          for (int d = 0; d < Dim; ++d) half_kick(v(i, d), half, f(i, d), im, g[d]);
+          if constexpr (V::friction) half_spin_kick(omega(i), half, torque(i), inv_inertia(s));
         });
   }
 };

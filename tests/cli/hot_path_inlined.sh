@@ -1,17 +1,17 @@
 #!/usr/bin/env bash
 # The helpers the force kernel calls per particle or per pair (the obstacle's contact
 # test, the contact law, the pair loop, the tangential spring, the kernel's own helpers)
-# must be inlined into it: GCC once outlined the cylinder's `touches`, and the call cost a
-# quarter of a step of the default scene (docs/benchmarks.md, "Inlining"). They are
+# must be inlined into it: GCC once outlined the cylinder's `touches`, at a large cost
+# (docs/benchmarks.md, "Old against new: the restructuring, and inlining"). They are
 # KOKKOS_FORCEINLINE_FUNCTION; this test fails when an out-of-line copy of one of them
-# appears in the program. The same for the fused step's body (solver/fused_step.hpp) and
-# the force sum it calls: outlined, the step ran at 0.58 of its inlined speed. Usage: hot_path_inlined.sh GRANSHOCK
+# appears in the program. The same for the fused step's body (solver/fused_step.hpp), the
+# force sum and the kicks it calls. Usage: hot_path_inlined.sh GRANSHOCK
 set -euo pipefail
 program=$1
 pattern='::touches\(|::keeps_out\(|Model::normal<|Model::tangential<|::for_each_contact<|'
-pattern+='ContactForceKernel<.*>::(velocity|obstacle_contact|claim_slot|find_slot|release_unused_slots|total|sum_contacts)\(|'
+pattern+='ContactForceKernel<.*>::(velocity|obstacle_contact|claim_slot|find_slot|release_unused_slots|total|sum_contacts|friction)\(|'
 pattern+='FusedStepKernel<.*>::operator\(\)|'
-pattern+='tangential_force<|contact_point_velocity<|contact_torque<'
+pattern+='tangential_force<|contact_point_velocity<|contact_torque<|half_kick<|half_spin_kick<'
 # The per-contact lambda of sum_contacts is left out: with friction GCC outlines it (a
 # call per touching pair, not per partner; it was so before the fused step as well).
 outlined=$(nm -C "$program" | grep -E ' [tTwW] ' | grep -E "$pattern" | grep -v '::{lambda' || true)
