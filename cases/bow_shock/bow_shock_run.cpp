@@ -387,7 +387,7 @@ void BowShockRun::read_checkpoint_and_check() {
   if (!fixed.empty()) {
     throw UserError(fmt::format(
         "--resume: scene key{} {} differ{} from the run in '{}'; resume with the same scene "
-        "file and --set options (docs/scene_format.md, \"Resume\": only time.duration and "
+        "file and --set options (docs/scene_format.md, \"Resuming\": only time.duration and "
         "time.production_start may change)",
         fixed.size() == 1 ? "" : "s", fmt::join(fixed, ", "), fixed.size() == 1 ? "s" : "",
         dir_.string()));

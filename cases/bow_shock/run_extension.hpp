@@ -1,5 +1,5 @@
 // What a --resume may change of the scene its checkpoint ran (docs/scene_format.md,
-// "Resume"): the run's end (time.duration) and its production window
+// "Extending a run"): the run's end (time.duration) and its production window
 // (time.production_start), as long as the checkpoint's field sums stay exactly those an
 // uninterrupted run of the new scene holds at the checkpoint's step. The resumed run then
 // continues bitwise as that run. Every other key must be the checkpoint's. The changes are

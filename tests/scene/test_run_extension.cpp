@@ -1,7 +1,7 @@
 // A resume that lengthens the run or moves its production window (docs/scene_format.md,
-// "Resume"): the extended run equals an uninterrupted run of the longer scene bit for bit,
-// and every change that could not continue it is refused in one line, the run directory
-// left as it was.
+// "Extending a run"): the extended run equals an uninterrupted run of the longer scene
+// bit for bit, and every change that could not continue it is refused in one line, the
+// run directory left as it was.
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
