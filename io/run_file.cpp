@@ -884,6 +884,21 @@ std::string RunFile::scene_resolved() const {
       path_, "reading", [&] { return h5::read_string_dataset(file_.get(), "/scene/resolved"); });
 }
 
+void RunFile::replace_scene(const std::string& scene_toml_as_given,
+                            const std::string& scene_toml_resolved) {
+  make_room(run_growth::whole_dataset(scene_toml_as_given.size()) +
+                run_growth::whole_dataset(scene_toml_resolved.size()),
+            "the scene");
+  h5::naming_file_in_errors(path_, "writing", [&] {
+    h5::write_string_dataset(file_.get(), "/scene/as_given", scene_toml_as_given);
+    h5::write_string_dataset(file_.get(), "/scene/resolved", scene_toml_resolved);
+  });
+}
+
+bool RunFile::has(const std::string& path) const {
+  return h5::naming_file_in_errors(path_, "reading", [&] { return h5::exists(file_.get(), path); });
+}
+
 void RunFile::write_attribute(const std::string& object, const std::string& name, double value) {
   make_room(run_growth::attribute(sizeof value), "an attribute");
   h5::naming_file_in_errors(path_, "writing", [&] {

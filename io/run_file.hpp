@@ -116,6 +116,12 @@ class RunFile {
 
   std::string scene_as_given() const;
   std::string scene_resolved() const;
+  // A resume that changes the scene (cases/bow_shock/run_extension.hpp): /scene holds the
+  // scene the run now runs.
+  void replace_scene(const std::string& scene_toml_as_given,
+                     const std::string& scene_toml_resolved);
+  // Whether the dataset or group at `path` exists.
+  bool has(const std::string& path) const;
 
   // Summary values and arrays (e.g. under "/summary", or the field accumulators under
   // "/fields"). The object (a group) is created with its parents when missing; an

@@ -155,6 +155,12 @@ int BowShockRun::execute_or_throw() {
   agree_on_failure(comm_, [&] {
     log_.open(dir_);
     if (options_.resume && root_) read_earlier_summary();
+    if (options_.resume && extension_.changes()) {
+      if (options_.quiet)
+        log_.record(extension_note(extension_));
+      else
+        log_.say(extension_note(extension_));
+    }
   });
   try {
     if (!options_.resume) start_fresh();  // writes the outputs of step 0
@@ -237,6 +243,7 @@ void BowShockRun::open_run_file() {
     run_file_.emplace(
         RunFile::open_for_resume(dir_ / "run.h5", checkpoint_state_.step, last_record_));
     last_record_ = run_file_->record();  // cut back to the checkpoint (and given an id)
+    extensions_ = record_extension(*run_file_, loaded_.as_given, loaded_.resolved, extension_);
   } else {
     SnapshotContents contents;
     for (const Species& s : scene_.setup.species) contents.species_radius.push_back(s.radius_m());
@@ -376,19 +383,28 @@ void BowShockRun::read_checkpoint_and_check() {
       extras.scene_resolved == loaded_.resolved
           ? std::vector<std::string>()
           : differing_keys(extras.scene_resolved, loaded_.resolved);
-  if (!keys.empty()) {
+  const std::vector<std::string> fixed = keys_fixed_on_resume(keys);
+  if (!fixed.empty()) {
     throw UserError(fmt::format(
         "--resume: scene key{} {} differ{} from the run in '{}'; resume with the same scene "
-        "file and --set options (docs/scene_format.md: no key may change on resume)",
-        keys.size() == 1 ? "" : "s", fmt::join(keys, ", "), keys.size() == 1 ? "s" : "",
+        "file and --set options (docs/scene_format.md, \"Resuming\": only time.duration and "
+        "time.production_start may change)",
+        fixed.size() == 1 ? "" : "s", fmt::join(fixed, ", "), fixed.size() == 1 ? "s" : "",
         dir_.string()));
   }
+  // The checkpoint is checked against its own scene's schedule, then the change of its
+  // time keys against what it holds (run_extension.hpp).
+  const Scene before =
+      keys.empty()
+          ? scene_
+          : parse_scene(extras.scene_resolved, {}, path.string() + ":/scene/resolved").scene;
   try {
     check_run(checkpoint_state_, extras,
-              run_fit(scene_, inflow_, sampling_, checkpoint_state_.step));
+              run_fit(before, inflow_, SamplingPlan(before), checkpoint_state_.step));
   } catch (const InvalidCheckpoint& e) {
     throw refuse_checkpoint(path, e);
   }
+  extension_ = plan_extension(before, scene_, checkpoint_state_.step);
 }
 
 // --resume (rank 0): the warnings and rate the earlier legs' summary.json recorded. A
@@ -419,6 +435,17 @@ void BowShockRun::resume() {
     throw refuse_checkpoint(dir_ / "checkpoint.h5", e);
   }
   restore_run_state(checkpoint_extras_, *solver_, inflow_, samples_);
+  // A new production window (run_extension.hpp): the earlier one's sums go, and the
+  // checkpoint's step is sampled where the new window samples it and the earlier did not.
+  if (extension_.samples_dropped > 0) {
+    solver_->restore_field_sums(std::vector<double>(solver_->field_sums(false).size(), 0.0),
+                                std::vector<double>(solver_->field_sums(true).size(), 0.0));
+    samples_.assign(samples_.size(), 0);
+  }
+  if (extension_.catch_up_block >= 0) {
+    solver_->sample_fields(extension_.catch_up_block);
+    ++samples_[std::size_t(extension_.catch_up_block)];
+  }
   wall_before_ = checkpoint_extras_.wall_seconds_so_far;
   last_checkpoint_step_ = checkpoint_state_.step;
   checkpoint_state_ = SolverState{};  // the solver holds it now
@@ -538,6 +565,7 @@ void BowShockRun::finish(bool completed) {
   if (backend_switch_) j["backend_switch"] = backend_summary();
   if (!root_) return;
   if (!options_.accuracy_choice.is_null()) j["accuracy_choice"] = options_.accuracy_choice;
+  if (!extensions_.empty()) j["extensions"] = extensions_;
   // A leg that ran no step (--resume of a completed run) measured no rate: the earlier
   // leg's stays.
   if (particle_steps_ == 0 && earlier_rate_.is_number())

@@ -22,6 +22,7 @@
 #include "progress_meter.hpp"
 #include "run_command.hpp"
 #include "run_directory.hpp"
+#include "run_extension.hpp"
 #include "run_file.hpp"
 #include "run_log.hpp"
 #include "sampling_plan.hpp"
@@ -98,6 +99,10 @@ class BowShockRun {
   // --resume: what the summary.json of the earlier legs said (null where it said nothing).
   nlohmann::json earlier_warnings_, earlier_rate_;
   std::vector<long> samples_;  // field samples per block
+  // --resume: what this leg changes of the checkpoint's time keys, and every extension
+  // run.h5 lists (summary.json "extensions").
+  RunExtension extension_;
+  nlohmann::json extensions_;
   long last_checkpoint_step_ = -1;
   RunFileRecord last_record_;  // run.h5 as the last checkpoint recorded it
   bool claimed_ = false;       // the directory is the run's (marked, cleaned)
