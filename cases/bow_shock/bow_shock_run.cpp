@@ -8,6 +8,7 @@
 #include <csignal>
 #include <iostream>
 
+#include "accuracy_choice.hpp"
 #include "atomic_file.hpp"
 #include "build_description.hpp"
 #include "checkpoint_checks.hpp"
@@ -200,7 +201,8 @@ std::string BowShockRun::what_survives() {
 void BowShockRun::prepare() {
   dir_ = run_directory_of(options_, scene_);
   throw_if_interrupted();
-  std::vector<std::string> warnings = check_scene_before_run(scene_, options_.force, comm_.size());
+  std::vector<std::string> warnings = check_scene_before_run(
+      scene_, options_.force, comm_.size(), certified_step(options_.accuracy_choice));
   mode_ = options_.resume      ? DirectoryMode::resume
           : options_.overwrite ? DirectoryMode::overwrite
                                : DirectoryMode::create;
@@ -211,7 +213,8 @@ void BowShockRun::prepare() {
   const bool damping_calibrated = calibrate_restitution();
   throw_if_interrupted();
   if (calibrate_inflow() || damping_calibrated)
-    warnings = check_scene_before_run(scene_, options_.force, comm_.size());
+    warnings = check_scene_before_run(scene_, options_.force, comm_.size(),
+                                      certified_step(options_.accuracy_choice));
   for (const std::string& w : warnings) log_.warn(w);
 
   throw_if_interrupted();

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,10 +24,21 @@ struct RunLimits {
   static constexpr double max_particle_ids = 2147483647.0;  // int32 global ids
 };
 
+// A time step that `granshock run --accuracy` chose and a measured trade table certified
+// within the budget (docs/accuracy.md, "Choosing settings for an error budget").
+struct CertifiedStep {
+  double dt = 0;    // s: the step chosen; a step up to it is certified
+  std::string why;  // the measurement, one clause
+};
+
 // Throws UserError for a scene that must not run; returns the warnings to print. `force`
 // turns the refusals of the time-step guard and of the overlap range into warnings. The
-// memory a run needs is checked for each of `processes` (run_memory.hpp).
-std::vector<std::string> check_scene_before_run(const Scene& scene, bool force, int processes = 1);
+// memory a run needs is checked for each of `processes` (run_memory.hpp). A `certified`
+// step past the guard's t_c/10 is said to be so, with the measurement that certified it,
+// instead of "results lose accuracy".
+std::vector<std::string> check_scene_before_run(
+    const Scene& scene, bool force, int processes = 1,
+    const std::optional<CertifiedStep>& certified = std::nullopt);
 
 // The time-step guard and the contact law's range at the fastest impact the scene can
 // produce (Scene::fastest_impact_speed).

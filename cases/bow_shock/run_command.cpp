@@ -23,11 +23,12 @@ std::filesystem::path run_directory_of(const RunOptions& o, const Scene& scene) 
 RunCheck check_run(const RunOptions& o) {
   LoadedScene loaded = load_scene_file(o.scene_file, o.overrides);
   RunCheck c;
-  c.warnings = check_scene_before_run(loaded.scene, o.force);
+  const std::optional<CertifiedStep> certified = certified_step(o.accuracy_choice);
+  c.warnings = check_scene_before_run(loaded.scene, o.force, 1, certified);
   // The guard again with the damping the run will calibrate (restitution_mode = "discrete").
   if (loaded.scene.setup.contacts.restitution_mode == RestitutionMode::discrete) {
     apply_restitution_mode(loaded.scene.setup);
-    c.warnings = check_scene_before_run(loaded.scene, o.force);
+    c.warnings = check_scene_before_run(loaded.scene, o.force, 1, certified);
   }
   c.directory = run_directory_of(o, loaded.scene);
   RunDirectory::check(c.directory, o.resume      ? DirectoryMode::resume

@@ -37,9 +37,39 @@ std::string percent(double fraction) {
 
 std::string describe(const MeasuredSetting& s) {
   return fmt::format(
-      "\"{}\" (dt = {:.3g} t_c, softening {:g}; error at most {}, set by {}; "
-      "{:.3g}x the reference's speed)",
-      s.name, s.dt_over_tc, s.softening, percent(s.error_bound), s.bound_by, s.speedup);
+      "\"{}\" (dt = {:.4g} t_c, softening {:g}; error at most {}, set by {}; e_eff {} "
+      "off averaged over the phase of the first contact step, {} at one phase; measured at "
+      "{:.3g}x the speed of the table's reference)",
+      s.name, s.dt_over_tc, s.softening, percent(s.error_bound), s.bound_by,
+      percent(s.e_eff_error_phase_averaged), percent(s.e_eff_error), s.speedup);
+}
+
+// Softening lengthens the step but costs per step (more neighbour-list builds): the case's
+// measured rate against the table's case at softening 1 in double nearest in dt/t_c. At
+// softening 1 the steps alone (the rates of such cases differ by the machine's load).
+void measure_step_speed(const AccuracyTable& table, SettingChoice& c) {
+  const MeasuredSetting& s = c.setting;
+  if (s.softening == 1) return;
+  // Nearest in dt/t_c; within 1 % the first in the table (the scene before the cases that
+  // change only what the table ignores, such as sample-x4).
+  const MeasuredSetting* base = nullptr;
+  const auto distance = [&](const MeasuredSetting& b) {
+    return std::abs(std::log(b.dt_over_tc / s.dt_over_tc));
+  };
+  for (const MeasuredSetting& b : table.settings)
+    if (b.softening == 1 && !b.single_precision && changes_only(b, {"time.dt"}) &&
+        b.particle_steps_per_second > 0 &&
+        (base == nullptr || distance(b) < distance(*base) - 0.01))
+      base = &b;
+  if (base == nullptr || s.particle_steps_per_second <= 0) {
+    c.step_speed_by = "the table has no rate to compare: the steps alone";
+    return;
+  }
+  c.step_speed = s.particle_steps_per_second / base->particle_steps_per_second;
+  c.step_speed_by = fmt::format(
+      "at {:.3g} of the speed per particle-step of softening 1 (the table's \"{}\" against "
+      "\"{}\")",
+      c.step_speed, s.name, base->name);
 }
 
 void choose_precision(const AccuracyTable& table, double budget, SettingChoice& c) {
@@ -60,6 +90,9 @@ void choose_precision(const AccuracyTable& table, double budget, SettingChoice& 
         "double precision: single was measured at {:.3g}x the speed of double, no faster", ratio));
   } else {
     c.single_precision = true;
+    c.step_speed *= ratio;
+    c.step_speed_by += (c.step_speed_by.empty() ? "" : ", ") +
+                       fmt::format("single precision at {:.3g}x the speed of double", ratio);
     c.reasons.push_back(
         fmt::format("single precision: error at most {} ({}), {:.3g}x the speed of double",
                     percent(single->error_bound), single->bound_by, ratio));
@@ -104,7 +137,21 @@ SettingChoice choose_setting(const AccuracyTable& table, double budget) {
   for (const MeasuredSetting* s : candidates)
     if (s->speedup > best->speedup)
       c.reasons.push_back("not " + describe(*s) + ": past the budget");
+  measure_step_speed(table, c);
   choose_precision(table, budget, c);
+  return c;
+}
+
+std::optional<CertifiedStep> certified_step(const nlohmann::json& r) {
+  if (!r.is_object() || !r.value("certified", false)) return std::nullopt;
+  CertifiedStep c;
+  c.dt = r.at("dt").get<double>();
+  c.why = fmt::format(
+      "--accuracy {} chose it and certified it: the trade table's case \"{}\" measured an "
+      "error of at most {} (set by {}) at dt = {:.4g} t_c",
+      percent(r.at("budget").get<double>()), r.at("case").get<std::string>(),
+      percent(r.at("error_bound").get<double>()), r.at("bound_by").get<std::string>(),
+      r.at("case_dt_over_tc").get<double>());
   return c;
 }
 
@@ -132,6 +179,10 @@ AccuracyChoice choose_accuracy(const fs::path& scene_file,
   const AccuracyTable table = read_accuracy_table(table_path);
   const SettingChoice sc = choose_setting(table, budget);
   const MeasuredSetting& s = sc.setting;
+  const MeasuredSetting& reference = *find_case(table, "reference");
+  // What the user would run without --accuracy: the speed is claimed against it.
+  const LoadedScene given = load_scene_file(scene_file, overrides);
+  const TimeStepAssessment given_guard = assess_time_step(given.scene);
 
   AccuracyChoice out;
   std::vector<std::string> chosen;
@@ -159,6 +210,16 @@ AccuracyChoice choose_accuracy(const fs::path& scene_file,
   out.report.push_back(fmt::format("so: {} (t_c = {:.4g} s, {} at {:.3g} m/s)",
                                    fmt::join(chosen, ", "), guard.t_c, guard.stiffest_pair,
                                    guard.impact_speed));
+  // Wall time ~ steps / speed per step: the steps' ratio, and what the table measured of
+  // the speed per step of the chosen softening and precision (docs/accuracy.md).
+  const double steps_ratio = dt / given.scene.setup.dt;
+  const double over_scene = steps_ratio * sc.step_speed;
+  out.report.push_back(fmt::format(
+      "speed: about {:.3g}x that of this scene as given (the chosen dt is {:.3g} times its "
+      "own {:.4g} s = {:.4g} t_c{}); the table measured {:.3g}x the speed of its own "
+      "reference (dt = {:.4g} t_c)",
+      over_scene, steps_ratio, given.scene.setup.dt, given_guard.dt_over_tc(),
+      sc.step_speed_by.empty() ? "" : ", " + sc.step_speed_by, s.speedup, reference.dt_over_tc));
   out.overrides = chosen;
   out.record = {{"budget", budget},
                 {"table", table_path.string()},
@@ -167,9 +228,15 @@ AccuracyChoice choose_accuracy(const fs::path& scene_file,
                 {"error_bound", s.error_bound},
                 {"bound_by", s.bound_by},
                 {"noise_floor", table.noise_floor},
+                {"e_eff_error_phase_averaged", s.e_eff_error_phase_averaged},
+                {"e_eff_error_one_phase", s.e_eff_error},
+                {"speedup_over_scene", over_scene},
+                {"scene_dt", given.scene.setup.dt},
                 {"speedup_over_reference", s.speedup},
+                {"reference_dt_over_tc", reference.dt_over_tc},
                 {"dt", dt},
                 {"dt_over_tc", dt / guard.t_c},
+                {"case_dt_over_tc", s.dt_over_tc},
                 {"softening", s.softening},
                 {"precision", sc.single_precision ? "single" : "double"},
                 {"overrides", chosen}};

@@ -5,10 +5,12 @@
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "accuracy_table.hpp"
+#include "run_checks.hpp"
 
 namespace granshock {
 
@@ -20,6 +22,11 @@ struct SettingChoice {
   MeasuredSetting setting;  // a copy of the case: it changes at most dt and softening
   bool single_precision = false;
   bool certified = true;  // false: nothing met the budget; the most accurate case is used
+  // Its measured speed per particle-step against the table's case at softening 1 in double
+  // nearest in dt/t_c (softening costs per step), times single's measured gain where
+  // single is chosen: with the ratio of the steps, the speed against the scene as given.
+  double step_speed = 1;
+  std::string step_speed_by;         // how step_speed was measured; empty where it is 1
   std::vector<std::string> reasons;  // one line each: what was chosen and what was not, why
 };
 
@@ -29,7 +36,9 @@ struct SettingChoice {
 SettingChoice choose_setting(const AccuracyTable& table, double budget);
 
 // The choice applied to a scene: dt = (dt/t_c of the case) x t_c of this scene at the chosen
-// softening (the time-step guard's t_c), the sample interval kept in simulated time.
+// softening (the time-step guard's t_c), the sample interval kept in simulated time. Its
+// speed is stated against the scene as given (its own dt, softening and precision): the
+// ratio of the steps times step_speed; the table's speed-up over its reference beside it.
 struct AccuracyChoice {
   std::vector<std::string> overrides;  // to append to the run's --set overrides
   std::vector<std::string> report;     // what was chosen and why, one line each
@@ -39,6 +48,11 @@ AccuracyChoice choose_accuracy(const std::filesystem::path& scene_file,
                                const std::vector<std::string>& overrides,
                                const std::string& budget_text,
                                const std::filesystem::path& table_file);
+
+// The step a certified choice set (its record, summary.json: accuracy_choice), for the run
+// checks: the time-step guard's t_c/10 warning then names the measurement instead of
+// contradicting it (docs/accuracy.md). None for no choice or an uncertified one.
+std::optional<CertifiedStep> certified_step(const nlohmann::json& accuracy_choice);
 
 // The table used when none is named: the paper case's, measured on this code
 // (docs/results/tradeoff/paper_d50_u2375/trade.json; installed in share/granshock).

@@ -44,3 +44,30 @@ TEST(RunAccuracy, ChosenSettingsReachTheRunAndResume) {
   EXPECT_EQ(a.position, b.position);
   EXPECT_EQ(a.velocity, b.velocity);
 }
+
+// A step the choice certified past t_c/10 (the fake table's dt-stable, 0.29 t_c, within
+// 15 % once soft-100 is gone) is not called inaccurate by the run's own checks: summary.json's
+// warnings name the case that certified it, as the certificate says.
+TEST(RunAccuracy, ACertifiedStepIsNotCalledInaccurateByTheRun) {
+  granshock::testing::TempDir tmp;
+  const auto scene = tmp.write("small.toml", granshock::testing::small_scene(true));
+  nlohmann::json doc = granshock::testing::fake_trade_table();
+  doc["cases"].erase(4);  // soft-100
+  RunOptions o = run_options(scene, tmp.path() / "run",
+                             {"time.duration=0.004", "time.production_start=0.002"});
+  o.accuracy = "15%";
+  o.accuracy_table = tmp.write("trade.json", doc.dump());
+  ASSERT_EQ(run_scene(o), 0);
+  const nlohmann::json j = read_json(tmp.path() / "run" / "summary.json");
+  EXPECT_EQ(j.at("accuracy_choice").at("case"), "dt-stable");
+  EXPECT_TRUE(j.at("accuracy_choice").at("certified").get<bool>());
+  EXPECT_GT(j.at("dt_over_tc").get<double>(), 0.1);
+  int named = 0;
+  for (const nlohmann::json& w : j.at("warnings")) {
+    const std::string text = w.get<std::string>();
+    EXPECT_EQ(text.find("results lose accuracy"), std::string::npos) << text;
+    named += text.find("chose it and certified it: the trade table's case \"dt-stable\"") !=
+             std::string::npos;
+  }
+  EXPECT_EQ(named, 1) << j.at("warnings").dump();
+}

@@ -279,6 +279,10 @@ assert soft["softening"] == 1000.0 and soft["changed"] == "contact.softening tim
 single = [c for c in t["cases"] if c["case"] == "single"][0]
 assert single["precision"] == "single" and single["changed"] == "numerics.precision", single
 assert [c for c in t["cases"] if c["case"] == "scene"][0]["changed"] == ""
+# e_eff averaged over the phase of the first contact step (judged by --accuracy) beside
+# the one-phase value, both from the summary.json of each case.
+for c in t["cases"]:
+    assert 0 <= c["e_eff_error_phase_averaged"] < 1 and 0 <= c["e_eff_error"] < 1, c
 # The noise of delta/D is at least the combined block errors of the two seeds runs (one
 # pair of seeds can agree by chance).
 import math, os
