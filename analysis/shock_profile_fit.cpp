@@ -62,7 +62,8 @@ double profile_at(const ShockProfile& p, double y) {
 }
 
 ShockProfileFit fit_shock_profile(const std::vector<double>& values, const std::vector<double>& y,
-                                  double dy, int begin, int end, double min_jump_ratio) {
+                                  double dy, int begin, int end, double min_jump_ratio,
+                                  double window) {
   ShockProfileFit fit;
   begin = std::max(begin, 0);
   end = std::min({end, static_cast<int>(values.size()), static_cast<int>(y.size())});
@@ -81,12 +82,14 @@ ShockProfileFit fit_shock_profile(const std::vector<double>& values, const std::
   while (peak >= 0 && last + 1 < end && std::isfinite(values[last + 1]) &&
          values[last + 1] >= lowest + kTop * (values[peak] - lowest))
     ++last;
+  const double window_begin = peak >= 0 ? y[last] + 0.5 * dy - window : 0;
   std::vector<Bin> bins;
   for (int k = begin; k <= last; ++k)
-    if (std::isfinite(values[k])) bins.push_back({y[k] - 0.5 * dy, y[k] + 0.5 * dy, values[k]});
+    if (y[k] >= window_begin && std::isfinite(values[k]))
+      bins.push_back({y[k] - 0.5 * dy, y[k] + 0.5 * dy, values[k]});
   fit.points = static_cast<int>(bins.size());
   if (bins.size() < 5) {
-    fit.why = "the fit up to the peak holds " + std::to_string(bins.size()) +
+    fit.why = "the fit up to the profile's top holds " + std::to_string(bins.size()) +
               " bins; four parameters need 5";
     return fit;
   }

@@ -7,6 +7,7 @@
 // do not depend on it (where the bin value is the mean of the profile, as phi's is).
 #pragma once
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -40,7 +41,11 @@ struct ShockProfileFit {
 // bins in the fit, when y_s lies in the last bin fitted (the level behind the front and its
 // position are then one number), when the fit does not converge, when high < min_jump_ratio low, or
 // when y_s or w fall outside the fitted bins.
+// Only the bins whose centre lies within `window` upstream of the top's end are fitted (the
+// level ahead of the front is the level just ahead of it, and the fit's cost stays that of
+// a few dozen bins).
 ShockProfileFit fit_shock_profile(const std::vector<double>& values, const std::vector<double>& y,
-                                  double dy, int begin, int end, double min_jump_ratio);
+                                  double dy, int begin, int end, double min_jump_ratio,
+                                  double window = HUGE_VAL);
 
 }  // namespace granshock

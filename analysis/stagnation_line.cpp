@@ -66,9 +66,9 @@ FrontFix fix_of(const FrontCrossing& c, double upstream, const ThresholdRule& ru
 // A front from a fitted step (shock_profile_fit.hpp); the bins are as high as the first pair's
 // spacing.
 FrontFix fitted(const std::vector<double>& values, const std::vector<double>& y, int begin, int end,
-                const ThresholdRule& rule) {
+                const ThresholdRule& rule, double window) {
   const ShockProfileFit fit =
-      fit_shock_profile(values, y, y[1] - y[0], begin, end, rule.min_jump_ratio);
+      fit_shock_profile(values, y, y[1] - y[0], begin, end, rule.min_jump_ratio, window);
   FrontFix f;
   f.found = fit.found;
   f.peak = fit.found ? fit.profile.high : kNaN;
@@ -111,6 +111,7 @@ StagnationLine stagnation_line(const BinSums& column, const FieldPhysics& phys,
   line.phi = f.phi;
   line.temperature = f.temperature;
   line.mach = f.mach;
+  line.fit_window = 20 * phys.d;
   for (std::size_t k = 0; k < n; ++k) {
     line.y[k] = column.y_centre(static_cast<int>(k));
     if (f.masked[k]) line.phi[k] = line.temperature[k] = line.mach[k] = kNaN;
@@ -139,9 +140,9 @@ FrontFix locate_front(FrontDefinition definition, const StagnationLine& line, in
     case FrontDefinition::sonic_line:
       return sonic_point(line, begin, end);
     case FrontDefinition::temperature_fit:
-      return fitted(line.temperature, line.y, begin, end, rule);
+      return fitted(line.temperature, line.y, begin, end, rule, line.fit_window);
     case FrontDefinition::density_fit:
-      return fitted(line.phi, line.y, begin, end, rule);
+      return fitted(line.phi, line.y, begin, end, rule, line.fit_window);
   }
   return {};
 }

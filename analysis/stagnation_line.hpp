@@ -17,6 +17,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <limits>
 #include <string>
 #include <vector>
@@ -52,6 +53,9 @@ struct UpstreamValues {
 // One column's fields, bin by bin upstream to downstream; masked bins hold NaN (phi too).
 struct StagnationLine {
   std::vector<double> y, phi, temperature, mach;
+  // The fitted fronts fit the bins within this distance upstream of the profile's top
+  // (docs/fields.md, "The fitted front"): 20 particle diameters.
+  double fit_window = HUGE_VAL;
 };
 StagnationLine stagnation_line(const BinSums& column, const FieldPhysics& physics,
                                const MaskRule& mask);

@@ -114,6 +114,13 @@ TEST(FittedFront, RecoversAStepFromItsBinAveragesAtEveryBinSize) {
     EXPECT_NEAR(fit.profile.w, kTrue.w, 1e-4 * kD) << h_d << " d";
     EXPECT_NEAR(fit.profile.low, kTrue.low, 1e-6) << h_d << " d";
     EXPECT_NEAR(fit.profile.high, kTrue.high, 1e-6) << h_d << " d";
+    // The 20 d window ahead of the top that the analysis fits gives the same step.
+    const ShockProfileFit near =
+        fit_shock_profile(v, line.y, line.dy, 0, static_cast<int>(v.size()), 1.5, 20 * kD);
+    ASSERT_TRUE(near.found) << h_d << " d: " << near.why;
+    EXPECT_LT(near.points, fit.points);
+    EXPECT_NEAR(near.profile.y_s, kTrue.y_s, 1e-4 * kD) << h_d << " d";
+    EXPECT_NEAR(near.profile.w, kTrue.w, 1e-4 * kD) << h_d << " d";
     // The model's own bin average is that integral.
     for (std::size_t i = 0; i < v.size(); ++i)
       ASSERT_NEAR(bin_average(kTrue, line.y[i] - 0.5 * line.dy, line.y[i] + 0.5 * line.dy), v[i],
