@@ -12,8 +12,10 @@
 #include <vector>
 
 #include "block_error.hpp"
+#include "detachment.hpp"
 #include "front_crossing.hpp"
 #include "shock_profile_fit.hpp"
+#include "synthetic_run.hpp"
 
 using namespace granshock;
 
@@ -186,4 +188,49 @@ TEST(FittedFront, TooFewBinsIsNoFrontWithAReason) {
   const ShockProfileFit fit = fit_shock_profile({0.1, 0.1, 0.6, 0.4, 0.2}, y, kD, 0, 5, 1.5);
   EXPECT_FALSE(fit.found);
   EXPECT_NE(fit.why.find("holds 3 bins"), std::string::npos) << fit.why;
+}
+
+// Through the detachment length: a stagnation line (cylinder of 12 d, face at 54 d) whose
+// blocks hold a phi step (0.1 to 0.4, w = 1 d) at 47.6 d moved by -0.2 ... +0.2 d from block
+// to block. The density fit finds the mean front and its thickness, and both get an error
+// from the blocks; the definitions that fit nothing have no thickness.
+TEST(FittedFront, GivesTheDetachmentLengthAndTheThicknessWithErrors) {
+  const FieldPhysics phys = test::physics_of(test::bow_shock_scene(12));
+  const double surface = 54 * kD, y_s = 47.6 * kD, w = 1.0 * kD, dy = 0.5 * kD;
+  const int ny = static_cast<int>(std::lround(surface / dy)), blocks = 10;
+  const double t_cold = test::temperature_for_mach(phys, 0.1, 1.0, 6.0);
+  const test::BinState pre = test::mixture_state(phys, 0.1, t_cold, 0, 1.0);
+  const test::BinState post = test::mixture_state(phys, 0.4, 20 * t_cold, 0, 0.1);
+  BinSums profile = test::empty_sums(1, ny, blocks, 28 * kD, 0, 4 * kD, dy);
+  const double shifts[] = {-0.2, 0.1, 0.2, -0.1, 0.0, 0.15, -0.15, 0.05, -0.05, 0.0};
+  for (int b = 0; b < blocks; ++b) {
+    profile.samples[static_cast<std::size_t>(b)] = 400;
+    const ShockProfile step{y_s + shifts[b] * kD, w, 0, 1};
+    for (int iy = 0; iy < ny; ++iy) {
+      const double g = bin_average(step, iy * dy, (iy + 1) * dy);  // the share behind the front
+      test::add_state(profile, b, iy, 0, pre, phys, 400, 1 - g);
+      test::add_state(profile, b, iy, 0, post, phys, 400, g);
+    }
+  }
+  DetachmentSearch search;
+  search.y_begin = 10 * kD;
+  const Detachments all = measure_detachments(profile, phys, {0.1}, search);
+  const Detachment& fit = of(all, FrontDefinition::density_fit);
+  ASSERT_TRUE(fit.found) << fit.reason;
+  // The pooled profile is the mean of ten steps 0.2 d apart at most: its centre is theirs.
+  EXPECT_NEAR(fit.y_shock, y_s, 0.02 * kD);
+  EXPECT_NEAR(fit.delta, surface - y_s, 0.02 * kD);
+  EXPECT_NEAR(fit.width, w, 0.05 * w);
+  EXPECT_NEAR(fit.peak, 0.4, 0.01);
+  EXPECT_NEAR(fit.low, 0.1, 0.01);
+  EXPECT_EQ(fit.blocks_used, blocks);
+  EXPECT_GT(fit.delta_err, 0.02 * kD);  // the blocks' spread, 0.13 d / sqrt(10) at least
+  EXPECT_LT(fit.delta_err, 0.3 * kD);
+  EXPECT_TRUE(std::isfinite(fit.width_err)) << fit.err_reason;
+  EXPECT_GE(fit.width_err, 0);
+  EXPECT_LT(fit.width_err, 0.1 * w);
+  EXPECT_GT(fit.fit_end, y_s);
+  EXPECT_LE(fit.fit_end, surface);
+  EXPECT_TRUE(std::isnan(of(all, FrontDefinition::density_threshold).width));
+  EXPECT_TRUE(std::isnan(of(all, FrontDefinition::temperature_jump).width_err));
 }
