@@ -234,3 +234,44 @@ TEST(FittedFront, GivesTheDetachmentLengthAndTheThicknessWithErrors) {
   EXPECT_TRUE(std::isnan(of(all, FrontDefinition::density_threshold).width));
   EXPECT_TRUE(std::isnan(of(all, FrontDefinition::temperature_jump).width_err));
 }
+
+// Why the fitted T front is not the primary one (docs/fields.md, "The fitted front"): a
+// bin's phi is the mean of phi over the bin, a bin's T is not. The same stagnation line cut
+// into 3 d rows: the phi fit stays on the step, while the T fit moves upstream, since a
+// 3 d bin that straddles the front counts the change of the mean velocity across it (1 to
+// 0.1 m/s) as temperature.
+TEST(FittedFront, ABinsTemperatureIsNotTheMeanOfTheProfileSoOnlyPhiFitsTheSameOnCoarseRows) {
+  const FieldPhysics phys = test::physics_of(test::bow_shock_scene(12));
+  const double surface = 54 * kD, y_s = 47.6 * kD, w = 1.0 * kD, dy = 0.5 * kD;
+  const int ny = static_cast<int>(std::lround(surface / dy));
+  const double t_cold = test::temperature_for_mach(phys, 0.1, 1.0, 6.0);
+  const test::BinState pre = test::mixture_state(phys, 0.1, t_cold, 0, 1.0);
+  const test::BinState post = test::mixture_state(phys, 0.4, 20 * t_cold, 0, 0.1);
+  BinSums profile = test::empty_sums(1, ny, 1, 28 * kD, 0, 4 * kD, dy);
+  profile.samples[0] = 400;
+  const ShockProfile step{y_s, w, 0, 1};
+  for (int iy = 0; iy < ny; ++iy) {
+    const double g = bin_average(step, iy * dy, (iy + 1) * dy);
+    test::add_state(profile, 0, iy, 0, pre, phys, 400, 1 - g);
+    test::add_state(profile, 0, iy, 0, post, phys, 400, g);
+  }
+  DetachmentSearch search;
+  search.y_begin = 10 * kD;
+  search.bootstrap_resamples = 0;
+  const Detachments fine = measure_detachments(profile, phys, {0.1}, search);
+  const Detachments coarse = measure_detachments(profile.merged_rows(6, ny), phys, {0.1}, search);
+  for (const Detachments* all : {&fine, &coarse}) {
+    ASSERT_TRUE(of(*all, FrontDefinition::density_fit).found);
+    ASSERT_TRUE(of(*all, FrontDefinition::temperature_fit).found)
+        << of(*all, FrontDefinition::temperature_fit).reason;
+  }
+  const double phi_fine = of(fine, FrontDefinition::density_fit).y_shock,
+               phi_coarse = of(coarse, FrontDefinition::density_fit).y_shock,
+               t_fine = of(fine, FrontDefinition::temperature_fit).y_shock,
+               t_coarse = of(coarse, FrontDefinition::temperature_fit).y_shock;
+  EXPECT_NEAR(phi_fine, y_s, 1e-3 * kD);
+  EXPECT_NEAR(phi_coarse, y_s, 1e-3 * kD);
+  // Measured: 46.16 d on 0.5 d rows, 44.97 d on 3 d rows.
+  EXPECT_LT(t_coarse, t_fine - 0.8 * kD)
+      << "T fit " << t_fine / kD << " d on 0.5 d rows, " << t_coarse / kD << " d on 3 d rows";
+}
