@@ -48,11 +48,18 @@ double spread(const std::vector<double>& values) {
 // The standard error of the per-group deltas (groups: single blocks or merged pairs), and
 // the reason when fewer than 2 groups show a front.
 struct GroupError {
-  double error = kNaN;
-  std::vector<double> deltas;  // per group, NaN where no front
+  double error = kNaN, width_error = kNaN;
+  std::vector<double> deltas, widths;  // per group, NaN where no front (widths: or no fit)
   int used = 0;
   std::string first_failure;
 };
+
+std::vector<double> finite_of(const std::vector<double>& values) {
+  std::vector<double> finite;
+  for (double v : values)
+    if (std::isfinite(v)) finite.push_back(v);
+  return finite;
+}
 }  // namespace
 
 const Detachment& of(const Detachments& all, FrontDefinition definition) {
@@ -70,6 +77,7 @@ Detachments measure_detachments(const BinSums& profile, const FieldPhysics& phys
     d.y_shock = d.surface = d.delta = d.delta_over_d = d.delta_err = d.delta_over_d_err = kNaN;
     d.err_blocks = d.err_merged_pairs = d.err_bootstrap = kNaN;
     d.peak = d.threshold = kNaN;
+    d.width = d.width_err = d.low = d.fit_end = kNaN;
   }
   if (!phys.obstacle) {
     for (Detachment& d : out) d.reason = d.err_reason = "the scene has no obstacle";
@@ -90,6 +98,9 @@ Detachments measure_detachments(const BinSums& profile, const FieldPhysics& phys
     d.threshold = f.found ? f.threshold : kNaN;
     d.found = f.found;
     if (f.found) {
+      d.width = f.width;
+      d.low = f.low;
+      d.fit_end = f.fit_end;
       d.y_shock = f.y;
       d.delta = surface - f.y;
       d.delta_over_d = d.delta / diameter;
@@ -112,17 +123,17 @@ Detachments measure_detachments(const BinSums& profile, const FieldPhysics& phys
       const Fronts f = fronts_on(group.pooled_blocks(), phys, upstream, begin, end, search);
       for (std::size_t k = 0; k < kDefinitions; ++k) {
         g[k].deltas.push_back(f[k].found ? surface - f[k].y : kNaN);
+        g[k].widths.push_back(f[k].found ? f[k].width : kNaN);
         if (!f[k].found && g[k].first_failure.empty())
           g[k].first_failure =
               (size == 1 ? "block " : "blocks from ") + std::to_string(b) + ": " + f[k].why;
       }
     }
     for (GroupError& e : g) {
-      std::vector<double> finite;
-      for (double v : e.deltas)
-        if (std::isfinite(v)) finite.push_back(v);
+      const std::vector<double> finite = finite_of(e.deltas);
       e.used = static_cast<int>(finite.size());
       e.error = block_standard_error(finite);
+      e.width_error = block_standard_error(finite_of(e.widths));
     }
     return g;
   };
@@ -133,7 +144,7 @@ Detachments measure_detachments(const BinSums& profile, const FieldPhysics& phys
   std::vector<int> sampled;
   for (int b = 0; b < profile.blocks; ++b)
     if (profile.samples[static_cast<std::size_t>(b)] > 0) sampled.push_back(b);
-  std::array<std::vector<double>, kDefinitions> resampled;
+  std::array<std::vector<double>, kDefinitions> resampled, resampled_widths;
   const int resamples = sampled.size() >= 2 ? search.bootstrap_resamples : 0;
   std::mt19937_64 rng(20261123);
   std::uniform_int_distribution<std::size_t> pick(0, sampled.empty() ? 0 : sampled.size() - 1);
@@ -144,7 +155,10 @@ Detachments measure_detachments(const BinSums& profile, const FieldPhysics& phys
     const Fronts f =
         fronts_on(profile.weighted_blocks(weights), phys, upstream, begin, end, search);
     for (std::size_t k = 0; k < kDefinitions; ++k)
-      if (f[k].found) resampled[k].push_back(surface - f[k].y);
+      if (f[k].found) {
+        resampled[k].push_back(surface - f[k].y);
+        resampled_widths[k].push_back(f[k].width);
+      }
   }
 
   for (std::size_t k = 0; k < kDefinitions; ++k) {
@@ -182,6 +196,15 @@ Detachments measure_detachments(const BinSums& profile, const FieldPhysics& phys
     if (d.definition == FrontDefinition::density_max_gradient)
       d.delta_err = std::max(d.delta_err, profile.dy / std::sqrt(12.0));
     d.delta_over_d_err = d.delta_err / diameter;
+    // The thickness's error by the same rule as delta's.
+    if (std::isfinite(d.width)) {
+      const double width_blocks =
+          std::isfinite(pairs[k].width_error) ? pairs[k].width_error : single[k].width_error;
+      const double width_bootstrap =
+          std::isfinite(d.err_bootstrap) ? spread(finite_of(resampled_widths[k])) : kNaN;
+      d.width_err =
+          std::isfinite(width_bootstrap) ? std::max(width_blocks, width_bootstrap) : width_blocks;
+    }
   }
   return out;
 }

@@ -2,14 +2,15 @@
 // 6; the paper's Fig. 1 and Fig. 6): the distance from the shock front to the cylinder's
 // upstream surface y_c - R, found on one strip of the stagnation-line profile by one of
 // four definitions of "the front" (stagnation_line.hpp): the half-rise of the temperature
-// (the primary one), the density half-way threshold, the steepest density rise and the
-// sonic point. Its statistical uncertainty comes from the blocks of the production window
-// three ways (docs/fields.md, "Error bars"): the standard error of the blocks' own deltas,
-// the same over pairs of neighbouring blocks merged (which grows when neighbouring blocks are
-// correlated), and a bootstrap over blocks (resampled with replacement and pooled). The
-// reported error is the larger of the merged pairs' (the single blocks' when fewer than two
-// pairs show a front) and the bootstrap's. When a number cannot be determined it is NaN
-// and a reason says why (docs/fields.md, "When a number cannot be determined").
+// (the primary one), the density half-way threshold, the steepest density rise, the
+// sonic point, and the centres of tanh steps fitted to T and to phi (with their thickness). Its
+// statistical uncertainty comes from the blocks of the production window three ways
+// (docs/fields.md, "Error bars"): the standard error of the blocks' own deltas, the same over pairs
+// of neighbouring blocks merged (which grows when neighbouring blocks are correlated), and a
+// bootstrap over blocks (resampled with replacement and pooled). The reported error is the larger
+// of the merged pairs' (the single blocks' when fewer than two pairs show a front) and the
+// bootstrap's. When a number cannot be determined it is NaN and a reason says why (docs/fields.md,
+// "When a number cannot be determined").
 #pragma once
 
 #include <array>
@@ -38,6 +39,10 @@ struct Detachment {
   double err_blocks = 0, err_merged_pairs = 0, err_bootstrap = 0;
   int bootstrap_found = 0, bootstrap_resamples = 0;  // resamples that showed a front
   double peak = 0, threshold = 0;                    // of the definition's quantity
+  // The fitted fronts (temperature_fit, density_fit; NaN for the others): the thickness w
+  // with its error (the same three estimates as delta's), the fitted level upstream and the
+  // cut (the downstream edge of the last bin fitted), m.
+  double width = 0, width_err = 0, low = 0, fit_end = 0;
   std::vector<double> delta_blocks;  // per block with samples; NaN where no front was found
   int blocks_used = 0;               // blocks whose delta entered err_blocks
   std::string reason;                // why delta is NaN (empty when found)

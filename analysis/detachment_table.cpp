@@ -45,6 +45,11 @@ DetachmentRow detachment_row(const std::filesystem::path& run_dir, const FieldAn
     r.by_definition[k] = a.detachments[k].delta_over_d;
     r.by_definition_err[k] = a.detachments[k].delta_over_d_err;
   }
+  const FrontDefinition fits[] = {FrontDefinition::temperature_fit, FrontDefinition::density_fit};
+  for (std::size_t k = 0; k < 2; ++k) {
+    r.fit_w_over_d[k] = of(a.detachments, fits[k]).width / a.physics.d;
+    r.fit_w_over_d_err[k] = of(a.detachments, fits[k]).width_err / a.physics.d;
+  }
   r.consistent = r.spread = nan;
   if (!a.convergence.verdicts.empty()) {
     const ConvergenceVerdict& v = a.convergence.of(kPrimaryFront);
@@ -79,6 +84,9 @@ void write_detachment_table(const std::filesystem::path& out_dir,
   }
   for (const char* n : {"delta_over_D_consistent", "delta_over_D_spread", "delta_over_D_verdict"})
     header.push_back(n);
+  for (const char* n : {"w_over_d_temperature_fit", "w_over_d_temperature_fit_err",
+                        "w_over_d_density_fit", "w_over_d_density_fit_err"})
+    header.push_back(n);
   std::string csv = csv_header(header);
   nlohmann::json table = nlohmann::json::array();
   for (const DetachmentRow& r : rows) {
@@ -97,6 +105,10 @@ void write_detachment_table(const std::filesystem::path& out_dir,
     cells.push_back(csv_number(r.consistent));
     cells.push_back(csv_number(r.spread));
     cells.push_back(r.verdict.empty() ? std::string() : csv_text(r.verdict));
+    for (std::size_t k = 0; k < 2; ++k) {
+      cells.push_back(csv_number(r.fit_w_over_d[k]));
+      cells.push_back(csv_number(r.fit_w_over_d_err[k]));
+    }
     csv += csv_line(cells);
     table.push_back({{"run", r.run},
                      {"D_over_d", json_number(r.d_over_particle)},
@@ -122,6 +134,10 @@ void write_detachment_table(const std::filesystem::path& out_dir,
         std::isfinite(r.consistent) ? nlohmann::json(r.consistent > 0) : nlohmann::json();
     row["delta_over_D_spread"] = json_number(r.spread);
     row["delta_over_D_verdict"] = json_text(r.verdict);
+    row["w_over_d_temperature_fit"] = json_number(r.fit_w_over_d[0]);
+    row["w_over_d_temperature_fit_err"] = json_number(r.fit_w_over_d_err[0]);
+    row["w_over_d_density_fit"] = json_number(r.fit_w_over_d[1]);
+    row["w_over_d_density_fit_err"] = json_number(r.fit_w_over_d_err[1]);
   }
   write_file_atomically(out_dir / "detachment.csv", csv);
   write_file_atomically(out_dir / "detachment.json", table.dump(2) + "\n");

@@ -26,6 +26,8 @@ struct DetachmentRow {
   std::array<double, kFrontDefinitions.size()> by_definition{}, by_definition_err{};
   double consistent = 0, spread = 0;
   std::string verdict;
+  // The fitted fronts' thickness w/d and its error: temperature_fit, density_fit.
+  std::array<double, 2> fit_w_over_d{}, fit_w_over_d_err{};
 };
 
 DetachmentRow detachment_row(const std::filesystem::path& run_dir, const FieldAnalysis& analysis,

@@ -156,6 +156,12 @@ FieldsFileContent fields_file_content(const FieldAnalysis& a) {
     profile_attributes.push_back({"y_shock" + suffix, e.y_shock});
     profile_attributes.push_back({"delta" + suffix, e.delta});
     profile_attributes.push_back({"delta_err" + suffix, e.delta_err});
+    // The fitted fronts' step, for the figure that draws it (NaN for the other definitions).
+    profile_attributes.push_back({"width" + suffix, e.width});
+    profile_attributes.push_back({"width_err" + suffix, e.width_err});
+    profile_attributes.push_back({"fit_low" + suffix, e.low});
+    profile_attributes.push_back({"fit_high" + suffix, std::isfinite(e.width) ? e.peak : kNaN});
+    profile_attributes.push_back({"fit_end" + suffix, e.fit_end});
   }
   for (const auto& [attribute, value] : profile_attributes)
     c.attributes.push_back({"/profile", attribute, value});
@@ -218,6 +224,11 @@ std::string convergence_csv(const FieldAnalysis& a) {
     header.push_back(name(d));
     header.push_back(std::string(name(d)) + "_err");
   }
+  // The fitted fronts' thickness at each cut, after the deltas.
+  for (const char* fit : {"temperature_fit", "density_fit"}) {
+    header.push_back(std::string(fit) + "_w_over_d");
+    header.push_back(std::string(fit) + "_w_over_d_err");
+  }
   std::string csv = csv_header(header);
   for (const ConvergenceChoice& c : a.convergence.choices) {
     std::vector<std::string> cells = {csv_text(c.label), csv_name(c.kind),
@@ -225,6 +236,10 @@ std::string convergence_csv(const FieldAnalysis& a) {
     for (const Detachment& d : c.result) {
       cells.push_back(csv_number(d.delta_over_d));
       cells.push_back(csv_number(d.delta_over_d_err));
+    }
+    for (FrontDefinition fit : {FrontDefinition::temperature_fit, FrontDefinition::density_fit}) {
+      cells.push_back(csv_number(of(c.result, fit).width / a.physics.d));
+      cells.push_back(csv_number(of(c.result, fit).width_err / a.physics.d));
     }
     csv += csv_line(cells);
   }
@@ -254,6 +269,11 @@ nlohmann::json detachment_keys(const FieldAnalysis& a) {
     e["bootstrap_found"] = d.bootstrap_found;
     e["bootstrap_resamples"] = d.bootstrap_resamples;
     e["blocks_used"] = d.blocks_used;
+    if (d.definition == FrontDefinition::temperature_fit ||
+        d.definition == FrontDefinition::density_fit) {
+      e["w_over_d"] = number_or_null(d.width / a.physics.d);
+      e["w_over_d_err"] = number_or_null(d.width_err / a.physics.d);
+    }
     e["reason"] = d.reason.empty() ? nlohmann::json() : nlohmann::json(d.reason);
     e["err_reason"] = d.err_reason.empty() ? nlohmann::json() : nlohmann::json(d.err_reason);
     all[name(d.definition)] = e;
@@ -284,6 +304,11 @@ void add_convergence_keys(nlohmann::json& j, const FieldAnalysis& a) {
     for (const Detachment& d : choice.result) {
       row[std::string(name(d.definition))] = number_or_null(d.delta_over_d);
       row[std::string(name(d.definition)) + "_err"] = number_or_null(d.delta_over_d_err);
+      if (std::isfinite(d.width)) {
+        row[std::string(name(d.definition)) + "_w_over_d"] = d.width / a.physics.d;
+        row[std::string(name(d.definition)) + "_w_over_d_err"] =
+            number_or_null(d.width_err / a.physics.d);
+      }
     }
     rows.push_back(row);
   }

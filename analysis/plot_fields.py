@@ -70,6 +70,18 @@ class Run:
             self.fronts = {name: float(profile.attrs["y_shock_" + name]) / self.d
                            for name in FRONT_STYLES if "y_shock_" + name in profile.attrs}
             self.surface = float(profile.attrs["surface"]) / self.d
+            # The fitted steps (y_s, w, levels, cut) in the panels' units; files before the
+            # fitted fronts have none.
+            self.steps = {}
+            t_scale = float(attrs["m_av"]) * self.u_inf ** 2 if "m_av" in attrs else np.nan
+            for panel, name in FITTED_PANELS.items():
+                keys = [k + "_" + name for k in ("y_shock", "width", "fit_low", "fit_high", "fit_end")]
+                if all(k in profile.attrs for k in keys):
+                    y_s, w, low, high, end = (float(profile.attrs[k]) for k in keys)
+                    scale = t_scale if panel == "T_norm" else 1.0
+                    if all(np.isfinite(v) for v in (y_s, w, low, high, end, scale)):
+                        self.steps[panel] = (y_s / self.d, w / self.d, low / scale, high / scale,
+                                             end / self.d)
             primary = profile.attrs.get("primary_definition", "density_threshold")
             self.primary = primary.decode() if isinstance(primary, bytes) else str(primary)
             self.delta_over_d = float(profile.attrs["delta_over_D"])
@@ -152,13 +164,17 @@ def positive_norm(values):
     return LogNorm(vmin=lo, vmax=hi) if hi > 100 * lo else None
 
 
-# The four definitions of the front on the stagnation line: colour, line style, label.
+# The definitions of the front on the stagnation line: colour, line style, label.
 FRONT_STYLES = {
     "temperature_jump": ("C3", "--", "front: T half-rise (primary)"),
     "sonic_line": ("C2", "-.", "front: sonic point Ma = 1"),
     "density_threshold": ("C0", "--", "front: phi half-way"),
     "density_max_gradient": ("C0", ":", "front: steepest phi rise"),
+    "temperature_fit": ("C1", "-", "front: fitted T step"),
+    "density_fit": ("C4", "-", "front: fitted phi step"),
 }
+# The panel each fitted step is drawn on (docs/fields.md, "The fitted front").
+FITTED_PANELS = {"T_norm": "temperature_fit", "phi": "density_fit"}
 
 
 def profile_range(run):
@@ -183,6 +199,14 @@ def profile_figure(run, figures, png):
     for ax, (name, label) in zip(axes, (("phi", "$\\phi$"), ("T_norm", "$T/(m_{av}U_\\infty^2)$"),
                                         ("Ma", "Ma"))):
         ax.plot(p["y"], p[name], "-o", markersize=2.5, linewidth=1.0)
+        if name in run.steps:  # the fitted step, up to the cut
+            y_s, w, low, high, end = run.steps[name]
+            yy = np.linspace(p["y"][0], end, 600)
+            ax.plot(yy, low + (high - low) * 0.5 * (1 + np.tanh((yy - y_s) / w)),
+                    color=FRONT_STYLES[FITTED_PANELS[name]][0], linewidth=1.2,
+                    label=f"fitted {'T' if name == 'T_norm' else 'phi'} step, w = {w:.2g} d")
+            if ax is not axes[0]:
+                ax.legend(handles=[ax.get_lines()[-1]], fontsize=7, loc="upper left")
         fronts = run.fronts or {"density_threshold": run.y_shock}
         for front, y in fronts.items():
             if np.isfinite(y):

@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <limits>
 
+#include "shock_profile_fit.hpp"
+
 namespace granshock {
 
 namespace {
@@ -60,6 +62,26 @@ FrontFix fix_of(const FrontCrossing& c, double upstream, const ThresholdRule& ru
     f.why = describe(c.why, c, upstream, rule, what);
   return f;
 }
+
+// A front from a fitted step (shock_profile_fit.hpp); the bins are as high as the first pair's
+// spacing.
+FrontFix fitted(const std::vector<double>& values, const std::vector<double>& y, int begin, int end,
+                const ThresholdRule& rule, double window) {
+  const ShockProfileFit fit =
+      fit_shock_profile(values, y, y[1] - y[0], begin, end, rule.min_jump_ratio, window);
+  FrontFix f;
+  f.found = fit.found;
+  f.peak = fit.found ? fit.profile.high : kNaN;
+  f.threshold = fit.found ? 0.5 * (fit.profile.low + fit.profile.high) : kNaN;
+  f.low = fit.found ? fit.profile.low : kNaN;
+  f.width = fit.found ? fit.profile.w : kNaN;
+  f.fit_end = fit.found ? fit.y_end : kNaN;
+  if (fit.found)
+    f.y = fit.profile.y_s;
+  else
+    f.why = fit.why;
+  return f;
+}
 }  // namespace
 
 const char* name(FrontDefinition d) {
@@ -72,6 +94,10 @@ const char* name(FrontDefinition d) {
       return "density_max_gradient";
     case FrontDefinition::sonic_line:
       return "sonic_line";
+    case FrontDefinition::temperature_fit:
+      return "temperature_fit";
+    case FrontDefinition::density_fit:
+      return "density_fit";
   }
   return "";
 }
@@ -85,6 +111,7 @@ StagnationLine stagnation_line(const BinSums& column, const FieldPhysics& phys,
   line.phi = f.phi;
   line.temperature = f.temperature;
   line.mach = f.mach;
+  line.fit_window = 20 * phys.d;
   for (std::size_t k = 0; k < n; ++k) {
     line.y[k] = column.y_centre(static_cast<int>(k));
     if (f.masked[k]) line.phi[k] = line.temperature[k] = line.mach[k] = kNaN;
@@ -112,6 +139,10 @@ FrontFix locate_front(FrontDefinition definition, const StagnationLine& line, in
                     upstream.phi, rule, definition == FrontDefinition::density_max_gradient, "phi");
     case FrontDefinition::sonic_line:
       return sonic_point(line, begin, end);
+    case FrontDefinition::temperature_fit:
+      return fitted(line.temperature, line.y, begin, end, rule, line.fit_window);
+    case FrontDefinition::density_fit:
+      return fitted(line.phi, line.y, begin, end, rule, line.fit_window);
   }
   return {};
 }

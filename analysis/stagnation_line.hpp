@@ -7,12 +7,18 @@
 //                         the rise starts from the cooled gas, not from the inlet's T_up;
 //   density_threshold     phi first reaches phi_up + 1/2 (phi_peak - phi_up);
 //   density_max_gradient  the steepest rise of phi upstream of its peak;
-//   sonic_line            Ma first falls below 1 (the sonic line "just behind the front").
-// All four search the same bins, from the reference row beyond the insertion strip to the
-// last bin upstream of the obstacle's surface, and interpolate linearly between bin centres.
+//   sonic_line            Ma first falls below 1 (the sonic line "just behind the front");
+//   temperature_fit       the centre y_s of a bin-averaged tanh step fitted to T up to its
+//                         peak (shock_profile_fit.hpp), with the front's thickness w;
+//   density_fit           the same fit to phi.
+// All search the same bins, from the reference row beyond the insertion strip to the last
+// bin upstream of the obstacle's surface; the first four interpolate linearly between bin
+// centres.
 #pragma once
 
 #include <array>
+#include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -27,11 +33,14 @@ enum class FrontDefinition {
   temperature_jump,
   density_threshold,
   density_max_gradient,
-  sonic_line
+  sonic_line,
+  temperature_fit,
+  density_fit
 };
-inline constexpr std::array<FrontDefinition, 4> kFrontDefinitions = {
-    FrontDefinition::temperature_jump, FrontDefinition::density_threshold,
-    FrontDefinition::density_max_gradient, FrontDefinition::sonic_line};
+inline constexpr std::array<FrontDefinition, 6> kFrontDefinitions = {
+    FrontDefinition::temperature_jump,     FrontDefinition::density_threshold,
+    FrontDefinition::density_max_gradient, FrontDefinition::sonic_line,
+    FrontDefinition::temperature_fit,      FrontDefinition::density_fit};
 inline constexpr FrontDefinition kPrimaryFront = FrontDefinition::temperature_jump;
 const char* name(FrontDefinition definition);  // "temperature_jump", ...
 
@@ -44,6 +53,9 @@ struct UpstreamValues {
 // One column's fields, bin by bin upstream to downstream; masked bins hold NaN (phi too).
 struct StagnationLine {
   std::vector<double> y, phi, temperature, mach;
+  // The fitted fronts fit the bins within this distance upstream of the profile's top
+  // (docs/fields.md, "The fitted front"): 20 particle diameters.
+  double fit_window = HUGE_VAL;
 };
 StagnationLine stagnation_line(const BinSums& column, const FieldPhysics& physics,
                                const MaskRule& mask);
@@ -53,7 +65,13 @@ struct FrontFix {
   bool found = false;
   double y = 0;
   double peak = 0, threshold = 0;  // of the definition's quantity (NaN: none)
-  std::string why;                 // why there is no front (empty when found)
+  // The fitted fronts' thickness w, level upstream and cut (the downstream edge of the last
+  // bin fitted); NaN for the other definitions. Their peak is the fitted level behind the
+  // front and their threshold the level half-way.
+  double width = std::numeric_limits<double>::quiet_NaN(),
+         low = std::numeric_limits<double>::quiet_NaN(),
+         fit_end = std::numeric_limits<double>::quiet_NaN();
+  std::string why;  // why there is no front (empty when found)
 };
 FrontFix locate_front(FrontDefinition definition, const StagnationLine& line, int begin, int end,
                       const UpstreamValues& upstream, const ThresholdRule& rule);
