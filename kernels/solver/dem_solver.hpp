@@ -233,9 +233,16 @@ class DemSolver final : public Solver {
   }
 
   void compute_forces() {
-    ContactForceKernel<V, ExecSpace> kernel{
-        p_, pair_loop(), table_, obstacle_, Real(setup_.dt), history_overflow_, {}};
-    Kokkos::parallel_for("contact_forces", Policy(0, p_.n), kernel);
+    Kokkos::parallel_for("contact_forces", Policy(0, p_.n), force_kernel(p_, pair_loop()));
+  }
+
+  // The force kernel over `from`'s particles and `pairs`' list: the one place its
+  // arguments are listed (the virial view only in ForceMode::virial).
+  template <ForceMode Mode = ForceMode::forces>
+  ContactForceKernel<V, ExecSpace, Mode> force_kernel(
+      const Store& from, const PairLoop<Dim, Real, Mem>& pairs,
+      const Kokkos::View<Real * [Dim * Dim], Mem>& virial = {}) const {
+    return {from, pairs, table_, obstacle_, Real(setup_.dt), history_overflow_, virial};
   }
 
   // Forces at the current positions, then the end of this step and the start of the next
@@ -289,7 +296,7 @@ class DemSolver final : public Solver {
       from.v = v_next_;
       from.omega = omega_next_;
     }
-    return {{from, pairs, table_, obstacle_, Real(setup_.dt), history_overflow_, {}},
+    return {force_kernel(from, pairs),
             back ? p_.x : x_next_,
             back ? p_.v : v_next_,
             back ? p_.omega : omega_next_,
@@ -427,9 +434,8 @@ class DemSolver final : public Solver {
     if (strategy == ScatterStrategy::rows) return sample_by_row_owners(block, grid, profile);
     if (int(virial_.extent(0)) < p_.n)
       virial_ = decltype(virial_)(alloc_on<ExecSpace>("virial"), p_.capacity());
-    ContactForceKernel<V, ExecSpace, ForceMode::virial> kernel{
-        p_, pair_loop(), table_, obstacle_, Real(setup_.dt), history_overflow_, virial_};
-    Kokkos::parallel_for("contact_virial", Policy(0, p_.n), kernel);
+    Kokkos::parallel_for("contact_virial", Policy(0, p_.n),
+                         force_kernel<ForceMode::virial>(p_, pair_loop(), virial_));
     if (strategy == ScatterStrategy::atomic) {
       sample_with<ScatterStrategy::atomic>(block, grid, profile);
     } else {
@@ -463,7 +469,7 @@ class DemSolver final : public Solver {
                              grid, profile, !profile_sums_.empty(), p_.x, sample_bins_});
     const int owners = Accumulator::row_owners();
     const RowOwnerSamplePass<V, ExecSpace, Part, decltype(sample_bins_)> pass{
-        {p_, pair_loop(), table_, obstacle_, Real(setup_.dt), history_overflow_, {}},
+        force_kernel<ForceMode::virial>(p_, pair_loop()),
         grid_part,
         profile_part,
         grid_sums_.sums(),
