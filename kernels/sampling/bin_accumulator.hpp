@@ -4,7 +4,7 @@
 // the scattered additions, measured against each other (docs/fields.md, "Cost of
 // sampling"): atomic adds on one array, or a Kokkos ScatterView (one private copy per
 // thread on host backends, atomics on GPUs), both here; or row owners, which compute the
-// virial in the same pass (solver/row_owner_sampling.hpp).
+// virial in the same pass (sampling/row_owner_sampling.hpp).
 #pragma once
 
 #include <Kokkos_Core.hpp>
@@ -177,7 +177,7 @@ class BinAccumulator {
     const int virial_terms = int(virial.extent(1)) < 4 ? int(virial.extent(1)) : 4;
     using Contribution = SampleContribution<Where, Store, VirialView>;
     static_assert(Strategy == ScatterStrategy::atomic || Strategy == ScatterStrategy::scatter_view,
-                  "row owners sample through solver/row_owner_sampling.hpp");
+                  "row owners sample through sampling/row_owner_sampling.hpp");
     const long offset = long(block) * block_size();
     if constexpr (Strategy == ScatterStrategy::atomic) {
       const Contribution one{where,       p, virial, offset, quantities_, BinLayout::per_species,
@@ -199,7 +199,7 @@ class BinAccumulator {
     }
   }
 
-  // Threads that own bands of rows (ScatterStrategy::rows, solver/row_owner_sampling.hpp):
+  // Threads that own bands of rows (ScatterStrategy::rows, sampling/row_owner_sampling.hpp):
   // the backend's threads, capped at 16 (each reads every particle's bins).
   // ScatterStrategy::automatic takes rows only on host paths.
   static int row_owners() {

@@ -1,5 +1,5 @@
 // The band of bin rows that one thread owns in row-owner field sampling
-// (solver/row_owner_sampling.hpp; docs/fields.md, "Cost of sampling").
+// (sampling/row_owner_sampling.hpp; docs/fields.md, "Cost of sampling").
 #pragma once
 
 #include <Kokkos_Core.hpp>

@@ -2,9 +2,9 @@
 //   first half-step -> [rebuild lists if some particle moved > skin/2] -> forces ->
 //   second half-step, with the last three and the next first half fused into one pass
 // entirely in Kokkos kernels on ExecSpace. It owns the particles (particles/), the cell
-// sort and Verlet list (neighbours/), and the bin accumulators of field sampling
-// (sampling/); population control, diagnostics and state I/O are parts of their own
-// (population.hpp, diagnostics.hpp, state_io.hpp). Host copies happen only on request
+// sort and Verlet list (neighbours/); field sampling (sampling/field_sampler.hpp),
+// population control, diagnostics and state I/O are parts of their own (population.hpp,
+// diagnostics.hpp, state_io.hpp). Host copies happen only on request
 // (snapshots, diagnostics) and for the one scalar that decides a rebuild, which goes
 // through the Communicator like every other global reduction.
 #pragma once
@@ -31,7 +31,7 @@
 #include "particles/particle_store.hpp"
 #include "particles/population.hpp"
 #include "particles/slab_exchange.hpp"
-#include "sampling/bin_accumulator.hpp"
+#include "sampling/field_sampler.hpp"
 #include "skin_model.hpp"
 #include "solver.hpp"
 #include "solver/contact_forces.hpp"
@@ -39,7 +39,6 @@
 #include "solver/fused_step.hpp"
 #include "solver/fused_steps.hpp"
 #include "solver/pair_table.hpp"
-#include "solver/row_owner_sampling.hpp"
 #include "solver/state_io.hpp"
 #include "solver/velocity_verlet.hpp"
 #include "user_error.hpp"
@@ -63,7 +62,6 @@ class DemSolver final : public Solver {
   // Positions, the box, cells and the skin displacement are in Position (double) in every
   // variant; the rest in Real (device/position.hpp; docs/design.md, "Particles").
   using Position = typename Store::Position;
-  using Accumulator = BinAccumulator<ExecSpace, Paths>;
   using Population = ParticlePopulation<V, ExecSpace, Paths>;
 
   DemSolver(const SolverSetup& setup, std::size_t capacity, const Communicator& comm)
@@ -420,77 +418,21 @@ class DemSolver final : public Solver {
   }
   int next_id() const override { return population_.next_id(); }
 
-  void configure_sampling(const FieldSampling& f) override {
-    sampling_ = f;
-    grid_sums_ = Accumulator(f.grid.bins(), f.grid.quantities(), f.grid.blocks);
-    if (f.has_profile())
-      profile_sums_ = Accumulator(f.profile.bins(), f.grid.quantities(), f.grid.blocks);
-  }
+  void configure_sampling(const FieldSampling& f) override { sampler_.configure(f); }
 
   void sample_fields(int block) override {
-    const GridIndex grid = GridIndex::of(sampling_.grid);
-    const GridIndex profile = GridIndex::of(sampling_.profile);
-    const ScatterStrategy strategy = Accumulator::resolve(sampling_.strategy);
-    if (strategy == ScatterStrategy::rows) return sample_by_row_owners(block, grid, profile);
-    if (int(virial_.extent(0)) < p_.n)
-      virial_ = decltype(virial_)(alloc_on<ExecSpace>("virial"), p_.capacity());
-    Kokkos::parallel_for("contact_virial", Policy(0, p_.n),
-                         force_kernel<ForceMode::virial>(p_, pair_loop(), virial_));
-    if (strategy == ScatterStrategy::atomic) {
-      sample_with<ScatterStrategy::atomic>(block, grid, profile);
-    } else {
-      sample_with<ScatterStrategy::scatter_view>(block, grid, profile);
-    }
-  }
-
-  template <ScatterStrategy Strategy>
-  void sample_with(int block, const GridIndex& grid, const GridIndex& profile) {
-    grid_sums_.template sample<Strategy>(block, grid, p_, virial_);
-    if (!profile_sums_.empty())
-      profile_sums_.template sample<Strategy>(block, profile, p_, virial_);
-  }
-
-  // Grid and profile in one pass, the virial computed on the way (row_owner_sampling.hpp).
-  void sample_by_row_owners(int block, const GridIndex& grid, const GridIndex& profile) {
-    using Virial = decltype(virial_);
-    using Part = SampleContribution<GridIndex, Store, Virial>;
-    const int quantities = sampling_.grid.quantities();
-    const int virial_terms = Dim * Dim < 4 ? Dim * Dim : 4;
-    const Part grid_part{
-        grid,        p_, {}, block * grid_sums_.block_size(), quantities, BinLayout::per_species,
-        virial_terms};
-    const Part profile_part{
-        profile,     p_, {}, block * profile_sums_.block_size(), quantities, BinLayout::per_species,
-        virial_terms};
-    if (int(sample_bins_.extent(0)) < p_.n)
-      sample_bins_ = decltype(sample_bins_)(alloc_on<ExecSpace>("sample_bins"), p_.capacity());
-    Kokkos::parallel_for("fields::locate", Policy(0, p_.n),
-                         LocateSampleBins<decltype(p_.x), decltype(sample_bins_)>{
-                             grid, profile, !profile_sums_.empty(), p_.x, sample_bins_});
-    const int owners = Accumulator::row_owners();
-    const RowOwnerSamplePass<V, ExecSpace, Part, decltype(sample_bins_)> pass{
-        force_kernel<ForceMode::virial>(p_, pair_loop()),
-        grid_part,
-        profile_part,
-        grid_sums_.sums(),
-        profile_sums_.sums(),
-        sample_bins_,
-        p_.n,
-        owners};
-    Kokkos::parallel_for("fields::sample_rows", Policy(0, owners), pass);
+    sampler_.sample(block, p_, force_kernel<ForceMode::virial>(p_, pair_loop()));
   }
 
   std::vector<double> field_sums(bool profile) const override {
-    std::vector<double> sums = profile ? profile_sums_.to_host() : grid_sums_.to_host();
+    std::vector<double> sums = sampler_.to_host(profile);
     comm_.sum_in_place(sums);
     return sums;
   }
   // The sums are global (field_sums adds over ranks): rank 0 takes them, the others zero.
   void restore_field_sums(const std::vector<double>& grid,
                           const std::vector<double>& profile) override {
-    const bool mine = !slabs_ || comm_.is_root();
-    grid_sums_.from_host(grid, mine);
-    if (!profile_sums_.empty()) profile_sums_.from_host(profile, mine);
+    sampler_.from_host(grid, profile, !slabs_ || comm_.is_root());
   }
 
   // Several processes: the whole state on rank 0, every rank's particles at their rows of
@@ -716,11 +658,8 @@ class DemSolver final : public Solver {
   VerletList<Dim, Real, ExecSpace, Paths> list_;
   Kokkos::View<int, Mem> history_overflow_;
 
-  FieldSampling sampling_;
-  Accumulator grid_sums_, profile_sums_;
-  Kokkos::View<Real * [Dim * Dim], Mem> virial_;
-  Kokkos::View<int* [2], Mem> sample_bins_;  // row-owner sampling: each particle's bins
-  Kokkos::View<double*, Mem> top_speed2_;    // fused_steps: each step's top speed^2
+  FieldSampler<V, ExecSpace, Paths> sampler_;
+  Kokkos::View<double*, Mem> top_speed2_;  // fused_steps: each step's top speed^2
   Kokkos::View<long, Mem> steps_done_in_region_{"steps_done_in_region"};
   mutable int region_team_size_ = 0;
   typename Store::PositionView x_next_;  // the fused step's second buffers
