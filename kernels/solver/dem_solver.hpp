@@ -31,6 +31,7 @@
 #include "particles/particle_store.hpp"
 #include "particles/population.hpp"
 #include "particles/slab_exchange.hpp"
+#include "particles/slab_state.hpp"
 #include "sampling/field_sampler.hpp"
 #include "skin_model.hpp"
 #include "solver.hpp"
@@ -86,7 +87,7 @@ class DemSolver final : public Solver {
 
   // Several processes: each keeps the particles of its slab (every rank is given all).
   void set_particles(const HostParticles& given) override {
-    const HostParticles hp = slabs_ ? mine(given) : given;
+    const HostParticles hp = slabs_ ? slab_state::mine<Position>(given, *slabs_) : given;
     int next_id = 0;
     for (const int id : given.id) next_id = std::max(next_id, id + 1);
     const int n = int(hp.size());
@@ -360,20 +361,13 @@ class DemSolver final : public Solver {
     h.sync_seconds = sync_seconds_;
     return h;
   }
-  // Several processes: the particles in cell order (of their reference positions, the
-  // last rebuild's sort), which merged over the ranks by cell is one process's order; each
-  // layer of the flat cell index across the slabs (snapshot_part.hpp) one run of rows.
+  // Several processes: in one process's order (particles/slab_state.hpp).
   SnapshotPart snapshot_part() const override {
+    if (slabs_) return slab_state::snapshot_part<Paths>(particles(), p_, grid_, *slabs_);
     SnapshotPart part;
-    if (!slabs_) {
-      part.particles = particles();
-      part.total = p_.n;
-      if (p_.n > 0) part.rows.push_back({0, long(p_.n)});
-      return part;
-    }
-    const std::vector<int> cells = reference_cells();
-    part.particles = select_particles(particles(), in_cell_order(cells));
-    part.rows = slabs_->file_rows(cells, part.total);
+    part.particles = particles();
+    part.total = p_.n;
+    if (p_.n > 0) part.rows.push_back({0, long(p_.n)});
     return part;
   }
   long steps_done() const override { return steps_; }
@@ -435,10 +429,8 @@ class DemSolver final : public Solver {
     sampler_.from_host(grid, profile, !slabs_ || comm_.is_root());
   }
 
-  // Several processes: the whole state on rank 0, every rank's particles at their rows of
-  // one process's order (as snapshot_part), with the list one process would hold, built
-  // from the reference positions as its last rebuild did; the other ranks get the scalars
-  // only. The result is the one-process state, bit for bit.
+  // Several processes: the whole state on rank 0, the scalars on the others; the result is
+  // the one-process state, bit for bit (particles/slab_state.hpp).
   SolverState export_state() const override {
     SolverState s;
     s.dim = Dim;
@@ -456,22 +448,8 @@ class DemSolver final : public Solver {
       state_io::to_host<Paths>(list_.neighbours, list_.total, s.neighbours);
       return s;
     }
-    const std::vector<int> cells = reference_cells();
-    long total = 0;
-    const std::vector<FileRows> rows = gather_to_root(comm_, slabs_->file_rows(cells, total));
-    SolverState all = select_particles(s, {});
-    append_particles(comm_.gather(pack_particles(select_particles(s, in_cell_order(cells))), 0),
-                     all);
-    if (!comm_.is_root()) return all;
-    all = select_particles(all, row_sources(rows, total, all.size()));
-    state_io::ReferenceLists lists = state_io::lists_from_reference<Dim, Real, ExecSpace, Paths>(
-        all, grid_, box_, table_.radius, skin_);
-    for (std::size_t k = 0; k < lists.order.size(); ++k)
-      if (lists.order[k] != int(k))
-        throw std::logic_error("the gathered particles are out of the global cell order");
-    all.neighbour_offsets = std::move(lists.offsets);
-    all.neighbours = std::move(lists.neighbours);
-    return all;
+    return slab_state::gather<Dim, Real, ExecSpace, Paths>(s, p_, grid_, box_, table_.radius, skin_,
+                                                           *slabs_, comm_);
   }
 
   // Refuses (InvalidCheckpoint, nothing changed) a state that does not fit this solver.
@@ -534,34 +512,6 @@ class DemSolver final : public Solver {
   }
 
  private:
-  // The particles whose cell row is this process's slab.
-  HostParticles mine(const HostParticles& all) const {
-    HostParticles out;
-    for (std::size_t i = 0; i < all.size(); ++i) {
-      if (!slabs_->owns(Position(all.position[i][std::size_t(slabs_->axis())]))) continue;
-      out.add(all.position[i], all.velocity[i], all.species[i], all.id[i]);
-      if (!all.angular_velocity.empty()) out.angular_velocity.push_back(all.angular_velocity[i]);
-    }
-    return out;
-  }
-
-  // The cell of each owned particle's reference position: its place in the last sort.
-  std::vector<int> reference_cells() const {
-    auto x_ref = host_copy<Paths>(p_.x_ref);
-    std::vector<int> cells(std::size_t(p_.n));
-    for (int i = 0; i < p_.n; ++i) cells[std::size_t(i)] = grid_.cell_of(x_ref, i);
-    return cells;
-  }
-  // The rows by increasing cell, rows of one cell in their given order (by id, as the
-  // last sort left them).
-  static std::vector<int> in_cell_order(const std::vector<int>& cells) {
-    std::vector<int> rows(cells.size());
-    std::iota(rows.begin(), rows.end(), 0);
-    std::stable_sort(rows.begin(), rows.end(),
-                     [&](int a, int b) { return cells[std::size_t(a)] < cells[std::size_t(b)]; });
-    return rows;
-  }
-
   // Several processes: this rank's compute time in advance() (halo and waits excluded),
   // for the balance by work.
   struct WorkClock {
