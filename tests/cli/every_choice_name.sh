@@ -60,7 +60,7 @@ for n in "${modes[@]}"; do dry contact.restitution_mode "$n"; done
 for n in "${precisions[@]}"; do dry numerics.precision "$n"; done
 for n in "${scatters[@]}"; do dry numerics.field_scatter "$n"; done
 for n in $(names "mass definition"); do dry numerics.mass_definition "$n"; done
-for n in $(names inflow.mach_at); do
+for n in $(names "mach reference"); do
   out=$("$granshock" run "$scene" --dry-run --out "$dir/never" --set "inflow.mach_at=\"$n\"" 2>&1) ||
     fail "--set inflow.mach_at=$n: $out"
 done
