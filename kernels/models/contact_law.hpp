@@ -66,7 +66,8 @@
 //
 // Each member is detected below (the C++17 detection idiom: std::void_t over the member's
 // use, as the kernels use it), so that a law lacking one fails with a message naming it
-// rather than deep inside the solver's templates.
+// rather than deep inside the solver's templates (the messages quote with ', which nvcc
+// prints as it is).
 #pragma once
 
 #include <type_traits>
@@ -139,28 +140,28 @@ GRANSHOCK_CONTACT_LAW_MEMBER(has_damping_ratio, std::declval<double&>() = Law::d
 template <class Law, class Real>
 constexpr bool check_members() {
   static_assert(has_coefficients_type<Law, Real>::value,
-                "a contact law needs `template <class Real> struct Coefficients` with a "
-                "`friction` member (kernels/models/contact_law.hpp)");
+                "a contact law needs 'template <class Real> struct Coefficients' with a "
+                "'friction' member (kernels/models/contact_law.hpp)");
   static_assert(has_normal_type<Law, Real>::value,
-                "a contact law needs `template <class Real> struct Normal` with a `force` "
+                "a contact law needs 'template <class Real> struct Normal' with a 'force' "
                 "member (kernels/models/contact_law.hpp)");
   static_assert(has_spring_type<Law, Real>::value,
-                "a contact law needs `template <class Real> struct Spring` with `kt` and "
-                "`gt` members (kernels/models/contact_law.hpp)");
+                "a contact law needs 'template <class Real> struct Spring' with 'kt' and "
+                "'gt' members (kernels/models/contact_law.hpp)");
   static_assert(has_coefficients<Law, Real>::value,
-                "a contact law needs `template <class Real> static Coefficients<Real> "
-                "coefficients(const PairProperties&, const ContactOptions&)` "
+                "a contact law needs 'template <class Real> static Coefficients<Real> "
+                "coefficients(const PairProperties&, const ContactOptions&)' "
                 "(kernels/models/contact_law.hpp)");
   static_assert(has_normal<Law, Real>::value,
-                "a contact law needs `static Normal<Real> normal(const Coefficients<Real>&, "
-                "Real dn, Real vn)`, a device function (kernels/models/contact_law.hpp)");
+                "a contact law needs 'static Normal<Real> normal(const Coefficients<Real>&, "
+                "Real dn, Real vn)', a device function (kernels/models/contact_law.hpp)");
   static_assert(has_tangential<Law, Real>::value,
-                "a contact law needs `static Spring<Real> tangential(const "
-                "Coefficients<Real>&, const Normal<Real>&)`, a device function "
+                "a contact law needs 'static Spring<Real> tangential(const "
+                "Coefficients<Real>&, const Normal<Real>&)', a device function "
                 "(kernels/models/contact_law.hpp)");
   static_assert(has_elastic_energy<Law, Real>::value,
-                "a contact law needs `static double elastic_energy(const Coefficients<Real>&, "
-                "double dn)`, a device function (kernels/models/contact_law.hpp)");
+                "a contact law needs 'static double elastic_energy(const Coefficients<Real>&, "
+                "double dn)', a device function (kernels/models/contact_law.hpp)");
   return true;
 }
 
@@ -172,27 +173,27 @@ template <class Law>
 constexpr bool check_contact_law() {
   using namespace contact_law_detail;
   static_assert(has_name<Law, double>::value,
-                "a contact law needs `static constexpr const char* name` "
+                "a contact law needs 'static constexpr const char* name' "
                 "(kernels/models/contact_law.hpp)");
   static_assert(has_kind<Law, double>::value,
-                "a contact law needs `static constexpr ContactModelKind kind` "
+                "a contact law needs 'static constexpr ContactModelKind kind' "
                 "(kernels/models/contact_law.hpp)");
   static_assert(has_collision_time<Law, double>::value,
-                "a contact law needs `static double collision_time(const PairProperties&, "
-                "const ContactOptions&, double v)` (kernels/models/contact_law.hpp)");
+                "a contact law needs 'static double collision_time(const PairProperties&, "
+                "const ContactOptions&, double v)' (kernels/models/contact_law.hpp)");
   static_assert(has_peak_overlap<Law, double>::value,
-                "a contact law needs `static double peak_overlap(const PairProperties&, "
-                "const ContactOptions&, double v)` (kernels/models/contact_law.hpp)");
+                "a contact law needs 'static double peak_overlap(const PairProperties&, "
+                "const ContactOptions&, double v)' (kernels/models/contact_law.hpp)");
   static_assert(has_peak_normal_stiffness<Law, double>::value,
-                "a contact law needs `static double peak_normal_stiffness(const "
-                "PairProperties&, const ContactOptions&, double v)` "
+                "a contact law needs 'static double peak_normal_stiffness(const "
+                "PairProperties&, const ContactOptions&, double v)' "
                 "(kernels/models/contact_law.hpp)");
   static_assert(has_peak_tangential_stiffness<Law, double>::value,
-                "a contact law needs `static double peak_tangential_stiffness(const "
-                "PairProperties&, const ContactOptions&, double v)` "
+                "a contact law needs 'static double peak_tangential_stiffness(const "
+                "PairProperties&, const ContactOptions&, double v)' "
                 "(kernels/models/contact_law.hpp)");
   static_assert(has_damping_ratio<Law, double>::value,
-                "a contact law needs `static double damping_ratio(const PairProperties&)` "
+                "a contact law needs 'static double damping_ratio(const PairProperties&)' "
                 "(kernels/models/contact_law.hpp)");
   static_assert(check_members<Law, float>() && check_members<Law, double>());
   if constexpr (has_name<Law, double>::value && has_kind<Law, double>::value)
