@@ -11,7 +11,7 @@ namespace granshock {
 // The contact laws granshock compiles; each is a type in kernels/models/ and an entry of
 // the variant table (kernels/solver/variant_table.hpp).
 enum class ContactModelKind { hertz, hooke };
-ContactModelKind parse_contact_model(const std::string& name);  // "hertz" | "hooke"
+ContactModelKind parse_contact_model(const std::string& name);  // core/variant_names.hpp
 std::string to_string(ContactModelKind model);
 
 // The range of the contact laws, as overlap over the pair's smaller diameter
@@ -36,7 +36,7 @@ struct ContactOptions {
 // dt -> 0; `discrete` calibrated at start-up so that the solver's own integrator at the
 // run's dt returns e, averaged over the phase of the first contact step.
 enum class RestitutionMode { continuous, discrete };
-RestitutionMode parse_restitution_mode(const std::string& name);  // "continuous" | "discrete"
+RestitutionMode parse_restitution_mode(const std::string& name);  // core/choice_names.hpp
 std::string to_string(RestitutionMode mode);
 
 struct ContactSettings {

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "choice_names.hpp"
 #include "user_error.hpp"
 
 namespace granshock {
@@ -33,13 +34,11 @@ double sound_speed(double temperature, double mass, double phi, double e, int di
 }
 
 MassDefinition parse_mass_definition(const std::string& name) {
-  if (name == "mixture_mean") return MassDefinition::mixture_mean;
-  if (name == "paper_sum") return MassDefinition::paper_sum;
-  throw UserError("mass definition '" + name + "' is not one of mixture_mean, paper_sum");
+  return parse_choice<MassDefinition>(name);
 }
 
 std::string to_string(MassDefinition m) {
-  return m == MassDefinition::mixture_mean ? "mixture_mean" : "paper_sum";
+  return choice_name(m);
 }
 
 double sound_speed_mass(MassDefinition def, const std::vector<double>& masses,

@@ -22,7 +22,7 @@ double sound_speed(double temperature, double mass, double phi, double e, int di
 // the mixture's mean mass sum_a xi_a m_a is what the single-species theory becomes
 // for a mixture of equal particles, and it is granshock's default.
 enum class MassDefinition { mixture_mean, paper_sum };
-MassDefinition parse_mass_definition(const std::string& name);  // "mixture_mean" | "paper_sum"
+MassDefinition parse_mass_definition(const std::string& name);  // core/choice_names.hpp
 std::string to_string(MassDefinition m);
 double sound_speed_mass(MassDefinition def, const std::vector<double>& masses,
                         const std::vector<double>& number_fractions);

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "choice_names.hpp"
+
 namespace granshock {
 
 long Scene::total_steps() const {
@@ -52,13 +54,11 @@ std::size_t Scene::capacity_estimate() const {
 }
 
 MachReference parse_mach_reference(const std::string& name) {
-  if (name == "inserted") return MachReference::inserted;
-  if (name == "inlet_bins") return MachReference::inlet_bins;
-  throw std::invalid_argument("unknown inflow.mach_at: " + name);
+  return parse_choice<MachReference>(name);
 }
 
 std::string to_string(MachReference m) {
-  return m == MachReference::inserted ? "inserted" : "inlet_bins";
+  return choice_name(m);
 }
 
 void resolve_inflow(Scene& s) {

@@ -24,7 +24,7 @@ inline constexpr double kMaxInflowAreaFraction = 0.4;
 // number of the inserted state (sigma from kinetic theory), or the one measured over the
 // first two bin rows, as the paper measures Ma_inf (sigma calibrated before the run).
 enum class MachReference { inserted, inlet_bins };
-MachReference parse_mach_reference(const std::string& name);  // "inserted" | "inlet_bins"
+MachReference parse_mach_reference(const std::string& name);  // core/choice_names.hpp
 std::string to_string(MachReference m);
 
 struct InflowSpec {

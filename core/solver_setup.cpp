@@ -3,28 +3,24 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "user_error.hpp"
+#include "choice_names.hpp"
 
 namespace granshock {
 
 ContactModelKind parse_contact_model(const std::string& name) {
-  if (name == "hertz") return ContactModelKind::hertz;
-  if (name == "hooke") return ContactModelKind::hooke;
-  throw UserError("contact model '" + name + "' is not one of hertz, hooke");
+  return parse_choice<ContactModelKind>(name);
 }
 
 std::string to_string(ContactModelKind model) {
-  return model == ContactModelKind::hertz ? "hertz" : "hooke";
+  return choice_name(model);
 }
 
 RestitutionMode parse_restitution_mode(const std::string& name) {
-  if (name == "continuous") return RestitutionMode::continuous;
-  if (name == "discrete") return RestitutionMode::discrete;
-  throw UserError("restitution mode '" + name + "' is not one of continuous, discrete");
+  return parse_choice<RestitutionMode>(name);
 }
 
 std::string to_string(RestitutionMode mode) {
-  return mode == RestitutionMode::continuous ? "continuous" : "discrete";
+  return choice_name(mode);
 }
 
 ContactSettings ContactSettings::uniform(int n, double e, double mu) {

@@ -15,6 +15,7 @@
 #include <tuple>
 #include <utility>
 
+#include "choice_names.hpp"
 #include "scene_file.hpp"
 #include "table_reader.hpp"
 
@@ -75,10 +76,11 @@ bool is_safe_name(const std::string& name) {
   return true;
 }
 
-const char* const kScatterNames[] = {"auto", "atomic", "scatter_view", "rows"};
-
-std::string scatter_name(ScatterStrategy s) {
-  return kScatterNames[int(s)];
+// A key whose value is a name of Choices<Enum> (core/choice_names.hpp): the table's names
+// are the accepted ones, `fallback` the default.
+template <class Enum>
+Enum read_choice(TableReader& r, const std::string& k, Enum fallback) {
+  return parse_choice<Enum>(r.choice(k, choice_names<Enum>(), choice_name(fallback)));
 }
 
 // What the keys of a table are read into: the scene being built and, inside an item table
@@ -493,8 +495,7 @@ const Key kContactKeys[] = {
      }},
     {"restitution_mode", "string",
      [](TableReader& r, Reading& st, const std::string& k) {
-       st.s.setup.contacts.restitution_mode =
-           parse_restitution_mode(r.choice(k, {"continuous", "discrete"}, "continuous"));
+       st.s.setup.contacts.restitution_mode = read_choice(r, k, RestitutionMode::continuous);
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, to_string(w.s.setup.contacts.restitution_mode));
@@ -518,7 +519,7 @@ const Key kContactKeys[] = {
      }},
     {"model", "string",
      [](TableReader& r, Reading& st, const std::string& k) {
-       st.s.setup.contacts.model = parse_contact_model(r.choice(k, {"hertz", "hooke"}, "hertz"));
+       st.s.setup.contacts.model = read_choice(r, k, ContactModelKind::hertz);
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, to_string(w.s.setup.contacts.model));
@@ -548,12 +549,10 @@ const Table kContact = table("contact", kContactKeys);
 const Key kNumericsKeys[] = {
     {"precision", "string",
      [](TableReader& r, Reading& st, const std::string& k) {
-       st.s.setup.precision = r.choice(k, {"double", "single"}, "double") == "single"
-                                  ? Precision::single_precision
-                                  : Precision::double_precision;
+       st.s.setup.precision = read_choice(r, k, Precision::double_precision);
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
-       t.insert(k, w.s.setup.precision == Precision::single_precision ? "single" : "double");
+       t.insert(k, choice_name(w.s.setup.precision));
      }},
     {"skin", "length",
      [](TableReader& r, Reading& st, const std::string& k) {
@@ -571,8 +570,7 @@ const Key kNumericsKeys[] = {
      }},
     {"mass_definition", "string",
      [](TableReader& r, Reading& st, const std::string& k) {
-       st.s.mass_definition =
-           parse_mass_definition(r.choice(k, {"mixture_mean", "paper_sum"}, "mixture_mean"));
+       st.s.mass_definition = read_choice(r, k, MassDefinition::mixture_mean);
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, to_string(w.s.mass_definition));
@@ -584,12 +582,10 @@ const Key kNumericsKeys[] = {
      [](const Writing& w, toml::table& t, const std::string& k) { t.insert(k, w.s.bin_size_m); }},
     {"field_scatter", "string",
      [](TableReader& r, Reading& st, const std::string& k) {
-       const std::string name = r.choice(k, {"auto", "atomic", "scatter_view", "rows"}, "auto");
-       for (int s = 0; s < 4; ++s)
-         if (name == kScatterNames[s]) st.s.field_scatter = ScatterStrategy(s);
+       st.s.field_scatter = read_choice(r, k, ScatterStrategy::automatic);
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
-       t.insert(k, scatter_name(w.s.field_scatter));
+       t.insert(k, choice_name(w.s.field_scatter));
      }},
 };
 const Table kNumerics = table("numerics", kNumericsKeys);
@@ -683,10 +679,9 @@ const Key kInflowKeys[] = {
     // mach, it says how sigma is found; the resolved scene carries the sigma found.
     {"mach_at", "string",
      [](TableReader& r, Reading& st, const std::string& k) {
-       st.s.inflow.mach_at =
-           parse_mach_reference(r.choice(k, {"inserted", "inlet_bins"}, "inserted"));
+       st.s.inflow.mach_at = read_choice(r, k, MachReference::inserted);
        if (st.s.inflow.mach_at == MachReference::inlet_bins && !st.s.inflow.target_mach)
-         fail(r.key(k), "\"inlet_bins\"",
+         fail(r.key(k), fmt::format("\"{}\"", choice_name(MachReference::inlet_bins)),
               "needs inflow.mach, the Mach number to calibrate sigma for");
      },
      [](const Writing&, toml::table&, const std::string&) {}},

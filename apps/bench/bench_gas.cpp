@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "atomic_file.hpp"
+#include "choice_names.hpp"
 #include "homogeneous_gas.hpp"
 #include "solver.hpp"
 #include "user_error.hpp"
@@ -33,7 +34,7 @@ namespace {
 struct Options {
   std::vector<int> particles{5000, 32000};
   std::vector<double> phi{0.1};
-  std::string precision = "double";
+  std::string precision = granshock::choice_name(granshock::Precision::double_precision);
   int repeats = 5;
   double min_seconds = 1.0;
   int warmup_steps = 300;
@@ -144,8 +145,7 @@ Row bench_one(const Options& o, double phi, int n_wanted) {
   setup.adaptive_skin = o.adaptive_skin;
   setup.list_visits_once = !o.two_visit_list;
   if (o.steps_per_region > 0) setup.steps_per_region = o.steps_per_region;
-  setup.precision = o.precision == "single" ? granshock::Precision::single_precision
-                                            : granshock::Precision::double_precision;
+  setup.precision = granshock::parse_choice<granshock::Precision>(o.precision);
   granshock::GasSpec spec;
   spec.particles = n_wanted;
   spec.area_fraction = phi;
@@ -280,8 +280,8 @@ int main(int argc, char** argv) {
   app.add_option("--phi", o.phi, "area fractions, in (0, 0.78)")
       ->delimiter(',')
       ->check(CLI::Range(1e-6, 0.78));
-  app.add_option("--precision", o.precision, "double | single")
-      ->check(CLI::IsMember({"double", "single"}));
+  app.add_option("--precision", o.precision, granshock::choice_list<granshock::Precision>())
+      ->check(CLI::IsMember(granshock::choice_names<granshock::Precision>()));
   app.add_option("--repeats", o.repeats, "timed repeats per case")->check(CLI::Range(1, 1000));
   app.add_option("--min-seconds", o.min_seconds, "minimum wall time of each repeat (s)")
       ->check(CLI::Range(0.0, 3600.0));

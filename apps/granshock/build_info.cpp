@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "build_description.hpp"
+#include "choice_names.hpp"
 #include "device/backends.hpp"
 #include "mpi_runtime.hpp"
 
@@ -26,6 +27,14 @@ std::string build_info_json(int processes) {
   j["mpi"] = {{"library", MpiRuntime::library_version()},
               {"launched", MpiRuntime::launched_by_mpi()},
               {"processes", processes}};
+  // The names every choice takes (core/choice_names.hpp), among them the contact laws this
+  // build compiles (each has a law in kernels/models/models.hpp).
+  nlohmann::json choices;
+  for_each_choice([&](auto value) {
+    using Enum = decltype(value);
+    choices[Choices<Enum>::what] = choice_names<Enum>();
+  });
+  j["choices"] = choices;
   return j.dump(2);
 }
 

@@ -15,6 +15,7 @@
 #include "allocation_failure.hpp"
 #include "build_description.hpp"
 #include "build_info.hpp"
+#include "choice_names.hpp"
 #include "cpu_check.hpp"
 #include "device/kokkos_runtime.hpp"
 #include "failure_agreement.hpp"
@@ -39,8 +40,21 @@ std::string one_line(std::string text) {
   return text;
 }
 
-void add_collide_command(CLI::App& app, granshock::CollisionOptions& o, std::string& precision,
-                         std::string& model, std::string& restitution_mode, std::string& along) {
+// An option whose value is a name of Choices<Enum> (core/choice_names.hpp): CLI11 checks
+// the name against the table, whose names and descriptions the help lists, and the table
+// gives the value.
+template <class Enum>
+CLI::Option* add_choice_option(CLI::App& cmd, const std::string& flag, Enum& value,
+                               const std::string& what) {
+  return cmd
+      .add_option_function<std::string>(
+          flag, [&value](const std::string& name) { value = granshock::parse_choice<Enum>(name); },
+          what + " (" + granshock::choice_help<Enum>() + "; default " +
+              granshock::choice_name(value) + ")")
+      ->check(CLI::IsMember(granshock::choice_names<Enum>()));
+}
+
+void add_collide_command(CLI::App& app, granshock::CollisionOptions& o, std::string& along) {
   auto* cmd = app.add_subcommand("collide",
                                  "head-on collision of two particles or a particle and "
                                  "the fixed cylinder; prints JSON");
@@ -51,19 +65,16 @@ void add_collide_command(CLI::App& app, granshock::CollisionOptions& o, std::str
   cmd->add_option("--speed", o.speed_m_per_s, "relative normal impact speed (m/s)")->required();
   cmd->add_option("--dt", o.dt, "time step (s); default t_c/100");
   cmd->add_option("--e", o.restitution, "coefficient of restitution, in [0.01, 1]; default 0.5");
-  cmd->add_option("--model", model, "contact law: hertz (default) | hooke")
-      ->check(CLI::IsMember({"hertz", "hooke"}));
+  add_choice_option(*cmd, "--model", o.model, "contact law");
   cmd->add_option("--characteristic-velocity", o.characteristic_velocity,
                   "hooke: the impact speed (m/s) of equal peak overlap with Hertz; default "
                   "--speed");
   cmd->add_flag("--limit-force", o.limit_force,
                 "clamp the normal force at zero (no attraction at the end of contact)");
-  cmd->add_option("--precision", precision, "double | single")
-      ->check(CLI::IsMember({"double", "single"}));
+  add_choice_option(*cmd, "--precision", o.precision, "arithmetic of the contact");
   cmd->add_flag("--force", o.force, "run even when dt is past the stable limit");
-  cmd->add_option("--restitution-mode", restitution_mode,
-                  "continuous (default) | discrete: damping calibrated at this speed and dt")
-      ->check(CLI::IsMember({"continuous", "discrete"}));
+  add_choice_option(*cmd, "--restitution-mode", o.restitution_mode,
+                    "how the damping is found; discrete calibrates it at this speed and dt");
   cmd->add_option("--phase", o.phase,
                   "the first contact step overlaps by phase x speed x dt, in (0, 1]; default 1");
   cmd->add_option("--at", o.place.centre,
@@ -116,30 +127,19 @@ void add_run_command(CLI::App& app, granshock::RunOptions& o) {
                   "write a checkpoint and stop after this many steps (for batch-job time limits)")
       ->check(positive_step_count);
   cmd->add_flag("--quiet", o.quiet, "no progress lines");
-  cmd->add_option("--balance", o.balance,
-                  "under mpirun: slab boundaries 'equal' (rows), or moved at list rebuilds to "
-                  "balance the 'particles' or the measured 'work' (docs/parallel.md); the "
-                  "results are the same bit for bit")
-      ->check(CLI::IsMember({"equal", "particles", "work"}));
-  cmd->add_option("--slabs", o.slabs,
-                  "under mpirun: each process owns a slab of cell rows along 'y' (the flow) or "
-                  "'x' (across it, through the periodic faces; docs/parallel.md); the results "
-                  "are the same bit for bit")
-      ->check(CLI::IsMember({"x", "y"}));
-  cmd->add_option("--backend-switch", o.backend_switch,
-                  "one process on several threads: 'auto' continues on one thread while the "
-                  "threads run slower than one would (another process busy on the machine) "
-                  "and tries the threads again later; 'off' keeps the threads; 'alternate' "
-                  "moves at every slice (a check that both give the same run); the results "
-                  "are the same bit for bit (docs/benchmarks.md, \"A busy machine\")")
-      ->check(CLI::IsMember({"auto", "off", "alternate"}));
-  cmd->add_option(
-         "--snapshot-output", o.snapshot_output,
-         "under mpirun: snapshots 'gathered' to rank 0, written by every process at "
-         "once ('collective', parallel HDF5), or 'auto': collective for frames of "
-         "24,576 particles or more, as measured faster (docs/parallel.md); the files are the "
-         "same bit for bit")
-      ->check(CLI::IsMember({"auto", "gathered", "collective"}));
+  add_choice_option(*cmd, "--balance", o.balance,
+                    "under mpirun: where the slab boundaries lie (docs/parallel.md); the "
+                    "results are the same bit for bit");
+  add_choice_option(*cmd, "--slabs", o.slabs,
+                    "under mpirun: the axis each process's slab of cell rows lies along "
+                    "(docs/parallel.md); the results are the same bit for bit");
+  add_choice_option(*cmd, "--backend-switch", o.backend_switch,
+                    "one process on several threads: whether the run moves to one thread "
+                    "while another process is busy on the machine (docs/benchmarks.md, \"A "
+                    "busy machine\"); the results are the same bit for bit");
+  add_choice_option(*cmd, "--snapshot-output", o.snapshot_output,
+                    "under mpirun: how snapshots reach run.h5 (docs/parallel.md); the files "
+                    "are the same bit for bit");
   cmd->add_flag("--dry-run", o.dry_run,
                 "check the scene and the output directory, print the resolved scene, write "
                 "nothing");
@@ -253,9 +253,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.allow_extras(false);
   granshock::CollisionOptions collide;
-  std::string precision = "double", model = "hertz", restitution_mode = "continuous";
   std::string along = "x";
-  add_collide_command(app, collide, precision, model, restitution_mode, along);
+  add_collide_command(app, collide, along);
   granshock::RunOptions run;
   add_run_command(app, run);
   std::vector<std::filesystem::path> field_dirs;
@@ -366,10 +365,6 @@ int main(int argc, char** argv) {
     if (info->parsed()) {
       if (mpi->rank() == 0) std::cout << granshock::build_info_json(mpi->size()) << "\n";
     } else if (app.got_subcommand("collide")) {
-      collide.precision = precision == "single" ? granshock::Precision::single_precision
-                                                : granshock::Precision::double_precision;
-      collide.model = granshock::parse_contact_model(model);
-      collide.restitution_mode = granshock::parse_restitution_mode(restitution_mode);
       collide.place.axis = along == "y" ? 1 : 0;
       const auto result = granshock::run_head_on_collision(collide);
       if (result.time_step.verdict != granshock::TimeStepAssessment::Verdict::ok)

@@ -13,6 +13,7 @@
 #include "build_description.hpp"
 #include "checkpoint_checks.hpp"
 #include "checkpoint_file.hpp"
+#include "choice_names.hpp"
 #include "failure_agreement.hpp"
 #include "field_sums_file.hpp"
 #include "fields_command.hpp"
@@ -227,12 +228,11 @@ void BowShockRun::prepare() {
       every_seconds(scene_.run.checkpoint_interval_s, scene_.run.duration_s, scene_.setup.dt);
   solver_ = make_solver(scene_.setup, scene_.capacity_estimate(), Backend::default_space, &comm_);
   solver_->configure_sampling(sampling_.layout());
-  decomposition_.axis = options_.slabs == "x" ? SlabAxis::x : SlabAxis::y;
-  decomposition_.balance = options_.balance == "work"        ? SlabBalance::work
-                           : options_.balance == "particles" ? SlabBalance::particles
-                                                             : SlabBalance::equal;
+  decomposition_.axis = options_.slabs;
+  decomposition_.balance = options_.balance;
   solver_->decompose(decomposition_);
-  if (options_.backend_switch != "off" && comm_.size() == 1 && switchable_host_threads() > 1)
+  if (options_.backend_switch != BackendSwitchMode::off && comm_.size() == 1 &&
+      switchable_host_threads() > 1)
     backend_switch_.emplace();
   samples_.assign(std::size_t(sampling_.blocks()), 0);
 }
@@ -506,9 +506,9 @@ void BowShockRun::write_snapshot(long step) {
   const double time = step * scene_.setup.dt;
   const SnapshotPart part = solver_->snapshot_part();
   const auto* mpi = dynamic_cast<const MpiCommunicator*>(&comm_);
-  const bool collective =
-      options_.snapshot_output == "collective" ||
-      (options_.snapshot_output == "auto" && RunFile::collective_pays(part.total));
+  const bool collective = options_.snapshot_output == SnapshotOutput::collective ||
+                          (options_.snapshot_output == SnapshotOutput::automatic &&
+                           RunFile::collective_pays(part.total));
   if (mpi != nullptr && collective) {
     ++output_.collective_snapshots;
     writing([&] {
@@ -631,7 +631,9 @@ void BowShockRun::advance_slice(long steps) {
   backend_switch_->observe(particle_steps, seconds);
   // One note when the run settles on the other backend (a try alone says nothing); with
   // --quiet, in the log alone.
-  if (backend_switch_->switches() == switches || options_.backend_switch != "auto") return;
+  if (backend_switch_->switches() == switches ||
+      options_.backend_switch != BackendSwitchMode::automatic)
+    return;
   const bool one_thread = backend_switch_->current() == Backend::serial;
   const std::string note = fmt::format(
       "granshock: note: {} ({:.3g} particle-steps/s on {} threads, {:.3g} on one); trying "
@@ -650,7 +652,7 @@ void BowShockRun::advance_slice(long steps) {
 // The backend the next slice runs on: the switch's choice, or with --backend-switch
 // alternate (a check that both give the same run, not a speed-up) the other one each time.
 Backend BowShockRun::next_backend() const {
-  if (options_.backend_switch != "alternate") return backend_switch_->current();
+  if (options_.backend_switch != BackendSwitchMode::alternate) return backend_switch_->current();
   return backend_ == Backend::serial ? Backend::default_space : Backend::serial;
 }
 
@@ -675,7 +677,7 @@ void BowShockRun::move_solver_to(Backend backend) {
 // summary.json "backend_switch": the moves between threads and one thread, for runs that
 // can move (this leg of the run).
 nlohmann::json BowShockRun::backend_summary() const {
-  return {{"mode", options_.backend_switch},
+  return {{"mode", choice_name(options_.backend_switch)},
           {"ended_on", backend_ == Backend::serial ? "one thread" : "threads"},
           {"moves", backend_moves_},
           {"tries", backend_switch_->tries()},
@@ -692,8 +694,8 @@ nlohmann::json BowShockRun::processes_summary() const {
   const double wall = meter_->elapsed_s();
   return {
       {"count", comm_.size()},
-      {"slabs_along", options_.slabs},
-      {"balance", options_.balance},
+      {"slabs_along", choice_name(options_.slabs)},
+      {"balance", choice_name(options_.balance)},
       {"particles_per_rank", gather_to_root(comm_, long(solver_->size()))},
       {"ghosts_per_rank", gather_to_root(comm_, halo.ghosts)},
       {"halo_share_per_rank", gather_to_root(comm_, wall > 0 ? halo.seconds / wall : 0.0)},
@@ -705,7 +707,7 @@ nlohmann::json BowShockRun::processes_summary() const {
       {"migrated_per_rank", gather_to_root(comm_, halo.migrated)},
       // Output (docs/scaling.md): how snapshots were written, and rank 0's seconds per
       // snapshot (either way) and per checkpoint (gathered to rank 0, written there).
-      {"snapshot_output", options_.snapshot_output},
+      {"snapshot_output", choice_name(options_.snapshot_output)},
       {"snapshots_written_collectively", output_.collective_snapshots},
       {"snapshot_seconds_each",
        output_.snapshots > 0 ? output_.snapshot_seconds / double(output_.snapshots) : 0.0},

@@ -12,8 +12,10 @@
 
 #include "communicator.hpp"
 #include "figure_switch.hpp"
+#include "run_modes.hpp"
 #include "run_observables.hpp"  // NumericalFailure
 #include "scene.hpp"
+#include "solver.hpp"
 
 namespace granshock {
 
@@ -28,15 +30,14 @@ struct RunOptions {
   bool quiet = false;             // no progress lines
   // The figures at the end (--no-figures, GRANSHOCK_FIGURES: figure_switch.hpp).
   bool figures = figures_by_default();
-  std::string balance = "equal";  // several processes: "equal", "particles" or "work"
-  std::string slabs = "y";        // several processes: slabs along "x" or "y"
-  // Several processes: how snapshots reach run.h5, "gathered" to rank 0, "collective"
-  // (parallel HDF5) or "auto" (collective for large frames: RunFile::collective_pays).
-  std::string snapshot_output = "auto";
-  // One process on the host's threads: "auto" moves the run to one thread while the
-  // threads run slower than one would (a busy machine) and back (backend_switch.hpp);
-  // "off" keeps the threads; "alternate" moves at every slice (a check: the same run).
-  std::string backend_switch = "auto";
+  // Several processes: how slab boundaries move and which axis the slabs divide
+  // (core/solver.hpp); how snapshots reach run.h5 (core/run_modes.hpp).
+  SlabBalance balance = SlabBalance::equal;
+  SlabAxis slabs = SlabAxis::y;
+  SnapshotOutput snapshot_output = SnapshotOutput::automatic;
+  // One process on the host's threads: whether the run moves between the threads and one
+  // thread (core/run_modes.hpp, backend_switch.hpp).
+  BackendSwitchMode backend_switch = BackendSwitchMode::automatic;
   bool dry_run = false;  // check the scene and the directory, print the resolved scene
   std::string accuracy;  // an error budget ("2%"): settings from a measured table
   std::filesystem::path accuracy_table;  // that table; empty: default_accuracy_table()

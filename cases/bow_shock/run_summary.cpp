@@ -73,10 +73,13 @@ nlohmann::json calibration_summary(const InletCalibration& c) {
                           {"mach_paper_sum", m.mach_paper_sum},
                           {"phi", m.phi},
                           {"simulated_seconds", m.simulated_s}});
-  return {
-      {"mach_at", "inlet_bins"}, {"target", c.target},       {"sigma_inserted", c.sigma_inserted},
-      {"sigma", c.sigma},        {"converged", c.converged}, {"tolerance", c.tolerance},
-      {"iterations", iterations}};
+  return {{"mach_at", to_string(MachReference::inlet_bins)},
+          {"target", c.target},
+          {"sigma_inserted", c.sigma_inserted},
+          {"sigma", c.sigma},
+          {"converged", c.converged},
+          {"tolerance", c.tolerance},
+          {"iterations", iterations}};
 }
 
 nlohmann::json run_summary(const Scene& s, const Solver& solver, const InflowController& inflow,

@@ -317,7 +317,8 @@ std::string to_json(const CollisionResult& r) {
   j["at"] = r.place.centre;
   j["along"] = r.place.axis == 0 ? "x" : "y";
   j["beta"] = r.beta;
-  j["restitution_mode"] = r.calibration ? "discrete" : "continuous";
+  j["restitution_mode"] =
+      to_string(r.calibration ? RestitutionMode::discrete : RestitutionMode::continuous);
   if (r.calibration) j["calibration"] = to_json(*r.calibration, r.speed);
   return j.dump(2);
 }

@@ -13,11 +13,12 @@
 #include "device/position.hpp"
 #include "device/vec.hpp"
 #include "obstacle.hpp"
+#include "variant_names.hpp"
 
 namespace granshock {
 
 struct CylinderShape {
-  static constexpr const char* name = "cylinder";
+  static constexpr const char* name = choice_name(ObstacleShape::cylinder);
   static constexpr bool present = true;
   static bool matches(const std::optional<Obstacle>& o) {
     return o && o->shape == ObstacleShape::cylinder;

@@ -15,11 +15,12 @@
 #include "contact_settings.hpp"
 #include "device/device_math.hpp"
 #include "pair_properties.hpp"
+#include "variant_names.hpp"
 
 namespace granshock {
 
 struct HertzModel {
-  static constexpr const char* name = "hertz";
+  static constexpr const char* name = choice_name(ContactModelKind::hertz);
   static constexpr ContactModelKind kind = ContactModelKind::hertz;
 
   template <class Real>

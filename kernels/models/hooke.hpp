@@ -20,11 +20,12 @@
 #include "contact_settings.hpp"
 #include "device/device_math.hpp"
 #include "pair_properties.hpp"
+#include "variant_names.hpp"
 
 namespace granshock {
 
 struct HookeModel {
-  static constexpr const char* name = "hooke";
+  static constexpr const char* name = choice_name(ContactModelKind::hooke);
   static constexpr ContactModelKind kind = ContactModelKind::hooke;
 
   template <class Real>

@@ -1,32 +1,74 @@
-// The physics a scene can choose, as lists of types (docs/design.md, "Adding a model"):
-// the contact laws and the obstacle shapes. The variant table compiles each combination
-// (kernels/solver/variant_table.hpp); host code that needs a law's or a shape's formulas
-// without a kernel (the time-step guard, the inflow) asks with_contact_model or
-// with_obstacle_shape. A new law or shape is one header and one line in each list here.
+// The physics a scene can choose, as lists of types (docs/design.md, "Adding a contact
+// law"): the contact laws and the obstacle shapes. The variant table compiles each
+// combination (kernels/solver/variant_table.hpp); host code that needs a law's or a
+// shape's formulas without a kernel (the time-step guard, the inflow) asks
+// with_contact_model or with_obstacle_shape. A new law is one header, its name in
+// core/variant_names.hpp and one entry in ContactLaws here.
 #pragma once
 
 #include <optional>
 #include <stdexcept>
 
+#include "contact_law.hpp"
 #include "contact_settings.hpp"
 #include "models/cylinder.hpp"
 #include "models/hertz.hpp"
 #include "models/hooke.hpp"
 #include "models/no_obstacle.hpp"
 #include "obstacle.hpp"
+#include "variant_names.hpp"
 
 namespace granshock {
+
+template <class... T>
+struct TypeList {};
+
+// Every contact law granshock compiles, each a type of the interface in contact_law.hpp.
+using ContactLaws = TypeList<HertzModel, HookeModel>;
+
+namespace models_detail {
+
+template <class... Laws>
+constexpr bool every_law_checked(TypeList<Laws...>) {
+  return (check_contact_law<Laws>() && ...);
+}
+
+// How many laws of the list have `kind`.
+template <class... Laws>
+constexpr int laws_of_kind(ContactModelKind kind, TypeList<Laws...>) {
+  return ((Laws::kind == kind ? 1 : 0) + ... + 0);
+}
+
+// Whether every name of core/variant_names.hpp has exactly one law: a name without a law
+// would be accepted by the scene and refused by the variant table.
+constexpr bool every_name_has_one_law() {
+  for (const ChoiceName<ContactModelKind>& c : Choices<ContactModelKind>::table)
+    if (laws_of_kind(c.value, ContactLaws{}) != 1) return false;
+  return true;
+}
+
+template <class F, class Law, class... Rest>
+decltype(auto) with_law_of_kind(ContactModelKind kind, F& f, TypeList<Law, Rest...>) {
+  if constexpr (sizeof...(Rest) == 0) {
+    if (kind != Law::kind) throw std::logic_error("with_contact_model: unknown contact model");
+    return f(Law{});
+  } else {
+    if (kind == Law::kind) return f(Law{});
+    return with_law_of_kind(kind, f, TypeList<Rest...>{});
+  }
+}
+
+}  // namespace models_detail
+
+static_assert(models_detail::every_law_checked(ContactLaws{}));
+static_assert(models_detail::every_name_has_one_law(),
+              "every contact model of core/variant_names.hpp needs exactly one law in "
+              "ContactLaws (kernels/models/models.hpp)");
 
 // Calls f(Model{}) for the scene's contact law.
 template <class F>
 decltype(auto) with_contact_model(ContactModelKind kind, F&& f) {
-  switch (kind) {
-    case ContactModelKind::hertz:
-      return f(HertzModel{});
-    case ContactModelKind::hooke:
-      return f(HookeModel{});
-  }
-  throw std::logic_error("with_contact_model: unknown contact model");
+  return models_detail::with_law_of_kind(kind, f, ContactLaws{});
 }
 
 // Calls f(Shape{}) for the scene's obstacle, NoObstacle when it has none.

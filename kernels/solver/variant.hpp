@@ -10,6 +10,7 @@
 
 #include "obstacle.hpp"
 #include "solver_setup.hpp"
+#include "variant_names.hpp"
 
 namespace granshock {
 
@@ -31,8 +32,10 @@ struct Variant {
   }
 
   static std::string name() {
-    return std::to_string(Dim_) + "d/" + (sizeof(Real_) == 4 ? "single" : "double") + "/" +
-           Model_::name + "/" + (Friction_ ? "friction" : "frictionless") + "/" + Obstacle_::name;
+    const Precision precision =
+        sizeof(Real_) == 4 ? Precision::single_precision : Precision::double_precision;
+    return std::to_string(Dim_) + "d/" + choice_name(precision) + "/" + Model_::name + "/" +
+           (Friction_ ? "friction" : "frictionless") + "/" + Obstacle_::name;
   }
 };
 

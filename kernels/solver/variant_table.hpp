@@ -2,9 +2,10 @@
 // contact law, friction and obstacle shape that granshock compiles, for each precision and
 // backend. The lists below are the whole table; make_solver_variant walks their product,
 // skips the combinations a Variant does not compile (Variant::compiled), and builds the
-// DemSolver whose Variant matches the scene. Adding a contact law or an obstacle shape is
-// one entry in a list here (and one in kernels/models/models.hpp); adding a backend is one
-// file variants_<backend>_<precision>.cpp and a line in solver_dispatch.cpp.
+// DemSolver whose Variant matches the scene. Adding a contact law is one entry in
+// ContactLaws (kernels/models/models.hpp), an obstacle shape one entry in a list here (and
+// one in models.hpp); adding a backend is one file variants_<backend>_<precision>.cpp and a
+// line in solver_dispatch.cpp.
 #pragma once
 
 #include <memory>
@@ -17,13 +18,11 @@
 
 namespace granshock {
 
-template <class... T>
-struct TypeList {};
 template <int... D>
 struct DimList {};
 
 using CompiledDimensions = DimList<2>;  // quasi-2-D; 3-D needs 3-D insertion and sampling
-using CompiledModels = TypeList<HertzModel, HookeModel>;
+using CompiledModels = ContactLaws;     // kernels/models/models.hpp
 using CompiledObstacles = TypeList<NoObstacle, CylinderShape>;
 
 // Calls f(Variant{}) for every compiled variant of precision Real.

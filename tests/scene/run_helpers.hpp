@@ -27,7 +27,7 @@ inline RunOptions run_options(const std::filesystem::path& scene, const std::fil
   // trajectory stays bitwise: docs/benchmarks.md, "A busy machine"), and the tests that
   // compare two runs' series bit for bit would fail by chance. The device-path build's
   // RunResume test did.
-  o.backend_switch = "off";
+  o.backend_switch = BackendSwitchMode::off;
   return o;
 }
 

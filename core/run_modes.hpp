@@ -1,0 +1,17 @@
+// How a bow-shock run spreads its output and its threads (docs/parallel.md, "Output";
+// docs/benchmarks.md, "A busy machine"); their names are in core/choice_names.hpp. Neither
+// changes the results.
+#pragma once
+
+namespace granshock {
+
+// Several processes: snapshots gathered to rank 0, written by every process at once
+// (parallel HDF5), or automatic: collective for large frames (RunFile::collective_pays).
+enum class SnapshotOutput { automatic, gathered, collective };
+
+// One process on the host's threads (cases/bow_shock/backend_switch.hpp): automatic moves
+// the run to one thread while the threads run slower than one would and back; off keeps
+// the threads; alternate moves at every slice (a check that both give the same run).
+enum class BackendSwitchMode { automatic, off, alternate };
+
+}  // namespace granshock

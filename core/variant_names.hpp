@@ -1,0 +1,49 @@
+// The names of what the variant table compiles (docs/design.md, "Names of choices"): the
+// contact laws, obstacle shapes and precisions. The scene's keys, `collide`'s options, the
+// variant's name in summary.json and Model::name (kernels/models/) all come from these
+// tables. Kept apart from core/choice_names.hpp so that the kernels include no more than
+// they need, and are not rebuilt when another choice's names change.
+#pragma once
+
+#include "choice.hpp"
+#include "contact_settings.hpp"
+#include "obstacle.hpp"
+#include "solver_setup.hpp"
+
+namespace granshock {
+
+template <>
+struct Choices<ContactModelKind> {
+  static constexpr const char* what = "contact model";
+  static constexpr ChoiceName<ContactModelKind> table[] = {
+      {ContactModelKind::hertz, "hertz",
+       "damped Hertz law of LIGGGHTS, e exact at every impact speed (docs/contact_model.md)"},
+      {ContactModelKind::hooke, "hooke",
+       "linear spring-dashpot of LIGGGHTS, kn from contact.characteristic_velocity "
+       "(kernels/models/hooke.hpp)"},
+  };
+};
+
+template <>
+struct Choices<ObstacleShape> {
+  static constexpr const char* what = "obstacle shape";
+  static constexpr ChoiceName<ObstacleShape> table[] = {
+      {ObstacleShape::cylinder, "cylinder", "a cylinder with its axis along z"},
+  };
+};
+
+template <>
+struct Choices<Precision> {
+  static constexpr const char* what = "precision";
+  static constexpr ChoiceName<Precision> table[] = {
+      {Precision::double_precision, "double", "velocities, forces and the contact law in double"},
+      {Precision::single_precision, "single",
+       "velocities, forces and the contact law in float; positions stay double"},
+  };
+};
+
+static_assert(choice_table_is_one_to_one<ContactModelKind>());
+static_assert(choice_table_is_one_to_one<ObstacleShape>());
+static_assert(choice_table_is_one_to_one<Precision>());
+
+}  // namespace granshock
