@@ -1,11 +1,11 @@
-#include "bin_fields.hpp"
+#include "analysis/bin_fields.hpp"
 
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <string>
 
-#include "kinetic_theory.hpp"
+#include "core/kinetic_theory.hpp"
 
 namespace granshock {
 

@@ -16,8 +16,8 @@
 #include <string>
 #include <vector>
 
-#include "bin_sums.hpp"
-#include "field_physics.hpp"
+#include "analysis/field_physics.hpp"
+#include "core/bin_sums.hpp"
 
 namespace granshock {
 

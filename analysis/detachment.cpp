@@ -1,11 +1,11 @@
-#include "detachment.hpp"
+#include "analysis/detachment.hpp"
 
 #include <cmath>
 #include <cstdio>
 #include <limits>
 #include <random>
 
-#include "block_error.hpp"
+#include "analysis/block_error.hpp"
 
 namespace granshock {
 

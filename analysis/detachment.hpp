@@ -18,11 +18,11 @@
 #include <string>
 #include <vector>
 
-#include "bin_fields.hpp"
-#include "bin_sums.hpp"
-#include "field_physics.hpp"
-#include "front_crossing.hpp"
-#include "stagnation_line.hpp"
+#include "analysis/bin_fields.hpp"
+#include "analysis/field_physics.hpp"
+#include "analysis/front_crossing.hpp"
+#include "analysis/stagnation_line.hpp"
+#include "core/bin_sums.hpp"
 
 namespace granshock {
 

@@ -1,4 +1,4 @@
-#include "detachment_convergence.hpp"
+#include "analysis/detachment_convergence.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "detachment.hpp"
+#include "analysis/detachment.hpp"
 
 namespace granshock {
 

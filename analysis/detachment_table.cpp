@@ -1,12 +1,12 @@
-#include "detachment_table.hpp"
+#include "analysis/detachment_table.hpp"
 
 #include <cmath>
 #include <cstdio>
 #include <limits>
 #include <nlohmann/json.hpp>
 
-#include "atomic_file.hpp"
-#include "csv_cells.hpp"
+#include "analysis/csv_cells.hpp"
+#include "io/atomic_file.hpp"
 
 namespace granshock {
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "field_analysis.hpp"
+#include "analysis/field_analysis.hpp"
 
 namespace granshock {
 

@@ -1,4 +1,4 @@
-#include "eos_check.hpp"
+#include "analysis/eos_check.hpp"
 
 #include <cmath>
 #include <cstdio>

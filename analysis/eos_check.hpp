@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "bin_fields.hpp"
+#include "analysis/bin_fields.hpp"
 
 namespace granshock {
 

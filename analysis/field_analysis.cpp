@@ -1,17 +1,17 @@
-#include "field_analysis.hpp"
+#include "analysis/field_analysis.hpp"
 
 #include <cmath>
 #include <cstdio>
 #include <limits>
 
-#include "block_error.hpp"
-#include "field_sampling_check.hpp"
-#include "field_sums_file.hpp"
-#include "iso_lines.hpp"
-#include "run_file.hpp"
-#include "scene.hpp"
-#include "scene_file.hpp"
-#include "user_error.hpp"
+#include "analysis/block_error.hpp"
+#include "analysis/field_sampling_check.hpp"
+#include "analysis/iso_lines.hpp"
+#include "core/scene.hpp"
+#include "core/user_error.hpp"
+#include "io/field_sums_file.hpp"
+#include "io/run_file.hpp"
+#include "io/scene_file.hpp"
 
 namespace granshock {
 

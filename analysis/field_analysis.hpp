@@ -10,19 +10,19 @@
 #include <string>
 #include <vector>
 
-#include "bin_fields.hpp"
-#include "bin_sums.hpp"
-#include "detachment.hpp"
-#include "detachment_convergence.hpp"
-#include "eos_check.hpp"
-#include "field_physics.hpp"
-#include "flow_features.hpp"
-#include "front_crossing.hpp"
-#include "inflow_check.hpp"
-#include "polyline.hpp"
-#include "shock_front.hpp"
-#include "steadiness.hpp"
-#include "upstream_state.hpp"
+#include "analysis/bin_fields.hpp"
+#include "analysis/detachment.hpp"
+#include "analysis/detachment_convergence.hpp"
+#include "analysis/eos_check.hpp"
+#include "analysis/field_physics.hpp"
+#include "analysis/flow_features.hpp"
+#include "analysis/front_crossing.hpp"
+#include "analysis/inflow_check.hpp"
+#include "analysis/polyline.hpp"
+#include "analysis/shock_front.hpp"
+#include "analysis/steadiness.hpp"
+#include "analysis/upstream_state.hpp"
+#include "core/bin_sums.hpp"
 
 namespace granshock {
 

@@ -1,10 +1,10 @@
-#include "field_physics.hpp"
+#include "analysis/field_physics.hpp"
 
 #include <cmath>
 #include <limits>
 
-#include "scene.hpp"
-#include "user_error.hpp"
+#include "core/scene.hpp"
+#include "core/user_error.hpp"
 
 namespace granshock {
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "kinetic_theory.hpp"
+#include "core/kinetic_theory.hpp"
 
 namespace granshock {
 

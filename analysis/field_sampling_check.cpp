@@ -1,13 +1,13 @@
-#include "field_sampling_check.hpp"
+#include "analysis/field_sampling_check.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
 
-#include "bin_layout.hpp"
-#include "scene.hpp"
-#include "user_error.hpp"
+#include "core/bin_layout.hpp"
+#include "core/scene.hpp"
+#include "core/user_error.hpp"
 
 namespace granshock {
 

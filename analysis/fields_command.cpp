@@ -1,4 +1,4 @@
-#include "fields_command.hpp"
+#include "analysis/fields_command.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,17 +8,17 @@
 #include <optional>
 #include <sstream>
 
-#include "bin_sums.hpp"
-#include "detachment_table.hpp"
-#include "field_analysis.hpp"
-#include "field_sums_file.hpp"
-#include "fields_directory.hpp"
-#include "fields_output.hpp"
-#include "figures.hpp"
-#include "json_file.hpp"
-#include "run_file.hpp"
-#include "summary_json.hpp"
-#include "user_error.hpp"
+#include "analysis/detachment_table.hpp"
+#include "analysis/field_analysis.hpp"
+#include "analysis/fields_output.hpp"
+#include "analysis/figures.hpp"
+#include "analysis/json_file.hpp"
+#include "analysis/summary_json.hpp"
+#include "core/bin_sums.hpp"
+#include "core/user_error.hpp"
+#include "io/field_sums_file.hpp"
+#include "io/fields_directory.hpp"
+#include "io/run_file.hpp"
 
 namespace granshock {
 

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "figure_switch.hpp"
-#include "run_directory.hpp"
+#include "analysis/figure_switch.hpp"
+#include "io/run_directory.hpp"
 
 namespace granshock {
 

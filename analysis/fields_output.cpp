@@ -1,13 +1,13 @@
-#include "fields_output.hpp"
+#include "analysis/fields_output.hpp"
 
 #include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 
-#include "atomic_file.hpp"
-#include "csv_cells.hpp"
-#include "fields_xdmf.hpp"
+#include "analysis/csv_cells.hpp"
+#include "io/atomic_file.hpp"
+#include "io/fields_xdmf.hpp"
 
 namespace granshock {
 

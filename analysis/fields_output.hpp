@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
-#include "field_analysis.hpp"
-#include "fields_file.hpp"
+#include "analysis/field_analysis.hpp"
+#include "io/fields_file.hpp"
 
 namespace granshock {
 

@@ -1,4 +1,4 @@
-#include "figure_switch.hpp"
+#include "analysis/figure_switch.hpp"
 
 #include <algorithm>
 #include <cctype>

@@ -1,4 +1,4 @@
-#include "figures.hpp"
+#include "analysis/figures.hpp"
 #include "fields_paths.hpp"
 
 #include <fcntl.h>
@@ -10,8 +10,8 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "atomic_file.hpp"
-#include "user_error.hpp"
+#include "core/user_error.hpp"
+#include "io/atomic_file.hpp"
 
 extern char** environ;
 

@@ -1,10 +1,10 @@
-#include "flow_features.hpp"
+#include "analysis/flow_features.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "field_analysis.hpp"
+#include "analysis/field_analysis.hpp"
 
 namespace granshock {
 

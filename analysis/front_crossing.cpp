@@ -1,4 +1,4 @@
-#include "front_crossing.hpp"
+#include "analysis/front_crossing.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "inflow_check.hpp"
+#include "analysis/inflow_check.hpp"
 
 #include <cmath>
 #include <cstdio>

@@ -7,7 +7,7 @@
 
 #include <string>
 
-#include "upstream_state.hpp"
+#include "analysis/upstream_state.hpp"
 
 namespace granshock {
 

@@ -1,4 +1,4 @@
-#include "iso_lines.hpp"
+#include "analysis/iso_lines.hpp"
 
 #include <cmath>
 #include <map>

@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "polyline.hpp"
+#include "analysis/polyline.hpp"
 
 namespace granshock {
 

@@ -1,11 +1,11 @@
-#include "json_file.hpp"
+#include "analysis/json_file.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 
-#include "regular_file.hpp"
-#include "user_error.hpp"
+#include "core/user_error.hpp"
+#include "io/regular_file.hpp"
 
 namespace granshock {
 

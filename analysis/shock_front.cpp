@@ -1,4 +1,4 @@
-#include "shock_front.hpp"
+#include "analysis/shock_front.hpp"
 
 #include <Eigen/Dense>
 #include <cmath>

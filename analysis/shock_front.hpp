@@ -8,11 +8,11 @@
 #include <string>
 #include <vector>
 
-#include "bin_fields.hpp"
-#include "bin_sums.hpp"
-#include "field_physics.hpp"
-#include "front_crossing.hpp"
-#include "polyline.hpp"
+#include "analysis/bin_fields.hpp"
+#include "analysis/field_physics.hpp"
+#include "analysis/front_crossing.hpp"
+#include "analysis/polyline.hpp"
+#include "core/bin_sums.hpp"
 
 namespace granshock {
 

@@ -1,4 +1,4 @@
-#include "shock_profile_fit.hpp"
+#include "analysis/shock_profile_fit.hpp"
 
 #include <Eigen/Dense>
 #include <algorithm>

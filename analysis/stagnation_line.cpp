@@ -1,11 +1,11 @@
-#include "stagnation_line.hpp"
+#include "analysis/stagnation_line.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 
-#include "shock_profile_fit.hpp"
+#include "analysis/shock_profile_fit.hpp"
 
 namespace granshock {
 

@@ -1,11 +1,11 @@
-#include "steadiness.hpp"
+#include "analysis/steadiness.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 
-#include "stagnation_line.hpp"
+#include "analysis/stagnation_line.hpp"
 
 namespace granshock {
 

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "detachment_convergence.hpp"
-#include "field_physics.hpp"
+#include "analysis/detachment_convergence.hpp"
+#include "analysis/field_physics.hpp"
 
 namespace granshock {
 

@@ -1,8 +1,8 @@
-#include "summary_json.hpp"
+#include "analysis/summary_json.hpp"
 
-#include "atomic_file.hpp"
-#include "json_file.hpp"
-#include "user_error.hpp"
+#include "analysis/json_file.hpp"
+#include "core/user_error.hpp"
+#include "io/atomic_file.hpp"
 
 namespace granshock {
 

@@ -1,11 +1,11 @@
-#include "upstream_state.hpp"
+#include "analysis/upstream_state.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 
-#include "kinetic_theory.hpp"
+#include "core/kinetic_theory.hpp"
 
 namespace granshock {
 

@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "bin_fields.hpp"
-#include "bin_sums.hpp"
-#include "field_physics.hpp"
+#include "analysis/bin_fields.hpp"
+#include "analysis/field_physics.hpp"
+#include "core/bin_sums.hpp"
 
 namespace granshock {
 

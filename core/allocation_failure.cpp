@@ -1,4 +1,4 @@
-#include "allocation_failure.hpp"
+#include "core/allocation_failure.hpp"
 
 namespace granshock {
 

@@ -1,4 +1,4 @@
-#include "bin_sums.hpp"
+#include "core/bin_sums.hpp"
 
 #include <cmath>
 #include <limits>

@@ -10,7 +10,7 @@
 #include <limits>
 #include <vector>
 
-#include "bin_layout.hpp"
+#include "core/bin_layout.hpp"
 
 namespace granshock {
 

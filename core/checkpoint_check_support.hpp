@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "checkpoint_checks.hpp"
+#include "core/checkpoint_checks.hpp"
 
 namespace granshock::checks {
 

@@ -3,7 +3,7 @@
 #include <climits>
 #include <cmath>
 
-#include "checkpoint_check_support.hpp"
+#include "core/checkpoint_check_support.hpp"
 
 namespace granshock {
 

@@ -16,11 +16,11 @@
 #include <string>
 #include <vector>
 
-#include "checkpoint_extras.hpp"
-#include "domain.hpp"
-#include "obstacle.hpp"
-#include "solver_state.hpp"
-#include "user_error.hpp"
+#include "core/checkpoint_extras.hpp"
+#include "core/domain.hpp"
+#include "core/obstacle.hpp"
+#include "core/solver_state.hpp"
+#include "core/user_error.hpp"
 
 namespace granshock {
 

@@ -2,8 +2,8 @@
 // arrays, box and obstacle.
 #include <algorithm>
 
-#include "checkpoint_check_support.hpp"
-#include "contact_settings.hpp"
+#include "core/checkpoint_check_support.hpp"
+#include "core/contact_settings.hpp"
 
 namespace granshock {
 

@@ -1,7 +1,7 @@
 // The checks that need the run loop: its schedule, counters and physical scales.
 #include <algorithm>
 
-#include "checkpoint_check_support.hpp"
+#include "core/checkpoint_check_support.hpp"
 
 namespace granshock {
 

@@ -2,7 +2,7 @@
 // the moments within each bin against each other (layout: core/bin_layout.hpp).
 #include <algorithm>
 
-#include "checkpoint_check_support.hpp"
+#include "core/checkpoint_check_support.hpp"
 
 namespace granshock::checks {
 

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "user_error.hpp"
+#include "core/user_error.hpp"
 
 namespace granshock {
 

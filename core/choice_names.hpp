@@ -7,15 +7,15 @@
 // core/variant_names.hpp.
 #pragma once
 
-#include "bin_layout.hpp"
-#include "choice.hpp"
-#include "contact_settings.hpp"
-#include "kinetic_theory.hpp"
-#include "run_modes.hpp"
-#include "scene.hpp"
-#include "solver.hpp"
-#include "solver_setup.hpp"
-#include "variant_names.hpp"
+#include "core/bin_layout.hpp"
+#include "core/choice.hpp"
+#include "core/contact_settings.hpp"
+#include "core/kinetic_theory.hpp"
+#include "core/run_modes.hpp"
+#include "core/scene.hpp"
+#include "core/solver.hpp"
+#include "core/solver_setup.hpp"
+#include "core/variant_names.hpp"
 
 namespace granshock {
 

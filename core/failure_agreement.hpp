@@ -10,8 +10,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "communicator.hpp"
-#include "interrupted.hpp"
+#include "core/communicator.hpp"
+#include "core/interrupted.hpp"
 
 namespace granshock {
 

@@ -1,10 +1,10 @@
-#include "kinetic_theory.hpp"
+#include "core/kinetic_theory.hpp"
 
 #include <cmath>
 #include <stdexcept>
 
-#include "choice_names.hpp"
-#include "user_error.hpp"
+#include "core/choice_names.hpp"
+#include "core/user_error.hpp"
 
 namespace granshock {
 

@@ -7,7 +7,7 @@
 
 #include <array>
 
-#include "material.hpp"
+#include "core/material.hpp"
 
 namespace granshock {
 

@@ -1,4 +1,4 @@
-#include "pair_properties.hpp"
+#include "core/pair_properties.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -8,7 +8,7 @@
 
 #include <string>
 
-#include "material.hpp"
+#include "core/material.hpp"
 
 namespace granshock {
 

@@ -1,4 +1,4 @@
-#include "particle_bytes.hpp"
+#include "core/particle_bytes.hpp"
 
 #include <cstdint>
 #include <cstring>

@@ -6,8 +6,8 @@
 
 #include <vector>
 
-#include "host_particles.hpp"
-#include "solver_state.hpp"
+#include "core/host_particles.hpp"
+#include "core/solver_state.hpp"
 
 namespace granshock {
 

@@ -1,10 +1,10 @@
-#include "scene.hpp"
+#include "core/scene.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
-#include "choice_names.hpp"
+#include "core/choice_names.hpp"
 
 namespace granshock {
 

@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "bin_layout.hpp"
-#include "kinetic_theory.hpp"
-#include "solver_setup.hpp"
+#include "core/bin_layout.hpp"
+#include "core/kinetic_theory.hpp"
+#include "core/solver_setup.hpp"
 
 namespace granshock {
 

@@ -1,4 +1,4 @@
-#include "skin_model.hpp"
+#include "core/skin_model.hpp"
 
 #include <cmath>
 

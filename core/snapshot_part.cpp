@@ -1,8 +1,8 @@
-#include "snapshot_part.hpp"
+#include "core/snapshot_part.hpp"
 
 #include <stdexcept>
 
-#include "particle_bytes.hpp"
+#include "core/particle_bytes.hpp"
 
 namespace granshock {
 

@@ -5,8 +5,8 @@
 
 #include <vector>
 
-#include "communicator.hpp"
-#include "host_particles.hpp"
+#include "core/communicator.hpp"
+#include "core/host_particles.hpp"
 
 namespace granshock {
 

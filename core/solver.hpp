@@ -10,12 +10,12 @@
 #include <utility>
 #include <vector>
 
-#include "bin_layout.hpp"
-#include "communicator.hpp"
-#include "host_particles.hpp"
-#include "snapshot_part.hpp"
-#include "solver_setup.hpp"
-#include "solver_state.hpp"
+#include "core/bin_layout.hpp"
+#include "core/communicator.hpp"
+#include "core/host_particles.hpp"
+#include "core/snapshot_part.hpp"
+#include "core/solver_setup.hpp"
+#include "core/solver_state.hpp"
 
 namespace granshock {
 

@@ -1,9 +1,9 @@
-#include "solver_setup.hpp"
+#include "core/solver_setup.hpp"
 
 #include <algorithm>
 #include <stdexcept>
 
-#include "choice_names.hpp"
+#include "core/choice_names.hpp"
 
 namespace granshock {
 

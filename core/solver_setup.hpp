@@ -9,11 +9,11 @@
 #include <optional>
 #include <vector>
 
-#include "contact_settings.hpp"
-#include "domain.hpp"
-#include "material.hpp"
-#include "obstacle.hpp"
-#include "pair_properties.hpp"
+#include "core/contact_settings.hpp"
+#include "core/domain.hpp"
+#include "core/material.hpp"
+#include "core/obstacle.hpp"
+#include "core/pair_properties.hpp"
 
 namespace granshock {
 

@@ -5,10 +5,10 @@
 // they need, and are not rebuilt when another choice's names change.
 #pragma once
 
-#include "choice.hpp"
-#include "contact_settings.hpp"
-#include "obstacle.hpp"
-#include "solver_setup.hpp"
+#include "core/choice.hpp"
+#include "core/contact_settings.hpp"
+#include "core/obstacle.hpp"
+#include "core/solver_setup.hpp"
 
 namespace granshock {
 

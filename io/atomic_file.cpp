@@ -1,4 +1,4 @@
-#include "atomic_file.hpp"
+#include "io/atomic_file.hpp"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -8,7 +8,7 @@
 #include <cstring>
 #include <system_error>
 
-#include "user_error.hpp"
+#include "core/user_error.hpp"
 
 namespace granshock {
 

@@ -1,14 +1,14 @@
-#include "checkpoint_file.hpp"
+#include "io/checkpoint_file.hpp"
 
 #include <algorithm>
 #include <array>
 #include <stdexcept>
 #include <system_error>
 
-#include "checkpoint_checks.hpp"
-#include "checkpoint_seal.hpp"
-#include "hdf5_helpers.hpp"
-#include "user_error.hpp"
+#include "core/checkpoint_checks.hpp"
+#include "core/user_error.hpp"
+#include "io/checkpoint_seal.hpp"
+#include "io/hdf5_helpers.hpp"
 #include "version.hpp"
 
 namespace granshock {

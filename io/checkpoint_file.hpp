@@ -5,8 +5,8 @@
 
 #include <filesystem>
 
-#include "checkpoint_extras.hpp"
-#include "solver_state.hpp"
+#include "core/checkpoint_extras.hpp"
+#include "core/solver_state.hpp"
 
 namespace granshock {
 

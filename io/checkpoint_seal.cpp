@@ -1,4 +1,4 @@
-#include "checkpoint_seal.hpp"
+#include "io/checkpoint_seal.hpp"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -12,9 +12,9 @@
 #include <stdexcept>
 #include <vector>
 
-#include "file_hash.hpp"
-#include "regular_file.hpp"
-#include "user_error.hpp"
+#include "core/user_error.hpp"
+#include "io/file_hash.hpp"
+#include "io/regular_file.hpp"
 
 namespace granshock::seal {
 

@@ -1,11 +1,11 @@
-#include "field_sums_file.hpp"
+#include "io/field_sums_file.hpp"
 
 #include <cmath>
 #include <limits>
 #include <string>
 
-#include "run_file.hpp"
-#include "user_error.hpp"
+#include "core/user_error.hpp"
+#include "io/run_file.hpp"
 
 namespace granshock {
 

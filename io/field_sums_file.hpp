@@ -9,8 +9,8 @@
 #include <limits>
 #include <vector>
 
-#include "bin_layout.hpp"
-#include "bin_sums.hpp"
+#include "core/bin_layout.hpp"
+#include "core/bin_sums.hpp"
 
 namespace granshock {
 

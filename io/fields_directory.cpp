@@ -1,9 +1,9 @@
-#include "fields_directory.hpp"
+#include "io/fields_directory.hpp"
 
 #include <fmt/format.h>
 #include <unistd.h>
 
-#include "user_error.hpp"
+#include "core/user_error.hpp"
 
 namespace granshock {
 

@@ -1,10 +1,10 @@
-#include "fields_file.hpp"
+#include "io/fields_file.hpp"
 
 #include <stdexcept>
 #include <system_error>
 
-#include "hdf5_helpers.hpp"
-#include "user_error.hpp"
+#include "core/user_error.hpp"
+#include "io/hdf5_helpers.hpp"
 
 namespace granshock {
 

@@ -1,9 +1,9 @@
-#include "fields_xdmf.hpp"
+#include "io/fields_xdmf.hpp"
 
 #include <sstream>
 
-#include "atomic_file.hpp"
-#include "xml_escape.hpp"
+#include "io/atomic_file.hpp"
+#include "io/xml_escape.hpp"
 
 namespace granshock {
 

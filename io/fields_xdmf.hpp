@@ -11,7 +11,7 @@
 #include <filesystem>
 #include <string>
 
-#include "fields_file.hpp"
+#include "io/fields_file.hpp"
 
 namespace granshock {
 

@@ -1,4 +1,4 @@
-#include "file_hash.hpp"
+#include "io/file_hash.hpp"
 
 #include <fcntl.h>
 #include <unistd.h>

@@ -1,4 +1,4 @@
-#include "file_room.hpp"
+#include "io/file_room.hpp"
 
 #include <fcntl.h>
 #include <sys/stat.h>

@@ -1,10 +1,10 @@
-#include "frame_views.hpp"
+#include "io/frame_views.hpp"
 
 #include <algorithm>
 #include <cstdio>
 #include <numeric>
 
-#include "hdf5_helpers.hpp"
+#include "io/hdf5_helpers.hpp"
 
 namespace granshock {
 

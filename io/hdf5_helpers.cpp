@@ -1,4 +1,4 @@
-#include "hdf5_helpers.hpp"
+#include "io/hdf5_helpers.hpp"
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -7,7 +7,7 @@
 
 #include <algorithm>
 
-#include "atomic_file.hpp"
+#include "io/atomic_file.hpp"
 
 namespace granshock::h5 {
 

@@ -12,8 +12,8 @@
 #include <utility>
 #include <vector>
 
-#include "hdf5_handle.hpp"
-#include "user_error.hpp"
+#include "core/user_error.hpp"
+#include "io/hdf5_handle.hpp"
 
 namespace granshock::h5 {
 

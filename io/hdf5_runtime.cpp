@@ -1,4 +1,4 @@
-#include "hdf5_runtime.hpp"
+#include "io/hdf5_runtime.hpp"
 
 #include <hdf5.h>
 

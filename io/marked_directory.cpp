@@ -1,4 +1,4 @@
-#include "marked_directory.hpp"
+#include "io/marked_directory.hpp"
 
 #include <fcntl.h>
 #include <fmt/format.h>
@@ -13,7 +13,7 @@
 #include <set>
 #include <sstream>
 
-#include "user_error.hpp"
+#include "core/user_error.hpp"
 #include "version.hpp"
 
 namespace granshock {

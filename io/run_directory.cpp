@@ -1,10 +1,10 @@
-#include "run_directory.hpp"
+#include "io/run_directory.hpp"
 
 #include <fmt/format.h>
 #include <unistd.h>
 
-#include "fields_directory.hpp"
-#include "user_error.hpp"
+#include "core/user_error.hpp"
+#include "io/fields_directory.hpp"
 
 namespace granshock {
 

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "marked_directory.hpp"
+#include "io/marked_directory.hpp"
 
 namespace granshock {
 

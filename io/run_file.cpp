@@ -1,4 +1,4 @@
-#include "run_file.hpp"
+#include "io/run_file.hpp"
 
 #include <fmt/format.h>
 
@@ -14,12 +14,12 @@
 #include <type_traits>
 #include <utility>
 
-#include "failure_agreement.hpp"
-#include "file_room.hpp"
-#include "hdf5_helpers.hpp"
-#include "regular_file.hpp"
-#include "run_file_growth.hpp"
-#include "user_error.hpp"
+#include "core/failure_agreement.hpp"
+#include "core/user_error.hpp"
+#include "io/file_room.hpp"
+#include "io/hdf5_helpers.hpp"
+#include "io/regular_file.hpp"
+#include "io/run_file_growth.hpp"
 #include "version.hpp"
 
 namespace granshock {

@@ -17,13 +17,13 @@
 #include <string>
 #include <vector>
 
-#include "frame_views.hpp"
-#include "hdf5_handle.hpp"
-#include "host_particles.hpp"
-#include "run_file_growth.hpp"
-#include "snapshot_frame.hpp"
-#include "snapshot_part.hpp"
-#include "time_series.hpp"
+#include "core/host_particles.hpp"
+#include "core/snapshot_part.hpp"
+#include "core/time_series.hpp"
+#include "io/frame_views.hpp"
+#include "io/hdf5_handle.hpp"
+#include "io/run_file_growth.hpp"
+#include "io/snapshot_frame.hpp"
 
 namespace granshock {
 

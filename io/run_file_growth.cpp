@@ -1,4 +1,4 @@
-#include "run_file_growth.hpp"
+#include "io/run_file_growth.hpp"
 
 #include <algorithm>
 #include <cstdint>

@@ -1,6 +1,6 @@
 // Scene files: the TOML text, --set overrides, the scene read with the schema
 // (scene_schema.cpp) and the resolved scene written back with it (docs/scene_format.md).
-#include "scene_file.hpp"
+#include "io/scene_file.hpp"
 
 #include <fmt/format.h>
 
@@ -8,11 +8,11 @@
 #include <set>
 #include <sstream>
 
-#include "regular_file.hpp"
-#include "scene_schema.hpp"
-#include "shortest_floats.hpp"
-#include "table_reader.hpp"
-#include "user_error.hpp"
+#include "core/user_error.hpp"
+#include "io/regular_file.hpp"
+#include "io/scene_schema.hpp"
+#include "io/shortest_floats.hpp"
+#include "io/table_reader.hpp"
 
 namespace granshock {
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "scene.hpp"
+#include "core/scene.hpp"
 
 namespace granshock {
 

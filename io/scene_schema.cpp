@@ -3,7 +3,7 @@
 // message of a refusal) and its writer (the resolved scene). read_scene and write_scene
 // walk the same tables; scene_keys() lists them for the test that docs/scene_format.md
 // documents exactly these keys (tests/scene/test_scene_schema.cpp).
-#include "scene_schema.hpp"
+#include "io/scene_schema.hpp"
 
 #include <fmt/format.h>
 
@@ -15,9 +15,9 @@
 #include <tuple>
 #include <utility>
 
-#include "choice_names.hpp"
-#include "scene_file.hpp"
-#include "table_reader.hpp"
+#include "core/choice_names.hpp"
+#include "io/scene_file.hpp"
+#include "io/table_reader.hpp"
 
 namespace granshock {
 namespace scene_toml {

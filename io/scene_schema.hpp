@@ -7,7 +7,7 @@
 
 #include <toml++/toml.h>
 
-#include "scene.hpp"
+#include "core/scene.hpp"
 
 namespace granshock::scene_toml {
 

@@ -1,4 +1,4 @@
-#include "shortest_floats.hpp"
+#include "io/shortest_floats.hpp"
 
 #include <charconv>
 #include <cstdlib>

@@ -1,11 +1,11 @@
-#include "table_reader.hpp"
+#include "io/table_reader.hpp"
 
 #include <fmt/format.h>
 
 #include <cmath>
 #include <sstream>
 
-#include "user_error.hpp"
+#include "core/user_error.hpp"
 
 namespace granshock::scene_toml {
 

@@ -1,11 +1,11 @@
-#include "xdmf_writer.hpp"
+#include "io/xdmf_writer.hpp"
 
 #include <cstdio>
 #include <sstream>
 #include <stdexcept>
 
-#include "atomic_file.hpp"
-#include "xml_escape.hpp"
+#include "io/atomic_file.hpp"
+#include "io/xml_escape.hpp"
 
 namespace granshock {
 

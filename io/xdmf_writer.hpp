@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "frame_views.hpp"
-#include "snapshot_frame.hpp"
+#include "io/frame_views.hpp"
+#include "io/snapshot_frame.hpp"
 
 namespace granshock {
 

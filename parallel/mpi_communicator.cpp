@@ -1,4 +1,4 @@
-#include "mpi_communicator.hpp"
+#include "parallel/mpi_communicator.hpp"
 
 #include <algorithm>
 #include <climits>

@@ -6,7 +6,7 @@
 
 #include <mpi.h>
 
-#include "communicator.hpp"
+#include "core/communicator.hpp"
 
 namespace granshock {
 

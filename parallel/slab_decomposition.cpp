@@ -1,4 +1,4 @@
-#include "slab_decomposition.hpp"
+#include "parallel/slab_decomposition.hpp"
 
 #include <fmt/format.h>
 
@@ -7,7 +7,7 @@
 #include <numeric>
 #include <stdexcept>
 
-#include "user_error.hpp"
+#include "core/user_error.hpp"
 
 namespace granshock {
 

@@ -2,7 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "device/kokkos_runtime.hpp"
-#include "hdf5_runtime.hpp"
+#include "io/hdf5_runtime.hpp"
 
 int main(int argc, char** argv) {
   // As granshock's main(): a test of a full disk leaves a file whose close failed, which

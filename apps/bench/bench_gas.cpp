@@ -23,11 +23,11 @@
 #include <string>
 #include <vector>
 
-#include "atomic_file.hpp"
-#include "choice_names.hpp"
-#include "homogeneous_gas.hpp"
-#include "solver.hpp"
-#include "user_error.hpp"
+#include "cases/gas/homogeneous_gas.hpp"
+#include "core/choice_names.hpp"
+#include "core/solver.hpp"
+#include "core/user_error.hpp"
+#include "io/atomic_file.hpp"
 
 namespace {
 

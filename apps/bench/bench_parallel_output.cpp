@@ -33,8 +33,8 @@
 #include <string>
 #include <vector>
 
-#include "hdf5_handle.hpp"
-#include "run_file.hpp"
+#include "io/hdf5_handle.hpp"
+#include "io/run_file.hpp"
 
 namespace {
 

@@ -1,12 +1,12 @@
-#include "build_info.hpp"
+#include "apps/granshock/build_info.hpp"
 
 #include <Kokkos_Core.hpp>
 #include <nlohmann/json.hpp>
 
-#include "build_description.hpp"
-#include "choice_names.hpp"
+#include "cases/build_info/build_description.hpp"
+#include "core/choice_names.hpp"
 #include "device/backends.hpp"
-#include "mpi_runtime.hpp"
+#include "parallel/mpi_runtime.hpp"
 
 namespace granshock {
 

@@ -1,8 +1,8 @@
-#include "cpu_check.hpp"
+#include "apps/granshock/cpu_check.hpp"
 
 #include <unistd.h>
 
-#include "build_description.hpp"
+#include "cases/build_info/build_description.hpp"
 
 namespace granshock {
 

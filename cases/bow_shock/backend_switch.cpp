@@ -1,4 +1,4 @@
-#include "backend_switch.hpp"
+#include "cases/bow_shock/backend_switch.hpp"
 
 #include <algorithm>
 

@@ -8,7 +8,7 @@
 // moves between them as a resume would), so the choice changes only the speed.
 #pragma once
 
-#include "solver.hpp"
+#include "core/solver.hpp"
 
 namespace granshock {
 

@@ -1,4 +1,4 @@
-#include "bow_shock_run.hpp"
+#include "cases/bow_shock/bow_shock_run.hpp"
 
 #include <fmt/format.h>
 
@@ -8,25 +8,25 @@
 #include <csignal>
 #include <iostream>
 
-#include "accuracy_choice.hpp"
-#include "atomic_file.hpp"
-#include "build_description.hpp"
-#include "checkpoint_checks.hpp"
-#include "checkpoint_file.hpp"
-#include "choice_names.hpp"
-#include "failure_agreement.hpp"
-#include "field_sums_file.hpp"
-#include "fields_command.hpp"
-#include "interrupt.hpp"
-#include "json_file.hpp"
+#include "analysis/fields_command.hpp"
+#include "analysis/json_file.hpp"
+#include "cases/bow_shock/interrupt.hpp"
+#include "cases/bow_shock/run_checks.hpp"
+#include "cases/bow_shock/run_observables.hpp"
+#include "cases/bow_shock/run_state.hpp"
+#include "cases/bow_shock/run_summary.hpp"
+#include "cases/build_info/build_description.hpp"
+#include "cases/tradeoff/accuracy_choice.hpp"
+#include "core/checkpoint_checks.hpp"
+#include "core/choice_names.hpp"
+#include "core/failure_agreement.hpp"
+#include "core/user_error.hpp"
+#include "io/atomic_file.hpp"
+#include "io/checkpoint_file.hpp"
+#include "io/field_sums_file.hpp"
+#include "io/xdmf_writer.hpp"
 #include "models/restitution_calibration.hpp"
-#include "mpi_communicator.hpp"
-#include "run_checks.hpp"
-#include "run_observables.hpp"
-#include "run_state.hpp"
-#include "run_summary.hpp"
-#include "user_error.hpp"
-#include "xdmf_writer.hpp"
+#include "parallel/mpi_communicator.hpp"
 
 namespace granshock {
 

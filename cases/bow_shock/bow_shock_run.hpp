@@ -14,20 +14,20 @@
 
 #include <nlohmann/json.hpp>
 
-#include "backend_switch.hpp"
-#include "checkpoint_extras.hpp"
-#include "communicator.hpp"
-#include "inflow.hpp"
-#include "inlet_calibration.hpp"
-#include "progress_meter.hpp"
-#include "run_command.hpp"
-#include "run_directory.hpp"
-#include "run_extension.hpp"
-#include "run_file.hpp"
-#include "run_log.hpp"
-#include "sampling_plan.hpp"
-#include "scene_file.hpp"
-#include "solver.hpp"
+#include "cases/bow_shock/backend_switch.hpp"
+#include "cases/bow_shock/inflow.hpp"
+#include "cases/bow_shock/inlet_calibration.hpp"
+#include "cases/bow_shock/progress_meter.hpp"
+#include "cases/bow_shock/run_command.hpp"
+#include "cases/bow_shock/run_extension.hpp"
+#include "cases/bow_shock/run_log.hpp"
+#include "cases/bow_shock/sampling_plan.hpp"
+#include "core/checkpoint_extras.hpp"
+#include "core/communicator.hpp"
+#include "core/solver.hpp"
+#include "io/run_directory.hpp"
+#include "io/run_file.hpp"
+#include "io/scene_file.hpp"
 
 namespace granshock {
 

@@ -1,4 +1,4 @@
-#include "inflow.hpp"
+#include "cases/bow_shock/inflow.hpp"
 
 #include "models/models.hpp"
 

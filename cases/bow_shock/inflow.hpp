@@ -15,8 +15,8 @@
 #include <functional>
 #include <vector>
 
-#include "scene.hpp"
-#include "solver.hpp"
+#include "core/scene.hpp"
+#include "core/solver.hpp"
 
 namespace granshock {
 

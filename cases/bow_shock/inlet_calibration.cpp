@@ -1,17 +1,17 @@
-#include "inlet_calibration.hpp"
+#include "cases/bow_shock/inlet_calibration.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 
-#include "bin_fields.hpp"
-#include "block_error.hpp"
-#include "field_physics.hpp"
-#include "inflow.hpp"
-#include "interrupt.hpp"
-#include "upstream_state.hpp"
-#include "user_error.hpp"
+#include "analysis/bin_fields.hpp"
+#include "analysis/block_error.hpp"
+#include "analysis/field_physics.hpp"
+#include "analysis/upstream_state.hpp"
+#include "cases/bow_shock/inflow.hpp"
+#include "cases/bow_shock/interrupt.hpp"
+#include "core/user_error.hpp"
 
 namespace granshock {
 

@@ -15,7 +15,7 @@
 
 #include <vector>
 
-#include "scene.hpp"
+#include "core/scene.hpp"
 
 namespace granshock {
 

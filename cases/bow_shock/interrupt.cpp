@@ -1,4 +1,4 @@
-#include "interrupt.hpp"
+#include "cases/bow_shock/interrupt.hpp"
 
 #include <signal.h>
 #include <unistd.h>

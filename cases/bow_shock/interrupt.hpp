@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "interrupted.hpp"
+#include "core/interrupted.hpp"
 
 namespace granshock {
 

@@ -1,4 +1,4 @@
-#include "progress_meter.hpp"
+#include "cases/bow_shock/progress_meter.hpp"
 
 #include <fmt/format.h>
 

@@ -1,13 +1,13 @@
-#include "run_checks.hpp"
+#include "cases/bow_shock/run_checks.hpp"
 
 #include <fmt/format.h>
 
 #include <cmath>
 
-#include "field_sampling_check.hpp"
-#include "run_memory.hpp"
-#include "run_summary.hpp"
-#include "user_error.hpp"
+#include "analysis/field_sampling_check.hpp"
+#include "cases/bow_shock/run_memory.hpp"
+#include "cases/bow_shock/run_summary.hpp"
+#include "core/user_error.hpp"
 
 namespace granshock {
 

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "core/scene.hpp"
 #include "models/time_step_guard.hpp"
-#include "scene.hpp"
 
 namespace granshock {
 

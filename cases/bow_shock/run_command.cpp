@@ -1,18 +1,18 @@
-#include "run_command.hpp"
+#include "cases/bow_shock/run_command.hpp"
 
 #include <fmt/format.h>
 
 #include <iostream>
 #include <optional>
 
-#include "accuracy_choice.hpp"
-#include "bow_shock_run.hpp"
-#include "failure_agreement.hpp"
+#include "cases/bow_shock/bow_shock_run.hpp"
+#include "cases/bow_shock/run_checks.hpp"
+#include "cases/tradeoff/accuracy_choice.hpp"
+#include "core/failure_agreement.hpp"
+#include "core/user_error.hpp"
+#include "io/run_directory.hpp"
+#include "io/scene_file.hpp"
 #include "models/restitution_calibration.hpp"
-#include "run_checks.hpp"
-#include "run_directory.hpp"
-#include "scene_file.hpp"
-#include "user_error.hpp"
 
 namespace granshock {
 

@@ -10,12 +10,12 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
-#include "communicator.hpp"
-#include "figure_switch.hpp"
-#include "run_modes.hpp"
-#include "run_observables.hpp"  // NumericalFailure
-#include "scene.hpp"
-#include "solver.hpp"
+#include "analysis/figure_switch.hpp"
+#include "cases/bow_shock/run_observables.hpp"  // NumericalFailure
+#include "core/communicator.hpp"
+#include "core/run_modes.hpp"
+#include "core/scene.hpp"
+#include "core/solver.hpp"
 
 namespace granshock {
 
@@ -25,9 +25,9 @@ struct RunOptions {
   std::vector<std::string> overrides;
   bool overwrite = false;
   bool resume = false;
-  bool force = false;             // run past the stable time step
-  long stop_after_steps = 0;      // > 0: checkpoint and stop after this many steps (batch jobs)
-  bool quiet = false;             // no progress lines
+  bool force = false;         // run past the stable time step
+  long stop_after_steps = 0;  // > 0: checkpoint and stop after this many steps (batch jobs)
+  bool quiet = false;         // no progress lines
   // The figures at the end (--no-figures, GRANSHOCK_FIGURES: figure_switch.hpp).
   bool figures = figures_by_default();
   // Several processes: how slab boundaries move and which axis the slabs divide

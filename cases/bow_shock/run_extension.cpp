@@ -1,12 +1,12 @@
-#include "run_extension.hpp"
+#include "cases/bow_shock/run_extension.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <numeric>
 
-#include "sampling_plan.hpp"
-#include "user_error.hpp"
+#include "cases/bow_shock/sampling_plan.hpp"
+#include "core/user_error.hpp"
 
 namespace granshock {
 

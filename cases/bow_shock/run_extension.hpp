@@ -11,8 +11,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "run_file.hpp"
-#include "scene.hpp"
+#include "core/scene.hpp"
+#include "io/run_file.hpp"
 
 namespace granshock {
 

@@ -1,4 +1,4 @@
-#include "run_log.hpp"
+#include "cases/bow_shock/run_log.hpp"
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -12,7 +12,7 @@
 
 #include <fmt/format.h>
 
-#include "user_error.hpp"
+#include "core/user_error.hpp"
 
 namespace granshock {
 

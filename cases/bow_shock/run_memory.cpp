@@ -1,4 +1,4 @@
-#include "run_memory.hpp"
+#include "cases/bow_shock/run_memory.hpp"
 
 #include <fmt/format.h>
 #include <sys/resource.h>
@@ -9,9 +9,9 @@
 #include <fstream>
 #include <sstream>
 
+#include "cases/bow_shock/sampling_plan.hpp"
+#include "core/user_error.hpp"
 #include "device/backends.hpp"
-#include "sampling_plan.hpp"
-#include "user_error.hpp"
 
 namespace granshock {
 

@@ -10,7 +10,7 @@
 #include <optional>
 #include <string>
 
-#include "scene.hpp"
+#include "core/scene.hpp"
 
 namespace granshock {
 

@@ -1,10 +1,10 @@
-#include "run_observables.hpp"
+#include "cases/bow_shock/run_observables.hpp"
 
 #include <fmt/format.h>
 
 #include <array>
 
-#include "run_checks.hpp"
+#include "cases/bow_shock/run_checks.hpp"
 
 namespace granshock {
 

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "scene.hpp"
-#include "solver.hpp"
+#include "core/scene.hpp"
+#include "core/solver.hpp"
 
 namespace granshock {
 

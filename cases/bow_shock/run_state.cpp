@@ -1,6 +1,6 @@
-#include "run_state.hpp"
+#include "cases/bow_shock/run_state.hpp"
 
-#include "run_observables.hpp"
+#include "cases/bow_shock/run_observables.hpp"
 
 namespace granshock {
 

@@ -8,12 +8,12 @@
 #include <string>
 #include <vector>
 
-#include "checkpoint_checks.hpp"
-#include "checkpoint_extras.hpp"
-#include "inflow.hpp"
-#include "sampling_plan.hpp"
-#include "scene.hpp"
-#include "solver.hpp"
+#include "cases/bow_shock/inflow.hpp"
+#include "cases/bow_shock/sampling_plan.hpp"
+#include "core/checkpoint_checks.hpp"
+#include "core/checkpoint_extras.hpp"
+#include "core/scene.hpp"
+#include "core/solver.hpp"
 
 namespace granshock {
 

@@ -1,12 +1,12 @@
-#include "run_summary.hpp"
+#include "cases/bow_shock/run_summary.hpp"
 
 #include <Kokkos_Core.hpp>
 #include <utility>
 
-#include "build_description.hpp"
-#include "head_on_collision.hpp"
+#include "cases/bow_shock/run_checks.hpp"
+#include "cases/build_info/build_description.hpp"
+#include "cases/collision/head_on_collision.hpp"
 #include "models/restitution_calibration.hpp"
-#include "run_checks.hpp"
 
 namespace granshock {
 

@@ -5,10 +5,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "inflow.hpp"
-#include "inlet_calibration.hpp"
-#include "scene.hpp"
-#include "solver.hpp"
+#include "cases/bow_shock/inflow.hpp"
+#include "cases/bow_shock/inlet_calibration.hpp"
+#include "core/scene.hpp"
+#include "core/solver.hpp"
 
 namespace granshock {
 

@@ -1,4 +1,4 @@
-#include "sampling_plan.hpp"
+#include "cases/bow_shock/sampling_plan.hpp"
 
 #include <algorithm>
 #include <cmath>

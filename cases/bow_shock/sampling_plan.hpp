@@ -7,8 +7,8 @@
 
 #include <vector>
 
-#include "bin_layout.hpp"
-#include "scene.hpp"
+#include "core/bin_layout.hpp"
+#include "core/scene.hpp"
 
 namespace granshock {
 

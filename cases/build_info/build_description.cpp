@@ -1,4 +1,4 @@
-#include "build_description.hpp"
+#include "cases/build_info/build_description.hpp"
 
 #include <fmt/format.h>
 

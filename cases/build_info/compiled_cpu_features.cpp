@@ -1,7 +1,7 @@
 // Compiled with the solver's flags (granshock_fp: -march=native in a native build), so the
 // macros below are those of the kernels' code. Data only: the program reads it from code
 // compiled for any x86 CPU before it runs any of the solver's (apps/granshock/cpu_check.cpp).
-#include "build_description.hpp"
+#include "cases/build_info/build_description.hpp"
 
 namespace granshock {
 

@@ -1,4 +1,4 @@
-#include "head_on_collision.hpp"
+#include "cases/collision/head_on_collision.hpp"
 
 #include <fmt/format.h>
 
@@ -7,8 +7,8 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 
-#include "solver.hpp"
-#include "user_error.hpp"
+#include "core/solver.hpp"
+#include "core/user_error.hpp"
 
 namespace {
 constexpr double kDiameter = 1e-3;  // the paper's d

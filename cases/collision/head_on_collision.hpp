@@ -10,10 +10,10 @@
 #include <string>
 #include <vector>
 
+#include "core/solver.hpp"
+#include "core/solver_setup.hpp"
 #include "models/restitution_calibration.hpp"
 #include "models/time_step_guard.hpp"
-#include "solver.hpp"
-#include "solver_setup.hpp"
 
 namespace granshock {
 

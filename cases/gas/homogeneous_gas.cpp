@@ -1,9 +1,9 @@
-#include "homogeneous_gas.hpp"
+#include "cases/gas/homogeneous_gas.hpp"
 
 #include <cmath>
 
+#include "core/user_error.hpp"
 #include "device/counter_rng.hpp"
-#include "user_error.hpp"
 
 namespace granshock {
 

@@ -5,8 +5,8 @@
 
 #include <cstdint>
 
-#include "host_particles.hpp"
-#include "solver_setup.hpp"
+#include "core/host_particles.hpp"
+#include "core/solver_setup.hpp"
 
 namespace granshock {
 

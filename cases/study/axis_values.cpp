@@ -1,4 +1,4 @@
-#include "axis_values.hpp"
+#include "cases/study/axis_values.hpp"
 
 #include <fmt/format.h>
 
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "user_error.hpp"
+#include "core/user_error.hpp"
 
 namespace granshock {
 

@@ -7,7 +7,7 @@
 
 #include <string>
 
-#include "study_file.hpp"
+#include "cases/study/study_file.hpp"
 
 namespace granshock {
 

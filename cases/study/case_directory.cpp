@@ -1,8 +1,8 @@
-#include "case_directory.hpp"
+#include "cases/study/case_directory.hpp"
 
-#include "json_file.hpp"
-#include "run_directory.hpp"
-#include "run_file.hpp"
+#include "analysis/json_file.hpp"
+#include "io/run_directory.hpp"
+#include "io/run_file.hpp"
 
 namespace granshock {
 

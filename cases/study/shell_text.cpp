@@ -1,4 +1,4 @@
-#include "shell_text.hpp"
+#include "cases/study/shell_text.hpp"
 
 #include <fmt/format.h>
 

@@ -1,13 +1,13 @@
-#include "slurm_script.hpp"
+#include "cases/study/slurm_script.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 
-#include "shell_text.hpp"
-#include "study_cost.hpp"
-#include "user_error.hpp"
+#include "cases/study/shell_text.hpp"
+#include "cases/study/study_cost.hpp"
+#include "core/user_error.hpp"
 
 namespace granshock {
 

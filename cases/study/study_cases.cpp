@@ -1,10 +1,10 @@
-#include "study_cases.hpp"
+#include "cases/study/study_cases.hpp"
 
 #include <fmt/format.h>
 
 #include <map>
 
-#include "user_error.hpp"
+#include "core/user_error.hpp"
 
 namespace granshock {
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "study_file.hpp"
+#include "cases/study/study_file.hpp"
 
 namespace granshock {
 

@@ -1,4 +1,4 @@
-#include "study_claims.hpp"
+#include "cases/study/study_claims.hpp"
 
 #include <fmt/format.h>
 
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <map>
 
-#include "atomic_file.hpp"
+#include "io/atomic_file.hpp"
 
 namespace granshock {
 

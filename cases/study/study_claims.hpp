@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "study_table.hpp"
+#include "cases/study/study_table.hpp"
 
 namespace granshock {
 

@@ -1,19 +1,19 @@
-#include "study_command.hpp"
+#include "cases/study/study_command.hpp"
 
 #include <fmt/format.h>
 
 #include <iostream>
 
-#include "atomic_file.hpp"
-#include "slurm_script.hpp"
-#include "study_directory.hpp"
-#include "study_listing.hpp"
-#include "study_plan.hpp"
-#include "study_preflight.hpp"
-#include "study_rate.hpp"
-#include "study_results.hpp"
-#include "study_runner.hpp"
-#include "user_error.hpp"
+#include "cases/study/slurm_script.hpp"
+#include "cases/study/study_directory.hpp"
+#include "cases/study/study_listing.hpp"
+#include "cases/study/study_plan.hpp"
+#include "cases/study/study_preflight.hpp"
+#include "cases/study/study_rate.hpp"
+#include "cases/study/study_results.hpp"
+#include "cases/study/study_runner.hpp"
+#include "core/user_error.hpp"
+#include "io/atomic_file.hpp"
 
 namespace granshock {
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "figure_switch.hpp"
+#include "analysis/figure_switch.hpp"
 
 namespace granshock {
 

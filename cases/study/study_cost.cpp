@@ -1,4 +1,4 @@
-#include "study_cost.hpp"
+#include "cases/study/study_cost.hpp"
 
 #include <fmt/format.h>
 

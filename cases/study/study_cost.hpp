@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "scene.hpp"
+#include "core/scene.hpp"
 
 namespace granshock {
 

@@ -1,4 +1,4 @@
-#include "study_directory.hpp"
+#include "cases/study/study_directory.hpp"
 
 #include <fmt/format.h>
 #include <unistd.h>
@@ -8,8 +8,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "atomic_file.hpp"
-#include "user_error.hpp"
+#include "core/user_error.hpp"
+#include "io/atomic_file.hpp"
 
 namespace granshock {
 

@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <string>
 
-#include "marked_directory.hpp"  // kStudyMarker
+#include "io/marked_directory.hpp"  // kStudyMarker
 
 namespace granshock {
 

@@ -1,9 +1,9 @@
-#include "study_figures.hpp"
+#include "cases/study/study_figures.hpp"
 
 #include <string>
 #include <vector>
 
-#include "figures.hpp"
+#include "analysis/figures.hpp"
 #include "study_paths.hpp"
 
 namespace granshock {

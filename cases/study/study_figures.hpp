@@ -5,7 +5,7 @@
 
 #include <filesystem>
 
-#include "study_plan.hpp"
+#include "cases/study/study_plan.hpp"
 
 namespace granshock {
 

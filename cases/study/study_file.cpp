@@ -1,6 +1,6 @@
 // Reading a study file (docs/study.md, "The study file"): the tables and their keys. The
 // values of the axes are turned into overrides by axis_values.cpp.
-#include "study_file.hpp"
+#include "cases/study/study_file.hpp"
 
 #include <fmt/format.h>
 
@@ -9,10 +9,10 @@
 #include <cstring>
 #include <set>
 
-#include "axis_values.hpp"
-#include "shell_text.hpp"
-#include "regular_file.hpp"
-#include "user_error.hpp"
+#include "cases/study/axis_values.hpp"
+#include "cases/study/shell_text.hpp"
+#include "core/user_error.hpp"
+#include "io/regular_file.hpp"
 
 namespace granshock {
 

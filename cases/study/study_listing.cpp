@@ -1,10 +1,10 @@
-#include "study_listing.hpp"
+#include "cases/study/study_listing.hpp"
 
 #include <fmt/format.h>
 
-#include "case_directory.hpp"
-#include "study_cost.hpp"
-#include "study_rate.hpp"
+#include "cases/study/case_directory.hpp"
+#include "cases/study/study_cost.hpp"
+#include "cases/study/study_rate.hpp"
 
 namespace granshock {
 

@@ -1,12 +1,12 @@
-#include "study_plan.hpp"
+#include "cases/study/study_plan.hpp"
 
 #include <fmt/format.h>
 
 #include <map>
 
-#include "run_checks.hpp"
-#include "scene_file.hpp"
-#include "user_error.hpp"
+#include "cases/bow_shock/run_checks.hpp"
+#include "core/user_error.hpp"
+#include "io/scene_file.hpp"
 
 namespace granshock {
 

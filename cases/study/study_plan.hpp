@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "scene.hpp"
-#include "study_cases.hpp"
-#include "study_file.hpp"
+#include "cases/study/study_cases.hpp"
+#include "cases/study/study_file.hpp"
+#include "core/scene.hpp"
 
 namespace granshock {
 

@@ -1,12 +1,12 @@
-#include "study_preflight.hpp"
+#include "cases/study/study_preflight.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 
-#include "run_directory.hpp"
-#include "scene_file.hpp"
-#include "user_error.hpp"
+#include "core/user_error.hpp"
+#include "io/run_directory.hpp"
+#include "io/scene_file.hpp"
 
 namespace granshock {
 

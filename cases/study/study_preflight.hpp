@@ -6,8 +6,8 @@
 
 #include <vector>
 
-#include "case_directory.hpp"
-#include "study_plan.hpp"
+#include "cases/study/case_directory.hpp"
+#include "cases/study/study_plan.hpp"
 
 namespace granshock {
 

@@ -1,11 +1,11 @@
-#include "study_rate.hpp"
+#include "cases/study/study_rate.hpp"
 
 #include <fmt/format.h>
 
 #include <cmath>
 
-#include "case_directory.hpp"
-#include "study_cost.hpp"
+#include "cases/study/case_directory.hpp"
+#include "cases/study/study_cost.hpp"
 
 namespace granshock {
 

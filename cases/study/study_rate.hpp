@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "study_plan.hpp"
+#include "cases/study/study_plan.hpp"
 
 namespace granshock {
 

@@ -1,16 +1,16 @@
-#include "study_results.hpp"
+#include "cases/study/study_results.hpp"
 
 #include <fmt/format.h>
 
 #include <iostream>
 
-#include "case_directory.hpp"
-#include "fields_command.hpp"
-#include "figures.hpp"
-#include "study_claims.hpp"
-#include "study_figures.hpp"
-#include "study_table.hpp"
-#include "user_error.hpp"
+#include "analysis/fields_command.hpp"
+#include "analysis/figures.hpp"
+#include "cases/study/case_directory.hpp"
+#include "cases/study/study_claims.hpp"
+#include "cases/study/study_figures.hpp"
+#include "cases/study/study_table.hpp"
+#include "core/user_error.hpp"
 
 namespace granshock {
 

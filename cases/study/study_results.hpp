@@ -6,7 +6,7 @@
 #include <map>
 #include <string>
 
-#include "study_plan.hpp"
+#include "cases/study/study_plan.hpp"
 
 namespace granshock {
 

@@ -1,4 +1,4 @@
-#include "study_runner.hpp"
+#include "cases/study/study_runner.hpp"
 
 #include <fmt/format.h>
 
@@ -6,14 +6,14 @@
 #include <iostream>
 #include <new>
 
-#include "case_directory.hpp"
-#include "fields_command.hpp"
-#include "interrupt.hpp"
-#include "run_command.hpp"
-#include "study_cost.hpp"
-#include "study_preflight.hpp"
-#include "study_rate.hpp"
-#include "user_error.hpp"
+#include "analysis/fields_command.hpp"
+#include "cases/bow_shock/interrupt.hpp"
+#include "cases/bow_shock/run_command.hpp"
+#include "cases/study/case_directory.hpp"
+#include "cases/study/study_cost.hpp"
+#include "cases/study/study_preflight.hpp"
+#include "cases/study/study_rate.hpp"
+#include "core/user_error.hpp"
 
 namespace granshock {
 

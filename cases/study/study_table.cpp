@@ -1,12 +1,12 @@
-#include "study_table.hpp"
+#include "cases/study/study_table.hpp"
 
 #include <toml++/toml.h>
 
 #include <set>
 
-#include "atomic_file.hpp"
-#include "case_directory.hpp"
-#include "csv_cells.hpp"
+#include "analysis/csv_cells.hpp"
+#include "cases/study/case_directory.hpp"
+#include "io/atomic_file.hpp"
 
 namespace granshock {
 

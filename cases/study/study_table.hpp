@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "study_plan.hpp"
+#include "cases/study/study_plan.hpp"
 
 namespace granshock {
 

@@ -1,4 +1,4 @@
-#include "accuracy_choice.hpp"
+#include "cases/tradeoff/accuracy_choice.hpp"
 
 #include <fmt/format.h>
 
@@ -7,12 +7,12 @@
 #include <cstdlib>
 #include <set>
 
-#include "figures.hpp"
-#include "run_checks.hpp"
-#include "scene_file.hpp"
+#include "analysis/figures.hpp"
+#include "cases/bow_shock/run_checks.hpp"
+#include "cases/tradeoff/tradeoff_plan.hpp"
+#include "core/user_error.hpp"
+#include "io/scene_file.hpp"
 #include "tradeoff_paths.hpp"
-#include "tradeoff_plan.hpp"
-#include "user_error.hpp"
 
 namespace granshock {
 

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "accuracy_table.hpp"
-#include "run_checks.hpp"
+#include "cases/bow_shock/run_checks.hpp"
+#include "cases/tradeoff/accuracy_table.hpp"
 
 namespace granshock {
 

@@ -1,4 +1,4 @@
-#include "accuracy_table.hpp"
+#include "cases/tradeoff/accuracy_table.hpp"
 
 #include <fmt/format.h>
 
@@ -9,8 +9,8 @@
 #include <optional>
 #include <sstream>
 
-#include "json_file.hpp"
-#include "user_error.hpp"
+#include "analysis/json_file.hpp"
+#include "core/user_error.hpp"
 
 namespace granshock {
 

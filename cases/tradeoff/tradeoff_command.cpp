@@ -1,16 +1,16 @@
-#include "tradeoff_command.hpp"
+#include "cases/tradeoff/tradeoff_command.hpp"
 
 #include <unistd.h>
 
 #include <fstream>
 #include <iostream>
 
-#include "figures.hpp"
-#include "scene_file.hpp"
-#include "study_command.hpp"
+#include "analysis/figures.hpp"
+#include "cases/study/study_command.hpp"
+#include "cases/tradeoff/tradeoff_plan.hpp"
+#include "core/user_error.hpp"
+#include "io/scene_file.hpp"
 #include "tradeoff_paths.hpp"
-#include "tradeoff_plan.hpp"
-#include "user_error.hpp"
 
 namespace granshock {
 

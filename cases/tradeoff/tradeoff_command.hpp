@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "figure_switch.hpp"
+#include "analysis/figure_switch.hpp"
 
 namespace granshock {
 

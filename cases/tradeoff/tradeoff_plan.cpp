@@ -1,11 +1,11 @@
-#include "tradeoff_plan.hpp"
+#include "cases/tradeoff/tradeoff_plan.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 
-#include "run_checks.hpp"
+#include "cases/bow_shock/run_checks.hpp"
 
 namespace granshock {
 

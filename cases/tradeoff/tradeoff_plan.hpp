@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "scene.hpp"
+#include "core/scene.hpp"
 
 namespace granshock {
 

@@ -15,13 +15,13 @@
 #include <string>
 #include <vector>
 
-#include "bin_sums.hpp"
-#include "field_physics.hpp"
-#include "field_sums_file.hpp"
-#include "kinetic_theory.hpp"
-#include "run_directory.hpp"
-#include "run_file.hpp"
-#include "scene_file.hpp"
+#include "analysis/field_physics.hpp"
+#include "core/bin_sums.hpp"
+#include "core/kinetic_theory.hpp"
+#include "io/field_sums_file.hpp"
+#include "io/run_directory.hpp"
+#include "io/run_file.hpp"
+#include "io/scene_file.hpp"
 
 namespace granshock::test {
 

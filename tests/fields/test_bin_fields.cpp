@@ -5,10 +5,10 @@
 
 #include <cmath>
 
-#include "bin_fields.hpp"
-#include "eos_check.hpp"
+#include "analysis/bin_fields.hpp"
+#include "analysis/eos_check.hpp"
+#include "analysis/upstream_state.hpp"
 #include "synthetic_run.hpp"
-#include "upstream_state.hpp"
 
 using namespace granshock;
 

@@ -4,11 +4,11 @@
 
 #include <filesystem>
 
-#include "bin_fields.hpp"
-#include "field_sampling_check.hpp"
-#include "scene_file.hpp"
+#include "analysis/bin_fields.hpp"
+#include "analysis/field_sampling_check.hpp"
+#include "core/user_error.hpp"
+#include "io/scene_file.hpp"
 #include "synthetic_run.hpp"
-#include "user_error.hpp"
 
 using namespace granshock;
 namespace fs = std::filesystem;

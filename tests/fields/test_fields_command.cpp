@@ -15,11 +15,11 @@
 #include <regex>
 #include <sstream>
 
-#include "fields_command.hpp"
-#include "fields_directory.hpp"
-#include "figures.hpp"
+#include "analysis/fields_command.hpp"
+#include "analysis/figures.hpp"
+#include "core/user_error.hpp"
+#include "io/fields_directory.hpp"
 #include "synthetic_run.hpp"
-#include "user_error.hpp"
 
 using namespace granshock;
 namespace fs = std::filesystem;

@@ -11,10 +11,10 @@
 #include <random>
 #include <vector>
 
-#include "block_error.hpp"
-#include "detachment.hpp"
-#include "front_crossing.hpp"
-#include "shock_profile_fit.hpp"
+#include "analysis/block_error.hpp"
+#include "analysis/detachment.hpp"
+#include "analysis/front_crossing.hpp"
+#include "analysis/shock_profile_fit.hpp"
 #include "synthetic_run.hpp"
 
 using namespace granshock;

@@ -7,11 +7,11 @@
 
 #include <cmath>
 
-#include "detachment.hpp"
-#include "detachment_convergence.hpp"
-#include "field_analysis.hpp"
-#include "fields_output.hpp"
-#include "scene_file.hpp"
+#include "analysis/detachment.hpp"
+#include "analysis/detachment_convergence.hpp"
+#include "analysis/field_analysis.hpp"
+#include "analysis/fields_output.hpp"
+#include "io/scene_file.hpp"
 #include "synthetic_run.hpp"
 
 using namespace granshock;

@@ -8,9 +8,9 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "field_analysis.hpp"
-#include "fields_command.hpp"
-#include "fields_output.hpp"
+#include "analysis/field_analysis.hpp"
+#include "analysis/fields_command.hpp"
+#include "analysis/fields_output.hpp"
 #include "synthetic_run.hpp"
 
 using namespace granshock;

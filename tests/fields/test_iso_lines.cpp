@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "iso_lines.hpp"
+#include "analysis/iso_lines.hpp"
 
 using namespace granshock;
 

@@ -32,11 +32,11 @@
 #include <string>
 #include <vector>
 
-#include "bin_fields.hpp"
-#include "bin_sums.hpp"
-#include "field_physics.hpp"
-#include "homogeneous_gas.hpp"
-#include "solver.hpp"
+#include "analysis/bin_fields.hpp"
+#include "analysis/field_physics.hpp"
+#include "cases/gas/homogeneous_gas.hpp"
+#include "core/bin_sums.hpp"
+#include "core/solver.hpp"
 
 using namespace granshock;
 

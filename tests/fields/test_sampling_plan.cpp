@@ -8,9 +8,9 @@
 #include <cmath>
 #include <filesystem>
 
+#include "cases/bow_shock/sampling_plan.hpp"
+#include "io/scene_file.hpp"
 #include "sampling/bin_accumulator.hpp"
-#include "sampling_plan.hpp"
-#include "scene_file.hpp"
 
 using namespace granshock;
 namespace fs = std::filesystem;

@@ -7,9 +7,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "bin_fields.hpp"
-#include "detachment.hpp"
-#include "shock_front.hpp"
+#include "analysis/bin_fields.hpp"
+#include "analysis/detachment.hpp"
+#include "analysis/shock_front.hpp"
 #include "synthetic_run.hpp"
 
 using namespace granshock;

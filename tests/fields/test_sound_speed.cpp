@@ -5,8 +5,8 @@
 
 #include <cmath>
 
-#include "bin_fields.hpp"
-#include "kinetic_theory.hpp"
+#include "analysis/bin_fields.hpp"
+#include "core/kinetic_theory.hpp"
 #include "synthetic_run.hpp"
 
 using namespace granshock;

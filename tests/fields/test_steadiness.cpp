@@ -7,7 +7,7 @@
 #include <limits>
 #include <vector>
 
-#include "steadiness.hpp"
+#include "analysis/steadiness.hpp"
 #include "synthetic_run.hpp"
 
 using namespace granshock;

@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "checkpoint_file.hpp"
-#include "checkpoint_seal.hpp"
+#include "io/checkpoint_file.hpp"
+#include "io/checkpoint_seal.hpp"
 
 namespace granshock::test {
 

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "host_particles.hpp"
+#include "core/host_particles.hpp"
 
 namespace granshock::test {
 

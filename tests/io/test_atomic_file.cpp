@@ -12,10 +12,10 @@
 #include <functional>
 #include <sstream>
 
-#include "atomic_file.hpp"
-#include "hdf5_helpers.hpp"
+#include "core/user_error.hpp"
+#include "io/atomic_file.hpp"
+#include "io/hdf5_helpers.hpp"
 #include "io_test_support.hpp"
-#include "user_error.hpp"
 
 using namespace granshock;
 namespace fs = std::filesystem;

@@ -8,11 +8,11 @@
 #include <limits>
 #include <random>
 
-#include "checkpoint_file.hpp"
+#include "core/user_error.hpp"
 #include "io/checkpoint_edit.hpp"
+#include "io/checkpoint_file.hpp"
 #include "io/io_test_support.hpp"
-#include "run_file.hpp"
-#include "user_error.hpp"
+#include "io/run_file.hpp"
 
 namespace granshock {
 namespace {

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "checkpoint_checks.hpp"
+#include "core/checkpoint_checks.hpp"
 
 namespace granshock {
 namespace {

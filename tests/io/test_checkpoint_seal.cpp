@@ -7,12 +7,12 @@
 #include <random>
 #include <string>
 
-#include "checkpoint_file.hpp"
-#include "checkpoint_seal.hpp"
-#include "file_hash.hpp"
+#include "core/user_error.hpp"
 #include "io/checkpoint_bytes.hpp"
+#include "io/checkpoint_file.hpp"
+#include "io/checkpoint_seal.hpp"
+#include "io/file_hash.hpp"
 #include "io/io_test_support.hpp"
-#include "user_error.hpp"
 
 namespace granshock {
 namespace {

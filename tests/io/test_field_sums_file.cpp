@@ -7,10 +7,10 @@
 #include <cmath>
 #include <numeric>
 
-#include "field_sums_file.hpp"
+#include "core/user_error.hpp"
+#include "io/field_sums_file.hpp"
 #include "io/io_test_support.hpp"
-#include "run_file.hpp"
-#include "user_error.hpp"
+#include "io/run_file.hpp"
 
 namespace granshock {
 namespace {

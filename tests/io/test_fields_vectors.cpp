@@ -5,8 +5,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "fields_file.hpp"
-#include "fields_xdmf.hpp"
+#include "io/fields_file.hpp"
+#include "io/fields_xdmf.hpp"
 #include "io/io_test_support.hpp"
 
 namespace granshock {

@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "core/user_error.hpp"
 #include "io/io_test_support.hpp"
-#include "run_file.hpp"
-#include "user_error.hpp"
+#include "io/run_file.hpp"
 
 namespace granshock {
 namespace {

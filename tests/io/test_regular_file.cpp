@@ -7,15 +7,15 @@
 #include <fstream>
 #include <string>
 
-#include "case_directory.hpp"
-#include "checkpoint_file.hpp"
+#include "analysis/summary_json.hpp"
+#include "cases/study/case_directory.hpp"
+#include "cases/study/study_file.hpp"
+#include "core/user_error.hpp"
+#include "io/checkpoint_file.hpp"
 #include "io/io_test_support.hpp"
-#include "regular_file.hpp"
-#include "run_file.hpp"
-#include "scene_file.hpp"
-#include "study_file.hpp"
-#include "summary_json.hpp"
-#include "user_error.hpp"
+#include "io/regular_file.hpp"
+#include "io/run_file.hpp"
+#include "io/scene_file.hpp"
 
 namespace granshock {
 namespace {

@@ -13,10 +13,10 @@
 #include <string>
 #include <vector>
 
+#include "core/user_error.hpp"
 #include "io/io_test_support.hpp"
-#include "run_file.hpp"
-#include "run_file_growth.hpp"
-#include "user_error.hpp"
+#include "io/run_file.hpp"
+#include "io/run_file_growth.hpp"
 
 namespace granshock {
 namespace {

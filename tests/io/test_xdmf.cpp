@@ -7,10 +7,10 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/user_error.hpp"
 #include "io/io_test_support.hpp"
-#include "run_file.hpp"
-#include "user_error.hpp"
-#include "xdmf_writer.hpp"
+#include "io/run_file.hpp"
+#include "io/xdmf_writer.hpp"
 
 namespace granshock {
 namespace {

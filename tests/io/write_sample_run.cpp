@@ -9,11 +9,11 @@
 #include <random>
 #include <string>
 
-#include "checkpoint_file.hpp"
-#include "checkpoint_seal.hpp"
+#include "io/checkpoint_file.hpp"
+#include "io/checkpoint_seal.hpp"
+#include "io/run_file.hpp"
+#include "io/xdmf_writer.hpp"
 #include "io_test_support.hpp"
-#include "run_file.hpp"
-#include "xdmf_writer.hpp"
 
 namespace {
 

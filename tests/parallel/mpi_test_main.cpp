@@ -5,7 +5,7 @@
 #include <cstdio>
 
 #include "device/kokkos_runtime.hpp"
-#include "mpi_runtime.hpp"
+#include "parallel/mpi_runtime.hpp"
 
 namespace {
 

@@ -13,10 +13,10 @@
 #include <string>
 #include <vector>
 
+#include "core/user_error.hpp"
+#include "io/run_file.hpp"
 #include "io_test_support.hpp"
-#include "mpi_communicator.hpp"
-#include "run_file.hpp"
-#include "user_error.hpp"
+#include "parallel/mpi_communicator.hpp"
 
 using namespace granshock;
 

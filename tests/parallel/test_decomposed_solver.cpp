@@ -10,9 +10,9 @@
 #include <memory>
 #include <string>
 
-#include "homogeneous_gas.hpp"
-#include "mpi_communicator.hpp"
-#include "solver.hpp"
+#include "cases/gas/homogeneous_gas.hpp"
+#include "core/solver.hpp"
+#include "parallel/mpi_communicator.hpp"
 
 using namespace granshock;
 

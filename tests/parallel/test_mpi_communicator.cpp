@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "failure_agreement.hpp"
-#include "mpi_communicator.hpp"
-#include "mpi_runtime.hpp"
+#include "core/failure_agreement.hpp"
+#include "parallel/mpi_communicator.hpp"
+#include "parallel/mpi_runtime.hpp"
 
 using namespace granshock;
 

@@ -5,7 +5,7 @@
 
 #include <stdexcept>
 
-#include "mpi_communicator.hpp"
+#include "parallel/mpi_communicator.hpp"
 
 using namespace granshock;
 

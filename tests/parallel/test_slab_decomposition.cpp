@@ -6,9 +6,9 @@
 #include <cmath>
 #include <numeric>
 
+#include "core/user_error.hpp"
 #include "neighbours/cell_grid.hpp"
-#include "slab_decomposition.hpp"
-#include "user_error.hpp"
+#include "parallel/slab_decomposition.hpp"
 
 using namespace granshock;
 

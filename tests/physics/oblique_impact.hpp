@@ -10,8 +10,8 @@
 #include <utility>
 #include <vector>
 
+#include "core/solver.hpp"
 #include "models/time_step_guard.hpp"
-#include "solver.hpp"
 
 namespace granshock::test {
 

@@ -52,10 +52,10 @@
 #include <utility>
 #include <vector>
 
-#include "homogeneous_gas.hpp"
+#include "cases/gas/homogeneous_gas.hpp"
+#include "core/solver.hpp"
 #include "models/hertz.hpp"
 #include "models/time_step_guard.hpp"
-#include "solver.hpp"
 
 namespace granshock {
 namespace {

@@ -14,8 +14,8 @@
 
 #include <cmath>
 
+#include "core/solver.hpp"
 #include "physics/oblique_impact.hpp"
-#include "solver.hpp"
 
 using namespace granshock;
 using namespace granshock::test;

@@ -10,8 +10,8 @@
 #include <string>
 #include <tuple>
 
-#include "head_on_collision.hpp"
-#include "homogeneous_gas.hpp"
+#include "cases/collision/head_on_collision.hpp"
+#include "cases/gas/homogeneous_gas.hpp"
 #include "physics/contact_reference.hpp"
 
 using namespace granshock;
@@ -112,8 +112,8 @@ TEST(HeadOnCollisionSinglePrecision, RestitutionWithinHalfAPercent) {
 
 }  // namespace
 
-// docs/contact_model.md: contact.softening divides every Young's modulus. Hertz theory (Johnson, Contact
-// Mechanics, eq. 11.24) makes the collision time and the peak overlap grow as
+// docs/contact_model.md: contact.softening divides every Young's modulus. Hertz theory (Johnson,
+// Contact Mechanics, eq. 11.24) makes the collision time and the peak overlap grow as
 // softening^(2/5) and keeps the restitution: measured through the solver's kernels at
 // dt = t_c/100 of each setting, for a particle pair and a particle against the (fallback
 // aluminium) cylinder, against the theory to 1 % (the contact time's interpolation between

@@ -58,10 +58,10 @@
 #include <cstdio>
 #include <vector>
 
-#include "homogeneous_gas.hpp"
+#include "cases/gas/homogeneous_gas.hpp"
+#include "core/solver.hpp"
 #include "models/hertz.hpp"
 #include "models/time_step_guard.hpp"
-#include "solver.hpp"
 
 namespace granshock {
 namespace {

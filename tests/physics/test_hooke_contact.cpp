@@ -39,7 +39,7 @@
 #include <tuple>
 #include <vector>
 
-#include "head_on_collision.hpp"
+#include "cases/collision/head_on_collision.hpp"
 #include "models/hooke.hpp"
 #include "physics/contact_reference.hpp"
 #include "physics/oblique_impact.hpp"

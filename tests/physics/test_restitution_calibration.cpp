@@ -11,11 +11,11 @@
 #include <string>
 #include <tuple>
 
-#include "head_on_collision.hpp"
+#include "cases/collision/head_on_collision.hpp"
+#include "core/pair_properties.hpp"
+#include "core/user_error.hpp"
 #include "models/restitution_calibration.hpp"
 #include "models/time_step_guard.hpp"
-#include "pair_properties.hpp"
-#include "user_error.hpp"
 
 using namespace granshock;
 

@@ -21,10 +21,10 @@
 #include <tuple>
 #include <vector>
 
-#include "head_on_collision.hpp"
-#include "homogeneous_gas.hpp"
+#include "cases/collision/head_on_collision.hpp"
+#include "cases/gas/homogeneous_gas.hpp"
+#include "core/solver.hpp"
 #include "physics/contact_reference.hpp"
-#include "solver.hpp"
 
 using namespace granshock;
 using namespace granshock::test;

@@ -21,9 +21,9 @@
 #include <string>
 #include <tuple>
 
-#include "head_on_collision.hpp"
+#include "cases/collision/head_on_collision.hpp"
+#include "core/user_error.hpp"
 #include "physics/contact_reference.hpp"
-#include "user_error.hpp"
 
 using namespace granshock;
 using namespace granshock::test;

@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-#include "run_command.hpp"
+#include "cases/bow_shock/run_command.hpp"
 
 namespace granshock::testing {
 

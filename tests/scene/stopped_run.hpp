@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "checkpoint_file.hpp"
-#include "run_command.hpp"
+#include "cases/bow_shock/run_command.hpp"
+#include "io/checkpoint_file.hpp"
 #include "scene_fixtures.hpp"
 
 namespace granshock::testing {

@@ -3,11 +3,11 @@
 // (the choice is a pure function of scene, overrides and table) and ends bitwise equal.
 #include <gtest/gtest.h>
 
-#include "checkpoint_file.hpp"
-#include "run_command.hpp"
-#include "run_file.hpp"
+#include "cases/bow_shock/run_command.hpp"
+#include "io/checkpoint_file.hpp"
+#include "io/run_file.hpp"
+#include "io/scene_file.hpp"
 #include "run_helpers.hpp"
-#include "scene_file.hpp"
 #include "scene_fixtures.hpp"
 #include "trade_table_fixture.hpp"
 

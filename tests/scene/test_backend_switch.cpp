@@ -7,7 +7,7 @@
 #include <cmath>
 #include <functional>
 
-#include "backend_switch.hpp"
+#include "cases/bow_shock/backend_switch.hpp"
 
 namespace granshock {
 namespace {

@@ -16,9 +16,9 @@
 #include <string>
 
 #include "checkpoint_mutations.hpp"
+#include "core/user_error.hpp"
 #include "scene_fixtures.hpp"
 #include "stopped_run.hpp"
-#include "user_error.hpp"
 
 using namespace granshock;
 using namespace granshock::testing;

@@ -14,11 +14,11 @@
 #include <map>
 #include <string>
 
-#include "choice_names.hpp"
+#include "core/choice_names.hpp"
+#include "core/user_error.hpp"
+#include "io/scene_file.hpp"
 #include "models/models.hpp"
-#include "scene_file.hpp"
 #include "scene_fixtures.hpp"
-#include "user_error.hpp"
 
 using namespace granshock;
 using granshock::testing::small_scene;
@@ -140,8 +140,7 @@ TEST(ChoiceNames, TheSceneAcceptsEchoesAndReadsBackEveryName) {
       // The resolved scene is what run.h5 and the checkpoint keep (docs/output_format.md).
       const LoadedScene back = parse_scene(given.resolved, {}, "the resolved scene");
       if (choice.echoed) {
-        EXPECT_NE(given.resolved.find("\n" + leaf(key) + " = '" + name + "'\n"),
-                  std::string::npos)
+        EXPECT_NE(given.resolved.find("\n" + leaf(key) + " = '" + name + "'\n"), std::string::npos)
             << given.resolved;
         EXPECT_EQ(choice.value(back.scene), name);
       }

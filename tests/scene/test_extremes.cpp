@@ -11,14 +11,14 @@
 
 #include <fmt/format.h>
 
-#include "run_checks.hpp"
-#include "run_file.hpp"
+#include "cases/bow_shock/run_checks.hpp"
+#include "cases/bow_shock/run_observables.hpp"
+#include "core/solver.hpp"
+#include "core/user_error.hpp"
+#include "io/run_file.hpp"
+#include "io/scene_file.hpp"
 #include "run_helpers.hpp"
-#include "run_observables.hpp"
-#include "scene_file.hpp"
 #include "scene_fixtures.hpp"
-#include "solver.hpp"
-#include "user_error.hpp"
 
 using namespace granshock;
 using granshock::testing::read_json;

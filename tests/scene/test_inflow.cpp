@@ -12,8 +12,8 @@
 
 #include <cmath>
 
-#include "inflow.hpp"
-#include "scene_file.hpp"
+#include "cases/bow_shock/inflow.hpp"
+#include "io/scene_file.hpp"
 #include "scene_fixtures.hpp"
 
 using namespace granshock;

@@ -14,13 +14,13 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "checkpoint_file.hpp"
-#include "inlet_calibration.hpp"
-#include "run_command.hpp"
+#include "cases/bow_shock/inlet_calibration.hpp"
+#include "cases/bow_shock/run_command.hpp"
+#include "core/user_error.hpp"
+#include "io/checkpoint_file.hpp"
+#include "io/scene_file.hpp"
 #include "run_helpers.hpp"
-#include "scene_file.hpp"
 #include "scene_fixtures.hpp"
-#include "user_error.hpp"
 
 namespace granshock {
 namespace {

@@ -10,10 +10,10 @@
 #include <limits>
 #include <random>
 
+#include "core/user_error.hpp"
 #include "io/checkpoint_edit.hpp"
 #include "scene_fixtures.hpp"
 #include "stopped_run.hpp"
-#include "user_error.hpp"
 
 using namespace granshock;
 using granshock::testing::small_scene;

@@ -9,12 +9,12 @@
 #include <fstream>
 #include <iterator>
 
-#include "checkpoint_file.hpp"
-#include "run_command.hpp"
-#include "run_file.hpp"
+#include "cases/bow_shock/run_command.hpp"
+#include "core/user_error.hpp"
+#include "io/checkpoint_file.hpp"
+#include "io/run_file.hpp"
 #include "run_helpers.hpp"
 #include "scene_fixtures.hpp"
-#include "user_error.hpp"
 
 using namespace granshock;
 using granshock::testing::run_options;

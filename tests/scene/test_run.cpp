@@ -6,12 +6,12 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "checkpoint_file.hpp"
-#include "run_command.hpp"
-#include "run_file.hpp"
+#include "cases/bow_shock/run_command.hpp"
+#include "core/user_error.hpp"
+#include "io/checkpoint_file.hpp"
+#include "io/run_file.hpp"
 #include "run_helpers.hpp"
 #include "scene_fixtures.hpp"
-#include "user_error.hpp"
 
 using namespace granshock;
 using granshock::testing::read_json;
@@ -134,8 +134,8 @@ INSTANTIATE_TEST_SUITE_P(
                "no damping makes the steel-steel pair return e = 0.01"}),
     [](const auto& param_info) { return std::string(param_info.param.name); });
 
-// docs/contact_model.md: contact.restitution_mode = "discrete" calibrates every pair at the run's dt,
-// reports it in summary.json, changes the trajectory (the kernels run with the calibrated
+// docs/contact_model.md: contact.restitution_mode = "discrete" calibrates every pair at the run's
+// dt, reports it in summary.json, changes the trajectory (the kernels run with the calibrated
 // damping) and resumes bitwise (the calibration is a pure function of the scene).
 TEST(RunDiscreteRestitution, CalibratedReportedUsedAndResumedBitwise) {
   TempDir tmp;

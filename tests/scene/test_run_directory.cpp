@@ -10,10 +10,10 @@
 #include <functional>
 #include <map>
 
-#include "run_command.hpp"
-#include "run_directory.hpp"
+#include "cases/bow_shock/run_command.hpp"
+#include "core/user_error.hpp"
+#include "io/run_directory.hpp"
 #include "scene_fixtures.hpp"
-#include "user_error.hpp"
 
 using namespace granshock;
 using granshock::testing::small_scene;

@@ -9,13 +9,13 @@
 #include <map>
 #include <string>
 
+#include "cases/bow_shock/run_command.hpp"
+#include "cases/bow_shock/run_memory.hpp"
+#include "core/user_error.hpp"
 #include "device/backends.hpp"
-#include "run_command.hpp"
+#include "io/scene_file.hpp"
 #include "run_helpers.hpp"
-#include "run_memory.hpp"
-#include "scene_file.hpp"
 #include "scene_fixtures.hpp"
-#include "user_error.hpp"
 
 using namespace granshock;
 using namespace granshock::testing;

@@ -2,9 +2,9 @@
 // naming the key, the value and what is accepted).
 #include <gtest/gtest.h>
 
-#include "scene_file.hpp"
+#include "core/user_error.hpp"
+#include "io/scene_file.hpp"
 #include "scene_fixtures.hpp"
-#include "user_error.hpp"
 
 using namespace granshock;
 using granshock::testing::small_scene;

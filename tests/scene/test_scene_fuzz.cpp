@@ -11,11 +11,11 @@
 #include <random>
 #include <sstream>
 
-#include "run_checks.hpp"
-#include "run_command.hpp"
-#include "scene_file.hpp"
+#include "cases/bow_shock/run_checks.hpp"
+#include "cases/bow_shock/run_command.hpp"
+#include "core/user_error.hpp"
+#include "io/scene_file.hpp"
 #include "scene_fixtures.hpp"
-#include "user_error.hpp"
 
 using namespace granshock;
 using granshock::testing::small_scene;

@@ -8,12 +8,12 @@
 #include <cstring>
 #include <string>
 
-#include "head_on_collision.hpp"
-#include "run_checks.hpp"
-#include "run_summary.hpp"
-#include "scene_file.hpp"
+#include "cases/bow_shock/run_checks.hpp"
+#include "cases/bow_shock/run_summary.hpp"
+#include "cases/collision/head_on_collision.hpp"
+#include "core/user_error.hpp"
+#include "io/scene_file.hpp"
 #include "scene_fixtures.hpp"
-#include "user_error.hpp"
 
 using namespace granshock;
 using granshock::testing::small_scene;

@@ -12,9 +12,9 @@
 #include <map>
 #include <sstream>
 
-#include "scene_file.hpp"
+#include "core/user_error.hpp"
+#include "io/scene_file.hpp"
 #include "scene_fixtures.hpp"
-#include "user_error.hpp"
 
 using namespace granshock;
 using granshock::testing::small_scene;

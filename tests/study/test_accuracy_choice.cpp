@@ -9,12 +9,12 @@
 #include <functional>
 #include <limits>
 
-#include "accuracy_choice.hpp"
-#include "run_checks.hpp"
-#include "scene_file.hpp"
+#include "cases/bow_shock/run_checks.hpp"
+#include "cases/tradeoff/accuracy_choice.hpp"
+#include "core/user_error.hpp"
+#include "io/scene_file.hpp"
 #include "scene_fixtures.hpp"
 #include "trade_table_fixture.hpp"
-#include "user_error.hpp"
 
 using namespace granshock;
 using granshock::testing::fake_trade_table;

@@ -11,11 +11,11 @@
 #include <optional>
 #include <sstream>
 
-#include "csv_cells.hpp"
-#include "detachment_table.hpp"
-#include "fields_output.hpp"
+#include "analysis/csv_cells.hpp"
+#include "analysis/detachment_table.hpp"
+#include "analysis/fields_output.hpp"
+#include "cases/study/study_table.hpp"
 #include "scene_fixtures.hpp"
-#include "study_table.hpp"
 
 using namespace granshock;
 using granshock::testing::TempDir;

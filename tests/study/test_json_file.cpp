@@ -8,13 +8,13 @@
 #include <functional>
 #include <sstream>
 
-#include "accuracy_table.hpp"
-#include "case_directory.hpp"
-#include "json_file.hpp"
-#include "run_directory.hpp"
+#include "analysis/json_file.hpp"
+#include "analysis/summary_json.hpp"
+#include "cases/study/case_directory.hpp"
+#include "cases/tradeoff/accuracy_table.hpp"
+#include "core/user_error.hpp"
+#include "io/run_directory.hpp"
 #include "scene_fixtures.hpp"
-#include "summary_json.hpp"
-#include "user_error.hpp"
 
 using namespace granshock;
 using granshock::testing::TempDir;

@@ -13,13 +13,13 @@
 #include <regex>
 #include <sstream>
 
-#include "run_directory.hpp"
+#include "cases/study/slurm_script.hpp"
+#include "cases/study/study_cost.hpp"
+#include "cases/study/study_plan.hpp"
+#include "cases/study/study_rate.hpp"
+#include "core/user_error.hpp"
+#include "io/run_directory.hpp"
 #include "scene_fixtures.hpp"
-#include "slurm_script.hpp"
-#include "study_cost.hpp"
-#include "study_plan.hpp"
-#include "study_rate.hpp"
-#include "user_error.hpp"
 
 using namespace granshock;
 using granshock::testing::small_scene;

@@ -2,10 +2,10 @@
 // overrides, and the refusals that keep a study from running what the user did not mean.
 #include <gtest/gtest.h>
 
-#include "scene_file.hpp"
+#include "cases/study/study_plan.hpp"
+#include "core/user_error.hpp"
+#include "io/scene_file.hpp"
 #include "scene_fixtures.hpp"
-#include "study_plan.hpp"
-#include "user_error.hpp"
 
 using namespace granshock;
 using granshock::testing::small_scene;

@@ -3,7 +3,7 @@
 // count, and a claim without the cases it needs is undetermined.
 #include <gtest/gtest.h>
 
-#include "study_claims.hpp"
+#include "cases/study/study_claims.hpp"
 
 using namespace granshock;
 

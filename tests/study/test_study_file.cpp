@@ -3,9 +3,9 @@
 // in the file is one UserError line naming the file and the key.
 #include <gtest/gtest.h>
 
-#include "study_cases.hpp"
-#include "study_file.hpp"
-#include "user_error.hpp"
+#include "cases/study/study_cases.hpp"
+#include "cases/study/study_file.hpp"
+#include "core/user_error.hpp"
 
 using namespace granshock;
 

@@ -5,8 +5,8 @@
 #include <filesystem>
 #include <set>
 
-#include "scene_file.hpp"
-#include "study_plan.hpp"
+#include "cases/study/study_plan.hpp"
+#include "io/scene_file.hpp"
 
 using namespace granshock;
 namespace fs = std::filesystem;

@@ -6,12 +6,12 @@
 #include <fstream>
 #include <sstream>
 
-#include "case_directory.hpp"
-#include "run_directory.hpp"
+#include "cases/study/case_directory.hpp"
+#include "cases/study/study_directory.hpp"
+#include "cases/study/study_table.hpp"
+#include "core/user_error.hpp"
+#include "io/run_directory.hpp"
 #include "scene_fixtures.hpp"
-#include "study_directory.hpp"
-#include "study_table.hpp"
-#include "user_error.hpp"
 
 using namespace granshock;
 using granshock::testing::small_scene;

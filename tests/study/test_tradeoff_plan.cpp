@@ -6,11 +6,11 @@
 #include <cmath>
 #include <map>
 
-#include "run_checks.hpp"
-#include "scene_file.hpp"
+#include "cases/bow_shock/run_checks.hpp"
+#include "cases/study/study_file.hpp"
+#include "cases/tradeoff/tradeoff_plan.hpp"
+#include "io/scene_file.hpp"
 #include "scene_fixtures.hpp"
-#include "study_file.hpp"
-#include "tradeoff_plan.hpp"
 
 using namespace granshock;
 

@@ -8,8 +8,8 @@
 #include <utility>
 #include <vector>
 
-#include "host_particles.hpp"
-#include "solver_setup.hpp"
+#include "core/host_particles.hpp"
+#include "core/solver_setup.hpp"
 
 namespace granshock::test {
 

@@ -6,7 +6,7 @@
 
 #include <cstddef>
 
-#include "host_particles.hpp"
+#include "core/host_particles.hpp"
 
 namespace granshock::test {
 

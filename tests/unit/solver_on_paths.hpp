@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <memory>
 
-#include "solver.hpp"
+#include "core/solver.hpp"
 
 namespace granshock::test {
 

@@ -8,11 +8,11 @@
 #include <cmath>
 
 #include "brute_force_contacts.hpp"
-#include "checkpoint_checks.hpp"
-#include "homogeneous_gas.hpp"
+#include "cases/gas/homogeneous_gas.hpp"
+#include "core/checkpoint_checks.hpp"
+#include "core/skin_model.hpp"
+#include "core/solver.hpp"
 #include "same_particles.hpp"
-#include "skin_model.hpp"
-#include "solver.hpp"
 
 using namespace granshock;
 

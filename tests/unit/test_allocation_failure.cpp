@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "allocation_failure.hpp"
+#include "core/allocation_failure.hpp"
 
 using namespace granshock;
 

@@ -9,9 +9,9 @@
 #include <Kokkos_Core.hpp>
 #include <cmath>
 
-#include "homogeneous_gas.hpp"
+#include "cases/gas/homogeneous_gas.hpp"
+#include "core/solver.hpp"
 #include "same_particles.hpp"
-#include "solver.hpp"
 #include "solver_on_paths.hpp"
 
 using namespace granshock;

@@ -4,8 +4,8 @@
 
 #include <string>
 
-#include "build_description.hpp"
-#include "cpu_check.hpp"
+#include "apps/granshock/cpu_check.hpp"
+#include "cases/build_info/build_description.hpp"
 #include "version.hpp"
 
 using namespace granshock;

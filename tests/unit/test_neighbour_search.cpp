@@ -8,9 +8,9 @@
 #include <cmath>
 
 #include "brute_force_contacts.hpp"
+#include "cases/gas/homogeneous_gas.hpp"
+#include "core/solver.hpp"
 #include "device/counter_rng.hpp"
-#include "homogeneous_gas.hpp"
-#include "solver.hpp"
 #include "solver_on_paths.hpp"
 
 using namespace granshock;

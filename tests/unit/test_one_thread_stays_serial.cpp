@@ -11,9 +11,9 @@
 #include <string>
 #include <type_traits>
 
+#include "cases/gas/homogeneous_gas.hpp"
+#include "core/solver.hpp"
 #include "device/backends.hpp"
-#include "homogeneous_gas.hpp"
-#include "solver.hpp"
 
 using namespace granshock;
 

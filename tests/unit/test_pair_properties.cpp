@@ -5,9 +5,9 @@
 
 #include <cmath>
 
+#include "core/pair_properties.hpp"
 #include "models/hertz.hpp"
 #include "models/time_step_guard.hpp"
-#include "pair_properties.hpp"
 
 using namespace granshock;
 

@@ -3,7 +3,7 @@
 // per-particle array of the chosen rows, whatever its width.
 #include <gtest/gtest.h>
 
-#include "particle_bytes.hpp"
+#include "core/particle_bytes.hpp"
 
 using namespace granshock;
 

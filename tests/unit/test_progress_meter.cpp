@@ -9,7 +9,7 @@
 #include <string>
 #include <thread>
 
-#include "progress_meter.hpp"
+#include "cases/bow_shock/progress_meter.hpp"
 
 using namespace granshock;
 

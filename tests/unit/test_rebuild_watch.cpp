@@ -9,10 +9,10 @@
 #include <random>
 #include <vector>
 
-#include "homogeneous_gas.hpp"
+#include "cases/gas/homogeneous_gas.hpp"
+#include "core/solver.hpp"
 #include "neighbours/rebuild_watch.hpp"
 #include "same_particles.hpp"
-#include "solver.hpp"
 
 using namespace granshock;
 

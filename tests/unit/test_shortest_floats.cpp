@@ -5,8 +5,8 @@
 #include <cstdlib>
 #include <string>
 
-#include "scene_file.hpp"
-#include "shortest_floats.hpp"
+#include "io/scene_file.hpp"
+#include "io/shortest_floats.hpp"
 
 using namespace granshock;
 

@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "snapshot_part.hpp"
+#include "core/snapshot_part.hpp"
 
 using namespace granshock;
 

@@ -5,9 +5,9 @@
 
 #include <cmath>
 
-#include "checkpoint_checks.hpp"
-#include "homogeneous_gas.hpp"
-#include "solver.hpp"
+#include "cases/gas/homogeneous_gas.hpp"
+#include "core/checkpoint_checks.hpp"
+#include "core/solver.hpp"
 
 using namespace granshock;
 

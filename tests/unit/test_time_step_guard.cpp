@@ -4,11 +4,11 @@
 
 #include <cmath>
 
-#include "head_on_collision.hpp"
+#include "cases/collision/head_on_collision.hpp"
+#include "core/user_error.hpp"
 #include "models/hertz.hpp"
 #include "models/hooke.hpp"
 #include "models/time_step_guard.hpp"
-#include "user_error.hpp"
 
 using namespace granshock;
 
