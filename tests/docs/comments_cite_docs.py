@@ -12,6 +12,8 @@ import pathlib
 import re
 import sys
 
+from source_lines import report, source_lines
+
 LAYERS = ["core", "kernels", "io", "analysis", "cases", "apps", "tests", "cmake"]
 SUFFIXES = {".cpp", ".hpp", ".h", ".in", ".txt", ".cmake", ".sh", ".py"}
 CITES_AN_ISSUE = re.compile(
@@ -21,29 +23,13 @@ CITES_AN_ISSUE = re.compile(
 SELF = pathlib.Path(__file__).resolve()
 
 
-def offending_lines(root):
-    for layer in LAYERS:
-        for path in sorted((root / layer).rglob("*")):
-            if path.suffix not in SUFFIXES and path.name != "CMakeLists.txt":
-                continue
-            if not path.is_file() or path.resolve() == SELF:
-                continue
-            text = path.read_text(errors="replace")
-            for number, line in enumerate(text.splitlines(), 1):
-                if CITES_AN_ISSUE.search(line):
-                    yield f"{path.relative_to(root)}:{number}: {line.strip()}"
-
-
 def main():
     root = pathlib.Path(sys.argv[1]).resolve()
-    found = list(offending_lines(root))
-    for line in found:
-        print(line)
-    if found:
-        print(f"{len(found)} line(s) cite an issue; cite docs/*.md instead")
-        return 1
-    print("no comment cites an issue")
-    return 0
+    found = [f"{path}:{number}: {line.strip()}"
+             for path, number, line in source_lines(root, LAYERS, SUFFIXES, {"CMakeLists.txt"}, SELF)
+             if CITES_AN_ISSUE.search(line)]
+    return report(found, "line(s) cite an issue; cite docs/*.md instead",
+                  "no comment cites an issue")
 
 
 if __name__ == "__main__":

@@ -12,6 +12,8 @@ import pathlib
 import re
 import sys
 
+from source_lines import report, source_lines
+
 LAYERS = ["core", "io", "analysis", "cases", "apps", "parallel"]
 SOURCES = {".cpp", ".hpp", ".h", ".inl", ".in"}
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"/]+)"')
@@ -22,21 +24,12 @@ def main():
     layer_headers = {p.name for layer in LAYERS for p in (root / layer).rglob("*")
                      if p.suffix in {".hpp", ".h", ".inl"} and p.is_file()}
     found = []
-    for layer in LAYERS + ["tests"]:
-        for path in sorted((root / layer).rglob("*")):
-            if path.suffix not in SOURCES or not path.is_file():
-                continue
-            for number, line in enumerate(path.read_text(errors="replace").splitlines(), 1):
-                m = INCLUDE.match(line)
-                if m and m.group(1) in layer_headers:
-                    found.append(f"{path.relative_to(root)}:{number}: {line.strip()}")
-    for line in found:
-        print(line)
-    if found:
-        print(f"{len(found)} include(s) without their layer; write \"core/x.hpp\", \"io/x.hpp\", ...")
-        return 1
-    print("every include outside kernels/ shows its layer")
-    return 0
+    for path, number, line in source_lines(root, LAYERS + ["tests"], SOURCES):
+        m = INCLUDE.match(line)
+        if m and m.group(1) in layer_headers:
+            found.append(f"{path}:{number}: {line.strip()}")
+    return report(found, 'include(s) without their layer; write "core/x.hpp", "io/x.hpp", ...',
+                  "every include outside kernels/ shows its layer")
 
 
 if __name__ == "__main__":
