@@ -6,7 +6,9 @@
 # running the result (ctest --test-dir build-cuda) needs one.
 #
 # Usage: cmake/build_cuda.sh [extra CMake configure arguments]
-# Environment: GRANSHOCK_DEPS (default: <repo>/.deps) holds the Kokkos prefix.
+# Environment: GRANSHOCK_DEPS (default: <repo>/.deps) holds the Kokkos prefix;
+# GRANSHOCK_CUDA_TARGETS (default: all) names the targets to build, e.g.
+# granshock_kernels, the one library that holds device code (what CI compiles).
 set -euo pipefail
 
 repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -36,7 +38,10 @@ cmake -S "$repo" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
 grep -E "granshock:" "$log" || true
 grep -qE "granshock: building for Kokkos backends: .*CUDA" "$log" ||
   die "the Kokkos found for build-cuda has no CUDA backend (configure log: $log)"
-cmake --build "$build" --parallel "$(nproc)" ||
+targets=()
+for t in ${GRANSHOCK_CUDA_TARGETS:-}; do targets+=(--target "$t"); done
+cmake --build "$build" --parallel "$(nproc)" "${targets[@]}" ||
   die "the CUDA build failed: some code does not compile for the GPU (see the errors above)"
-echo "== granshock CUDA build (sm_80) in $build, $(( $(date +%s) - start )) s;" \
+echo "== granshock CUDA build (sm_80, ${GRANSHOCK_CUDA_TARGETS:-every target}) in $build," \
+  "$(( $(date +%s) - start )) s;" \
   "tests need a GPU: ctest --test-dir $build"
