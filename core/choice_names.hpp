@@ -106,6 +106,23 @@ struct Choices<BackendSwitchMode> {
   };
 };
 
+template <>
+struct Choices<ImpactLine> {
+  static constexpr const char* what = "line of impact";
+  static constexpr ChoiceName<ImpactLine> table[] = {
+      {ImpactLine::x, "x", "the bodies approach along x"},
+      {ImpactLine::y, "y", "the bodies approach along y"},
+  };
+};
+
+template <>
+struct Choices<BatchScript> {
+  static constexpr const char* what = "batch script";
+  static constexpr ChoiceName<BatchScript> table[] = {
+      {BatchScript::slurm, "slurm", "a Slurm array job, one task per case"},
+  };
+};
+
 static_assert(choice_table_is_one_to_one<RestitutionMode>());
 static_assert(choice_table_is_one_to_one<ScatterStrategy>());
 static_assert(choice_table_is_one_to_one<MassDefinition>());
@@ -114,6 +131,8 @@ static_assert(choice_table_is_one_to_one<SlabAxis>());
 static_assert(choice_table_is_one_to_one<SlabBalance>());
 static_assert(choice_table_is_one_to_one<SnapshotOutput>());
 static_assert(choice_table_is_one_to_one<BackendSwitchMode>());
+static_assert(choice_table_is_one_to_one<ImpactLine>());
+static_assert(choice_table_is_one_to_one<BatchScript>());
 
 // Calls f(Enum{}) for every choice's enum, for the tests and `granshock info`.
 template <class F>
@@ -121,6 +140,7 @@ void for_each_choice(F&& f) {
   f(ContactModelKind{}), f(RestitutionMode{}), f(Precision{}), f(ScatterStrategy{});
   f(MassDefinition{}), f(MachReference{}), f(SlabAxis{}), f(SlabBalance{});
   f(SnapshotOutput{}), f(BackendSwitchMode{}), f(ObstacleShape{});
+  f(ImpactLine{}), f(BatchScript{});
 }
 
 }  // namespace granshock

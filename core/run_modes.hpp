@@ -1,6 +1,6 @@
 // How a bow-shock run spreads its output and its threads (docs/parallel.md, "Output";
-// docs/benchmarks.md, "A busy machine"); their names are in core/choice_names.hpp. Neither
-// changes the results.
+// docs/benchmarks.md, "A busy machine"), neither of which changes the results, and the
+// modes of the collide and study commands; their names are in core/choice_names.hpp.
 #pragma once
 
 namespace granshock {
@@ -13,5 +13,13 @@ enum class SnapshotOutput { automatic, gathered, collective };
 // the run to one thread while the threads run slower than one would and back; off keeps
 // the threads; alternate moves at every slice (a check that both give the same run).
 enum class BackendSwitchMode { automatic, off, alternate };
+
+// `granshock collide --along`: the line along which the two bodies approach (values are
+// the coordinate index, cases/collision/head_on_collision.hpp).
+enum class ImpactLine { x = 0, y = 1 };
+
+// `granshock study --emit`: the batch script written instead of running (docs/study.md,
+// "Slurm").
+enum class BatchScript { slurm };
 
 }  // namespace granshock

@@ -54,7 +54,8 @@ CLI::Option* add_choice_option(CLI::App& cmd, const std::string& flag, Enum& val
       ->check(CLI::IsMember(granshock::choice_names<Enum>()));
 }
 
-void add_collide_command(CLI::App& app, granshock::CollisionOptions& o, std::string& along) {
+void add_collide_command(CLI::App& app, granshock::CollisionOptions& o,
+                         granshock::ImpactLine& along) {
   auto* cmd = app.add_subcommand("collide",
                                  "head-on collision of two particles or a particle and "
                                  "the fixed cylinder; prints JSON");
@@ -81,8 +82,7 @@ void add_collide_command(CLI::App& app, granshock::CollisionOptions& o, std::str
                   "X,Y: where the impact happens (m), e.g. 0.5,0 at the far edge of the "
                   "paper's 500 d box; default 0,0")
       ->delimiter(',');
-  cmd->add_option("--along", along, "the line of impact: x (default) | y")
-      ->check(CLI::IsMember({"x", "y"}));
+  add_choice_option(*cmd, "--along", along, "the line of impact");
 }
 
 // --no-figures of run, fields, study and tradeoff (analysis/figure_switch.hpp).
@@ -183,8 +183,14 @@ void add_study_command(CLI::App& app, granshock::StudyOptions& o) {
       ->check(whole_case_number);
   cmd->add_flag("--collect", o.collect,
                 "build the table and figures from the finished cases; run nothing");
-  cmd->add_option("--emit", o.emit, "write a batch script into the study directory: slurm")
-      ->check(CLI::IsMember({"slurm"}));
+  cmd->add_option_function<std::string>(
+         "--emit",
+         [&o](const std::string& name) {
+           o.emit = granshock::parse_choice<granshock::BatchScript>(name);
+         },
+         "write a batch script into the study directory instead of running (" +
+             granshock::choice_help<granshock::BatchScript>() + ")")
+      ->check(CLI::IsMember(granshock::choice_names<granshock::BatchScript>()));
   cmd->add_flag("--dry-run", o.dry_run,
                 "check every case, list them with their overrides and expected cost; write "
                 "nothing");
@@ -253,7 +259,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.allow_extras(false);
   granshock::CollisionOptions collide;
-  std::string along = "x";
+  granshock::ImpactLine along = granshock::ImpactLine::x;
   add_collide_command(app, collide, along);
   granshock::RunOptions run;
   add_run_command(app, run);
@@ -365,7 +371,7 @@ int main(int argc, char** argv) {
     if (info->parsed()) {
       if (mpi->rank() == 0) std::cout << granshock::build_info_json(mpi->size()) << "\n";
     } else if (app.got_subcommand("collide")) {
-      collide.place.axis = along == "y" ? 1 : 0;
+      collide.place.axis = int(along);
       const auto result = granshock::run_head_on_collision(collide);
       if (result.time_step.verdict != granshock::TimeStepAssessment::Verdict::ok)
         std::cerr << "granshock: warning: " << result.time_step.message << "\n";

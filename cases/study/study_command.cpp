@@ -22,12 +22,10 @@ namespace fs = std::filesystem;
 namespace {
 
 void check_options(const StudyOptions& o) {
-  const int modes = int(o.collect) + int(!o.emit.empty()) + int(o.dry_run);
+  const int modes = int(o.collect) + int(o.emit.has_value()) + int(o.dry_run);
   if (modes > 1) throw UserError("--collect, --emit and --dry-run exclude each other");
-  if (o.only_case && (o.collect || !o.emit.empty()))
+  if (o.only_case && (o.collect || o.emit))
     throw UserError("--case runs one case; it does not go with --collect or --emit");
-  if (!o.emit.empty() && o.emit != "slurm")
-    throw UserError("--emit '" + o.emit + "': the one script granshock writes is 'slurm'");
 }
 
 std::vector<std::size_t> selection(const StudyPlan& plan, std::optional<long> only_case) {
@@ -102,7 +100,7 @@ int study_command(const StudyOptions& o) {
     print_study_listing(plan, selected, std::cout);
     return 0;
   }
-  if (!o.emit.empty()) return emit_slurm(plan);
+  if (o.emit == BatchScript::slurm) return emit_slurm(plan);
 
   claim_study_directory(plan.out, spec.name);
   const StudyRunResult result =

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "analysis/figure_switch.hpp"
+#include "core/run_modes.hpp"
 
 namespace granshock {
 
@@ -17,7 +18,7 @@ struct StudyOptions {
   std::vector<std::string> overrides;  // --set: every case, after the file's [study] set
   std::optional<long> only_case;       // --case K: run case K alone (array jobs); no table
   bool collect = false;                // build the table from the directories, run nothing
-  std::string emit;                    // "slurm": write <out>/study.slurm, run nothing
+  std::optional<BatchScript> emit;     // slurm: write <out>/study.slurm, run nothing
   bool dry_run = false;                // list the cases with their overrides and cost
   long stop_after_steps = 0;           // passed to the case that runs: it stops, and the study
   bool quiet = false;                  // no progress lines from the runs

@@ -10,6 +10,7 @@
 #include "analysis/figures.hpp"
 #include "cases/bow_shock/run_checks.hpp"
 #include "cases/tradeoff/tradeoff_plan.hpp"
+#include "core/choice_names.hpp"
 #include "core/user_error.hpp"
 #include "io/scene_file.hpp"
 #include "tradeoff_paths.hpp"
@@ -187,7 +188,9 @@ AccuracyChoice choose_accuracy(const fs::path& scene_file,
   AccuracyChoice out;
   std::vector<std::string> chosen;
   if (s.softening != 1) chosen.push_back(fmt::format("contact.softening={:g}", s.softening));
-  if (sc.single_precision) chosen.push_back("numerics.precision=\"single\"");
+  if (sc.single_precision)
+    chosen.push_back(
+        fmt::format("numerics.precision=\"{}\"", choice_name(Precision::single_precision)));
   std::vector<std::string> all = overrides;
   all.insert(all.end(), chosen.begin(), chosen.end());
   // t_c of this scene at the chosen softening: the case's dt/t_c carries over.
@@ -238,7 +241,8 @@ AccuracyChoice choose_accuracy(const fs::path& scene_file,
                 {"dt_over_tc", dt / guard.t_c},
                 {"case_dt_over_tc", s.dt_over_tc},
                 {"softening", s.softening},
-                {"precision", sc.single_precision ? "single" : "double"},
+                {"precision", choice_name(sc.single_precision ? Precision::single_precision
+                                                              : Precision::double_precision)},
                 {"overrides", chosen}};
   return out;
 }

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "analysis/json_file.hpp"
+#include "core/choice_names.hpp"
 #include "core/user_error.hpp"
 
 namespace granshock {
@@ -102,9 +103,11 @@ MeasuredSetting read_setting(const TableFail& fail, const json& row, const std::
                     "cases/tradeoff/trade_table.py again)",
                     at));
   const std::string precision = string_at(fail, row, at, "precision", "");
-  if (precision != "double" && precision != "single")
-    fail(fmt::format("{}: \"precision\" = \"{}\" must be \"double\" or \"single\"", at, precision));
-  s.single_precision = precision == "single";
+  try {
+    s.single_precision = parse_choice<Precision>(precision) == Precision::single_precision;
+  } catch (const UserError& e) {
+    fail(fmt::format("{}: {}", at, e.what()));
+  }
   s.changed = words(string_at(fail, row, at, "changed", ""));
   return s;
 }

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "cases/bow_shock/run_checks.hpp"
+#include "core/choice_names.hpp"
 
 namespace granshock {
 
@@ -37,7 +38,8 @@ std::vector<TradeCase> tradeoff_cases(const Scene& s) {
     cases.push_back({fmt::format("soft-{:g}", f), with(overrides_at_dt(s, dt * std::pow(f, 0.4)),
                                                        fmt::format("contact.softening={:g}", f))});
   const double window_mid = 0.5 * (s.run.production_start_s + s.run.duration_s);
-  cases.push_back({"single", {"numerics.precision=\"single\""}});
+  const std::string single = choice_name(Precision::single_precision);
+  cases.push_back({single, {fmt::format("numerics.precision=\"{}\"", single)}});
   cases.push_back({"skin-0.1", {fmt::format("numerics.skin={:.6g}", 0.1 * d)}});
   cases.push_back({"skin-0.6", {fmt::format("numerics.skin={:.6g}", 0.6 * d)}});
   // Four times sparser, or as sparse as the window allows (10 samples per block).

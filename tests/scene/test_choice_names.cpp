@@ -27,9 +27,10 @@ namespace {
 
 template <class Enum>
 class ChoiceTable : public ::testing::Test {};
-using EveryChoice = ::testing::Types<ContactModelKind, RestitutionMode, Precision, ScatterStrategy,
-                                     MassDefinition, MachReference, SlabAxis, SlabBalance,
-                                     SnapshotOutput, BackendSwitchMode, ObstacleShape>;
+using EveryChoice =
+    ::testing::Types<ContactModelKind, RestitutionMode, Precision, ScatterStrategy, MassDefinition,
+                     MachReference, SlabAxis, SlabBalance, SnapshotOutput, BackendSwitchMode,
+                     ObstacleShape, ImpactLine, BatchScript>;
 TYPED_TEST_SUITE(ChoiceTable, EveryChoice);
 
 TYPED_TEST(ChoiceTable, EveryNameParsesToItsValueAndBack) {

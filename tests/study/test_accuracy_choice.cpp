@@ -178,7 +178,7 @@ TEST(AccuracyTable, MalformedTablesAreRefusedNamingTheField) {
       {with([](auto& d) { d["cases"][2]["e_eff_error"] = -1; }),
        "case \"scene\": \"e_eff_error\" = -1 must be a number in [0, 1e+06]"},
       {with([](auto& d) { d["cases"][2]["precision"] = "quad"; }),
-       "case \"scene\": \"precision\" = \"quad\" must be \"double\" or \"single\""},
+       "case \"scene\": precision 'quad' is not one of double, single"},
       {with([](auto& d) { d["cases"][2]["precision"] = 3; }),
        "case \"scene\": \"precision\" = 3 must be a string"},
       {with([](auto& d) { d["cases"][2]["changed"] = nlohmann::json::array(); }),
