@@ -100,6 +100,23 @@ void choose_precision(const AccuracyTable& table, double budget, SettingChoice& 
   }
 }
 
+// A scene outside where the table was shown to hold: nothing is certified, and the run
+// takes the table's most accurate case, as when nothing meets the budget.
+SettingChoice reference_outside_range(const AccuracyTable& table, const SceneCorner& corner) {
+  SettingChoice c;
+  c.certified = false;
+  c.setting = *find_case(table, "reference");  // read_accuracy_table requires it
+  c.reasons.push_back(fmt::format(
+      "not certified for this scene (D/d = {:.3g}, Ma = {:.3g}): {}; chose the most accurate "
+      "case, {}",
+      corner.obstacle_over_particle, corner.mach,
+      table.range ? "the table's settings were shown to hold for " + describe(*table.range)
+                  : std::string("the table states no range where its settings hold (a table "
+                                "from before it was recorded: run granshock tradeoff again)"),
+      describe(c.setting)));
+  return c;
+}
+
 }  // namespace
 
 double parse_error_budget(const std::string& text) {
@@ -178,12 +195,15 @@ AccuracyChoice choose_accuracy(const fs::path& scene_file,
   const double budget = parse_error_budget(budget_text);
   const fs::path table_path = table_file.empty() ? default_accuracy_table() : table_file;
   const AccuracyTable table = read_accuracy_table(table_path);
-  const SettingChoice sc = choose_setting(table, budget);
-  const MeasuredSetting& s = sc.setting;
-  const MeasuredSetting& reference = *find_case(table, "reference");
   // What the user would run without --accuracy: the speed is claimed against it.
   const LoadedScene given = load_scene_file(scene_file, overrides);
   const TimeStepAssessment given_guard = assess_time_step(given.scene);
+  const SceneCorner corner = scene_corner(given.scene);
+  const SettingChoice sc = table.range && holds_at(*table.range, corner)
+                               ? choose_setting(table, budget)
+                               : reference_outside_range(table, corner);
+  const MeasuredSetting& s = sc.setting;
+  const MeasuredSetting& reference = *find_case(table, "reference");
 
   AccuracyChoice out;
   std::vector<std::string> chosen;
@@ -243,6 +263,9 @@ AccuracyChoice choose_accuracy(const fs::path& scene_file,
                 {"softening", s.softening},
                 {"precision", choice_name(sc.single_precision ? Precision::single_precision
                                                               : Precision::double_precision)},
+                {"scene_D_over_d", corner.obstacle_over_particle},
+                {"scene_mach", corner.mach},
+                {"certified_range", table.range ? to_json(*table.range) : nlohmann::json()},
                 {"overrides", chosen}};
   return out;
 }

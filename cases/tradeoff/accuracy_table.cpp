@@ -112,6 +112,33 @@ MeasuredSetting read_setting(const TableFail& fail, const json& row, const std::
   return s;
 }
 
+// "certified_range": two spans [lo, hi] of positive numbers and the scenes it was shown on.
+CertifiedRange read_range(const TableFail& fail, const json& r) {
+  const std::string at = "\"certified_range\"";
+  if (!r.is_object()) fail(fmt::format("{} = {} must be an object", at, r.dump()));
+  CertifiedRange range;
+  const auto span = [&](const char* key, double(&out)[2]) {
+    const auto it = r.find(key);
+    if (it == r.end() || !it->is_array() || it->size() != 2 || !(*it)[0].is_number() ||
+        !(*it)[1].is_number())
+      fail(fmt::format("{}: \"{}\" must be [lowest, highest]", at, key));
+    out[0] = (*it)[0].get<double>();
+    out[1] = (*it)[1].get<double>();
+    if (!(out[0] > 0) || !(out[1] >= out[0]) || !std::isfinite(out[1]))
+      fail(fmt::format("{}: \"{}\" = {} must be positive, lowest first", at, key, it->dump()));
+  };
+  span("D_over_d", range.obstacle_over_particle);
+  span("mach", range.mach);
+  const auto shown = r.find("shown_on");
+  if (shown == r.end() || !shown->is_array() || shown->empty())
+    fail(fmt::format("{}: \"shown_on\" must list the scenes it was shown on", at));
+  for (const json& name : *shown) {
+    if (!name.is_string()) fail(fmt::format("{}: \"shown_on\" holds {}", at, name.dump()));
+    range.shown_on.push_back(name.get<std::string>());
+  }
+  return range;
+}
+
 }  // namespace
 
 AccuracyTable read_accuracy_table(const std::filesystem::path& path) {
@@ -143,6 +170,7 @@ AccuracyTable read_accuracy_table(const std::filesystem::path& path) {
 
   AccuracyTable table;
   table.source = path;
+  if (doc.contains("certified_range")) table.range = read_range(fail, doc["certified_range"]);
   // Relative noise of every answer the reference measured; an answer it lacks (no front)
   // bounds nothing.
   std::map<std::string, double> reference_value, relative_noise;

@@ -4,8 +4,11 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "cases/tradeoff/accuracy_range.hpp"
 
 namespace granshock {
 
@@ -45,6 +48,9 @@ struct AccuracyTable {
   // The smallest bound any setting can have: the largest relative noise over the answers.
   double noise_floor = 0;
   std::string noise_floor_by;
+  // Where its settings were shown to hold ("certified_range"); none: a table from before
+  // it was recorded, which certifies nowhere.
+  std::optional<CertifiedRange> range;
 };
 
 // Reads trade.json; throws UserError naming the file and the cause where it cannot be read

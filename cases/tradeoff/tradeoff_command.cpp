@@ -6,7 +6,9 @@
 #include <iostream>
 
 #include "analysis/figures.hpp"
+#include "analysis/json_file.hpp"
 #include "cases/study/study_command.hpp"
+#include "cases/tradeoff/accuracy_range.hpp"
 #include "cases/tradeoff/tradeoff_plan.hpp"
 #include "core/user_error.hpp"
 #include "io/scene_file.hpp"
@@ -15,6 +17,26 @@
 namespace granshock {
 
 namespace fs = std::filesystem;
+
+namespace {
+
+// The table holds where it was measured: its scene's D/d and Ma (accuracy_range.hpp),
+// added to trade.json beside what trade_table.py wrote, by a write-and-rename.
+void record_range(const fs::path& table, const CertifiedRange& range) {
+  JsonFile file = read_json_file(table, "trade table");
+  if (file.value.is_discarded() || !file.value.is_object())
+    throw UserError("'" + table.string() + "' is not the table trade_table.py writes");
+  file.value["certified_range"] = to_json(range);
+  const fs::path part = table.string() + ".part";
+  {
+    std::ofstream f(part);
+    f << file.value.dump(1) << "\n";
+    if (!f) throw UserError("cannot write '" + part.string() + "'");
+  }
+  fs::rename(part, table);
+}
+
+}  // namespace
 
 int tradeoff_command(const TradeoffOptions& o) {
   const LoadedScene loaded = load_scene_file(o.scene_file, o.overrides);
@@ -63,6 +85,7 @@ int tradeoff_command(const TradeoffOptions& o) {
   std::vector<std::string> args{out.string(), out.string()};
   if (!o.figures) args.push_back("--no-figures");  // the tables without pareto.png
   run_figure_script(figure_script("trade_table.py", GRANSHOCK_TRADEOFF_SCRIPT_DIR), args);
+  record_range(out / "trade.json", range_of(scene_corner(loaded.scene), loaded.scene.name));
   if (!o.quiet) std::cout << "granshock tradeoff: table in " << (out / "trade.md").string() << "\n";
   return 0;
 }

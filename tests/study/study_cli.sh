@@ -279,6 +279,10 @@ assert soft["softening"] == 1000.0 and soft["changed"] == "contact.softening tim
 single = [c for c in t["cases"] if c["case"] == "single"][0]
 assert single["precision"] == "single" and single["changed"] == "numerics.precision", single
 assert [c for c in t["cases"] if c["case"] == "scene"][0]["changed"] == ""
+# Where the table holds: its own scene (D = 10 d here, Ma 5.9), named.
+r = t["certified_range"]
+assert all(abs(v - 10) < 1e-9 for v in r["D_over_d"]) and r["mach"] == [5.9, 5.9], r
+assert r["shown_on"] == ["default"], r
 # e_eff averaged over the phase of the first contact step (judged by --accuracy) beside
 # the one-phase value, both from the summary.json of each case.
 for c in t["cases"]:

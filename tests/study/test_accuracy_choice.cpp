@@ -1,7 +1,8 @@
 // `granshock run --accuracy` (cases/tradeoff/accuracy_choice.hpp): the error bound of every
 // measured case, the fastest case within a budget among those that change only dt and
 // softening, single precision only where measured faster, the budget below the table's
-// noise, and the choice carried over to another scene through dt / t_c.
+// noise, the choice carried over to another scene through dt / t_c, and certified only
+// where the table was shown to hold (accuracy_range.hpp).
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
@@ -11,6 +12,7 @@
 
 #include "cases/bow_shock/run_checks.hpp"
 #include "cases/tradeoff/accuracy_choice.hpp"
+#include "cases/tradeoff/accuracy_range.hpp"
 #include "core/user_error.hpp"
 #include "io/scene_file.hpp"
 #include "scene_fixtures.hpp"
@@ -196,6 +198,20 @@ TEST(AccuracyTable, MalformedTablesAreRefusedNamingTheField) {
       {with([](auto& d) { d["noise"] = nlohmann::json::array(); }),
        "has no \"cases\" and \"noise\""},
       {nlohmann::json::array(), "has no \"cases\" and \"noise\""},
+      {with([](auto& d) { d["certified_range"] = 1; }),
+       "\"certified_range\" = 1 must be an object"},
+      {with([](auto& d) {
+         d["certified_range"]["mach"] = {30, 1};
+       }),
+       "\"certified_range\": \"mach\" = [30,1] must be positive, lowest first"},
+      {with([](auto& d) {
+         d["certified_range"]["D_over_d"] = {0, 60};
+       }),
+       "\"certified_range\": \"D_over_d\" = [0,60] must be positive, lowest first"},
+      {with([](auto& d) { d["certified_range"].erase("mach"); }),
+       "\"certified_range\": \"mach\" must be [lowest, highest]"},
+      {with([](auto& d) { d["certified_range"]["shown_on"] = nlohmann::json::array(); }),
+       "\"certified_range\": \"shown_on\" must list the scenes it was shown on"},
   };
   for (const auto& [doc, expected] : cases)
     EXPECT_NE(message(doc).find("t.json: " + expected), std::string::npos)
@@ -340,4 +356,67 @@ TEST(AccuracyChoice, CertificateAndTimeStepWarningNeverDisagree) {
   // An uncertified record, or none, certifies nothing.
   EXPECT_FALSE(certified_step(nlohmann::json()).has_value());
   EXPECT_FALSE(certified_step(nlohmann::json{{"certified", false}}).has_value());
+}
+
+// A scene's D/d and Ma: from the scene's keys, and the Mach number from sigma the inverse of
+// sigma from the Mach number (core/kinetic_theory.hpp), so a scene given either way sits at
+// the same corner.
+TEST(AccuracyRange, SceneCornerFromTheKeysAndFromSigma) {
+  const Scene paper =
+      load_scene_file(std::filesystem::path(GRANSHOCK_SOURCE_DIR) / "scenes/paper/d50_u2375.toml",
+                      {})
+          .scene;
+  EXPECT_NEAR(scene_corner(paper).obstacle_over_particle, 50, 1e-9);
+  EXPECT_EQ(scene_corner(paper).mach, 13.7);
+  TempDir dir;
+  std::string text = granshock::testing::small_scene(true);
+  text.replace(text.find("sigma = 0.1"), 11, "mach = 4.5");
+  const Scene by_mach = load_scene_file(dir.write("by_mach.toml", text), {}).scene;
+  const auto file = dir.write("small.toml", granshock::testing::small_scene(true));
+  const Scene by_sigma =
+      load_scene_file(file, {fmt::format("inflow.sigma={:.17g}", by_mach.inflow.sigma)}).scene;
+  EXPECT_FALSE(by_sigma.inflow.target_mach.has_value());
+  EXPECT_NEAR(scene_corner(by_sigma).mach, 4.5, 1e-12);
+  EXPECT_NEAR(scene_corner(by_sigma).obstacle_over_particle, 10, 1e-9);
+  EXPECT_EQ(
+      scene_corner(
+          load_scene_file(dir.write("bare.toml", granshock::testing::small_scene(false)), {}).scene)
+          .obstacle_over_particle,
+      0);
+}
+
+// Outside the span of D/d and Ma the table was shown on, or with no span at all, nothing
+// is certified: the run takes the table's most accurate case and says why in one line.
+TEST(AccuracyRange, ACertificateHoldsOnlyWhereTheTableWasShownToHold) {
+  TempDir dir;
+  const auto scene_file = dir.write("small.toml", granshock::testing::small_scene(true));
+  const auto choose = [&](const nlohmann::json& doc) {
+    return choose_accuracy(scene_file, {}, "5%", dir.write("trade.json", doc.dump()));
+  };
+  const AccuracyChoice inside = choose(fake_trade_table());
+  EXPECT_TRUE(inside.record.at("certified").get<bool>());
+  EXPECT_EQ(inside.record.at("case"), "soft-100");
+  EXPECT_NEAR(inside.record.at("scene_D_over_d").get<double>(), 10, 1e-9);
+
+  nlohmann::json narrow = fake_trade_table();
+  narrow["certified_range"]["D_over_d"] = {20, 60};
+  const AccuracyChoice outside = choose(narrow);
+  EXPECT_FALSE(outside.record.at("certified").get<bool>());
+  EXPECT_EQ(outside.record.at("case"), "reference");
+  EXPECT_TRUE(mentions(outside.report, "not certified for this scene (D/d = 10, Ma = "))
+      << outside.report[1];
+  EXPECT_TRUE(
+      mentions(outside.report, "shown to hold for D/d 20 to 60, Ma 1 to 30 (shown on small)"))
+      << outside.report[1];
+  EXPECT_FALSE(certified_step(outside.record).has_value());
+
+  nlohmann::json fast = fake_trade_table();
+  fast["certified_range"]["mach"] = {1, 5};  // the small scene's Ma is about 7.7
+  EXPECT_FALSE(choose(fast).record.at("certified").get<bool>());
+
+  nlohmann::json old = fake_trade_table();
+  old.erase("certified_range");
+  const AccuracyChoice unknown = choose(old);
+  EXPECT_FALSE(unknown.record.at("certified").get<bool>());
+  EXPECT_TRUE(mentions(unknown.report, "the table states no range where its settings hold"));
 }

@@ -1,0 +1,63 @@
+#include "cases/tradeoff/accuracy_range.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <cmath>
+
+#include "core/kinetic_theory.hpp"
+
+namespace granshock {
+
+SceneCorner scene_corner(const Scene& s) {
+  SceneCorner c;
+  const double d = std::sqrt(4 * s.mean_particle_area() / M_PI);
+  if (s.setup.obstacle) c.obstacle_over_particle = s.setup.obstacle->diameter_m / d;
+  if (s.inflow.target_mach) {
+    c.mach = *s.inflow.target_mach;
+  } else if (s.inflow.sigma > 0) {
+    // sigma is proportional to U / Ma at fixed U (core/kinetic_theory.hpp): the Mach
+    // number is the sigma of Ma = 1 over the scene's.
+    std::vector<double> masses;
+    for (const auto& sp : s.setup.species) masses.push_back(sp.mass_kg());
+    const double m_sound = sound_speed_mass(s.mass_definition, masses, s.inflow.number_fraction);
+    c.mach = sigma_for_mach(1.0, s.inflow.speed_m_per_s, s.inflow.area_fraction,
+                            s.mean_restitution(), s.setup.dim, m_sound, s.mean_mass()) /
+             s.inflow.sigma;
+  }
+  return c;
+}
+
+CertifiedRange range_of(const SceneCorner& c, const std::string& scene_name) {
+  CertifiedRange r;
+  r.obstacle_over_particle[0] = r.obstacle_over_particle[1] = c.obstacle_over_particle;
+  r.mach[0] = r.mach[1] = c.mach;
+  r.shown_on = {scene_name};
+  return r;
+}
+
+namespace {
+bool within(double value, const double (&span)[2]) {
+  constexpr double kSlack = 0.005;
+  return value >= span[0] * (1 - kSlack) && value <= span[1] * (1 + kSlack);
+}
+}  // namespace
+
+bool holds_at(const CertifiedRange& r, const SceneCorner& c) {
+  return c.obstacle_over_particle > 0 && c.mach > 0 &&
+         within(c.obstacle_over_particle, r.obstacle_over_particle) && within(c.mach, r.mach);
+}
+
+nlohmann::json to_json(const CertifiedRange& r) {
+  return {{"D_over_d", {r.obstacle_over_particle[0], r.obstacle_over_particle[1]}},
+          {"mach", {r.mach[0], r.mach[1]}},
+          {"shown_on", r.shown_on}};
+}
+
+std::string describe(const CertifiedRange& r) {
+  return fmt::format("D/d {:.3g} to {:.3g}, Ma {:.3g} to {:.3g} (shown on {})",
+                     r.obstacle_over_particle[0], r.obstacle_over_particle[1], r.mach[0], r.mach[1],
+                     fmt::join(r.shown_on, ", "));
+}
+
+}  // namespace granshock
