@@ -236,6 +236,11 @@ int run_fields_command(const std::vector<std::filesystem::path>& dirs,
     dump.out = out;
     code = granshock::from_dump_command(dump, o);
   } else {
+    for (const std::filesystem::path& dir : dirs)
+      if (std::filesystem::is_regular_file(dir))
+        throw granshock::UserError("'" + dir.string() +
+                                   "' is a file, not a run directory (a LAMMPS or LIGGGHTS dump "
+                                   "is read with --from-dump lammps|liggghts --map MAP.toml)");
     code = granshock::fields_command(dirs, out, o);
   }
   if (o.figures) return code;
