@@ -310,3 +310,21 @@ TEST(FromDump, MapRefusesAnUnknownSpeciesAndAnUnknownKey) {
   extra.replace(extra.find("dt = 1e-7\n[dump.types]"), 9, "step = 1e-7");
   EXPECT_THROW(parse_dump_map(extra, "m"), UserError);
 }
+
+// ITEM: TIME (LAMMPS `dump_modify time yes`) gives a frame's time; the timesteps alone would
+// put every frame past the window (the third frame's time is past it too).
+TEST(FromDump, ItemTimeGivesTheFramesTime) {
+  const DumpMap map = parse_dump_map(kHandMap, "hand map");
+  std::string text = kHandDump;
+  const std::string first = "ITEM: TIMESTEP\n0\n", second = "ITEM: TIMESTEP\n1000\n";
+  text.replace(text.find(first), first.size(), "ITEM: TIMESTEP\n900000\nITEM: TIME\n0\n");
+  text.replace(text.find(second), second.size(), "ITEM: TIMESTEP\n901000\nITEM: TIME\n1e-4\n");
+  const std::string third = "ITEM: TIMESTEP\n5000\n";
+  text.replace(text.find(third), third.size(), "ITEM: TIMESTEP\n905000\nITEM: TIME\n5e-4\n");
+  const fs::path dump = write_temp("time.dump", text);
+  const DumpSums s = sum_dump_frames(map, DumpFormat::lammps, {dump});
+  fs::remove(dump);
+  EXPECT_EQ(s.frames_used, 2);
+  EXPECT_EQ(s.grid.samples, (std::vector<double>{1, 1}));
+  EXPECT_EQ(total_count(s.grid), 6);
+}
