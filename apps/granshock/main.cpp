@@ -19,6 +19,7 @@
 #include "cases/bow_shock/run_command.hpp"
 #include "cases/build_info/build_description.hpp"
 #include "cases/collision/head_on_collision.hpp"
+#include "cases/dump/from_dump_command.hpp"
 #include "cases/study/study_command.hpp"
 #include "cases/tradeoff/tradeoff_command.hpp"
 #include "core/allocation_failure.hpp"
@@ -154,11 +155,21 @@ void add_run_command(CLI::App& app, granshock::RunOptions& o) {
 }
 
 void add_fields_command(CLI::App& app, std::vector<std::filesystem::path>& dirs,
-                        std::filesystem::path& out, granshock::FieldsCommandOptions& o) {
+                        std::filesystem::path& out, granshock::FieldsCommandOptions& o,
+                        granshock::FromDumpOptions& dump) {
   auto* cmd = app.add_subcommand("fields",
                                  "recompute fields, figures and summary from DIR/run.h5; "
                                  "with several DIRs also the delta/D table and figure");
-  cmd->add_option("dirs", dirs, "run directories")->required()->check(CLI::ExistingDirectory);
+  cmd->add_option("dirs", dirs, "run directories (with --from-dump: the dump files, in time order)")
+      ->required()
+      ->check(CLI::ExistingPath);
+  cmd->add_option("--from-dump", dump.format,
+                  "analyse the particles of another code's dump files instead of run "
+                  "directories: lammps | liggghts (needs --map and --out; docs/fields.md)")
+      ->check(CLI::IsMember({"lammps", "liggghts"}));
+  cmd->add_option("--map", dump.map,
+                  "with --from-dump: the scene and the atom types' species (TOML)")
+      ->check(CLI::ExistingPath);
   cmd->add_option("--out", out,
                   "where to write (required with several DIRs): a new or empty directory, or "
                   "one granshock fields wrote before");
@@ -220,10 +231,28 @@ void add_tradeoff_command(CLI::App& app, granshock::TradeoffOptions& o) {
 
 // `granshock fields`, and without figures the note of how to draw them later.
 int run_fields_command(const std::vector<std::filesystem::path>& dirs,
-                       const std::filesystem::path& out, const granshock::FieldsCommandOptions& o) {
-  const int code = granshock::fields_command(dirs, out, o);
+                       const std::filesystem::path& out, const granshock::FieldsCommandOptions& o,
+                       granshock::FromDumpOptions dump) {
+  if (dump.format.empty() && !dump.map.empty())
+    throw granshock::UserError("--map is the map of --from-dump, which is not given");
+  const bool from_dump = !dump.format.empty();
+  int code = 0;
+  if (from_dump) {
+    dump.files = dirs;
+    dump.out = out;
+    code = granshock::from_dump_command(dump, o);
+  } else {
+    for (const std::filesystem::path& dir : dirs)
+      if (std::filesystem::is_regular_file(dir))
+        throw granshock::UserError("'" + dir.string() +
+                                   "' is a file, not a run directory (a LAMMPS or LIGGGHTS dump "
+                                   "is read with --from-dump lammps|liggghts --map MAP.toml)");
+    code = granshock::fields_command(dirs, out, o);
+  }
   if (o.figures) return code;
   std::vector<std::string> redraw{"granshock", "fields"};
+  if (from_dump)
+    redraw.insert(redraw.end(), {"--from-dump", dump.format, "--map", dump.map.string()});
   for (const std::filesystem::path& dir : dirs) redraw.push_back(dir.string());
   if (!out.empty()) redraw.insert(redraw.end(), {"--out", out.string()});
   std::cerr << granshock::figures_skipped_note(redraw) << "\n";
@@ -266,7 +295,8 @@ int main(int argc, char** argv) {
   std::vector<std::filesystem::path> field_dirs;
   std::filesystem::path field_out;
   granshock::FieldsCommandOptions field_options;
-  add_fields_command(app, field_dirs, field_out, field_options);
+  granshock::FromDumpOptions field_dump;
+  add_fields_command(app, field_dirs, field_out, field_options, field_dump);
   granshock::StudyOptions study;
   add_study_command(app, study);
   granshock::TradeoffOptions tradeoff;
@@ -365,7 +395,7 @@ int main(int argc, char** argv) {
       return granshock::run_scene(run, world);
     }
     if (app.got_subcommand("fields"))
-      return run_fields_command(field_dirs, field_out, field_options);
+      return run_fields_command(field_dirs, field_out, field_options, field_dump);
     if (app.got_subcommand("study")) return granshock::study_command(study);
     if (app.got_subcommand("tradeoff")) return granshock::tradeoff_command(tradeoff);
     if (info->parsed()) {

@@ -9,7 +9,9 @@
 # Usage: bench_bow_shock.sh RANKS STEPS     e.g. bench_bow_shock.sh 2 20000
 # Environment: STATE (a granshock run directory whose last snapshot is the start; default:
 #   made once by running the scene to 0.1 s and kept in <repo>/build-bench/bow_shock_state),
-#   GRANSHOCK, LMP, NICE (default 10), KEEP (a folder to keep the input and log in).
+#   GRANSHOCK, LMP, NICE (default 10), KEEP (a folder to keep the input and log in),
+#   DUMP (a file: LAMMPS writes `dump custom` frames id type x y z vx vy vz there every
+#   DUMP_EVERY steps, default 1000, for `granshock fields --from-dump lammps`; docs/fields.md).
 # Output: progress on stderr, the particle-steps/s alone on the last line of stdout.
 #
 # How the scene maps onto LAMMPS:
@@ -55,6 +57,12 @@ fi
 "$here/bow_data.py" "$state" "$work/bow.data" > "$work/scene.lmp"
 "$here/contact_law.py" pairs 0.5 > "$work/pairs.lmp"
 "$here/contact_law.py" walls 0.5 cyl > "$work/walls.lmp"
+dump_lines=""
+if [[ -n ${DUMP:-} ]]; then
+  dump_file=$(cd "$(dirname "$DUMP")" && pwd)/$(basename "$DUMP")
+  dump_lines="dump frames all custom ${DUMP_EVERY:-1000} $dump_file id type x y z vx vy vz
+dump_modify frames sort id"
+fi
 cat > "$work/bow.in" <<EOF
 # granshock's default scene in LAMMPS (apps/bench/lammps/bench_bow_shock.sh)
 units si
@@ -77,6 +85,7 @@ fix integrate all nve/sphere
 fix plane all enforce2d
 timestep \${dt}
 thermo_style custom step atoms ke
+${dump_lines}
 thermo_modify lost ignore norm no
 thermo $steps
 run $steps

@@ -1,0 +1,175 @@
+#include "cases/dump/dump_sums.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "cases/bow_shock/sampling_plan.hpp"
+#include "core/user_error.hpp"
+#include "sampling/bin_accumulator.hpp"
+
+namespace granshock {
+
+namespace {
+
+BinSums empty_sums(const BinLayout& l, const Scene& scene) {
+  BinSums s;
+  s.n_species = l.n_species;
+  s.nx = l.nx;
+  s.ny = l.ny;
+  s.blocks = l.blocks;
+  s.x0 = l.x0;
+  s.y0 = l.y0;
+  s.dx = l.dx;
+  s.dy = l.dy;
+  s.x_period = l.x_period;
+  // As a run records its sums (io/field_sums_file.hpp).
+  s.y_end = scene.setup.box.hi[1];
+  s.production_start = scene.run.production_start_s;
+  s.production_end = scene.run.duration_s;
+  s.sums.assign(static_cast<std::size_t>(l.blocks) * l.bins() * l.quantities(), 0.0);
+  s.samples.assign(static_cast<std::size_t>(l.blocks), 0.0);
+  return s;
+}
+
+// x wrapped into the periodic domain [lo, hi), as the solver keeps its particles: a dump's
+// x may lie a little outside between LAMMPS' re-neighbourings, and xu anywhere.
+double wrapped_x(double x, const Box& box) {
+  if (!box.periodic[0] || (x >= box.lo[0] && x < box.hi[0])) return x;
+  const double w = box.length(0);
+  double r = x - w * std::floor((x - box.lo[0]) / w);
+  if (r >= box.hi[0]) r = box.lo[0];
+  return r;
+}
+
+// The moments of one particle of species a into bin `bin` of block `block`
+// (SampleContribution::add_to_bin in kernels/sampling/bin_accumulator.hpp).
+void add_moments(BinSums& s, int block, int bin, int a, double vx, double vy) {
+  const BinLayout l = s.layout();
+  const long base = l.offset(block, bin / s.nx, bin % s.nx, l.species_index(a, BinLayout::count));
+  double* q = &s.sums[static_cast<std::size_t>(base)];
+  q[BinLayout::count] += 1.0;
+  q[BinLayout::sum_vx] += vx;
+  q[BinLayout::sum_vy] += vy;
+  q[BinLayout::sum_vxvx] += vx * vx;
+  q[BinLayout::sum_vxvy] += vx * vy;
+  q[BinLayout::sum_vyvy] += vy * vy;
+}
+
+std::string seconds(double t) {
+  std::ostringstream s;
+  s.precision(6);
+  s << t << " s";
+  return s.str();
+}
+
+bool same_box(const DumpFrame& a, const DumpFrame& b) {
+  for (int k = 0; k < 3; ++k)
+    if (a.box_lo[k] != b.box_lo[k] || a.box_hi[k] != b.box_hi[k]) return false;
+  return true;
+}
+
+std::string box_text(const DumpFrame& f) {
+  std::ostringstream s;
+  s.precision(17);
+  s << "[" << f.box_lo[0] << ", " << f.box_hi[0] << "] x [" << f.box_lo[1] << ", " << f.box_hi[1]
+    << "] x [" << f.box_lo[2] << ", " << f.box_hi[2] << "]";
+  return s.str();
+}
+
+// Called after add_dump_frame, which refuses unknown types.
+double kinetic_energy(const DumpFrame& f, const DumpMap& map) {
+  double e = 0;
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    const int a = map.species_of_type.at(f.type[i]);
+    const double m = map.scene.scene.setup.species[static_cast<std::size_t>(a)].mass_kg();
+    e += 0.5 * m * (f.vx[i] * f.vx[i] + f.vy[i] * f.vy[i]);
+  }
+  return e;
+}
+
+}  // namespace
+
+void add_dump_frame(const DumpFrame& f, const DumpMap& map, int block, BinSums& grid,
+                    std::optional<BinSums>& profile) {
+  const Box& box = map.scene.scene.setup.box;
+  const GridIndex grid_index = GridIndex::of(grid.layout());
+  std::optional<GridIndex> profile_index;
+  if (profile) profile_index = GridIndex::of(profile->layout());
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    const auto species = map.species_of_type.find(f.type[i]);
+    if (species == map.species_of_type.end())
+      throw UserError("the frame at " + f.where + " has atom " + std::to_string(f.id[i]) +
+                      " of type " + std::to_string(f.type[i]) +
+                      ", which the map's [dump.types] does not name");
+    if (block < 0) continue;  // outside the production window: checked only
+    const double x = wrapped_x(f.x[i], box), y = f.y[i];
+    int row = 0;
+    const int bin = grid_index(x, y, row);
+    if (bin >= 0) add_moments(grid, block, bin, species->second, f.vx[i], f.vy[i]);
+    if (profile_index) {
+      const int pbin = (*profile_index)(x, y, row);
+      if (pbin >= 0) add_moments(*profile, block, pbin, species->second, f.vx[i], f.vy[i]);
+    }
+  }
+  if (block < 0) return;
+  grid.samples[static_cast<std::size_t>(block)] += 1;
+  if (profile) profile->samples[static_cast<std::size_t>(block)] += 1;
+}
+
+DumpSums sum_dump_frames(const DumpMap& map, DumpFormat format,
+                         const std::vector<std::filesystem::path>& files) {
+  const Scene& scene = map.scene.scene;
+  const SamplingPlan plan(scene);
+  DumpSums out;
+  out.grid = empty_sums(plan.layout().grid, scene);
+  if (plan.layout().has_profile()) out.profile = empty_sums(plan.layout().profile, scene);
+  const long first_step = std::llround(scene.run.production_start_s / scene.setup.dt);
+  const long end_step = scene.total_steps();
+
+  DumpFrame frame, first;
+  std::optional<long> previous_step;
+  std::string previous_where;
+  for (const std::filesystem::path& file : files) {
+    DumpReader reader(file, format);
+    while (reader.next(frame)) {
+      if (previous_step && !(frame.timestep > *previous_step))
+        throw UserError("frames out of order: the frame at " + frame.where + " has timestep " +
+                        std::to_string(frame.timestep) + ", not after " +
+                        std::to_string(*previous_step) + " of the frame at " + previous_where +
+                        " (give the files in time order, each frame once)");
+      if (out.frames_read == 0)
+        first = frame;
+      else if (!same_box(frame, first))
+        throw UserError("mixed box sizes: the frame at " + frame.where + " has the box " +
+                        box_text(frame) + ", the first frame (" + first.where + ") " +
+                        box_text(first) + "; granshock bins a fixed domain");
+      previous_step = frame.timestep;
+      previous_where = frame.where;
+      const double t =
+          frame.time ? *frame.time : double(frame.timestep) * map.seconds_per_timestep();
+      // The step of granshock's time grid the frame falls on: the window and its blocks
+      // are those of a run of the scene (SamplingPlan).
+      const long step = std::llround(t / scene.setup.dt);
+      const bool in_window = step >= first_step && step < end_step;
+      add_dump_frame(frame, map, in_window ? plan.block_of(step) : -1, out.grid, out.profile);
+      out.series.time.push_back(t - map.flow_start);
+      out.series.particles.push_back(double(frame.size()));
+      out.series.kinetic_energy.push_back(kinetic_energy(frame, map));
+      if (out.frames_read == 0) out.first_time = t;
+      out.last_time = t;
+      ++out.frames_read;
+      if (in_window) ++out.frames_used;
+    }
+  }
+  if (out.frames_read == 0)
+    throw UserError("the " + to_string(format) + " dump file(s) hold no frame");
+  if (out.frames_used == 0)
+    throw UserError("no dump frame lies in the production window [" +
+                    seconds(scene.run.production_start_s) + ", " + seconds(scene.run.duration_s) +
+                    ") of the map: the " + std::to_string(out.frames_read) + " frames span " +
+                    seconds(out.first_time) + " to " + seconds(out.last_time) +
+                    " (set time.production_start and time.duration, or [dump] dt)");
+  return out;
+}
+
+}  // namespace granshock

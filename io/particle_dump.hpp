@@ -1,0 +1,59 @@
+// Particle dumps of other DEM codes (docs/fields.md, "Fields from LAMMPS or LIGGGHTS
+// dumps"): the text of LAMMPS `dump custom`, which LIGGGHTS writes the same way,
+//   ITEM: TIMESTEP / N, [ITEM: TIME / t,] ITEM: NUMBER OF ATOMS / N,
+//   ITEM: BOX BOUNDS [flags] / three lines lo hi, ITEM: ATOMS col col ... / N lines,
+// frame after frame. The columns id, type, x (or xu), y (or yu), vx and vy are read in
+// whatever order the ATOMS line names them; any other column is ignored. Every problem is
+// one UserError naming the file and line: an unreadable or truncated file, a missing
+// column, a malformed number, a triclinic box.
+#pragma once
+
+#include <cstdio>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace granshock {
+
+enum class DumpFormat { lammps, liggghts };
+DumpFormat parse_dump_format(const std::string& name);  // "lammps" | "liggghts"
+std::string to_string(DumpFormat format);               // "LAMMPS" | "LIGGGHTS"
+
+struct DumpFrame {
+  long timestep = 0;
+  std::optional<double> time;  // ITEM: TIME (LAMMPS `dump_modify time yes`), s
+  double box_lo[3] = {0, 0, 0}, box_hi[3] = {0, 0, 0};
+  std::vector<long> id;
+  std::vector<long> type;
+  std::vector<double> x, y, vx, vy;
+  std::string where;  // "FILE:LINE" of its ITEM: TIMESTEP line, for messages
+
+  std::size_t size() const { return id.size(); }
+};
+
+// Reads the frames of one dump file in order.
+class DumpReader {
+ public:
+  // Throws UserError when the file cannot be opened or is not a regular file.
+  DumpReader(const std::filesystem::path& path, DumpFormat format);
+  ~DumpReader();
+  DumpReader(const DumpReader&) = delete;
+  DumpReader& operator=(const DumpReader&) = delete;
+
+  // The next frame into `frame`; false at the end of the file. Throws UserError on a
+  // truncated or malformed frame.
+  bool next(DumpFrame& frame);
+
+ private:
+  bool read_line(std::string& line);  // false at the end of the file
+  std::string expect_line(const std::string& what);
+  [[noreturn]] void fail(const std::string& why) const;
+
+  std::filesystem::path path_;
+  DumpFormat format_;
+  std::FILE* file_ = nullptr;
+  long line_ = 0;
+};
+
+}  // namespace granshock
