@@ -194,6 +194,12 @@ void add_study_command(CLI::App& app, granshock::StudyOptions& o) {
       ->check(whole_case_number);
   cmd->add_flag("--collect", o.collect,
                 "build the table and figures from the finished cases; run nothing");
+  cmd->add_option("--accuracy", o.accuracy,
+                  "error budget, e.g. 5%: each case's dt, stiffness softening and precision "
+                  "chosen from a measured trade table for its own scene (docs/study.md)");
+  cmd->add_option("--accuracy-table", o.accuracy_table,
+                  "the trade.json to choose from (default: the paper case's)")
+      ->check(CLI::ExistingFile);
   cmd->add_option_function<std::string>(
          "--emit",
          [&o](const std::string& name) {

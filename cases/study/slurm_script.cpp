@@ -72,6 +72,13 @@ SlurmScript slurm_script(const StudyPlan& plan, const fs::path& program, double 
   // The command line's --set, passed on to every task and to the collect step.
   std::string sets;
   for (const std::string& o : plan.spec.command_line_set) sets += " --set " + shell_quote(o);
+  // An error budget: every task chooses its case's settings as the plan did.
+  if (const auto& a = plan.spec.accuracy) {
+    sets += " --accuracy " + shell_quote(a->budget);
+    if (!a->table.empty())
+      sets +=
+          " --accuracy-table " + shell_quote(fs::absolute(a->table).lexically_normal().string());
+  }
   const std::string command =
       fmt::format("{} study {} --out {}{}", shell_quote(program.string()),
                   shell_quote(study.string()), shell_quote(out.string()), sets);

@@ -26,6 +26,8 @@ void check_options(const StudyOptions& o) {
   if (modes > 1) throw UserError("--collect, --emit and --dry-run exclude each other");
   if (o.only_case && (o.collect || o.emit))
     throw UserError("--case runs one case; it does not go with --collect or --emit");
+  if (o.accuracy.empty() && !o.accuracy_table.empty())
+    throw UserError("--accuracy-table names the table --accuracy chooses from; give --accuracy");
 }
 
 std::vector<std::size_t> selection(const StudyPlan& plan, std::optional<long> only_case) {
@@ -87,6 +89,7 @@ int study_command(const StudyOptions& o) {
   StudySpec spec = load_study_file(o.study_file);
   spec.common.insert(spec.common.end(), o.overrides.begin(), o.overrides.end());
   spec.command_line_set = o.overrides;
+  if (!o.accuracy.empty()) spec.accuracy = StudySpec::Accuracy{o.accuracy, o.accuracy_table};
   const StudyPlan plan = plan_study(spec, o.out_dir.empty() ? spec.out : o.out_dir);
   const std::vector<std::size_t> selected = selection(plan, o.only_case);
   if (o.collect) return finish(collect(plan, o), o);

@@ -22,6 +22,10 @@ struct StudyOptions {
   bool dry_run = false;                // list the cases with their overrides and cost
   long stop_after_steps = 0;           // passed to the case that runs: it stops, and the study
   bool quiet = false;                  // no progress lines from the runs
+  // --accuracy BUDGET [--accuracy-table FILE]: each case's settings chosen for the budget
+  // (docs/study.md, "An error budget"); empty: the settings as given.
+  std::string accuracy;
+  std::filesystem::path accuracy_table;
   // Each case's, the comparison's and the axes' figures (figure_switch.hpp).
   bool figures = figures_by_default();
   // Without figures: the command the closing note names to draw them later (default: this

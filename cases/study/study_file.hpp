@@ -50,6 +50,14 @@ struct StudySpec {
   // `granshock study --set`: overrides of every case given on the command line, after the
   // file's (already in `common`; kept apart so that a Slurm script passes them on).
   std::vector<std::string> command_line_set;
+  // `granshock study --accuracy BUDGET [--accuracy-table FILE]`: each case's settings chosen
+  // for the budget on its own scene (docs/study.md, "An error budget"); the table empty for
+  // the shipped one.
+  struct Accuracy {
+    std::string budget;
+    std::filesystem::path table;
+  };
+  std::optional<Accuracy> accuracy;
   StudyMode mode = StudyMode::product;
   std::vector<StudyAxis> axes;
   std::vector<ExplicitCase> cases;

@@ -8,6 +8,24 @@
 
 namespace granshock {
 
+namespace {
+
+// "accuracy 5 %: the table's case "soft-1000", certified (error at most 4.57 %), dt = ...",
+// from the case's record; an uncertified choice claims no bound.
+std::string accuracy_line(const nlohmann::json& r) {
+  const std::string verdict = r.at("certified").get<bool>()
+                                  ? fmt::format("certified (error at most {:.3g} %)",
+                                                100 * r.at("error_bound").get<double>())
+                                  : "not certified";
+  return fmt::format(
+      "accuracy {:g} %: the table's case \"{}\", {}, dt = {:.4g} t_c, softening {:g}, {}",
+      100 * r.at("budget").get<double>(), r.at("case").get<std::string>(), verdict,
+      r.at("dt_over_tc").get<double>(), r.at("softening").get<double>(),
+      r.at("precision").get<std::string>());
+}
+
+}  // namespace
+
 void print_study_listing(const StudyPlan& plan, const std::vector<std::size_t>& selected,
                          std::ostream& out) {
   const StudyRate rate = study_rate(plan);
@@ -33,6 +51,8 @@ void print_study_listing(const StudyPlan& plan, const std::vector<std::size_t>& 
         c.spec.index, c.spec.name, to_string(dir.state), expected_particles(c.scene),
         c.scene.total_steps(), cost, duration_text(cost / rate.particle_steps_per_second),
         overrides_text(c.spec.overrides));
+    if (!c.accuracy_choice.is_null())
+      out << "             " << accuracy_line(c.accuracy_choice) << "\n";
   }
   out << fmt::format(
       "total: {:.3g} particle-steps, ~{} at {:.3g} particle-steps/s ({}); still to run: {} "

@@ -5,6 +5,7 @@
 #include <map>
 
 #include "cases/bow_shock/run_checks.hpp"
+#include "cases/tradeoff/accuracy_choice.hpp"
 #include "core/user_error.hpp"
 #include "io/scene_file.hpp"
 
@@ -65,11 +66,32 @@ StudyPlan plan_study(const StudySpec& s, const std::filesystem::path& out) {
     for (const StudyCase& c : cases) loaded.push_back(load_case(s, c));
   }
 
+  // An error budget: each case's choice on its own scene, its overrides after the case's own
+  // (as `granshock run --accuracy` appends them), so that the scene, its cost and the run's
+  // resolved scene are the chosen ones.
+  std::vector<AccuracyChoice> choices(cases.size());
+  if (s.accuracy) {
+    for (std::size_t k = 0; k < cases.size(); ++k) {
+      try {
+        choices[k] = choose_accuracy(s.base, with_common(s, cases[k].overrides), s.accuracy->budget,
+                                     s.accuracy->table);
+      } catch (const UserError& e) {
+        throw UserError(fmt::format("study file '{}': case '{}' (--case {}): {}", s.file.string(),
+                                    cases[k].name, cases[k].index, e.what()));
+      }
+      cases[k].overrides.insert(cases[k].overrides.end(), choices[k].overrides.begin(),
+                                choices[k].overrides.end());
+      loaded[k] = load_case(s, cases[k]);
+    }
+  }
+
   StudyPlan plan{s, out, {}};
   std::map<std::string, std::string> scenes;  // unnamed TOML -> the first case with it
   for (std::size_t k = 0; k < cases.size(); ++k) {
     PlannedCase p;
     p.spec = cases[k];
+    p.accuracy_choice = choices[k].record;
+    p.accuracy_report = choices[k].report;
     p.dir = out / cases[k].name;
     p.scene = loaded[k].scene;
     const auto [it, fresh] = scenes.emplace(unnamed(p.scene), p.spec.name);
@@ -81,7 +103,7 @@ StudyPlan plan_study(const StudySpec& s, const std::filesystem::path& out) {
     p.scene.name = p.spec.name;
     p.resolved = scene_to_toml(p.scene);
     try {
-      p.warnings = check_scene_before_run(p.scene, false);
+      p.warnings = check_scene_before_run(p.scene, false, 1, certified_step(p.accuracy_choice));
     } catch (const UserError& e) {
       throw UserError(fmt::format("study file '{}': case '{}' (--case {}): {}", s.file.string(),
                                   p.spec.name, p.spec.index, e.what()));

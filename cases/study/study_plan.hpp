@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,11 @@ struct PlannedCase {
   Scene scene;                        // resolved, named after the case
   std::string resolved;               // its TOML (what `run --dry-run` prints)
   std::vector<std::string> warnings;  // of the checks before a run
+  // With an error budget (StudySpec::accuracy): the choice for this case, as
+  // `granshock run --accuracy` records it (summary.json: accuracy_choice; its overrides
+  // are at the end of spec.overrides), and what was chosen and why, one line each.
+  nlohmann::json accuracy_choice;
+  std::vector<std::string> accuracy_report;
 };
 
 struct StudyPlan {

@@ -89,6 +89,7 @@ int run_case(const StudyPlan& plan, const PlannedCase& c, const CaseAction& a,
   run.scene_file = plan.spec.base;
   run.out_dir = c.dir;
   run.overrides = run_overrides(plan.spec, c);
+  run.accuracy_choice = c.accuracy_choice;  // its overrides are in the case's own
   run.resume = a.resume;
   run.overwrite = a.overwrite;
   run.stop_after_steps = o.stop_after_steps;

@@ -47,6 +47,11 @@ void scene_columns(const PlannedCase& c, Row& row) {
   row["scene.dt"] = s.setup.dt;
   row["scene.duration"] = s.run.duration_s;
   row["scene.production_start"] = s.run.production_start_s;
+  // The settings an error budget chose for the case (docs/study.md, "An error budget").
+  if (c.accuracy_choice.is_null()) return;
+  for (const char* key : {"case", "certified", "error_bound", "bound_by", "dt_over_tc", "softening",
+                          "precision", "speedup_over_scene"})
+    row[std::string("accuracy.") + key] = c.accuracy_choice.at(key);
 }
 
 std::string csv_cell(const nlohmann::ordered_json& v) {

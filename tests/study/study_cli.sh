@@ -16,6 +16,9 @@
 #   tradeoff_runs_and_tabulates  `granshock tradeoff`: the dry run, the 15 cases without
 #                                figures, the table, the note's command drawing the figures
 #                                (--collect), the table read by `granshock run --accuracy`
+#   accuracy_per_case      --accuracy with a table: each case certified on its own scene (or
+#                          not, outside the table's range, said in the dry run), recorded in
+#                          its summary.json and study.csv, carried into the Slurm script
 #   emit_slurm_hostile     hostile values (a newline and a command, $(...), quotes, '%', tab,
 #                          CR) in the study directory, the study file's path and [study] set,
 #                          --set and the program's path: the script runs case 1 and nothing else
@@ -304,6 +307,43 @@ if None not in errs:
     fail "--accuracy did not say that nothing met the budget: $(cat "$work/choice")"
   grep -q '# time.dt = .* is 0.01 t_c' "$work/choice" ||
     fail "--accuracy did not fall back to the reference's dt: $(cat "$work/choice")"
+  ;;
+accuracy_per_case)
+  # The default scene's table (docs/results/tradeoff/default: shown on D = 20 d, Ma 5.9) and
+  # the tiny study at D = 10 d: not certified; at D = 20 d: certified, every case its own dt.
+  table=$source/docs/results/tradeoff/default/trade.json
+  "$granshock" study "$studies/tiny.toml" --out "$out" --accuracy 20% --accuracy-table "$table" \
+    --dry-run >"$work/stdout" 2>"$work/stderr" || fail "--dry-run failed: $(cat "$work/stderr")"
+  [ "$(grep -c 'accuracy 20 %: the table.s case "reference", not certified' "$work/stdout")" -eq 4 ] ||
+    fail "D = 10 d should not be certified by a table shown on D = 20 d: $(cat "$work/stdout")"
+  wide=(--set "obstacle.diameter=20 d")
+  "$granshock" study "$studies/tiny.toml" --out "$out" --quiet --accuracy 20% \
+    --accuracy-table "$table" "${wide[@]}" >"$work/stdout" 2>"$work/stderr" ||
+    fail "the study failed: $(cat "$work/stderr")"
+  python3 - "$out" <<'EOF' || fail "the chosen settings are not where they belong"
+import json, os, sys
+out = sys.argv[1]
+rows = json.load(open(os.path.join(out, "study.json")))
+assert len(rows) == 4, len(rows)
+for r in rows:
+    assert r["status"] == "finished", r["status"]
+    assert r["accuracy.case"] == "soft-100" and r["accuracy.certified"] is True, r
+    s = json.load(open(os.path.join(out, r["case"], "summary.json")))
+    choice = s["accuracy_choice"]
+    assert choice["case"] == "soft-100" and choice["certified"] is True, choice
+    assert abs(choice["scene_D_over_d"] - 20) < 1e-9, choice
+    assert r["scene.dt"] == choice["dt"], (r["scene.dt"], choice["dt"])
+# Each case's own t_c: restitution and phi move it a little, so every dt differs.
+assert len({r["scene.dt"] for r in rows}) == 4, [r["scene.dt"] for r in rows]
+EOF
+  header=$(head -1 "$out/study.csv")
+  for column in accuracy.case accuracy.certified accuracy.dt_over_tc accuracy.softening; do
+    echo "$header" | tr ',' '\n' | grep -qx "$column" || fail "study.csv has no column $column"
+  done
+  "$granshock" study "$studies/tiny.toml" --out "$out" --accuracy 20% --accuracy-table "$table" \
+    "${wide[@]}" --emit slurm >/dev/null 2>"$work/stderr" || fail "--emit slurm: $(cat "$work/stderr")"
+  grep -q -- "--accuracy '20%' --accuracy-table '$table' --case " "$out/study.slurm" ||
+    fail "the Slurm tasks do not choose as the plan did: $(grep exec "$out/study.slurm")"
   ;;
 emit_slurm_hostile)
   hostile=$'x\ntouch PWNED #$(touch PWNED)`touch PWNED`\'"%A\t\r end'
