@@ -1,8 +1,10 @@
 // Particle storage on the device: a structure of arrays of Kokkos Views, each declared
 // once (docs/design.md, "Particles"). for_each_array() lists every per-particle array with
-// its name and the SolverState member that checkpoints it; allocation, growth,
-// permutation after a cell sort and the state's export and import all iterate that list,
-// so a new per-particle quantity is one line there and one member of SolverState.
+// its name, the SolverState member that checkpoints it, what a ghost carries of it and its
+// value before anything is known; allocation, growth, permutation after a cell sort, the
+// state's export and import, particles given by position and velocity, and the slab
+// exchange's ghosts all iterate that list, so a new per-particle quantity is one line
+// there and one member of SolverState.
 // Owned particles occupy [0, n); the Views have spare capacity so that particles can be
 // inserted and removed (and, with domain decomposition, ghosts appended after the owned
 // ones) without a reallocation each step. Positions (x, x_ref) are always stored as
@@ -27,7 +29,14 @@
 
 namespace granshock {
 
-// A per-particle array's name and where a checkpoint keeps it.
+// What a per-particle array is to the processes around it (particles/slab_exchange.hpp):
+// a ghost carries the arrays a partner's force reads; between rebuilds a ghost's update
+// carries the ones that move.
+enum ArrayRole : unsigned { kept_at_home = 0, read_by_partners = 1, moves = 2 };
+
+// A per-particle array's name, where a checkpoint keeps it, its roles (ArrayRole bits) and
+// the value a particle holds before anything is known of it (a fresh store, particles
+// given by position and velocity: DemSolver::set_particles).
 // (The member pointer has a type alias: nvcc rewrote the plain declarator with
 // parentheses, and g++ warned about them in the CUDA build.)
 template <class Host>
@@ -35,6 +44,8 @@ struct StateArray {
   using Member = std::vector<Host> SolverState::*;
   const char* name;
   Member member;
+  unsigned roles = kept_at_home;
+  Host rest = 0;
 };
 
 template <int Dim, class Real, class MemSpace, bool Friction>
@@ -69,18 +80,20 @@ struct ParticleStore {
   // that array of each of the given stores (one store: its arrays; two: pairs).
   template <class Visit, class... Stores>
   static void for_each_array(Visit&& visit, Stores&... stores) {
-    visit(StateArray<double>{"position", &SolverState::position}, stores.x...);
-    visit(StateArray<double>{"velocity", &SolverState::velocity}, stores.v...);
+    constexpr unsigned motion = read_by_partners | moves;
+    visit(StateArray<double>{"position", &SolverState::position, motion}, stores.x...);
+    visit(StateArray<double>{"velocity", &SolverState::velocity, motion}, stores.v...);
     visit(StateArray<double>{"force", &SolverState::force}, stores.f...);
     visit(StateArray<double>{"reference_position", &SolverState::reference_position},
           stores.x_ref...);
-    visit(StateArray<int>{"species", &SolverState::species}, stores.species...);
-    visit(StateArray<int>{"id", &SolverState::id}, stores.id...);
+    visit(StateArray<int>{"species", &SolverState::species, read_by_partners}, stores.species...);
+    visit(StateArray<int>{"id", &SolverState::id, read_by_partners}, stores.id...);
     if constexpr (Friction) {
-      visit(StateArray<double>{"angular_velocity", &SolverState::angular_velocity},
+      visit(StateArray<double>{"angular_velocity", &SolverState::angular_velocity, motion},
             stores.omega...);
       visit(StateArray<double>{"torque", &SolverState::torque}, stores.torque...);
-      visit(StateArray<int>{"history_partner", &SolverState::history_partner},
+      // -1: a free slot (no partner).
+      visit(StateArray<int>{"history_partner", &SolverState::history_partner, kept_at_home, -1},
             stores.history_partner...);
       visit(StateArray<double>{"history_spring", &SolverState::history_spring},
             stores.history_spring...);
@@ -95,9 +108,9 @@ struct ParticleStore {
     for_each_array(
         [&](auto array, auto& view) {
           view = std::decay_t<decltype(view)>(std::string(array.name), capacity);
+          if (array.rest != 0) Kokkos::deep_copy(view, array.rest);  // Views start at zero
         },
         *this);
-    if constexpr (Friction) Kokkos::deep_copy(history_partner, -1);
   }
 };
 

@@ -1,12 +1,12 @@
 // Domain decomposition in slabs of cell rows along x or y (docs/parallel.md): the exchange
 // half of the communication seam for several processes (communicator.hpp moves the
-// bytes; population.hpp inserts and deletes across ranks). A "row" here is a layer of cells along the slab axis: a row of the
-// grid for slabs along y, a column for slabs along x. At each list rebuild, particles whose
-// row belongs to another slab migrate to it, and each slab sends its lowest and highest
-// rows to the slabs below and above as ghosts, appended after the owned particles. A row
-// is at least one interaction range (largest diameter + skin) wide, so the ghosts are
-// every partner a Verlet list can hold. Between rebuilds the ghosts' positions,
-// velocities (and spins) are refreshed from their owners after every position update.
+// bytes; population.hpp inserts and deletes across ranks). A "row" here is a layer of cells along
+// the slab axis: a row of the grid for slabs along y, a column for slabs along x. At each list
+// rebuild, particles whose row belongs to another slab migrate to it, and each slab sends its
+// lowest and highest rows to the slabs below and above as ghosts, appended after the owned
+// particles. A row is at least one interaction range (largest diameter + skin) wide, so the ghosts
+// are every partner a Verlet list can hold. Between rebuilds the ghosts' positions, velocities (and
+// spins) are refreshed from their owners after every position update.
 //
 // Bitwise the same as one process: every rank sorts into the global cell grid, owned cells
 // and ghost cells are disjoint (slab cuts are row boundaries), and the ghost block is in
@@ -441,21 +441,24 @@ class SlabExchange {
   static void for_all(Store& p, F&& f) {
     Store::for_each_array([&](auto, auto& view) { f(view); }, p);
   }
-  // A ghost: what a partner's force reads (position, velocity, species, id, spin).
+  // A ghost: what a partner's force reads (position, velocity, species, id, spin:
+  // particles/particle_store.hpp's read_by_partners).
   template <class F>
   static void for_ghost(Store& p, F&& f) {
-    f(p.x);
-    f(p.v);
-    f(p.species);
-    f(p.id);
-    if constexpr (Store::friction) f(p.omega);
+    Store::for_each_array(
+        [&](auto array, auto& view) {
+          if (array.roles & read_by_partners) f(view);
+        },
+        p);
   }
   // Between rebuilds only what moves.
   template <class F>
   static void for_motion(Store& p, F&& f) {
-    f(p.x);
-    f(p.v);
-    if constexpr (Store::friction) f(p.omega);
+    Store::for_each_array(
+        [&](auto array, auto& view) {
+          if (array.roles & moves) f(view);
+        },
+        p);
   }
 
   template <class ForArrays>

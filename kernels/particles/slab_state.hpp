@@ -53,6 +53,18 @@ HostParticles mine(const HostParticles& all, const Slabs& slabs) {
   return out;
 }
 
+// The part of a whole state that is this slab's: the particles whose reference position
+// (where the last rebuild left them) lies in it.
+template <int Dim, class Position, class Slabs>
+SolverState own_part(const SolverState& all, const Slabs& slabs) {
+  std::vector<int> rows;
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    const auto along = Position(all.reference_position[i * Dim + std::size_t(slabs.axis())]);
+    if (slabs.owns(along)) rows.push_back(int(i));
+  }
+  return select_particles(all, rows);
+}
+
 // A rank's part of a snapshot: its particles (`own`, in store order) in cell order and the
 // rows of the file they go to.
 template <class Paths, class Store, class Grid, class Slabs>

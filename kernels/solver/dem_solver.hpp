@@ -91,38 +91,13 @@ class DemSolver final : public Solver {
     int next_id = 0;
     for (const int id : given.id) next_id = std::max(next_id, id + 1);
     const int n = int(hp.size());
-    if (n > p_.capacity()) p_.allocate(n + n / 4);
-    auto x = host_mirror<Paths>(p_.x);
-    auto v = host_mirror<Paths>(p_.v);
-    auto species = host_mirror<Paths>(p_.species);
-    auto id = host_mirror<Paths>(p_.id);
-    auto omega = host_mirror<Paths>(p_.omega);
-    for (int i = 0; i < n; ++i) {
-      for (int d = 0; d < Dim; ++d) {
-        x(i, d) = Position(hp.position[i][d]);
-        v(i, d) = Real(hp.velocity[i][d]);
-      }
+    for (std::size_t i = 0; i < hp.size(); ++i)
       if (hp.species[i] < 0 || hp.species[i] >= int(setup_.species.size()))
         throw UserError("particle " + std::to_string(hp.id[i]) + " has unknown species " +
                         std::to_string(hp.species[i]));
-      species(i) = hp.species[i];
-      id(i) = hp.id[i];
-      if constexpr (V::friction)
-        omega(i) = hp.angular_velocity.empty() ? Real(0) : Real(hp.angular_velocity[i]);
-    }
-    Kokkos::deep_copy(p_.x, x);
-    Kokkos::deep_copy(p_.v, v);
-    Kokkos::deep_copy(p_.species, species);
-    Kokkos::deep_copy(p_.id, id);
-    Kokkos::deep_copy(p_.omega, omega);
-    p_.n = n;
+    if (n > p_.capacity()) p_.allocate(n + n / 4);
+    state_io::import_given<Paths, Store, Dim>(p_, hp);
     population_.restore(next_id, population_.removed());
-    Kokkos::deep_copy(p_.f, Real(0));
-    if constexpr (V::friction) {
-      Kokkos::deep_copy(p_.history_partner, -1);
-      Kokkos::deep_copy(p_.history_spring, Real(0));
-      Kokkos::deep_copy(p_.obstacle_spring, Real(0));
-    }
     rebuild_lists();
     compute_forces();
   }
@@ -482,12 +457,7 @@ class DemSolver final : public Solver {
   // made them (from reference positions), then the ghosts' current motion. Public because
   // it launches kernels (nvcc).
   void import_own_part(const SolverState& s) {
-    std::vector<int> rows;
-    for (std::size_t i = 0; i < s.size(); ++i) {
-      const Position along = Position(s.reference_position[i * Dim + std::size_t(slabs_->axis())]);
-      if (slabs_->owns(along)) rows.push_back(int(i));
-    }
-    const SolverState own = select_particles(s, rows);
+    const SolverState own = slab_state::own_part<Dim, Position>(s, *slabs_);
     if (int(own.size()) > p_.capacity()) p_.allocate(int(own.size()) + int(own.size()) / 4);
     state_io::import_particles<Paths>(p_, own);
     const auto grow = [this](int capacity) { Population::grow(p_, capacity); };

@@ -19,6 +19,7 @@
 #include "checkpoint_checks.hpp"
 #include "device/box_geometry.hpp"
 #include "device/host_mirror.hpp"
+#include "host_particles.hpp"
 #include "neighbours/cell_grid.hpp"
 #include "neighbours/cell_sort.hpp"
 #include "neighbours/verlet_list.hpp"
@@ -77,6 +78,33 @@ void import_particles(Store& p, const SolverState& s) {
   Store::for_each_array(
       [&](auto array, auto& view) { from_host<Paths>(view, n, s.*array.member, array.name); }, p);
   p.n = n;
+}
+
+// Particles given by position, velocity, species, id and (where there is spin) angular
+// velocity: those arrays from `given`, every other one at its rest value (StateArray::rest),
+// as for a fresh particle.
+template <class Paths, class Store, int Dim>
+void import_given(Store& p, const HostParticles& given) {
+  SolverState s;
+  const std::size_t n = given.size();
+  for (std::size_t i = 0; i < n; ++i)
+    for (int d = 0; d < Dim; ++d) {
+      s.position.push_back(given.position[i][std::size_t(d)]);
+      s.velocity.push_back(given.velocity[i][std::size_t(d)]);
+    }
+  s.species = given.species;
+  s.id = given.id;
+  s.angular_velocity = given.angular_velocity;
+  Store::for_each_array(
+      [&](auto array, auto& view) {
+        if ((s.*array.member).empty()) {
+          Kokkos::deep_copy(view, array.rest);
+        } else {
+          from_host<Paths>(view, int(n), s.*array.member, array.name);
+        }
+      },
+      p);
+  p.n = int(n);
 }
 
 // The cell order and Verlet list that sorting and building from a state's reference

@@ -119,3 +119,38 @@ TEST(StateExport, DenseFrictionalGasImportsIntoAFreshSolverUnchanged) {
     EXPECT_EQ(back.neighbours, state.neighbours);
   }
 }
+
+// Particles given by position and velocity (Solver::set_particles) start with every other
+// array at its rest value (particles/particle_store.hpp: StateArray::rest), also in a solver
+// that held sliding contacts before: no spring, no partner, no obstacle spring is left over,
+// and the given spins arrive.
+TEST(StateExport, GivenParticlesStartAtRestInASolverThatHeldContacts) {
+  SolverSetup setup = channel();
+  setup.box.periodic = {true, true, false};
+  setup.delete_outside = false;
+  auto solver = make_solver(setup, 4);
+  HostParticles sliding;
+  sliding.add({0.005, 0.005, 0}, {0.01, 0.1, 0}, 0, 0);
+  sliding.add({0.00600001, 0.005, 0}, {-0.01, -0.1, 0}, 0, 1);
+  solver->set_particles(sliding);
+  solver->advance(20);
+  bool spring = false;
+  for (double xi : solver->export_state().history_spring) spring = spring || xi != 0;
+  ASSERT_TRUE(spring) << "the two must slide in contact first";
+
+  HostParticles apart;  // 3 mm apart: no contact
+  apart.add({0.002, 0.005, 0}, {0, 0.1, 0}, 0, 5);
+  apart.add({0.006, 0.005, 0}, {0, -0.1, 0}, 1, 6);
+  apart.angular_velocity = {3.0, -2.0};
+  solver->set_particles(apart);
+  const SolverState s = solver->export_state();
+  ASSERT_EQ(s.size(), 2u);
+  EXPECT_EQ(s.id, (std::vector<int>{5, 6}));
+  EXPECT_EQ(s.angular_velocity, (std::vector<double>{3.0, -2.0}));
+  for (int partner : s.history_partner) EXPECT_EQ(partner, -1);
+  for (double xi : s.history_spring) EXPECT_EQ(xi, 0.0);
+  for (double xi : s.history_obstacle_spring) EXPECT_EQ(xi, 0.0);
+  for (double f : s.force) EXPECT_EQ(f, 0.0);
+  for (double t : s.torque) EXPECT_EQ(t, 0.0);
+  EXPECT_NO_THROW(check_state(s));
+}
