@@ -38,11 +38,12 @@ std::string percent(double fraction) {
 
 std::string describe(const MeasuredSetting& s) {
   return fmt::format(
-      "\"{}\" (dt = {:.4g} t_c, softening {:g}; error at most {}, set by {}; e_eff {} "
+      "\"{}\" (dt = {:.4g} t_c, softening {:g}{}; error at most {}, set by {}; e_eff {} "
       "off averaged over the phase of the first contact step, {} at one phase; measured at "
       "{:.3g}x the speed of the table's reference)",
-      s.name, s.dt_over_tc, s.softening, percent(s.error_bound), s.bound_by,
-      percent(s.e_eff_error_phase_averaged), percent(s.e_eff_error), s.speedup);
+      s.name, s.dt_over_tc, s.softening, s.discrete_restitution ? ", discrete restitution" : "",
+      percent(s.error_bound), s.bound_by, percent(s.e_eff_error_phase_averaged),
+      percent(s.e_eff_error), s.speedup);
 }
 
 // Softening lengthens the step but costs per step (more neighbour-list builds): the case's
@@ -136,7 +137,8 @@ SettingChoice choose_setting(const AccuracyTable& table, double budget) {
   SettingChoice c;
   std::vector<const MeasuredSetting*> candidates;
   for (const MeasuredSetting& s : table.settings)
-    if (!s.single_precision && changes_only(s, {"time.dt", "contact.softening"}))
+    if (!s.single_precision &&
+        changes_only(s, {"time.dt", "contact.softening", "contact.restitution_mode"}))
       candidates.push_back(&s);
   const MeasuredSetting* best = nullptr;
   for (const MeasuredSetting* s : candidates)
@@ -208,6 +210,9 @@ AccuracyChoice choose_accuracy(const fs::path& scene_file,
   AccuracyChoice out;
   std::vector<std::string> chosen;
   if (s.softening != 1) chosen.push_back(fmt::format("contact.softening={:g}", s.softening));
+  if (s.discrete_restitution)
+    chosen.push_back(
+        fmt::format("contact.restitution_mode=\"{}\"", choice_name(RestitutionMode::discrete)));
   if (sc.single_precision)
     chosen.push_back(
         fmt::format("numerics.precision=\"{}\"", choice_name(Precision::single_precision)));
@@ -244,29 +249,32 @@ AccuracyChoice choose_accuracy(const fs::path& scene_file,
       over_scene, steps_ratio, given.scene.setup.dt, given_guard.dt_over_tc(),
       sc.step_speed_by.empty() ? "" : ", " + sc.step_speed_by, s.speedup, reference.dt_over_tc));
   out.overrides = chosen;
-  out.record = {{"budget", budget},
-                {"table", table_path.string()},
-                {"case", s.name},
-                {"certified", sc.certified},
-                {"error_bound", s.error_bound},
-                {"bound_by", s.bound_by},
-                {"noise_floor", table.noise_floor},
-                {"e_eff_error_phase_averaged", s.e_eff_error_phase_averaged},
-                {"e_eff_error_one_phase", s.e_eff_error},
-                {"speedup_over_scene", over_scene},
-                {"scene_dt", given.scene.setup.dt},
-                {"speedup_over_reference", s.speedup},
-                {"reference_dt_over_tc", reference.dt_over_tc},
-                {"dt", dt},
-                {"dt_over_tc", dt / guard.t_c},
-                {"case_dt_over_tc", s.dt_over_tc},
-                {"softening", s.softening},
-                {"precision", choice_name(sc.single_precision ? Precision::single_precision
-                                                              : Precision::double_precision)},
-                {"scene_D_over_d", corner.obstacle_over_particle},
-                {"scene_mach", corner.mach},
-                {"certified_range", table.range ? to_json(*table.range) : nlohmann::json()},
-                {"overrides", chosen}};
+  out.record = {
+      {"budget", budget},
+      {"table", table_path.string()},
+      {"case", s.name},
+      {"certified", sc.certified},
+      {"error_bound", s.error_bound},
+      {"bound_by", s.bound_by},
+      {"noise_floor", table.noise_floor},
+      {"e_eff_error_phase_averaged", s.e_eff_error_phase_averaged},
+      {"e_eff_error_one_phase", s.e_eff_error},
+      {"speedup_over_scene", over_scene},
+      {"scene_dt", given.scene.setup.dt},
+      {"speedup_over_reference", s.speedup},
+      {"reference_dt_over_tc", reference.dt_over_tc},
+      {"dt", dt},
+      {"dt_over_tc", dt / guard.t_c},
+      {"case_dt_over_tc", s.dt_over_tc},
+      {"softening", s.softening},
+      {"restitution_mode", choice_name(s.discrete_restitution ? RestitutionMode::discrete
+                                                              : RestitutionMode::continuous)},
+      {"precision", choice_name(sc.single_precision ? Precision::single_precision
+                                                    : Precision::double_precision)},
+      {"scene_D_over_d", corner.obstacle_over_particle},
+      {"scene_mach", corner.mach},
+      {"certified_range", table.range ? to_json(*table.range) : nlohmann::json()},
+      {"overrides", chosen}};
   return out;
 }
 

@@ -108,6 +108,14 @@ MeasuredSetting read_setting(const TableFail& fail, const json& row, const std::
   } catch (const UserError& e) {
     fail(fmt::format("{}: {}", at, e.what()));
   }
+  // A table from before the column was recorded measured the continuous mode only.
+  const std::string mode =
+      string_at(fail, row, at, "restitution_mode", choice_name(RestitutionMode::continuous));
+  try {
+    s.discrete_restitution = parse_choice<RestitutionMode>(mode) == RestitutionMode::discrete;
+  } catch (const UserError& e) {
+    fail(fmt::format("{}: {}", at, e.what()));
+  }
   s.changed = words(string_at(fail, row, at, "changed", ""));
   return s;
 }

@@ -25,6 +25,7 @@ struct MeasuredSetting {
   double dt_over_tc = 0;                 // dt / t_c at the fastest impact (the guard's t_c)
   double softening = 1;                  // contact.softening
   bool single_precision = false;         // numerics.precision = "single"
+  bool discrete_restitution = false;     // contact.restitution_mode = "discrete"
   double speedup = 0;                    // wall time of the reference / its own
   double particle_steps_per_second = 0;  // its measured rate; 0 where the table has none
   // Largest |e_eff / e - 1| over the pairs at the inflow speed and its dt: of one impact

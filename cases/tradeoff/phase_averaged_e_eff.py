@@ -65,7 +65,9 @@ def main(granshock, study_file, trade_dir):
             print(f"{name}: e_eff error {100 * one:.2f} % at one phase, "
                   f"{100 * out['e_eff_error_phase_averaged']:.2f} % phase-averaged",
                   file=sys.stderr)
-    trade_table.write_tables(rows, doc["noise"], trade_dir)
+    kept = {k: v for k, v in doc.items() if k not in ("table", "noise", "noise_from", "cases")}
+    trade_table.write_tables(rows, doc["noise"], trade_dir,
+                             doc.get("noise_from", "scene against seed-2"), kept)
 
 
 if __name__ == "__main__":

@@ -5,10 +5,12 @@ Usage: /usr/bin/python3 trade_table.py STUDY_DIR OUT_DIR [--no-figures] (gransho
 runs it; --no-figures: the tables without pareto.png)
 
 Every case is compared with the case "reference" (the most accurate settings) and the
-difference set beside the noise: the same comparison between the case "scene" (the scene
-as given) and "seed-2" (the scene with another seed). A difference at or below the noise
-is not an error the setting made; for delta/D the noise is at least the two runs' combined
-block errors, since one pair of seeds can agree by chance. Writes OUT_DIR/trade.csv and trade.json (every number),
+difference set beside the noise: the root mean square of the same comparison between every
+pair of the reference's seeds ("reference", "reference-seed-2", ...; at least 4 seeds, 6
+pairs), or, in a study from before those cases, between the case "scene" (the scene as
+given) and "seed-2" (one pair). A difference at or below the noise is not an error the
+setting made; for delta/D the noise is at least the combined block errors of two runs,
+since the seeds can agree by chance. Writes OUT_DIR/trade.csv and trade.json (every number),
 trade.md (the table of docs/accuracy.md) and pareto.png (speed-up against each error).
 The e_eff error is given for one impact (one phase of the first contact step on the time
 grid) and averaged over the phases (the one `granshock run --accuracy` judges).
@@ -109,18 +111,41 @@ def differences(case, ref):
     return out
 
 
+MIN_REFERENCE_SEEDS = 4
+
+
+def seed_noise(runs, seeds):
+    """The noise of a difference between two runs of one seed each: for every quantity the
+    root mean square of its difference over every pair of `seeds` (for a scalar about
+    sqrt(2) times its standard deviation over the seeds; for an L2 difference of fields,
+    that of two runs that differ by the seed alone). For delta/D at least the combined
+    block errors of two runs (sqrt(2) times their RMS), since the seeds can agree by chance
+    (docs/fields.md, section 6)."""
+    pairs = [(a, b) for i, a in enumerate(seeds) for b in seeds[i + 1:]]
+    per_pair = [differences(runs[a], runs[b]) for a, b in pairs]
+    noise = {}
+    for k in per_pair[0]:
+        values = [d[k] for d in per_pair if d[k] is not None]
+        noise[k] = float(np.sqrt(np.mean(np.square(values)))) if values else None
+    for k in DEFINITIONS:
+        errs = [runs[n][0]["detachment"][k].get("delta_over_D_err") for n in seeds]
+        if noise["delta_over_D." + k] is not None and None not in errs:
+            noise["delta_over_D." + k] = max(noise["delta_over_D." + k],
+                                             float(np.sqrt(2 * np.mean(np.square(errs)))))
+    return noise
+
+
 def main(study, out_dir, figures=True):
     names = [r["case"] for r in csv.DictReader(open(os.path.join(study, "study.csv")))]
     runs = {n: load(study, n) for n in names}
     ref = runs["reference"]
-    noise = differences(runs["seed-2"], runs["scene"])
-    # One pair of seeds can agree by chance: the noise of delta/D is at least the two
-    # runs' combined block errors (docs/fields.md, section 6).
-    for k in DEFINITIONS:
-        errs = [runs[n][0]["detachment"][k].get("delta_over_D_err") for n in ("scene", "seed-2")]
-        if noise["delta_over_D." + k] is not None and None not in errs:
-            noise["delta_over_D." + k] = max(noise["delta_over_D." + k],
-                                             float(np.hypot(errs[0], errs[1])))
+    seeds = ["reference"] + sorted(n for n in names if n.startswith("reference-seed-"))
+    if len(seeds) >= MIN_REFERENCE_SEEDS:
+        noise = seed_noise(runs, seeds)
+        noise_from = f"the reference's {len(seeds)} seeds, RMS over their {len(seeds) * (len(seeds) - 1) // 2} pairs"
+    else:
+        noise = seed_noise(runs, ["scene", "seed-2"])
+        noise_from = "scene against seed-2"
     title = os.path.basename(os.path.normpath(study))
     wall_ref = ref[0]["wall_seconds"]
     scenes = {n: resolved_scene(study, n) for n in names}
@@ -149,21 +174,22 @@ def main(study, out_dir, figures=True):
             row["diff." + k] = v
             row["over_noise." + k] = v / noise[k] if v is not None and noise[k] else None
         rows.append(row)
-    write_tables(rows, noise, out_dir)
+    write_tables(rows, noise, out_dir, noise_from)
     if figures:
         write_figure(rows, noise, title, out_dir)
 
 
-def write_tables(rows, noise, out_dir):
-    """trade.csv, trade.json and trade.md of the rows (also cases/tradeoff/phase_averaged_e_eff.py)."""
+def write_tables(rows, noise, out_dir, noise_from, extra=None):
+    """trade.csv, trade.json and trade.md of the rows (also cases/tradeoff/phase_averaged_e_eff.py,
+    which passes the keys of the table it rewrites that are not the rows' in `extra`)."""
     os.makedirs(out_dir, exist_ok=True)
     with open(os.path.join(out_dir, "trade.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
         w.writeheader()
         w.writerows(rows)
     with open(os.path.join(out_dir, "trade.json"), "w") as f:
-        json.dump({"table": "granshock trade table 1", "noise": noise, "cases": rows}, f,
-                  indent=1)
+        json.dump({"table": "granshock trade table 1", "noise": noise, "noise_from": noise_from,
+                   **(extra or {}), "cases": rows}, f, indent=1)
 
     def cell(r, k, fmt):
         v, q = r["diff." + k], r["over_noise." + k]
@@ -189,7 +215,7 @@ def write_tables(rows, noise, out_dir):
             f"{cell(r, 'L2.T', '.3f')} | {cell(r, 'L2.Ma', '.3f')} | "
             f"{cell(r, 'phi_peak', '.3f')} | {cell(r, 'ma_inf_measured', '.3f')} |")
     lines.append("")
-    lines.append("Noise (scene against seed-2): " + ", ".join(
+    lines.append(f"Noise ({noise_from}): " + ", ".join(
         f"{k} {v:.3g}" for k, v in noise.items() if v is not None))
     open(os.path.join(out_dir, "trade.md"), "w").write("\n".join(lines) + "\n")
     print("\n".join(lines))
@@ -212,7 +238,7 @@ def write_figure(rows, noise, title, out_dir):
             ax.annotate(r["case"], (r["speedup"], max(v, 1e-5)), fontsize=7,
                         xytext=(3, 3), textcoords="offset points")
         if noise[key]:
-            ax.axhline(noise[key], color="C3", ls="--", label="noise (second seed)")
+            ax.axhline(noise[key], color="C3", ls="--", label="noise (seeds)")
         ax.set_xscale("log")
         ax.set_yscale("log")
         ax.set_xlabel("speed-up against the reference (wall time)")

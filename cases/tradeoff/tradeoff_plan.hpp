@@ -11,6 +11,8 @@
 
 namespace granshock {
 
+inline constexpr int kReferenceSeeds = 4;
+
 struct TradeCase {
   std::string name;
   std::vector<std::string> overrides;  // "key=value", after the scene's own
@@ -24,9 +26,12 @@ std::vector<std::string> overrides_at_dt(const Scene& scene, double dt);
 //   reference    dt = t_c/100, double, the materials as given
 //   dt-tc50, dt-tc25, scene (the scene's dt), dt-tc6, dt-stable (0.95 of the limit)
 //   soft-10, soft-100, soft-1000: contact.softening = F at the scene's dt x F^(2/5)
+//   discrete, soft-F-discrete: the same with contact.restitution_mode = "discrete"
 //   single, skin-0.1, skin-0.6 (in d_max), sample-sparse (fields sampled 4 times more
 //   rarely, or as rarely as 10 samples per block allow), window-half
-//   seed-2: the scene with another seed, for the noise
+//   seed-2: the scene with another seed
+//   reference-seed-2 .. reference-seed-4: the reference with other seeds; with the
+//   reference, the kReferenceSeeds runs whose spread is the noise (trade_table.py)
 // Every case samples the fields at the scene's interval in simulated time (sample_every
 // scaled with 1/dt, at least 1), so that only the setting named changes.
 std::vector<TradeCase> tradeoff_cases(const Scene& scene);

@@ -22,6 +22,7 @@ struct FakeTradeCase {
   std::string precision = "double";
   std::optional<double> e_eff_phase_averaged = std::nullopt;  // none: as e_eff_error
   double particle_steps_per_second = 1e8;
+  std::string restitution_mode = "continuous";
 };
 
 inline nlohmann::json fake_trade_case(const FakeTradeCase& c) {
@@ -30,7 +31,7 @@ inline nlohmann::json fake_trade_case(const FakeTradeCase& c) {
       {"changed", c.changed},
       {"softening", c.softening},
       {"precision", c.precision},
-      {"restitution_mode", "continuous"},
+      {"restitution_mode", c.restitution_mode},
       {"dt_over_tc", c.dt_over_tc},
       {"speedup", c.speedup},
       {"e_eff_error", c.e_eff_error},

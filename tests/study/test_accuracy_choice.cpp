@@ -420,3 +420,37 @@ TEST(AccuracyRange, ACertificateHoldsOnlyWhereTheTableWasShownToHold) {
   EXPECT_FALSE(unknown.record.at("certified").get<bool>());
   EXPECT_TRUE(mentions(unknown.report, "the table states no range where its settings hold"));
 }
+
+// Softening with the discrete restitution mode (e_eff calibrated at the run's dt): chosen
+// where it is the fastest case within the budget, and the run gets the mode with the
+// softening and the step.
+TEST(AccuracyChoice, SofteningWithTheDiscreteModeIsChosenWithItsMode) {
+  TempDir dir;
+  nlohmann::json doc = fake_trade_table();
+  granshock::testing::FakeTradeCase soft{"soft-100-discrete",
+                                         "contact.restitution_mode contact.softening time.dt", 0.08,
+                                         31.0, 0.0001};
+  soft.softening = 100;
+  soft.restitution_mode = "discrete";
+  soft.delta_diff = 0.015;
+  doc["cases"].push_back(granshock::testing::fake_trade_case(soft));
+  const AccuracyTable t = table_of(doc, dir);
+  EXPECT_TRUE(setting(t, "soft-100-discrete").discrete_restitution);
+  EXPECT_FALSE(setting(t, "soft-100").discrete_restitution);
+  // 1.5 % (delta/D): within 2.5 %, where soft-100 (4 %) is not; faster than the scene.
+  EXPECT_EQ(choose_setting(t, 0.025).setting.name, "soft-100-discrete");
+  EXPECT_EQ(choose_setting(t, 0.05).setting.name, "soft-100");  // 32x against 31x
+
+  const auto scene_file = dir.write("small.toml", granshock::testing::small_scene(true));
+  const AccuracyChoice c = choose_accuracy(scene_file, {}, "2.5%", dir.write("t.json", doc.dump()));
+  EXPECT_EQ(c.record.at("restitution_mode"), "discrete");
+  EXPECT_NE(
+      std::find(c.overrides.begin(), c.overrides.end(), "contact.restitution_mode=\"discrete\""),
+      c.overrides.end());
+  const Scene chosen = load_scene_file(scene_file, c.overrides).scene;
+  EXPECT_EQ(chosen.setup.contacts.restitution_mode, RestitutionMode::discrete);
+  EXPECT_EQ(chosen.setup.contacts.softening, 100);
+  // An unknown mode in a table is refused naming the case.
+  doc["cases"].back()["restitution_mode"] = "sticky";
+  EXPECT_THROW(table_of(doc, dir), UserError);
+}

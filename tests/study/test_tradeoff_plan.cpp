@@ -31,7 +31,7 @@ TEST(TradeoffPlan, EverySettingAtItsValue) {
   const TimeStepAssessment guard = assess_time_step(scene);
   std::map<std::string, TradeCase> cases;
   for (const TradeCase& c : tradeoff_cases(scene)) cases[c.name] = c;
-  ASSERT_EQ(cases.size(), 15u);
+  ASSERT_EQ(cases.size(), 22u);
   const auto dt = [&](const std::string& name) {
     return std::stod(value_of(cases[name], "time.dt"));
   };
@@ -54,6 +54,17 @@ TEST(TradeoffPlan, EverySettingAtItsValue) {
   EXPECT_EQ(value_of(cases["sample-sparse"], "output.sample_every"), "250");
   EXPECT_EQ(value_of(cases["window-half"], "time.production_start"), "0.0075");
   EXPECT_EQ(value_of(cases["seed-2"], "scene.seed"), "8");
+  // The discrete mode alone and with each softening, at the softening's dt.
+  EXPECT_EQ(value_of(cases["discrete"], "contact.restitution_mode"), "\"discrete\"");
+  EXPECT_EQ(value_of(cases["soft-1000-discrete"], "contact.restitution_mode"), "\"discrete\"");
+  EXPECT_EQ(value_of(cases["soft-1000-discrete"], "contact.softening"), "1000");
+  EXPECT_EQ(dt("soft-1000-discrete"), dt("soft-1000"));
+  // Four seeds of the reference, for the noise: its settings and seeds 8, 9, 10.
+  for (int k = 2; k <= 4; ++k) {
+    const std::string name = "reference-seed-" + std::to_string(k);
+    EXPECT_EQ(dt(name), dt("reference")) << name;
+    EXPECT_EQ(value_of(cases[name], "scene.seed"), std::to_string(6 + k)) << name;
+  }
 }
 
 TEST(TradeoffPlan, StudyFileReadsBackWithEveryCase) {
