@@ -48,8 +48,9 @@ def load(directory):
         g = dict(h["grid"].attrs)
         phi = h["fields/phi"][()]
         samples = h.attrs.get("samples")
+        obstacle = [h.attrs[k] for k in ("obstacle_xc", "obstacle_yc", "obstacle_diameter")]
     return dict(s=s, halves=halves, up=up, prof=prof, pattrs=pa, grid=g, phi=phi,
-                samples=samples)
+                samples=samples, obstacle=obstacle)
 
 
 def num(x, digits=3):
@@ -78,7 +79,9 @@ def main():
                "phi_inlet_rows": up["inlet"]["phi"], "Ma_rows_2_4": up["downstream"]["Ma"],
                "phi_rows_2_4": up["downstream"]["phi"], "phi_peak": s.get("phi_peak"),
                "upstream_ma_peak": s.get("upstream_ma_peak"), "shock_angle_deg": s.get("shock_angle_deg"),
-               "shock_layer_phi_mean": s.get("shock_layer_phi_mean")}
+               "shock_layer_phi_mean": s.get("shock_layer_phi_mean"),
+               "primary_largest_change_over_D":
+                   s["detachment_convergence"]["verdicts"]["temperature_jump"]["max_deviation_over_D"]}
         for key, _ in DEFINITIONS:
             d = s["detachment"][key]
             row[key] = d["delta_over_D"]
@@ -109,14 +112,16 @@ def main():
                   + f" | {num(row['phi_peak'], 2)} | {num(row['shock_angle_deg'], 1)} deg |")
     md += ["", "Window halves (second half minus first half of the averaging window, delta/D; in "
            "brackets in units of the two halves' combined error):", "",
-           "| analysis | " + " | ".join(name for _, name in DEFINITIONS) + " |",
-           "|" + "---|" * (1 + len(DEFINITIONS))]
+           "| analysis | " + " | ".join(name for _, name in DEFINITIONS)
+           + " | primary: largest change over the 12 analysis cuts |",
+           "|" + "---|" * (2 + len(DEFINITIONS))]
     for row in rows:
         cells = []
         for k, _ in DEFINITIONS:
             v, e = row[k + "_halves"], row[k + "_halves_over_err"]
             cells.append("n/a" if v is None else f"{v:+.3f} ({e:+.1f})")
-        md.append(f"| {row['analysis']} | " + " | ".join(cells) + " |")
+        md.append(f"| {row['analysis']} | " + " | ".join(cells)
+                  + f" | {num(row['primary_largest_change_over_D'])} |")
     with open(prefix + ".md", "w") as f:
         f.write("\n".join(md) + "\n")
 
@@ -146,7 +151,7 @@ def main():
     fig.tight_layout()
     fig.savefig(prefix + "_profiles.png", dpi=110)
 
-    fig, ax = plt.subplots(1, 2, figsize=(10, 5), sharey=True)
+    fig, ax = plt.subplots(1, 2, figsize=(10, 6), sharey=True)
     for a, (label, r) in zip(ax, runs[:2]):
         g = r["grid"]
         ext = [g["x0"] / d, (g["x0"] + g["nx"] * g["dx"]) / d, g["y0"] / d,
@@ -154,6 +159,9 @@ def main():
         im = a.imshow(r["phi"], origin="lower", extent=ext, vmin=0, vmax=0.7, cmap="viridis")
         a.set_title(label, fontsize=9)
         a.set_xlabel("x (d)")
+        # The neighbourhood of the cylinder: 40 d or 4 D upstream, 80 d or 8 D downstream.
+        _, yc, D = (v / d for v in r["obstacle"])
+        a.set_ylim(max(ext[2], yc - max(4 * D, 40)), min(ext[3], yc + max(8 * D, 80)))
     ax[0].set_ylabel("y (d), flow upwards")
     fig.colorbar(im, ax=ax, label="phi", shrink=0.8)
     fig.savefig(prefix + "_phi.png", dpi=110)

@@ -8,7 +8,8 @@
 # Environment: SIGMA (m/s: overrides inflow.sigma, e.g. the sigma granshock calibrated for
 #   inflow.mach, from its summary.json), DUMP_EVERY (s, default 5e-4), GRANSHOCK, LMP,
 #   NICE (default 10), REFILL_BLOCK (d: a short reservoir refilled with blocks of that
-#   length, lammps_inflow.py --refill-block; default one reservoir for the whole run).
+#   length, lammps_inflow.py --refill-block; default one reservoir for the whole run),
+#   SEED (the placement and velocity seed, default 1).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 source "$here/../../../apps/bench/lammps/common.sh"
@@ -24,7 +25,7 @@ mkdir -p "$work"
 # The scene as granshock resolves it (SI units, defaults filled in), --set options included.
 "$(find_granshock)" run "$scene" --dry-run "$@" | grep -v '^#' > "$work/scene_resolved.toml"
 "$here/lammps_inflow.py" "$work/scene_resolved.toml" "$work" --ranks "$ranks" \
-  --dump-every "${DUMP_EVERY:-5e-4}" ${SIGMA:+--sigma "$SIGMA"} ${REFILL_BLOCK:+--refill-block "$REFILL_BLOCK"}
+  --dump-every "${DUMP_EVERY:-5e-4}" ${SIGMA:+--sigma "$SIGMA"} ${REFILL_BLOCK:+--refill-block "$REFILL_BLOCK"} ${SEED:+--seed "$SEED"}
 start=$(date +%s.%N)
 (cd "$work" && lammps_mpirun "$ranks" "$lmp" -in run.in -log run.log -screen none)
 end=$(date +%s.%N)
