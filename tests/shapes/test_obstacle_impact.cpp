@@ -32,8 +32,9 @@ SolverSetup setup_with(const Obstacle& o) {
 // The sphere starts 3 steps away from touching `at` along n, moving with v; returns its
 // velocity once it has left the surface.
 std::array<double, 2> rebound(const Obstacle& o, double ax, double ay, double nx, double ny,
-                              double vx, double vy) {
+                              double vx, double vy, Precision precision) {
   SolverSetup s = setup_with(o);
+  s.precision = precision;
   const double speed = std::hypot(vx, vy);
   s.dt = collision_time(s.contacts.model, s.obstacle_pair(0), s.contacts.options, speed) / 100;
   auto solver = make_solver(s, 1);
@@ -56,8 +57,8 @@ std::array<double, 2> rebound(const Obstacle& o, double ax, double ay, double nx
 // Hits the point (ax, ay) whose surface normal is (nx, ny) with velocity v, and compares
 // the rebound with v - (1 + e) (v . n) n.
 void expect_rebound(const Obstacle& o, double ax, double ay, double nx, double ny, double vx,
-                    double vy) {
-  const auto v = rebound(o, ax, ay, nx, ny, vx, vy);
+                    double vy, Precision precision = Precision::double_precision) {
+  const auto v = rebound(o, ax, ay, nx, ny, vx, vy, precision);
   const double vn = vx * nx + vy * ny;
   const double ex = vx - (1 + kE) * vn * nx, ey = vy - (1 + kE) * vn * ny;
   const double tolerance = 5e-3 * std::hypot(vx, vy);
@@ -107,6 +108,14 @@ TEST(ObstacleImpact, WedgeTipSendsBackAlongTheLineOfImpact) {
 TEST(ObstacleImpact, PlateFaceReversesTheNormalPartOnly) {
   const Obstacle o = plate();
   expect_rebound(o, o.centre[0] + 1e-3, o.centre[1] - 1e-3, 0, -1, 0.5, 1);
+}
+
+// The single-precision variant forms the offset from the centre in double and the rest
+// in float (kernels/device/position.hpp): the same rebound off the tip.
+TEST(ObstacleImpact, WedgeTipInSinglePrecision) {
+  const Obstacle o = wedge();
+  const double a = 40 * M_PI / 180, nx = std::sin(a), ny = -std::cos(a);
+  expect_rebound(o, o.centre[0], o.centre[1] - 5e-3, nx, ny, -nx, -ny, Precision::single_precision);
 }
 
 // Head-on into the plate's corner along its diagonal.
