@@ -807,6 +807,19 @@ const Key kObstacleKeys[] = {
        t.insert(k, toml::array{c[0], c[1]});
      }},
 };
+// The shape's size keys with their values, as a refusal names them.
+std::string obstacle_sizes(const Obstacle& c) {
+  switch (c.shape) {
+    case ObstacleShape::cylinder:
+      return fmt::format("diameter {} m", c.diameter_m);
+    case ObstacleShape::wedge:
+      return fmt::format("half_angle {} deg, length {} m", c.half_angle_deg, c.length_m);
+    case ObstacleShape::plate:
+      return fmt::format("width {} m, thickness {} m", c.width_m, c.thickness_m);
+  }
+  return {};
+}
+
 void after_obstacle(Reading& st) {
   const Obstacle& c = st.obstacle;
   const double across = 0.5 * obstacle_frontal_width(c), width = st.s.setup.box.hi[0];
@@ -815,8 +828,8 @@ void after_obstacle(Reading& st) {
       c.centre[1] - along < st.s.inflow.strip_m + st.s.setup.max_diameter() ||
       c.centre[1] + along > length)
     fail("obstacle",
-         fmt::format("centre ({}, {}) m, {} m across and {} m along the flow", c.centre[0],
-                     c.centre[1], 2 * across, 2 * along),
+         fmt::format("centre ({}, {}) m, {} ({} m across and {} m along the flow)", c.centre[0],
+                     c.centre[1], obstacle_sizes(c), 2 * across, 2 * along),
          fmt::format("the {} must lie inside the domain, downstream of the insertion strip",
                      choice_name(c.shape)));
   st.s.setup.obstacle = c;
