@@ -83,8 +83,8 @@ Detachments measure_detachments(const BinSums& profile, const FieldPhysics& phys
     for (Detachment& d : out) d.reason = d.err_reason = "the scene has no obstacle";
     return out;
   }
-  const double diameter = phys.obstacle->diameter;
-  const double surface = phys.obstacle->yc - phys.obstacle->radius();
+  const double diameter = phys.obstacle->width;  // D: the frontal width (docs/fields.md)
+  const double surface = phys.obstacle->face;
   int begin = 0, end = 0;
   while (begin < profile.ny && profile.y_centre(begin) < search.y_begin) ++begin;
   while (end < profile.ny && profile.y_centre(end) < surface) ++end;

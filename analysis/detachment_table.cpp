@@ -26,7 +26,7 @@ DetachmentRow detachment_row(const std::filesystem::path& run_dir, const FieldAn
                              double ma_inf_target) {
   DetachmentRow r;
   r.run = run_dir.string();
-  r.d_over_particle = a.physics.obstacle ? a.physics.obstacle->diameter / a.physics.d
+  r.d_over_particle = a.physics.obstacle ? a.physics.obstacle->width / a.physics.d
                                          : std::numeric_limits<double>::quiet_NaN();
   r.ma_inf_target = ma_inf_target;
   r.ma_inf_measured = a.upstream_inlet.mach;
@@ -55,7 +55,7 @@ DetachmentRow detachment_row(const std::filesystem::path& run_dir, const FieldAn
     const ConvergenceVerdict& v = a.convergence.of(kPrimaryFront);
     if (v.applicable) {
       r.consistent = v.consistent ? 1 : 0;
-      r.spread = v.max_deviation / a.physics.obstacle->diameter;
+      r.spread = v.max_deviation / a.physics.obstacle->width;
     }
     r.verdict = v.text;
   }

@@ -34,7 +34,7 @@ int axis_column(const BinSums& grid, const FieldPhysics& phys) {
 // (empty when it can): it must be narrow against the obstacle (docs/fields.md, section 6).
 std::string axis_column_reason(const BinSums& grid, const FieldPhysics& phys) {
   if (!phys.obstacle) return "";
-  const double across = phys.obstacle->diameter / grid.dx;
+  const double across = phys.obstacle->width / grid.dx;
   if (across >= FieldSamplingLimits::bins_across_obstacle) return "";
   char text[200];
   std::snprintf(text, sizeof text,

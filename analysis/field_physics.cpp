@@ -5,6 +5,7 @@
 
 #include "core/scene.hpp"
 #include "core/user_error.hpp"
+#include "kernels/models/obstacle_shapes.hpp"
 
 namespace granshock {
 
@@ -36,6 +37,10 @@ double FieldPhysics::dx_from_axis(double x) const {
   return dx;
 }
 
+bool FieldPhysics::Obstacle::upstream_surface(double x, double& y) const {
+  return obstacle_upstream_surface(body, x, y);
+}
+
 FieldPhysics field_physics_from_scene(const Scene& s) {
   if (s.setup.dim != 2)
     throw UserError("granshock fields: the scene has dimension " + std::to_string(s.setup.dim) +
@@ -59,9 +64,13 @@ FieldPhysics field_physics_from_scene(const Scene& s) {
   p.box_x_hi = s.setup.box.hi[0];
   p.box_y_lo = s.setup.box.lo[1];
   p.box_y_hi = s.setup.box.hi[1];
-  if (s.setup.obstacle)
-    p.obstacle = FieldPhysics::Obstacle{s.setup.obstacle->centre[0], s.setup.obstacle->centre[1],
-                                        s.setup.obstacle->diameter_m};
+  if (const auto& o = s.setup.obstacle)
+    p.obstacle = FieldPhysics::Obstacle{o->centre[0],
+                                        o->centre[1],
+                                        obstacle_frontal_width(*o),
+                                        obstacle_upstream_face(*o),
+                                        obstacle_downstream_face(*o),
+                                        *o};
   return p;
 }
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/kinetic_theory.hpp"
+#include "core/obstacle.hpp"
 
 namespace granshock {
 
@@ -31,9 +32,15 @@ struct FieldPhysics {
 
   double box_x_lo = 0, box_x_hi = 0, box_y_lo = 0, box_y_hi = 0;  // m; x periodic
 
+  // What the analysis asks of the obstacle, from its shape (kernels/models/obstacle_shapes.hpp).
   struct Obstacle {
-    double xc = 0, yc = 0, diameter = 0;
-    double radius() const { return diameter / 2; }
+    double xc = 0, yc = 0;
+    double width = 0;  // across the flow: the D of delta/D (docs/fields.md)
+    double face = 0;   // y of the upstream face on the stagnation line
+    double back = 0;   // y of the downstream face
+    granshock::Obstacle body;
+    // y of the upstream surface at x, when x lies within the frontal width.
+    bool upstream_surface(double x, double& y) const;
   };
   std::optional<Obstacle> obstacle;
 

@@ -8,6 +8,7 @@
 #include "core/bin_layout.hpp"
 #include "core/scene.hpp"
 #include "core/user_error.hpp"
+#include "kernels/models/obstacle_shapes.hpp"
 
 namespace granshock {
 
@@ -27,7 +28,7 @@ std::string format(const char* pattern, Args... args) {
 double profile_bins(const Scene& s) {
   if (!s.setup.obstacle) return 0;
   const auto& c = *s.setup.obstacle;
-  return std::max(1.0, (c.centre[1] - 0.5 * c.diameter_m - s.setup.box.lo[1]) / (0.5 * s.d_m));
+  return std::max(1.0, (obstacle_upstream_face(c) - s.setup.box.lo[1]) / (0.5 * s.d_m));
 }
 
 // Below a limit by more than round-off: lengths written in d (5 d / 1 d) must not fall
@@ -54,14 +55,16 @@ void check_geometry(const Scene& s) {
                width / Limits::bins_across_width / d));
   if (s.setup.obstacle) {
     const auto& c = *s.setup.obstacle;
-    if (below(c.diameter_m / bin, Limits::bins_across_obstacle))
+    const double across = obstacle_frontal_width(c);
+    const std::string what = with_obstacle_shape(c, [](auto shape) { return shape.width_key; });
+    if (below(across / bin, Limits::bins_across_obstacle))
       throw UserError(
           format("numerics.bin_size = %g d leaves %.3g bins across the obstacle "
-                 "(obstacle.diameter = %g d); the shock-front rules need at least %g "
+                 "(%s = %g d); the shock-front rules need at least %g "
                  "(numerics.bin_size <= %.4g d)",
-                 bin / d, c.diameter_m / bin, c.diameter_m / d, Limits::bins_across_obstacle,
-                 c.diameter_m / Limits::bins_across_obstacle / d));
-    const double gap = c.centre[1] - 0.5 * c.diameter_m - s.setup.box.lo[1] - strip;
+                 bin / d, across / bin, what.c_str(), across / d, Limits::bins_across_obstacle,
+                 across / Limits::bins_across_obstacle / d));
+    const double gap = obstacle_upstream_face(c) - s.setup.box.lo[1] - strip;
     if (below(gap / bin, Limits::rows_strip_to_obstacle))
       throw UserError(format(
           "numerics.bin_size = %g d leaves %.3g bins between the insertion strip (inflow.strip "

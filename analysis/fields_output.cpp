@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "analysis/csv_cells.hpp"
+#include "core/variant_names.hpp"
 #include "io/atomic_file.hpp"
 #include "io/fields_xdmf.hpp"
 
@@ -187,13 +188,17 @@ FieldsFileContent fields_file_content(const FieldAnalysis& a) {
            {"box_y_hi", p.box_y_hi},
            {"obstacle_xc", has_obstacle ? p.obstacle->xc : kNaN},
            {"obstacle_yc", has_obstacle ? p.obstacle->yc : kNaN},
-           {"obstacle_diameter", has_obstacle ? p.obstacle->diameter : kNaN},
+           {"obstacle_width", has_obstacle ? p.obstacle->width : kNaN},
+           {"obstacle_face", has_obstacle ? p.obstacle->face : kNaN},
+           {"obstacle_back", has_obstacle ? p.obstacle->back : kNaN},
            {"blocks", double(a.grid.blocks)},
            {"samples", a.grid.total_samples()},
            {"production_start", a.grid.production_start},
            {"production_end", a.grid.production_end}})
     c.attributes.push_back({"/", name, value});
   c.text_attributes.push_back({"/", "mass_definition", to_string(p.mass_definition)});
+  c.text_attributes.push_back(
+      {"/", "obstacle_shape", has_obstacle ? choice_name(p.obstacle->body.shape) : "none"});
   std::string names;
   for (const std::string& s : species) names += (names.empty() ? "" : ",") + s;
   c.text_attributes.push_back({"/", "species", names});
@@ -259,7 +264,7 @@ namespace {
 nlohmann::json detachment_keys(const FieldAnalysis& a) {
   nlohmann::json all = nlohmann::json::object();
   for (const Detachment& d : a.detachments) {
-    const double D = a.physics.obstacle ? a.physics.obstacle->diameter : kNaN;
+    const double D = a.physics.obstacle ? a.physics.obstacle->width : kNaN;
     nlohmann::json e;
     e["delta_over_D"] = number_or_null(d.delta_over_d);
     e["delta_over_D_err"] = number_or_null(d.delta_over_d_err);
@@ -289,12 +294,12 @@ void add_convergence_keys(nlohmann::json& j, const FieldAnalysis& a) {
   j["delta_over_D_consistent"] = judged ? nlohmann::json(c.of(kPrimaryFront).consistent) : nullptr;
   j["delta_over_D_consistent_reason"] = judged ? nlohmann::json() : nlohmann::json(why);
   const double spread =
-      judged ? c.of(kPrimaryFront).max_deviation / a.physics.obstacle->diameter : kNaN;
+      judged ? c.of(kPrimaryFront).max_deviation / a.physics.obstacle->width : kNaN;
   j["delta_over_D_spread"] = number_or_null(spread);
   j["delta_over_D_spread_reason"] = judged ? nlohmann::json() : nlohmann::json(why);
   j["delta_over_D_verdict"] = why;
   if (c.verdicts.empty()) return;
-  const double D = a.physics.obstacle->diameter;
+  const double D = a.physics.obstacle->width;
   nlohmann::json rows = nlohmann::json::array();
   for (const ConvergenceChoice& choice : c.choices) {
     nlohmann::json row;

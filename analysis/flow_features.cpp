@@ -78,13 +78,13 @@ FlowFeatures measure_flow_features(const FieldAnalysis& a) {
       f.hot_reason = "no unmasked bin of the stagnation strip is that hot";
   }
 
-  // The wake: one diameter behind the cylinder, within its shadow.
+  // The wake: one frontal width D behind the obstacle, within its shadow.
   double disks = 0, area = 0;
   for (int iy = 0; iy < a.grid.ny; ++iy) {
     const double y = a.grid.y_centre(iy);
-    if (y < c.yc + c.radius() || y > c.yc + c.radius() + c.diameter) continue;
+    if (y < c.back || y > c.back + c.width) continue;
     for (int ix = 0; ix < a.grid.nx; ++ix) {
-      if (std::abs(phys.dx_from_axis(a.grid.x_centre(ix))) > c.radius()) continue;
+      if (std::abs(phys.dx_from_axis(a.grid.x_centre(ix))) > 0.5 * c.width) continue;
       const std::size_t k = a.fields.index(iy, ix);
       if (!std::isfinite(a.fields.phi[k])) continue;
       disks += a.fields.phi[k] * a.grid.bin_area(iy);
@@ -92,7 +92,7 @@ FlowFeatures measure_flow_features(const FieldAnalysis& a) {
     }
   }
   if (!(area > 0))
-    f.wake_reason = "no sampled grid bin lies within one diameter behind the cylinder";
+    f.wake_reason = "no sampled grid bin lies within one frontal width behind the obstacle";
   else if (!(a.phi_up > 0))
     f.wake_reason = "no upstream phi beyond the strip: " + a.upstream_downstream.reason;
   else

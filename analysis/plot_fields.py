@@ -24,7 +24,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import matplotlib.ticker  # noqa: E402
 import numpy as np  # noqa: E402
 from matplotlib.colors import LogNorm  # noqa: E402
-from matplotlib.patches import Circle, Rectangle  # noqa: E402
+from matplotlib.patches import Circle, Polygon, Rectangle  # noqa: E402
 
 from figure_files import FigureDirectory  # noqa: E402
 
@@ -46,7 +46,11 @@ class Run:
             self.u_inf = float(attrs["U"])
             self.xc = float(attrs["obstacle_xc"])
             self.yc = float(attrs["obstacle_yc"])
-            self.diameter = float(attrs["obstacle_diameter"])
+            self.diameter = float(attrs["obstacle_width"])  # D: the frontal width
+            self.face = float(attrs["obstacle_face"])
+            self.back = float(attrs["obstacle_back"])
+            shape = attrs.get("obstacle_shape", "cylinder")
+            self.shape = shape.decode() if isinstance(shape, bytes) else str(shape)
             mass_definition = attrs["mass_definition"]
             self.mass_definition = (mass_definition.decode() if isinstance(mass_definition, bytes)
                                     else str(mass_definition))
@@ -98,9 +102,17 @@ class Run:
         return np.isfinite(self.diameter) and self.diameter > 0
 
     def draw_obstacle(self, ax):
-        if self.has_obstacle():
-            ax.add_patch(Circle((self.xc / self.d, self.yc / self.d), self.diameter / (2 * self.d),
-                                facecolor="0.75", edgecolor="k", linewidth=0.8, zorder=3))
+        if not self.has_obstacle():
+            return
+        style = dict(facecolor="0.75", edgecolor="k", linewidth=0.8, zorder=3)
+        x, half = self.xc / self.d, self.diameter / (2 * self.d)
+        face, back = self.face / self.d, self.back / self.d
+        if self.shape == "wedge":
+            ax.add_patch(Polygon([(x, face), (x + half, back), (x - half, back)], **style))
+        elif self.shape == "plate":
+            ax.add_patch(Rectangle((x - half, face), 2 * half, back - face, **style))
+        else:
+            ax.add_patch(Circle((x, self.yc / self.d), half, **style))
 
     def title(self, what):
         parts = [what]

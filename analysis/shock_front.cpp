@@ -15,9 +15,9 @@ constexpr double kDegree = 180.0 / M_PI;
 // obstacle's surface at the column's x; every row for columns beside the obstacle.
 int search_end(const BinSums& grid, const FieldPhysics& phys, double x) {
   if (!phys.obstacle) return grid.ny;
-  const double r = phys.obstacle->radius(), dx = phys.dx_from_axis(x);
-  if (std::abs(dx) >= r) return grid.ny;
-  const double surface = phys.obstacle->yc - std::sqrt(r * r - dx * dx);
+  double surface = 0;
+  if (!phys.obstacle->upstream_surface(phys.obstacle->xc + phys.dx_from_axis(x), surface))
+    return grid.ny;
   int end = 0;
   while (end < grid.ny && grid.y_centre(end) < surface) ++end;
   return end;
@@ -107,7 +107,7 @@ ShockFront find_shock_front(const BinFields& f, const BinSums& grid, const Field
     s.left.reason = s.right.reason = s.angle_reason = "the scene has no obstacle";
     return s;
   }
-  const double near = phys.obstacle->diameter;
+  const double near = phys.obstacle->width;
   const double far = 0.5 * (phys.box_x_hi - phys.box_x_lo) - 2 * grid.dx;
   std::vector<double> xl, yl, xr, yr;
   for (std::size_t i = 0; i < nx; ++i) {

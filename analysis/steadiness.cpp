@@ -116,13 +116,13 @@ Steadiness assess_steadiness(const RunSeries& s, double t0, double t1, const Fie
   // there) leaves through the outlet after (L - (y_c - R)) / U; without an obstacle the
   // whole channel's gas is replaced after L / U.
   const double disturbed =
-      phys.obstacle ? phys.box_y_hi - (phys.obstacle->yc - phys.obstacle->radius()) : length;
+      phys.obstacle ? phys.box_y_hi - phys.obstacle->face : length;
   st.washout_time = u > 0 ? std::min(disturbed, length) / u : kNaN;
   st.start_after_washout = !(t0 < st.washout_time * (1 - 1e-9));
   st.particles = halves_trend(s.time, s.particles, t0, t1, rule);
   st.kinetic_energy = halves_trend(s.time, s.kinetic_energy, t0, t1, rule);
   if (phys.obstacle)
-    st.front = front_halves(convergence, phys.obstacle->diameter, rule);
+    st.front = front_halves(convergence, phys.obstacle->width, rule);
   else
     st.front.reason = "the scene has no obstacle";
 

@@ -43,10 +43,10 @@ UpstreamState measure_upstream(const BinFields& f, const BinSums& grid, const Fi
   if (top > phys.box_y_hi + 1e-9 * grid.dy)
     return undetermined(s, rows + " reach y = " + in_d(top, phys) + ", beyond the domain's end (" +
                                in_d(phys.box_y_hi, phys) + ")");
-  if (phys.obstacle && top > phys.obstacle->yc - phys.obstacle->radius() + 1e-9 * grid.dy)
+  if (phys.obstacle && top > phys.obstacle->face + 1e-9 * grid.dy)
     return undetermined(s, rows + " reach y = " + in_d(top, phys) +
                                ", past the obstacle's upstream surface (" +
-                               in_d(phys.obstacle->yc - phys.obstacle->radius(), phys) +
+                               in_d(phys.obstacle->face, phys) +
                                "): they are not upstream");
   double phi_sum = 0, weight = 0, t_sum = 0, uy_sum = 0;
   int phi_bins = 0;

@@ -4,6 +4,7 @@
 
 #include "core/checkpoint_check_support.hpp"
 #include "core/contact_settings.hpp"
+#include "kernels/models/obstacle_shapes.hpp"
 
 namespace granshock {
 
@@ -85,14 +86,13 @@ void check_contact_range(const SolverState& s, const SolverFit& fit, std::size_t
                       s.id[i], s.id[j], overlap, kOverlapRefuse));
   }
   if (!fit.obstacle) return;
-  const double dx = s.position[i * dim] - fit.obstacle->centre[0];
-  const double dy = s.position[i * dim + 1] - fit.obstacle->centre[1];
-  const double from_axis = std::sqrt(dx * dx + dy * dy);
-  if (from_axis < 0.5 * fit.obstacle->diameter_m)
+  const double depth =
+      -obstacle_distance(*fit.obstacle, s.position[i * dim], s.position[i * dim + 1]);
+  if (depth > 0)
     fail(
-        fmt::format("particle {} lies inside the obstacle (its centre {:.3g} m from the axis, "
-                    "radius {:.3g} m): the state was not made by the solver",
-                    s.id[i], from_axis, 0.5 * fit.obstacle->diameter_m));
+        fmt::format("particle {} lies inside the obstacle (its centre {:.3g} m inside the "
+                    "surface): the state was not made by the solver",
+                    s.id[i], depth));
 }
 
 void check_contacts(const SolverState& s, const SolverFit& fit) {
@@ -153,10 +153,8 @@ void check_contacts(const SolverState& s, const SolverFit& fit) {
     }
     bool on_obstacle = false;
     if (fit.obstacle) {
-      const double dx = s.position[i * dim] - fit.obstacle->centre[0];
-      const double dy = s.position[i * dim + 1] - fit.obstacle->centre[1];
-      const double reach = ri + 0.5 * fit.obstacle->diameter_m;
-      on_obstacle = std::sqrt(dx * dx + dy * dy) < reach + tol;
+      on_obstacle =
+          obstacle_distance(*fit.obstacle, s.position[i * dim], s.position[i * dim + 1]) < ri + tol;
     }
     if (!on_obstacle && !s.history_obstacle_spring.empty() &&
         norm(s.history_obstacle_spring, i * dim, dim) != 0)

@@ -29,6 +29,8 @@ struct Choices<ObstacleShape> {
   static constexpr const char* what = "obstacle shape";
   static constexpr ChoiceName<ObstacleShape> table[] = {
       {ObstacleShape::cylinder, "cylinder", "a cylinder with its axis along z"},
+      {ObstacleShape::wedge, "wedge", "a symmetric wedge, its tip upstream (a triangular prism)"},
+      {ObstacleShape::plate, "plate", "a flat plate or square block facing the flow"},
   };
 };
 

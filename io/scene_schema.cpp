@@ -18,6 +18,7 @@
 #include "core/choice_names.hpp"
 #include "io/scene_file.hpp"
 #include "io/table_reader.hpp"
+#include "kernels/models/obstacle_shapes.hpp"
 
 namespace granshock {
 namespace scene_toml {
@@ -701,9 +702,40 @@ const Table kInflow = table("inflow", kInflowKeys);
 
 // ---- [obstacle] --------------------------------------------------------------------------
 
+// A size key of one shape (docs/scene_format.md, [obstacle]): read when the obstacle has
+// that shape, refused when given for another.
+bool shape_key(TableReader& r, const Reading& st, const std::string& k, ObstacleShape owner) {
+  if (st.obstacle.shape == owner) return true;
+  if (const toml::node* n = r.node(k))
+    fail(r.key(k), show(*n),
+         fmt::format("is a key of obstacle.shape = \"{}\", and the shape is \"{}\"",
+                     choice_name(owner), choice_name(st.obstacle.shape)));
+  return false;
+}
+
+// A side of a shape at least a particle wide: the contact law treats the obstacle as a
+// wall (core/pair_properties.hpp).
+double obstacle_side(TableReader& r, const Reading& st, const std::string& k) {
+  const double side = r.positive_length(k);
+  if (side < st.s.setup.max_diameter())
+    fail(r.key(k), fmt::format("{} m", side),
+         fmt::format("must be at least the largest particle diameter ({} m): the contact "
+                     "law treats the obstacle as a wall",
+                     st.s.setup.max_diameter()));
+  return side;
+}
+
 const Key kObstacleKeys[] = {
+    {"shape", "string",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       st.obstacle.shape = read_choice(r, k, ObstacleShape::cylinder);
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) {
+       t.insert(k, choice_name(w.s.setup.obstacle->shape));
+     }},
     {"diameter", "length",
      [](TableReader& r, Reading& st, const std::string& k) {
+       if (!shape_key(r, st, k, ObstacleShape::cylinder)) return;
        st.obstacle.diameter_m = r.positive_length(k);
        // The contact law treats the cylinder as a wall of infinite radius
        // (core/pair_properties.hpp).
@@ -714,7 +746,43 @@ const Key kObstacleKeys[] = {
                           st.s.setup.max_diameter()));
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
-       t.insert(k, w.s.setup.obstacle->diameter_m);
+       if (w.s.setup.obstacle->shape == ObstacleShape::cylinder)
+         t.insert(k, w.s.setup.obstacle->diameter_m);
+     }},
+    {"half_angle", "number (degrees)",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       if (shape_key(r, st, k, ObstacleShape::wedge))
+         st.obstacle.half_angle_deg = r.number_in(k, 0, 90, true, true);
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) {
+       if (w.s.setup.obstacle->shape == ObstacleShape::wedge)
+         t.insert(k, w.s.setup.obstacle->half_angle_deg);
+     }},
+    {"length", "length",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       if (shape_key(r, st, k, ObstacleShape::wedge))
+         st.obstacle.length_m = obstacle_side(r, st, k);
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) {
+       if (w.s.setup.obstacle->shape == ObstacleShape::wedge)
+         t.insert(k, w.s.setup.obstacle->length_m);
+     }},
+    {"width", "length",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       if (shape_key(r, st, k, ObstacleShape::plate)) st.obstacle.width_m = obstacle_side(r, st, k);
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) {
+       if (w.s.setup.obstacle->shape == ObstacleShape::plate)
+         t.insert(k, w.s.setup.obstacle->width_m);
+     }},
+    {"thickness", "length",
+     [](TableReader& r, Reading& st, const std::string& k) {
+       if (shape_key(r, st, k, ObstacleShape::plate))
+         st.obstacle.thickness_m = obstacle_side(r, st, k);
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) {
+       if (w.s.setup.obstacle->shape == ObstacleShape::plate)
+         t.insert(k, w.s.setup.obstacle->thickness_m);
      }},
     {"material", "string",
      [](TableReader& r, Reading& st, const std::string& k) {
@@ -739,16 +807,31 @@ const Key kObstacleKeys[] = {
        t.insert(k, toml::array{c[0], c[1]});
      }},
 };
+// The shape's size keys with their values, as a refusal names them.
+std::string obstacle_sizes(const Obstacle& c) {
+  switch (c.shape) {
+    case ObstacleShape::cylinder:
+      return fmt::format("diameter {} m", c.diameter_m);
+    case ObstacleShape::wedge:
+      return fmt::format("half_angle {} deg, length {} m", c.half_angle_deg, c.length_m);
+    case ObstacleShape::plate:
+      return fmt::format("width {} m, thickness {} m", c.width_m, c.thickness_m);
+  }
+  return {};
+}
+
 void after_obstacle(Reading& st) {
   const Obstacle& c = st.obstacle;
-  const double radius = 0.5 * c.diameter_m, width = st.s.setup.box.hi[0];
-  const double length = st.s.setup.box.hi[1];
-  if (c.centre[0] - radius < 0 || c.centre[0] + radius > width ||
-      c.centre[1] - radius < st.s.inflow.strip_m + st.s.setup.max_diameter() ||
-      c.centre[1] + radius > length)
+  const double across = 0.5 * obstacle_frontal_width(c), width = st.s.setup.box.hi[0];
+  const double along = 0.5 * obstacle_streamwise_length(c), length = st.s.setup.box.hi[1];
+  if (c.centre[0] - across < 0 || c.centre[0] + across > width ||
+      c.centre[1] - along < st.s.inflow.strip_m + st.s.setup.max_diameter() ||
+      c.centre[1] + along > length)
     fail("obstacle",
-         fmt::format("centre ({}, {}) m, diameter {} m", c.centre[0], c.centre[1], c.diameter_m),
-         "the cylinder must lie inside the domain, downstream of the insertion strip");
+         fmt::format("centre ({}, {}) m, {} ({} m across and {} m along the flow)", c.centre[0],
+                     c.centre[1], obstacle_sizes(c), 2 * across, 2 * along),
+         fmt::format("the {} must lie inside the domain, downstream of the insertion strip",
+                     choice_name(c.shape)));
   st.s.setup.obstacle = c;
 }
 const Table kObstacle = table("obstacle", kObstacleKeys, after_obstacle);

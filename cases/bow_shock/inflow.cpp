@@ -1,6 +1,6 @@
 #include "cases/bow_shock/inflow.hpp"
 
-#include "models/models.hpp"
+#include "models/obstacle_shapes.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -48,10 +48,10 @@ int InflowController::insert_batch(Solver& solver, double y_lo, double y_hi, dou
 
 double InflowController::free_area(double y_lo, double y_hi) const {
   const double slab = scene_.setup.box.length(0) * (y_hi - y_lo);
-  return slab - with_obstacle_shape(scene_.setup.obstacle, [&](auto shape) {
-           return shape.kept_out_area(scene_.setup.obstacle, scene_.setup.max_diameter(), y_lo,
-                                      y_hi);
-         });
+  const auto& obstacle = scene_.setup.obstacle;
+  return obstacle
+             ? slab - obstacle_kept_out_area(*obstacle, scene_.setup.max_diameter(), y_lo, y_hi)
+             : slab;
 }
 
 template <class F>

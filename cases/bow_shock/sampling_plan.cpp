@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "kernels/models/obstacle_shapes.hpp"
+
 namespace granshock {
 
 namespace {
@@ -57,7 +59,7 @@ SamplingPlan::SamplingPlan(const Scene& s)
     if (offset > g.dx * (1 - 1e-9)) offset = 0;  // an edge on lo, up to round-off
     g.x0 = box.lo[0] + offset;
   }
-  const double face = obstacle ? obstacle->centre[1] - obstacle->radius_m() : box.lo[1];
+  const double face = obstacle ? obstacle_upstream_face(*obstacle) : box.lo[1];
   const Rows rows = rows_to_face(box.lo[1], face, box.hi[1], s.bin_size_m);
   g.y0 = box.lo[1];
   g.dy = rows.height;

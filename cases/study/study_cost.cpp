@@ -5,12 +5,14 @@
 #include <algorithm>
 #include <cmath>
 
+#include "kernels/models/obstacle_shapes.hpp"
+
 namespace granshock {
 
 double expected_particles(const Scene& s) {
   const double disk = s.mean_particle_area();
   double free_area = s.setup.box.length(0) * s.setup.box.length(1);
-  if (s.setup.obstacle) free_area -= M_PI * std::pow(s.setup.obstacle->diameter_m, 2) / 4;
+  if (s.setup.obstacle) free_area -= obstacle_area(*s.setup.obstacle);
   return disk > 0 ? s.inflow.area_fraction * std::max(0.0, free_area) / disk : 0.0;
 }
 

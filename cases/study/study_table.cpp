@@ -7,6 +7,7 @@
 #include "analysis/csv_cells.hpp"
 #include "cases/study/case_directory.hpp"
 #include "io/atomic_file.hpp"
+#include "kernels/models/obstacle_shapes.hpp"
 
 namespace granshock {
 
@@ -31,8 +32,10 @@ nlohmann::json axis_cell(const StudySpec& spec, const StudyCase& c, std::size_t 
 // The scene's main parameters (docs/study.md, "The study table").
 void scene_columns(const PlannedCase& c, Row& row) {
   const Scene& s = c.scene;
-  row["scene.D_over_d"] =
-      s.setup.obstacle ? nlohmann::json(s.setup.obstacle->diameter_m / s.d_m) : nlohmann::json();
+  // D: the obstacle's frontal width (docs/fields.md).
+  row["scene.D_over_d"] = s.setup.obstacle
+                              ? nlohmann::json(obstacle_frontal_width(*s.setup.obstacle) / s.d_m)
+                              : nlohmann::json();
   row["scene.U"] = s.inflow.speed_m_per_s;
   row["scene.phi_inf"] = s.inflow.area_fraction;
   row["scene.mach"] = s.inflow.target_mach ? nlohmann::json(*s.inflow.target_mach) : nullptr;

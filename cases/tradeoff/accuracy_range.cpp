@@ -6,13 +6,14 @@
 #include <cmath>
 
 #include "core/kinetic_theory.hpp"
+#include "kernels/models/obstacle_shapes.hpp"
 
 namespace granshock {
 
 SceneCorner scene_corner(const Scene& s) {
   SceneCorner c;
   const double d = std::sqrt(4 * s.mean_particle_area() / M_PI);
-  if (s.setup.obstacle) c.obstacle_over_particle = s.setup.obstacle->diameter_m / d;
+  if (s.setup.obstacle) c.obstacle_over_particle = obstacle_frontal_width(*s.setup.obstacle) / d;
   if (s.inflow.target_mach) {
     c.mach = *s.inflow.target_mach;
   } else if (s.inflow.sigma > 0) {

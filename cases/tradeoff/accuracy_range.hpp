@@ -11,9 +11,10 @@
 
 namespace granshock {
 
-// A scene's place in the study's plane: the obstacle's size over the mean particle
-// diameter (by area, weighted by number fraction) and the upstream Mach number the scene
-// asks for (inflow.mach, or the one inflow.sigma gives by kinetic theory).
+// A scene's place in the study's plane: the obstacle's frontal width (the D of delta/D,
+// docs/fields.md) over the mean particle diameter (by area, weighted by number fraction) and the
+// upstream Mach number the scene asks for (inflow.mach, or the one inflow.sigma gives by kinetic
+// theory).
 struct SceneCorner {
   double obstacle_over_particle = 0;  // 0: no obstacle
   double mach = 0;

@@ -1,9 +1,9 @@
 // The physics a scene can choose, as lists of types (docs/design.md, "Adding a contact
-// law"): the contact laws and the obstacle shapes. The variant table compiles each
-// combination (kernels/solver/variant_table.hpp); host code that needs a law's or a
-// shape's formulas without a kernel (the time-step guard, the inflow) asks
-// with_contact_model or with_obstacle_shape. A new law is one header, its name in
-// core/variant_names.hpp and one entry in ContactLaws here.
+// law"): the contact laws, and the obstacle as one compiled body whatever its shape
+// (obstacle_body.hpp; the shapes are listed in obstacle_shapes.hpp). The variant table
+// compiles each combination (kernels/solver/variant_table.hpp); host code that needs a
+// law's formulas without a kernel (the time-step guard) asks with_contact_model. A new
+// law is one header, its name in core/variant_names.hpp and one entry in ContactLaws here.
 #pragma once
 
 #include <optional>
@@ -11,10 +11,11 @@
 
 #include "contact_law.hpp"
 #include "contact_settings.hpp"
-#include "models/cylinder.hpp"
 #include "models/hertz.hpp"
 #include "models/hooke.hpp"
 #include "models/no_obstacle.hpp"
+#include "models/obstacle_body.hpp"
+#include "models/obstacle_shapes.hpp"
 #include "obstacle.hpp"
 #include "variant_names.hpp"
 
@@ -69,17 +70,6 @@ static_assert(models_detail::every_name_has_one_law(),
 template <class F>
 decltype(auto) with_contact_model(ContactModelKind kind, F&& f) {
   return models_detail::with_law_of_kind(kind, f, ContactLaws{});
-}
-
-// Calls f(Shape{}) for the scene's obstacle, NoObstacle when it has none.
-template <class F>
-decltype(auto) with_obstacle_shape(const std::optional<Obstacle>& obstacle, F&& f) {
-  if (!obstacle) return f(NoObstacle{});
-  switch (obstacle->shape) {
-    case ObstacleShape::cylinder:
-      return f(CylinderShape{});
-  }
-  throw std::logic_error("with_obstacle_shape: unknown obstacle shape");
 }
 
 }  // namespace granshock

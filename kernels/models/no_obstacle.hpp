@@ -26,8 +26,6 @@ struct NoObstacle {
     }
     KOKKOS_FORCEINLINE_FUNCTION bool keeps_out(Position, Position, Real) const { return false; }
   };
-
-  static double kept_out_area(const std::optional<Obstacle>&, double, double, double) { return 0; }
 };
 
 }  // namespace granshock

@@ -3,9 +3,9 @@
 // backend. The lists below are the whole table; make_solver_variant walks their product,
 // skips the combinations a Variant does not compile (Variant::compiled), and builds the
 // DemSolver whose Variant matches the scene. Adding a contact law is one entry in
-// ContactLaws (kernels/models/models.hpp), an obstacle shape one entry in a list here (and
-// one in models.hpp); adding a backend is one file variants_<backend>_<precision>.cpp and a
-// line in solver_dispatch.cpp.
+// ContactLaws (kernels/models/models.hpp), an obstacle shape one entry in ObstacleShapes
+// (kernels/models/obstacle_shapes.hpp), which adds no variant; adding a backend is one file
+// variants_<backend>_<precision>.cpp and a line in solver_dispatch.cpp.
 #pragma once
 
 #include <memory>
@@ -23,7 +23,8 @@ struct DimList {};
 
 using CompiledDimensions = DimList<2>;  // quasi-2-D; 3-D needs 3-D insertion and sampling
 using CompiledModels = ContactLaws;     // kernels/models/models.hpp
-using CompiledObstacles = TypeList<NoObstacle, CylinderShape>;
+// Every shape is one ObstacleBody (kernels/models/obstacle_body.hpp): shapes add no variant.
+using CompiledObstacles = TypeList<NoObstacle, ObstacleBody>;
 
 // Calls f(Variant{}) for every compiled variant of precision Real.
 template <class Real, class F, int... Dims, class... Models, class... Obstacles>

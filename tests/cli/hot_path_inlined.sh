@@ -8,7 +8,7 @@
 # force sum and the kicks it calls. Usage: hot_path_inlined.sh GRANSHOCK
 set -euo pipefail
 program=$1
-pattern='::touches\(|::keeps_out\(|Model::normal<|Model::tangential<|::for_each_contact<|'
+pattern='::touches\(|::touches_polygon\(|::keeps_out\(|Model::normal<|Model::tangential<|::for_each_contact<|'
 pattern+='ContactForceKernel<.*>::(velocity|obstacle_contact|claim_slot|find_slot|release_unused_slots|total|sum_contacts|friction)\(|'
 pattern+='FusedStepKernel<.*>::operator\(\)|'
 pattern+='tangential_force<|contact_point_velocity<|contact_torque<|half_kick<|half_spin_kick<'

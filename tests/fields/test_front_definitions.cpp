@@ -362,7 +362,7 @@ TEST(FlowFeatures, HotRegionOfTheLayers) {
   EXPECT_NEAR(a.features.shock_layer_phi_mean, (2.5 * 0.15 + 3 * 0.2 + 3.5 * 0.45) / 9, 1e-9);
   // No grid rows behind the cylinder: the wake is undetermined, and says why.
   EXPECT_TRUE(std::isnan(a.features.wake_phi_over_phi_up));
-  EXPECT_NE(a.features.wake_reason.find("behind the cylinder"), std::string::npos);
+  EXPECT_NE(a.features.wake_reason.find("behind the obstacle"), std::string::npos);
 }
 
 TEST(FlowFeatures, UndeterminedWithoutAFront) {

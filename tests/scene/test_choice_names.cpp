@@ -94,6 +94,7 @@ struct ChoiceKey {
   bool echoed = true;
   std::vector<std::string> also = {};  // overrides the key needs beside it
   std::string drop = {};               // a line of small_scene() it replaces
+  std::map<std::string, std::vector<std::string>> also_for = {};  // overrides one name needs
 };
 
 template <class Enum, class Field>
@@ -119,6 +120,14 @@ const std::map<std::string, ChoiceKey>& choice_keys() {
     k["inflow.mach_at"].echoed = false;
     k["inflow.mach_at"].also = {"inflow.mach=7.5"};
     k["inflow.mach_at"].drop = "sigma = 0.1\n";
+    // Each shape has its own size keys (docs/scene_format.md, [obstacle]).
+    k["obstacle.shape"] =
+        choice_key<ObstacleShape>([](const Scene& s) { return s.setup.obstacle->shape; });
+    k["obstacle.shape"].drop = "diameter = \"10 d\"\n";
+    k["obstacle.shape"].also_for = {
+        {"cylinder", {"obstacle.diameter=\"10 d\""}},
+        {"wedge", {"obstacle.half_angle=20", "obstacle.length=\"10 d\""}},
+        {"plate", {"obstacle.width=\"10 d\"", "obstacle.thickness=\"2 d\""}}};
     return k;
   }();
   return keys;
@@ -135,6 +144,8 @@ TEST(ChoiceNames, TheSceneAcceptsEchoesAndReadsBackEveryName) {
       std::string text = small_scene();
       if (!choice.drop.empty()) text.erase(text.find(choice.drop), choice.drop.size());
       std::vector<std::string> overrides = choice.also;
+      if (choice.also_for.count(name))
+        for (const std::string& o : choice.also_for.at(name)) overrides.push_back(o);
       overrides.push_back(key + "=\"" + name + "\"");
       const LoadedScene given = parse_scene(text, overrides);
       EXPECT_EQ(choice.value(given.scene), name);

@@ -67,6 +67,21 @@ const std::map<std::string, NonDefault>& non_default_values() {
       {"domain.width", {{"domain.width=\"50 d\""}}},
       {"domain.length", {{"domain.length=\"70 d\""}}},
       {"obstacle.diameter", {{"obstacle.diameter=\"12 d\""}}},
+      {"obstacle.shape",
+       {{"obstacle.shape=\"plate\"", "obstacle.width=\"12 d\"", "obstacle.thickness=\"2 d\""},
+        "diameter = \"10 d\"\n"}},
+      {"obstacle.half_angle",
+       {{"obstacle.shape=\"wedge\"", "obstacle.half_angle=25", "obstacle.length=\"10 d\""},
+        "diameter = \"10 d\"\n"}},
+      {"obstacle.length",
+       {{"obstacle.shape=\"wedge\"", "obstacle.half_angle=20", "obstacle.length=\"12 d\""},
+        "diameter = \"10 d\"\n"}},
+      {"obstacle.width",
+       {{"obstacle.shape=\"plate\"", "obstacle.width=\"8 d\"", "obstacle.thickness=\"3 d\""},
+        "diameter = \"10 d\"\n"}},
+      {"obstacle.thickness",
+       {{"obstacle.shape=\"plate\"", "obstacle.width=\"8 d\"", "obstacle.thickness=\"1 d\""},
+        "diameter = \"10 d\"\n"}},
       {"obstacle.centre", {{"obstacle.centre=[\"18 d\", \"30 d\"]"}}},
       {"obstacle.material", {{"obstacle.material=\"steel\""}}},
       {"inflow.area_fraction", {{"inflow.area_fraction=0.2"}}},
@@ -151,6 +166,10 @@ std::vector<std::string> differences(const Scene& a, const Scene& b) {
     d("setup.obstacle.shape", sa.obstacle->shape, sb.obstacle->shape);
     d("setup.obstacle.centre", sa.obstacle->centre, sb.obstacle->centre);
     d("setup.obstacle.diameter_m", sa.obstacle->diameter_m, sb.obstacle->diameter_m);
+    d("setup.obstacle.half_angle_deg", sa.obstacle->half_angle_deg, sb.obstacle->half_angle_deg);
+    d("setup.obstacle.length_m", sa.obstacle->length_m, sb.obstacle->length_m);
+    d("setup.obstacle.width_m", sa.obstacle->width_m, sb.obstacle->width_m);
+    d("setup.obstacle.thickness_m", sa.obstacle->thickness_m, sb.obstacle->thickness_m);
     d.material("setup.obstacle.material", sa.obstacle->material, sb.obstacle->material);
   }
   d("setup.dt", sa.dt, sb.dt);

@@ -1,0 +1,104 @@
+// The obstacle shapes granshock knows, and the host-side questions asked of a scene's
+// obstacle (docs/design.md, "Obstacles"): each answered by the shape's own header. Plain
+// C++ without Kokkos: the scene reader, the checkpoint checks, the inflow and the field
+// analysis ask here, and no file outside a shape's header knows how a shape is measured.
+// A new shape is one header, its enumerator and name (core/obstacle.hpp,
+// core/variant_names.hpp) and one entry in ObstacleShapes below.
+#pragma once
+
+#include <cmath>
+#include <stdexcept>
+
+#include "core/obstacle.hpp"
+#include "core/variant_names.hpp"
+#include "kernels/models/cylinder.hpp"
+#include "kernels/models/plate.hpp"
+#include "kernels/models/shape_outline.hpp"
+#include "kernels/models/wedge.hpp"
+
+namespace granshock {
+
+template <class... Shapes>
+struct ShapeList {};
+
+using ObstacleShapes = ShapeList<CylinderShape, WedgeShape, PlateShape>;
+
+namespace shapes_detail {
+
+template <class... Shapes>
+constexpr int shapes_of_kind(ObstacleShape kind, ShapeList<Shapes...>) {
+  return ((Shapes::kind == kind ? 1 : 0) + ... + 0);
+}
+
+constexpr bool every_name_has_one_shape() {
+  for (const ChoiceName<ObstacleShape>& c : Choices<ObstacleShape>::table)
+    if (shapes_of_kind(c.value, ObstacleShapes{}) != 1) return false;
+  return true;
+}
+
+template <class F, class Shape, class... Rest>
+decltype(auto) with_shape_of_kind(ObstacleShape kind, F& f, ShapeList<Shape, Rest...>) {
+  if constexpr (sizeof...(Rest) == 0) {
+    if (kind != Shape::kind) throw std::logic_error("with_obstacle_shape: unknown shape");
+    return f(Shape{});
+  } else {
+    if (kind == Shape::kind) return f(Shape{});
+    return with_shape_of_kind(kind, f, ShapeList<Rest...>{});
+  }
+}
+
+}  // namespace shapes_detail
+
+static_assert(shapes_detail::every_name_has_one_shape(),
+              "every obstacle shape of core/variant_names.hpp needs exactly one type in "
+              "ObstacleShapes (kernels/models/obstacle_shapes.hpp)");
+
+// Calls f(Shape{}) for the obstacle's shape.
+template <class F>
+decltype(auto) with_obstacle_shape(const Obstacle& o, F&& f) {
+  return shapes_detail::with_shape_of_kind(o.shape, f, ObstacleShapes{});
+}
+
+// The cross-section the force kernel and insertion work with (shape_outline.hpp).
+inline ShapeOutline obstacle_outline(const Obstacle& o) {
+  return with_obstacle_shape(o, [&](auto s) { return s.outline(o); });
+}
+// Across the flow (x): the D of delta/D (docs/fields.md).
+inline double obstacle_frontal_width(const Obstacle& o) {
+  return with_obstacle_shape(o, [&](auto s) { return s.frontal_width(o); });
+}
+// Along the flow (y): the shape spans centre +- half of it.
+inline double obstacle_streamwise_length(const Obstacle& o) {
+  return with_obstacle_shape(o, [&](auto s) { return s.streamwise_length(o); });
+}
+// Its cross-section's area (m^2).
+inline double obstacle_area(const Obstacle& o) {
+  return with_obstacle_shape(o, [&](auto s) { return s.area(o); });
+}
+// y of the upstream face on the stagnation line x = centre[0].
+inline double obstacle_upstream_face(const Obstacle& o) {
+  return o.centre[1] - 0.5 * obstacle_streamwise_length(o);
+}
+// y of the downstream face.
+inline double obstacle_downstream_face(const Obstacle& o) {
+  return o.centre[1] + 0.5 * obstacle_streamwise_length(o);
+}
+// y of the upstream surface at x, when x lies within the frontal width.
+inline bool obstacle_upstream_surface(const Obstacle& o, double x, double& y) {
+  const double dx = x - o.centre[0];
+  if (!(std::abs(dx) < 0.5 * obstacle_frontal_width(o))) return false;
+  y = o.centre[1] + with_obstacle_shape(o, [&](auto s) { return s.upstream_surface(o, dx); });
+  return true;
+}
+// The signed distance of (x, y) from the surface: negative inside.
+inline double obstacle_distance(const Obstacle& o, double x, double y) {
+  return outline_distance(obstacle_outline(o), x - o.centre[0], y - o.centre[1]);
+}
+// The area of the slab y in [y_lo, y_hi] within `clearance` of the obstacle: what
+// insertion's keep-out zone takes from the inflow's free area.
+inline double obstacle_kept_out_area(const Obstacle& o, double clearance, double y_lo,
+                                     double y_hi) {
+  return with_obstacle_shape(o, [&](auto s) { return s.kept_out_area(o, clearance, y_lo, y_hi); });
+}
+
+}  // namespace granshock
