@@ -22,6 +22,7 @@
 #include "core/solver.hpp"
 #include "core/user_error.hpp"
 #include "io/dump_map.hpp"
+#include "kernels/models/obstacle_shapes.hpp"
 
 using namespace granshock;
 namespace fs = std::filesystem;
@@ -240,7 +241,8 @@ TEST(FromDump, SumsEqualTheDeviceSamplingOfTheSameParticles) {
     for (double y0 = 0; y0 + a <= length; y0 += a)
       for (double x0 = 0; x0 + a <= width; x0 += a) {
         const double x = x0 + 0.5 * d + jitter(rng), y = y0 + 0.5 * d + jitter(rng);
-        if (std::hypot(x - c.centre[0], y - c.centre[1]) < c.radius_m() + d) continue;
+        if (std::hypot(x - c.centre[0], y - c.centre[1]) < 0.5 * obstacle_frontal_width(c) + d)
+          continue;
         const int species = int(rng() % 2);
         const double vx = gauss(rng), vy = 1 + gauss(rng);
         p.add({x, y, 0}, {vx, vy, 0}, species, id);

@@ -48,7 +48,7 @@ def load(directory):
         g = dict(h["grid"].attrs)
         phi = h["fields/phi"][()]
         samples = h.attrs.get("samples")
-        obstacle = [h.attrs[k] for k in ("obstacle_xc", "obstacle_yc", "obstacle_diameter")]
+        obstacle = [h.attrs[k] for k in ("obstacle_xc", "obstacle_yc", "obstacle_width")]
     return dict(s=s, halves=halves, up=up, prof=prof, pattrs=pa, grid=g, phi=phi,
                 samples=samples, obstacle=obstacle)
 
