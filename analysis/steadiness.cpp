@@ -115,8 +115,7 @@ Steadiness assess_steadiness(const RunSeries& s, double t0, double t1, const Fie
   // The gas that met the obstacle's face at t = 0 (the prefill, before any shock stood
   // there) leaves through the outlet after (L - (y_c - R)) / U; without an obstacle the
   // whole channel's gas is replaced after L / U.
-  const double disturbed =
-      phys.obstacle ? phys.box_y_hi - phys.obstacle->face : length;
+  const double disturbed = phys.obstacle ? phys.box_y_hi - phys.obstacle->face : length;
   st.washout_time = u > 0 ? std::min(disturbed, length) / u : kNaN;
   st.start_after_washout = !(t0 < st.washout_time * (1 - 1e-9));
   st.particles = halves_trend(s.time, s.particles, t0, t1, rule);

@@ -46,8 +46,7 @@ UpstreamState measure_upstream(const BinFields& f, const BinSums& grid, const Fi
   if (phys.obstacle && top > phys.obstacle->face + 1e-9 * grid.dy)
     return undetermined(s, rows + " reach y = " + in_d(top, phys) +
                                ", past the obstacle's upstream surface (" +
-                               in_d(phys.obstacle->face, phys) +
-                               "): they are not upstream");
+                               in_d(phys.obstacle->face, phys) + "): they are not upstream");
   double phi_sum = 0, weight = 0, t_sum = 0, uy_sum = 0;
   int phi_bins = 0;
   std::vector<double> species(static_cast<std::size_t>(f.n_species), 0.0);

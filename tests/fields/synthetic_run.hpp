@@ -166,8 +166,8 @@ inline void fill_with_front(BinSums& s, const FieldPhysics& phys, const BinState
           for (int i = 0; i < sub; ++i) {
             const double x = s.x0 + (ix + (i + 0.5) / sub) * s.dx,
                          y = s.y0 + (iy + (j + 0.5) / sub) * s.dy;
-            if (phys.obstacle &&
-                std::hypot(x - phys.obstacle->xc, y - phys.obstacle->yc) < 0.5 * phys.obstacle->width)
+            if (phys.obstacle && std::hypot(x - phys.obstacle->xc, y - phys.obstacle->yc) <
+                                     0.5 * phys.obstacle->width)
               continue;
             (behind(x, y, b) ? f_post : f_pre) += 1.0 / (sub * sub);
           }
