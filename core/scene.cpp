@@ -61,17 +61,22 @@ std::string to_string(MachReference m) {
   return choice_name(m);
 }
 
-void resolve_inflow(Scene& s) {
-  if (s.inflow.sigma_m_per_s) {
-    s.inflow.sigma = *s.inflow.sigma_m_per_s;
-    return;
-  }
+double Scene::sigma_at_mach(double mach) const {
   std::vector<double> masses;
-  for (const auto& sp : s.setup.species) masses.push_back(sp.mass_kg());
-  const double m_sound = sound_speed_mass(s.mass_definition, masses, s.inflow.number_fraction);
+  for (const auto& sp : setup.species) masses.push_back(sp.mass_kg());
+  const double m_sound = sound_speed_mass(mass_definition, masses, inflow.number_fraction);
+  return sigma_for_mach(mach, inflow.speed_m_per_s, inflow.area_fraction, mean_restitution(),
+                        setup.dim, m_sound, mean_mass());
+}
+
+double Scene::inflow_mach() const {
+  if (inflow.target_mach) return *inflow.target_mach;
+  return inflow.sigma > 0 ? sigma_at_mach(1.0) / inflow.sigma : 0.0;
+}
+
+void resolve_inflow(Scene& s) {
   s.inflow.sigma =
-      sigma_for_mach(*s.inflow.target_mach, s.inflow.speed_m_per_s, s.inflow.area_fraction,
-                     s.mean_restitution(), s.setup.dim, m_sound, s.mean_mass());
+      s.inflow.sigma_m_per_s ? *s.inflow.sigma_m_per_s : s.sigma_at_mach(*s.inflow.target_mach);
 }
 
 }  // namespace granshock

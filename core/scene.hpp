@@ -77,6 +77,11 @@ struct Scene {
   double mean_particle_area() const;
   // Particles per unit area upstream, n_inf = phi_inf / mean_particle_area().
   double inflow_number_density() const;
+  // The sigma that gives upstream Mach number `mach` at the inflow's speed and state
+  // (core/kinetic_theory.hpp), and the Mach number the scene asks for: inflow.mach, or
+  // the one its inflow.sigma gives (sigma is proportional to U / Ma).
+  double sigma_at_mach(double mach) const;
+  double inflow_mach() const;
 };
 
 // Computes inflow.sigma from the given sigma or from target_mach (docs/fields.md).

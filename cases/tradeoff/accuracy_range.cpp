@@ -5,7 +5,6 @@
 
 #include <cmath>
 
-#include "core/kinetic_theory.hpp"
 #include "kernels/models/obstacle_shapes.hpp"
 
 namespace granshock {
@@ -14,18 +13,7 @@ SceneCorner scene_corner(const Scene& s) {
   SceneCorner c;
   const double d = std::sqrt(4 * s.mean_particle_area() / M_PI);
   if (s.setup.obstacle) c.obstacle_over_particle = obstacle_frontal_width(*s.setup.obstacle) / d;
-  if (s.inflow.target_mach) {
-    c.mach = *s.inflow.target_mach;
-  } else if (s.inflow.sigma > 0) {
-    // sigma is proportional to U / Ma at fixed U (core/kinetic_theory.hpp): the Mach
-    // number is the sigma of Ma = 1 over the scene's.
-    std::vector<double> masses;
-    for (const auto& sp : s.setup.species) masses.push_back(sp.mass_kg());
-    const double m_sound = sound_speed_mass(s.mass_definition, masses, s.inflow.number_fraction);
-    c.mach = sigma_for_mach(1.0, s.inflow.speed_m_per_s, s.inflow.area_fraction,
-                            s.mean_restitution(), s.setup.dim, m_sound, s.mean_mass()) /
-             s.inflow.sigma;
-  }
+  c.mach = s.inflow_mach();
   return c;
 }
 

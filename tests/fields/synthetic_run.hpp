@@ -22,6 +22,7 @@
 #include "io/run_directory.hpp"
 #include "io/run_file.hpp"
 #include "io/scene_file.hpp"
+#include "scene/scene_fixtures.hpp"
 
 namespace granshock::test {
 
@@ -37,18 +38,8 @@ inline std::string bow_shock_scene(double diameter_d = 12, double mach = 5.9,
   return obstacle + R"(
 [scene]
 name = "synthetic"
-[units]
-d = 0.001
-[[species]]
-name = "steel"
-material = "steel"
-diameter = "1 d"
-number_fraction = 0.5
-[[species]]
-name = "aluminium"
-material = "aluminium"
-diameter = "1 d"
-number_fraction = 0.5
+)" + granshock::testing::kPaperMixture +
+         R"(
 [contact]
 restitution = 0.5
 [domain]

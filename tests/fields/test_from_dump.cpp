@@ -23,6 +23,7 @@
 #include "core/user_error.hpp"
 #include "io/dump_map.hpp"
 #include "kernels/models/obstacle_shapes.hpp"
+#include "scene/scene_fixtures.hpp"
 
 using namespace granshock;
 namespace fs = std::filesystem;
@@ -36,7 +37,7 @@ const fs::path kSource = GRANSHOCK_SOURCE_DIR;
 // the periodic boundary ([11 d, 12 d) and [0, 1 d)), rows are 2 d from y = 0; the profile
 // has columns of 0.5 d from x = 3 d and rows of 0.5 d. The window [0, 2000 steps) is cut
 // into 2 blocks of 1000 steps.
-const char* const kHandMap = R"(
+const std::string kHandMap = R"(
 [dump]
 dt = 1e-7
 [dump.types]
@@ -44,18 +45,8 @@ dt = 1e-7
 2 = "aluminium"
 [scene]
 name = "hand"
-[units]
-d = 0.001
-[[species]]
-name = "steel"
-material = "steel"
-diameter = "1 d"
-number_fraction = 0.5
-[[species]]
-name = "aluminium"
-material = "aluminium"
-diameter = "1 d"
-number_fraction = 0.5
+)" + granshock::testing::kPaperMixture +
+                             R"(
 [contact]
 restitution = 0.5
 [domain]

@@ -98,7 +98,7 @@ DetachmentSearch search_from(double y_begin) {
 
 // Where each definition puts the front, for rows aligned with the layers' edges and for rows
 // offset from them by 0.3 of a row.
-class FrontDefinitions : public testing::TestWithParam<double> {};
+class FrontDefinitions : public ::testing::TestWithParam<double> {};
 
 TEST_P(FrontDefinitions, EachFindsItsOwnEdge) {
   const FieldPhysics phys = test::physics_of(kScene);
@@ -134,7 +134,7 @@ TEST_P(FrontDefinitions, EachFindsItsOwnEdge) {
             of(all, FrontDefinition::density_threshold).delta);
 }
 
-INSTANTIATE_TEST_SUITE_P(RowOffsets, FrontDefinitions, testing::Values(0.0, 0.3, 0.7));
+INSTANTIATE_TEST_SUITE_P(RowOffsets, FrontDefinitions, ::testing::Values(0.0, 0.3, 0.7));
 
 TEST(FrontDefinitions, SayWhyTheyFindNoFront) {
   const FieldPhysics phys = test::physics_of(kScene);

@@ -9,13 +9,8 @@
 
 namespace granshock::testing {
 
-// A channel 40 d wide and 60 d long with the paper's mixture; `obstacle` adds a
-// cylinder of 10 d at (20 d, 35 d). Short: 0.01 s at dt = 2e-7 s (50 000 steps).
-inline std::string small_scene(bool obstacle = true, double restitution = 0.5) {
-  std::string s = R"(
-[scene]
-name = "small"
-seed = 7
+// The paper's mixture as scene TOML: d = 1 mm, steel and aluminium spheres, half each.
+inline const std::string kPaperMixture = R"(
 [units]
 d = 0.001
 [[species]]
@@ -28,6 +23,17 @@ name = "aluminium"
 material = "aluminium"
 diameter = "1 d"
 number_fraction = 0.5
+)";
+
+// A channel 40 d wide and 60 d long with the paper's mixture; `obstacle` adds a
+// cylinder of 10 d at (20 d, 35 d). Short: 0.01 s at dt = 2e-7 s (50 000 steps).
+inline std::string small_scene(bool obstacle = true, double restitution = 0.5) {
+  std::string s = R"(
+[scene]
+name = "small"
+seed = 7
+)" + kPaperMixture +
+                  R"(
 [contact]
 restitution = )" + std::to_string(restitution) +
                   R"(
