@@ -15,6 +15,12 @@ Backend other(Backend b) {
 BackendSwitch::BackendSwitch(BackendSwitchPolicy policy)
     : policy_(policy), gap_s_(policy.first_gap_s) {}
 
+void BackendSwitch::start_on_one_thread() {
+  current_ = settled_ = Backend::serial;
+  started_on_one_thread_ = true;
+  gap_s_ = policy_.gap_after_move_s;
+}
+
 Backend BackendSwitch::observe(double particle_steps, double seconds) {
   total_seconds_ += seconds;
   if (current_ == Backend::serial) serial_seconds_ += seconds;

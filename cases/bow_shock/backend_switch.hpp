@@ -34,6 +34,11 @@ class BackendSwitch {
  public:
   explicit BackendSwitch(BackendSwitchPolicy policy = {});
 
+  // Starts on one thread (another process keeps the cores busy at the start,
+  // machine_load.hpp): the threads are tried after gap_after_move_s, as after a move.
+  void start_on_one_thread();
+  bool started_on_one_thread() const { return started_on_one_thread_; }
+
   // A slice of the run: `particle_steps` done in `seconds` of wall time on current().
   // Returns the backend the next slice runs on.
   Backend observe(double particle_steps, double seconds);
@@ -65,6 +70,7 @@ class BackendSwitch {
   double window_steps_ = 0, window_seconds_ = 0;
   bool first_slice_ = true;  // the run's first: start-up costs, not a rate
   double since_try_s_ = 0, gap_s_ = 0;
+  bool started_on_one_thread_ = false;
   long switches_ = 0, tries_ = 0;
   double serial_seconds_ = 0, total_seconds_ = 0;
   double threads_rate_ = 0, serial_rate_ = 0;

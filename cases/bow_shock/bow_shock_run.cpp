@@ -11,6 +11,7 @@
 #include "analysis/fields_command.hpp"
 #include "analysis/json_file.hpp"
 #include "cases/bow_shock/interrupt.hpp"
+#include "cases/bow_shock/machine_load.hpp"
 #include "cases/bow_shock/run_checks.hpp"
 #include "cases/bow_shock/run_observables.hpp"
 #include "cases/bow_shock/run_state.hpp"
@@ -209,6 +210,7 @@ void BowShockRun::prepare() {
                                : DirectoryMode::create;
   // Rank 0's alone: probing the lock from several ranks at once would see each other.
   if (root_) RunDirectory::check(dir_, mode_);
+  choose_start_backend();
   // Again with a calibrated damping or sigma: the time-step guard depends on the damping
   // ratio and on the fastest impact.
   const bool damping_calibrated = calibrate_restitution();
@@ -226,15 +228,38 @@ void BowShockRun::prepare() {
       every_seconds(scene_.run.snapshot_interval_s, scene_.run.duration_s, scene_.setup.dt);
   checkpoints_.every =
       every_seconds(scene_.run.checkpoint_interval_s, scene_.run.duration_s, scene_.setup.dt);
-  solver_ = make_solver(scene_.setup, scene_.capacity_estimate(), Backend::default_space, &comm_);
+  solver_ = make_solver(scene_.setup, scene_.capacity_estimate(), backend_, &comm_);
   solver_->configure_sampling(sampling_.layout());
   decomposition_.axis = options_.slabs;
   decomposition_.balance = options_.balance;
   solver_->decompose(decomposition_);
-  if (options_.backend_switch != BackendSwitchMode::off && comm_.size() == 1 &&
-      switchable_host_threads() > 1)
-    backend_switch_.emplace();
   samples_.assign(std::size_t(sampling_.blocks()), 0);
+}
+
+// The switch between threads and one thread, for one process on the host's threads, and
+// the backend the run starts on: one thread where other processes already keep the CPUs
+// busy (machine_load.hpp), so that neither the calibrations nor the run's first
+// half-second wait at the threads' barriers; the switch tries the threads later.
+void BowShockRun::choose_start_backend() {
+  const int threads = switchable_host_threads();
+  if (options_.backend_switch == BackendSwitchMode::off || comm_.size() != 1 || threads <= 1)
+    return;
+  backend_switch_.emplace();
+  if (options_.backend_switch != BackendSwitchMode::automatic) return;
+  const std::optional<MachineLoad> load = measure_machine_load();
+  if (!load || !threads_would_wait(*load, threads)) return;
+  backend_switch_->start_on_one_thread();
+  backend_ = Backend::serial;
+  const std::string note = fmt::format(
+      "granshock: note: starting on one thread: {} other task{} running on the {} CPU{} this "
+      "process may use, beside which {} threads would wait for each other; trying the threads "
+      "again later (--backend-switch off keeps the threads)",
+      load->others_running, load->others_running == 1 ? " is" : "s are", load->cpus,
+      load->cpus == 1 ? "" : "s", threads);
+  if (options_.quiet)
+    log_.record(note);
+  else
+    log_.say(note);
 }
 
 // Rank 0's run.h5: a new one, or the one a checkpoint continues.
@@ -282,7 +307,7 @@ bool BowShockRun::calibrate_inflow() {
         fmt::format("granshock: calibrating sigma so that Ma over the two inlet bin rows is {:g} "
                     "(inflow.mach_at = \"inlet_bins\")",
                     *scene_.inflow.target_mach));
-  calibration_ = calibrate_inlet_mach(scene_);
+  calibration_ = calibrate_inlet_mach(scene_, 6, backend_);
   loaded_.scene.inflow.sigma = calibration_->sigma;
   loaded_.resolved = scene_to_toml(loaded_.scene);
   const InletMach& last = calibration_->chosen();
@@ -678,6 +703,7 @@ void BowShockRun::move_solver_to(Backend backend) {
 // can move (this leg of the run).
 nlohmann::json BowShockRun::backend_summary() const {
   return {{"mode", choice_name(options_.backend_switch)},
+          {"started_on", backend_switch_->started_on_one_thread() ? "one thread" : "threads"},
           {"ended_on", backend_ == Backend::serial ? "one thread" : "threads"},
           {"moves", backend_moves_},
           {"tries", backend_switch_->tries()},

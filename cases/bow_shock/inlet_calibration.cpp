@@ -75,7 +75,7 @@ UpstreamState inlet_rows(const BinSums& sums, const FieldPhysics& phys) {
 
 }  // namespace
 
-InletMach measure_inlet_mach(const Scene& scene, double sigma) {
+InletMach measure_inlet_mach(const Scene& scene, double sigma, Backend backend) {
   const Scene c = inlet_channel(scene, sigma);
   BinSums sums;
   sums.n_species = int(c.setup.species.size());
@@ -89,7 +89,7 @@ InletMach measure_inlet_mach(const Scene& scene, double sigma) {
   sums.samples.assign(std::size_t(sums.blocks), 0.0);
 
   InflowController inflow(c);
-  const std::unique_ptr<Solver> solver = make_solver(c.setup, c.capacity_estimate());
+  const std::unique_ptr<Solver> solver = make_solver(c.setup, c.capacity_estimate(), backend);
   solver->set_particles(HostParticles{});
   inflow.prefill(*solver, [](long, long) { throw_if_interrupted(); });
   inflow.insert_if_due(*solver, 0);
@@ -142,7 +142,7 @@ const InletMach& InletCalibration::chosen() const {
   return iterations.back();
 }
 
-InletCalibration calibrate_inlet_mach(const Scene& scene, int max_iterations) {
+InletCalibration calibrate_inlet_mach(const Scene& scene, int max_iterations, Backend backend) {
   InletCalibration cal;
   cal.target = scene.inflow.target_mach.value_or(0.0);
   if (!(cal.target > 0))
@@ -151,7 +151,7 @@ InletCalibration calibrate_inlet_mach(const Scene& scene, int max_iterations) {
   cal.sigma_inserted = scene.inflow.sigma;
   double sigma = scene.inflow.sigma;
   for (int k = 0; k < max_iterations; ++k) {
-    const InletMach m = measure_inlet_mach(scene, sigma);
+    const InletMach m = measure_inlet_mach(scene, sigma, backend);
     cal.iterations.push_back(m);
     cal.sigma = sigma;
     cal.tolerance = std::max(0.01, 2 * m.mach_err / m.mach);

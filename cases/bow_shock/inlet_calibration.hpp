@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "core/scene.hpp"
+#include "core/solver.hpp"
 
 namespace granshock {
 
@@ -38,7 +39,8 @@ struct InletMach {
 };
 
 // Ma over the first two bin rows of the inlet channel fed with fluctuation sigma.
-InletMach measure_inlet_mach(const Scene& scene, double sigma);
+InletMach measure_inlet_mach(const Scene& scene, double sigma,
+                             Backend backend = Backend::default_space);
 
 struct InletCalibration {
   double target = 0;
@@ -54,6 +56,8 @@ struct InletCalibration {
 // Fixed-point iteration sigma <- sigma Ma_measured / Ma_target (a secant step in log sigma
 // from the second iterate on) until the measured Ma is within max(1 %, 2 block errors) of
 // the target, at most max_iterations runs. Each step is clamped to a factor of 2.
-InletCalibration calibrate_inlet_mach(const Scene& scene, int max_iterations = 6);
+// The channel runs on `backend` (one thread where the machine is busy: the same sigma).
+InletCalibration calibrate_inlet_mach(const Scene& scene, int max_iterations = 6,
+                                      Backend backend = Backend::default_space);
 
 }  // namespace granshock

@@ -4,8 +4,9 @@
 #    the run must be bitwise the same as one that stays on the threads
 #    (tests/parallel/compare_runs.py: particles bitwise, sums to round-off), and must have
 #    moved.
-# 2. Beside two busy processes on this machine, a run with the default switch finishes
-#    (a guard against a hang: the limit is generous, not a timing) and reports its moves.
+# 2. Beside as many busy processes as this machine has CPUs, a run with the default switch
+#    finishes (a guard against a hang: the limit is generous, not a timing), saw the load
+#    at its start and started on one thread (machine_load.hpp), and reports its moves.
 # Usage: backend_switch.sh GRANSHOCK SCENE
 set -u
 granshock=$1 scene=$2
@@ -37,18 +38,33 @@ print(json.load(open(sys.argv[1])).get("backend_switch", {}).get("moves", 0))' "
 print("backend_switch" in json.load(open(sys.argv[1])))' "$dir/threads/summary.json")" = True ] &&
   fail "--backend-switch off reported a backend switch"
 
-# Two busy processes beside a run on 2 threads.
-for _ in 1 2; do
+# A busy process for each CPU beside a run on 2 threads.
+for _ in $(seq "$(nproc)"); do
   yes >/dev/null &
   busy+=($!)
 done
 timeout 600 "$granshock" run "$scene" "${short[@]}" --out "$dir/busy" ||
-  fail "the run beside two busy processes did not finish (exit $?)"
+  fail "the run beside the busy processes did not finish (exit $?)"
 /usr/bin/python3 -c 'import json, sys
 s = json.load(open(sys.argv[1]))
 b = s["backend_switch"]
-print("beside two busy processes: %.3g particle-steps/s, %d moves, %.2f of %.2f s on one thread"
-      % (s["particle_steps_per_second"], b["moves"], b["seconds_on_one_thread"], b["seconds_timed"]))
-sys.exit(0 if s["completed"] else 1)' "$dir/busy/summary.json" || fail "no completed summary with its backend"
+print("beside %s busy processes: %.3g particle-steps/s, started on %s, %d moves, %.2f of %.2f s on one thread"
+      % (sys.argv[2], s["particle_steps_per_second"], b["started_on"], b["moves"],
+         b["seconds_on_one_thread"], b["seconds_timed"]))
+sys.exit(0 if s["completed"] else 1)' "$dir/busy/summary.json" "$(nproc)" ||
+  fail "no completed summary with its backend"
+grep -q '"started_on": "one thread"' "$dir/busy/summary.json" ||
+  fail "the run beside the busy processes did not start on one thread"
+grep -q 'starting on one thread' "$dir/busy/log.txt" || fail "log.txt has no note of the start"
+# Without the busy processes the run starts on the threads, unless other work on this
+# machine keeps its CPUs busy (another test, a build), which the run's note then names.
+for p in "${busy[@]}"; do kill "$p" 2>/dev/null; done
+wait "${busy[@]}" 2>/dev/null
+busy=()
+"$granshock" run "$scene" "${short[@]}" --set time.duration=0.001 --set time.production_start=0.0005 \
+  --out "$dir/idle" || fail "the run without the busy processes"
+grep -q '"started_on": "threads"' "$dir/idle/summary.json" ||
+  grep -q 'starting on one thread: [1-9][0-9]* other task' "$dir/idle/log.txt" ||
+  fail "the run without the busy processes started on one thread without naming the load"
 [ "$status" -eq 0 ] && echo "PASS"
 exit $status
