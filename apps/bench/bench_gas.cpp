@@ -27,6 +27,7 @@
 #include "core/choice_names.hpp"
 #include "core/solver.hpp"
 #include "core/user_error.hpp"
+#include "device/kokkos_runtime.hpp"
 #include "io/atomic_file.hpp"
 
 namespace {
@@ -267,8 +268,8 @@ nlohmann::json to_json(const Row& r) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  // Kokkos takes its own --kokkos-* arguments; CLI11 sees the rest.
-  Kokkos::ScopeGuard kokkos(argc, argv);
+  // Kokkos takes its own --kokkos-* arguments; CLI11 sees the rest, --help included.
+  granshock::KokkosRuntime kokkos(argc, argv);
 
   CLI::App app{
       "granshock_bench_gas: particle-steps per second of a homogeneous 2-D granular "

@@ -313,14 +313,8 @@ int main(int argc, char** argv) {
   // killing the process (SIGXFSZ).
   std::signal(SIGXFSZ, SIG_IGN);
   granshock::h5::keep_exit_free_of_hdf5();
-  // Kokkos takes its own --kokkos-* arguments; CLI11 sees the rest. Kokkos also answers a
-  // plain --help with its own option list, so the help flags are hidden from it under a
-  // stand-in and given back, in place, to CLI11.
-  static char help_stand_in[] = "--granshock-help";
-  static char help[] = "--help";
-  for (int k = 1; k < argc; ++k)
-    if (std::string_view(argv[k]) == "--help" || std::string_view(argv[k]) == "-h")
-      argv[k] = help_stand_in;
+  // Kokkos takes its own --kokkos-* arguments; CLI11 sees the rest (--help included:
+  // device/kokkos_runtime.hpp).
   // MPI before Kokkos, which may bind devices by MPI rank.
   std::optional<granshock::MpiRuntime> mpi;
   std::optional<granshock::KokkosRuntime> kokkos;
@@ -337,8 +331,6 @@ int main(int argc, char** argv) {
               << "\n";
     return 5;
   }
-  for (int k = 1; k < argc; ++k)
-    if (argv[k] == help_stand_in) argv[k] = help;
   // CLI11 takes an empty value for a missing one; say what is wrong instead.
   for (int k = 1; k < argc; ++k) {
     const std::string arg = argv[k];
