@@ -3,7 +3,8 @@
 // same positions, velocities and contact history, on the host and the device paths of the
 // kernels (docs/cuda.md, "Branch points"). A sample never reads a virial that no force pass
 // of its state recorded: a state without one (a checkpoint from before it) is sampled with
-// the virial computed from that state.
+// the virial computed from that state; a state that went through a checkpoint file samples
+// as the run that wrote it would have.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,6 +14,8 @@
 
 #include "cases/gas/homogeneous_gas.hpp"
 #include "core/solver.hpp"
+#include "io/checkpoint_file.hpp"
+#include "scene/scene_fixtures.hpp"
 #include "solver_on_paths.hpp"
 
 using namespace granshock;
@@ -162,4 +165,29 @@ TEST(RecordedVirial, ASampleNeverReadsAVirialItsStateDidNotRecord) {
   for (std::size_t k = 0; k < recorded.size(); ++k)
     differing += std::abs(recorded[k] - computed[k]) > 1e-9 * largest;
   EXPECT_GT(differing, 0u) << "the handed-on virial was not the one sampled";
+}
+
+// A resumed run whose new production window samples the checkpoint's own step (docs/
+// scene_format.md, "Extending a run") must sample it as the uninterrupted run did: the
+// checkpoint file carries the virial of the step's last force pass, and a solver given
+// that state samples the same sums, bitwise on row owners (docs/fields.md, "Cost of
+// sampling"), to round-off with atomics.
+TEST(RecordedVirial, AStateReadFromACheckpointSamplesAsTheRunThatWroteIt) {
+  const Gas g = dense_gas(0.4);
+  auto straight = make_solver(g.setup, g.particles.size());
+  straight->configure_sampling(g.sampling);
+  straight->set_particles(g.particles);
+  straight->advance(70);
+  ASSERT_GT(straight->diagnostics().contacts, 100) << "too few contacts to test";
+  granshock::testing::TempDir dir;
+  write_checkpoint(dir.path() / "checkpoint.h5", straight->export_state(), CheckpointExtras{});
+  CheckpointExtras extras;
+  const SolverState state = read_checkpoint(dir.path() / "checkpoint.h5", extras);
+  straight->sample_fields(1);
+  auto resumed = make_solver(g.setup, g.particles.size());
+  resumed->configure_sampling(g.sampling);
+  resumed->import_state(state);
+  resumed->sample_fields(1);
+  expect_same_sums(resumed->field_sums(false), straight->field_sums(false), "grid");
+  expect_same_sums(resumed->field_sums(true), straight->field_sums(true), "profile");
 }
