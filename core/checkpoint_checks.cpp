@@ -57,6 +57,9 @@ void check_shapes(const SolverState& s) {
   if (!(friction && s.history_obstacle_spring.empty()))
     expect_size("/state/history_obstacle_spring", s.history_obstacle_spring, friction ? n * dim : 0,
                 slot_rows);
+  // May be absent (a file from before it: docs/output_format.md).
+  if (!s.contact_virial.empty())
+    expect_size("/state/contact_virial", s.contact_virial, n * dim * dim, rows);
 }
 
 void check_neighbours(const SolverState& s) {
@@ -139,6 +142,7 @@ void check_state(const SolverState& s) {
         {"/state/torque", &s.torque},
         {"/state/history_spring", &s.history_spring},
         {"/state/history_obstacle_spring", &s.history_obstacle_spring},
+        {"/state/contact_virial", &s.contact_virial},
         {"/state/reference_position", &s.reference_position}})
     expect_finite(name, *values);
   check_neighbours(s);

@@ -24,6 +24,7 @@ void for_each_vector(F&& f, States&... s) {
   f(s.history_partner...);
   f(s.history_spring...);
   f(s.history_obstacle_spring...);
+  f(s.contact_virial...);
   f(s.reference_position...);
 }
 template <class F, class... Particles>

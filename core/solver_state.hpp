@@ -29,6 +29,10 @@ struct SolverState {
   std::vector<int> history_partner;             // n * slots
   std::vector<double> history_spring;           // n * slots * dim
   std::vector<double> history_obstacle_spring;  // n * dim
+  // The contact virial of the step's last force pass, for the field sample a resumed run
+  // may take at its first step (docs/fields.md, "The contact virial"): n * dim * dim, or
+  // empty where the solver held none (a checkpoint from before it).
+  std::vector<double> contact_virial;
 
   // The Verlet list and the reference positions of the skin criterion.
   std::vector<double> reference_position;  // n * dim

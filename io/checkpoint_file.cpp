@@ -72,6 +72,8 @@ void write_state(hid_t file, const SolverState& s) {
   put("history_partner", s.history_partner, {slots});
   put("history_spring", s.history_spring, {slots, dim});
   put("history_obstacle_spring", s.history_obstacle_spring, {dim});
+  // Absent where the solver held none (docs/output_format.md).
+  if (!s.contact_virial.empty()) put("contact_virial", s.contact_virial, {dim, dim});
 
   // The neighbour list: restoring it avoids a rebuild that would change the run.
   put("reference_position", s.reference_position, {dim});
@@ -130,6 +132,7 @@ class Reader {
       return h5::read_attribute<T>(g.get(), name);
     });
   }
+  bool has(const std::string& path) const { return h5::exists(file_, path); }
   template <class T>
   T optional_attribute(const char* group, const char* name, T absent) const {
     {
@@ -204,6 +207,9 @@ SolverState read_state(const Reader& in) {
   s.history_partner = in.dataset<int>("/state", "history_partner");
   s.history_spring = in.dataset<double>("/state", "history_spring");
   s.history_obstacle_spring = in.dataset<double>("/state", "history_obstacle_spring");
+  // Files from before it: none (the solver then computes a sample's virial itself).
+  if (in.has("/state/contact_virial"))
+    s.contact_virial = in.dataset<double>("/state", "contact_virial");
   s.reference_position = in.dataset<double>("/state", "reference_position");
   s.neighbour_offsets = in.dataset<int>("/state", "neighbour_offsets");
   s.neighbours = in.dataset<int>("/state", "neighbours");

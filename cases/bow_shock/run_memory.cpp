@@ -30,15 +30,16 @@ double partners_per_particle(const Scene& s) {
 // Bytes of the particle arrays per slot (kernels/particles/particle_store.hpp): positions
 // (x, x_ref, the fused step's x_next and the reordering's scratch) in double, velocity,
 // force and v_next in Real, species, id, insertion order and scratch; cell, order and list
-// offsets with a quarter in reserve; with friction spins, torques and the springs, with
-// their scratch.
+// offsets with a quarter in reserve; the contact virial (Dim^2 Real) and its scratch; with
+// friction spins, torques and the springs, with their scratch.
 double bytes_per_slot(const Scene& s, bool host_backend) {
   const int dim = s.setup.dim;
   const double real = s.setup.precision == Precision::single_precision ? 4 : 8;
   const double position = 8.0 * dim, vector = real * dim;
   double b = 4 * position + 3 * vector + 4 * 4 + 1.25 * 3 * 4;
   if (s.setup.precision == Precision::single_precision) b += vector;  // its own scratch
-  if (!host_backend) b += 2 * vector + 8;  // a device's sampling: virial (Dim^2 Real), bins
+  b += 2 * real * dim * dim;
+  if (!host_backend) b += 8;  // a device's sampling: bins
   if (s.setup.contacts.has_friction()) {
     const int slots = dim == 2 ? 8 : 16;
     b += 4 * real + 2 * slots * 4 + 2 * slots * dim * real + vector;
@@ -47,11 +48,12 @@ double bytes_per_slot(const Scene& s, bool host_backend) {
 }
 
 // The host copies of a checkpoint (SolverState: positions, velocities, forces, reference
-// positions, species, ids, friction state, the list) and of a snapshot (HostParticles).
+// positions, contact virial, species, ids, friction state, the list) and of a snapshot
+// (HostParticles).
 // On a host backend they come on top of the solver's arrays as well.
 double host_bytes_per_particle(const Scene& s, double partners) {
   const int dim = s.setup.dim;
-  double b = 4 * 8.0 * dim + 8 + 4 + 4 * partners;  // checkpoint state, list offsets, list
+  double b = 4 * 8.0 * dim + 8.0 * dim * dim + 8 + 4 + 4 * partners;  // state, offsets, list
   if (s.setup.contacts.has_friction()) b += 16 + (dim == 2 ? 8 : 16) * (4 + 8.0 * dim) + 8.0 * dim;
   b += 2 * 24 + 8 + 8;  // the snapshot's positions and velocities (3 doubles), spin, ids
   return b;

@@ -46,6 +46,9 @@ struct StateArray {
   Member member;
   unsigned roles = kept_at_home;
   Host rest = 0;
+  // A state may lack it (a checkpoint from before it existed): the array then holds `rest`
+  // and the solver knows it was not given (DemSolver::import_state).
+  bool may_be_absent = false;
 };
 
 template <int Dim, class Real, class MemSpace, bool Friction>
@@ -61,6 +64,7 @@ struct ParticleStore {
   using IntView = Kokkos::View<int*, MemSpace>;
   using PartnerView = Kokkos::View<int* [history_slots], MemSpace>;
   using SpringView = Kokkos::View<Real * [history_slots * Dim], MemSpace>;
+  using VirialView = Kokkos::View<Real * [Dim * Dim], MemSpace>;
 
   PositionView x;      // positions
   PositionView x_ref;  // positions at the last neighbour-list build (the skin criterion)
@@ -74,7 +78,11 @@ struct ParticleStore {
   PartnerView history_partner;  // partner global id per slot, -1 when free
   SpringView history_spring;    // spring xi per slot
   VectorView obstacle_spring;   // spring xi against the obstacle
-  int n = 0;                    // owned particles
+  // The contact virial W_i = sum_j 1/2 r_ij (x) F_ij of the last force pass that recorded
+  // it (the step's last, DemSolver::compute_forces), for field sampling (docs/fields.md,
+  // "The contact virial"); 0 for a particle inserted since, which touched nothing.
+  VirialView virial;
+  int n = 0;  // owned particles
 
   // Calls visit(StateArray, view...) for every per-particle array of this variant, with
   // that array of each of the given stores (one store: its arrays; two: pairs).
@@ -100,6 +108,8 @@ struct ParticleStore {
       visit(StateArray<double>{"history_obstacle_spring", &SolverState::history_obstacle_spring},
             stores.obstacle_spring...);
     }
+    visit(StateArray<double>{"contact_virial", &SolverState::contact_virial, kept_at_home, 0, true},
+          stores.virial...);
   }
 
   int capacity() const { return int(x.extent(0)); }
@@ -141,9 +151,9 @@ class ParticlePermutation {
  private:
   // One scratch buffer per distinct array type (std::get by type needs each once): in the
   // double variant positions and the other vectors share a type.
-  using Common =
-      std::tuple<typename Store::VectorView, typename Store::ScalarView, typename Store::IntView,
-                 typename Store::PartnerView, typename Store::SpringView>;
+  using Common = std::tuple<typename Store::VectorView, typename Store::ScalarView,
+                            typename Store::IntView, typename Store::PartnerView,
+                            typename Store::SpringView, typename Store::VirialView>;
   using Scratch = std::conditional_t<
       std::is_same_v<typename Store::PositionView, typename Store::VectorView>, Common,
       decltype(std::tuple_cat(std::declval<std::tuple<typename Store::PositionView>>(),

@@ -180,6 +180,9 @@ class ParticlePopulation {
           for (int d = 0; d < Dim; ++d) q.x_ref(i, d) = q.x(i, d);
           q.species(i) = species_for(cumulative, first + r);
           q.id(i) = first_id + r;
+          // It touched nothing in the last force pass (placed without overlaps): no contact
+          // virial for a sample before the next one (docs/fields.md, "The contact virial").
+          for (int c = 0; c < Dim * Dim; ++c) q.virial(i, c) = 0;
           if constexpr (V::friction) {
             q.omega(i) = 0;
             q.torque(i) = 0;

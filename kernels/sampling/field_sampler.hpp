@@ -1,9 +1,10 @@
 // Field sampling of one compiled variant (docs/fields.md, "Sampling" and "Cost of
 // sampling"): the bin sums of the grid and of the stagnation-line profile, and the three
-// ways a sample is scattered into them (core/bin_layout.hpp): atomics or a ScatterView
-// after a separate virial pass, or row owners, which compute the virial on the way
-// (row_owner_sampling.hpp). The solver hands it the particles and the force kernel in
-// virial mode; the sampler owns the sums and its scratch arrays.
+// ways a sample is scattered into them (core/bin_layout.hpp): atomics, a ScatterView, or
+// row owners (row_owner_sampling.hpp). The solver hands it the particles and their contact
+// virial, which the step's last force pass recorded (docs/fields.md, "The contact
+// virial"), or, where no pass recorded it, the force kernel in virial mode to compute it
+// first; the sampler owns the sums and its scratch arrays.
 #pragma once
 
 #include <Kokkos_Core.hpp>
@@ -26,6 +27,7 @@ class FieldSampler {
   using Store = ParticleStore<Dim, Real, Mem, V::friction>;
   using Accumulator = BinAccumulator<ExecSpace, Paths>;
   using VirialKernel = ContactForceKernel<V, ExecSpace, ForceMode::virial>;
+  using VirialView = typename Store::VirialView;
   using Policy = Kokkos::RangePolicy<ExecSpace>;
 
   void configure(const FieldSampling& f) {
@@ -35,23 +37,29 @@ class FieldSampler {
       profile_sums_ = Accumulator(f.profile.bins(), f.grid.quantities(), f.grid.blocks);
   }
 
-  // One sample of p's particles into `block`. `contacts` is the force kernel in virial mode
-  // over the same particles; its virial view is the sampler's to set.
-  void sample(int block, const Store& p, VirialKernel contacts) {
+  // One sample of p's particles into `block`, with `virial` their contact virial.
+  void sample(int block, const Store& p, const VirialView& virial) {
     const GridIndex grid = GridIndex::of(sampling_.grid);
     const GridIndex profile = GridIndex::of(sampling_.profile);
     const ScatterStrategy strategy = Accumulator::resolve(sampling_.strategy);
-    if (strategy == ScatterStrategy::rows)
-      return sample_by_row_owners(block, grid, profile, p, contacts);
+    if (strategy == ScatterStrategy::rows) {
+      sample_by_row_owners(block, grid, profile, p, virial);
+    } else if (strategy == ScatterStrategy::atomic) {
+      sample_with<ScatterStrategy::atomic>(block, grid, profile, p, virial);
+    } else {
+      sample_with<ScatterStrategy::scatter_view>(block, grid, profile, p, virial);
+    }
+  }
+
+  // The same where no force pass recorded the virial: `contacts`, the force kernel in
+  // virial mode over the same particles, computes it first (its virial view is the
+  // sampler's to set).
+  void sample_computing_virial(int block, const Store& p, VirialKernel contacts) {
     if (int(virial_.extent(0)) < p.n)
-      virial_ = decltype(virial_)(alloc_on<ExecSpace>("virial"), p.capacity());
+      virial_ = VirialView(alloc_on<ExecSpace>("virial"), p.capacity());
     contacts.virial = virial_;
     Kokkos::parallel_for("contact_virial", Policy(0, p.n), contacts);
-    if (strategy == ScatterStrategy::atomic) {
-      sample_with<ScatterStrategy::atomic>(block, grid, profile, p);
-    } else {
-      sample_with<ScatterStrategy::scatter_view>(block, grid, profile, p);
-    }
+    sample(block, p, virial_);
   }
 
   // The process's own sums of the grid or the profile, on the host.
@@ -66,39 +74,40 @@ class FieldSampler {
 
  private:
   template <ScatterStrategy Strategy>
-  void sample_with(int block, const GridIndex& grid, const GridIndex& profile, const Store& p) {
-    grid_sums_.template sample<Strategy>(block, grid, p, virial_);
-    if (!profile_sums_.empty()) profile_sums_.template sample<Strategy>(block, profile, p, virial_);
+  void sample_with(int block, const GridIndex& grid, const GridIndex& profile, const Store& p,
+                   const VirialView& virial) {
+    grid_sums_.template sample<Strategy>(block, grid, p, virial);
+    if (!profile_sums_.empty()) profile_sums_.template sample<Strategy>(block, profile, p, virial);
   }
 
-  // Grid and profile in one pass, the virial computed on the way (row_owner_sampling.hpp).
+  // Grid and profile in one pass (row_owner_sampling.hpp).
   void sample_by_row_owners(int block, const GridIndex& grid, const GridIndex& profile,
-                            const Store& p, const VirialKernel& contacts) {
-    using Virial = decltype(virial_);
-    using Part = SampleContribution<GridIndex, Store, Virial>;
+                            const Store& p, const VirialView& virial) {
+    using Part = SampleContribution<GridIndex, Store, VirialView>;
     const int quantities = sampling_.grid.quantities();
     const int virial_terms = Dim * Dim < 4 ? Dim * Dim : 4;
     const Part grid_part{
-        grid,        p, {}, block * grid_sums_.block_size(), quantities, BinLayout::per_species,
+        grid,        p, virial, block * grid_sums_.block_size(), quantities, BinLayout::per_species,
         virial_terms};
-    const Part profile_part{
-        profile,     p, {}, block * profile_sums_.block_size(), quantities, BinLayout::per_species,
-        virial_terms};
+    const Part profile_part{profile,     p,
+                            virial,      block * profile_sums_.block_size(),
+                            quantities,  BinLayout::per_species,
+                            virial_terms};
     if (int(sample_bins_.extent(0)) < p.n)
       sample_bins_ = decltype(sample_bins_)(alloc_on<ExecSpace>("sample_bins"), p.capacity());
     Kokkos::parallel_for("fields::locate", Policy(0, p.n),
                          LocateSampleBins<decltype(p.x), decltype(sample_bins_)>{
                              grid, profile, !profile_sums_.empty(), p.x, sample_bins_});
     const int owners = Accumulator::row_owners();
-    const RowOwnerSamplePass<V, ExecSpace, Part, decltype(sample_bins_)> pass{
-        contacts,     grid_part, profile_part, grid_sums_.sums(), profile_sums_.sums(),
-        sample_bins_, p.n,       owners};
+    const RowOwnerSamplePass<ExecSpace, Part, decltype(p.x), decltype(sample_bins_)> pass{
+        grid_part, profile_part, grid_sums_.sums(), profile_sums_.sums(), p.x, sample_bins_,
+        p.n,       owners};
     Kokkos::parallel_for("fields::sample_rows", Policy(0, owners), pass);
   }
 
   FieldSampling sampling_;
   Accumulator grid_sums_, profile_sums_;
-  Kokkos::View<Real * [Dim * Dim], Mem> virial_;
+  VirialView virial_;                        // sample_computing_virial's
   Kokkos::View<int* [2], Mem> sample_bins_;  // row-owner sampling: each particle's bins
 };
 

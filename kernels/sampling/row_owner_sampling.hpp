@@ -2,20 +2,19 @@
 // sampling"): the grid and the stagnation-line profile together, in two passes.
 // LocateSampleBins finds each particle's grid and profile bin once (over the particles, as
 // every kernel). RowOwnerSamplePass then runs one thread per owner; owner t takes the
-// particles in its band of rows, computes the contact virial of each through the pair loop,
-// as the separate virial kernel would, and adds moments and virial to the bin without
+// particles in its band of rows and adds their moments and contact virial (the step's
+// last force pass recorded it: docs/fields.md, "The contact virial") to the bin without
 // atomics. The bands follow the particle order: the particles are sorted by cell, rows of
 // cells along x, at each list build, so band t's particles are mostly those that thread t
 // of every other kernel advances, and are in its cache. Each bin belongs to one band and
 // its particles are added in particle order, so the sums are bitwise the same for any
-// thread count, and the virial never goes through memory.
+// thread count.
 #pragma once
 
 #include <Kokkos_Core.hpp>
 
 #include "sampling/bin_accumulator.hpp"
 #include "sampling/owner_band.hpp"
-#include "solver/contact_forces.hpp"
 
 namespace granshock {
 
@@ -34,15 +33,13 @@ struct LocateSampleBins {
   }
 };
 
-template <class V, class ExecSpace, class Part, class Bins>
+template <class ExecSpace, class Part, class PositionView, class Bins>
 struct RowOwnerSamplePass {
-  static constexpr int Dim = V::dim;
-  using Real = typename V::real;
   using Sums = Kokkos::View<double*, typename ExecSpace::memory_space>;
 
-  ContactForceKernel<V, ExecSpace, ForceMode::virial> contacts;
   Part grid, profile;  // SampleContribution<GridIndex, ...> of each layout
   Sums grid_sums, profile_sums;
+  PositionView x;
   Bins bins;  // LocateSampleBins's
   int n, owners;
 
@@ -67,15 +64,8 @@ struct RowOwnerSamplePass {
         if (profile_bin[b] >= 0) profile.prefetch_bin(profile_sums, profile_bin[b]);
       }
       for (int b = 0; b < count; ++b) {
-        if (grid_bin[b] < 0 && profile_bin[b] < 0) continue;
         const int i = first + b;
-        Real w[Dim * Dim] = {};
-        Vec<Dim, Real> force = Vec<Dim, Real>::zero();
-        Real torque = 0;
-        int used_slots = 0;
-        contacts.sum_contacts(i, contacts.pairs.position(i), contacts.velocity(i), force, torque,
-                              used_slots, w);
-        const auto virial_of = [&](int k) { return w[k]; };
+        const auto virial_of = [&](int k) { return grid.virial(i, k); };
         if (grid_bin[b] >= 0) grid.add_to_bin(grid_bin[b], i, to_grid, virial_of);
         if (profile_bin[b] >= 0) profile.add_to_bin(profile_bin[b], i, to_profile, virial_of);
       }
@@ -86,8 +76,7 @@ struct RowOwnerSamplePass {
   KOKKOS_INLINE_FUNCTION void band(int t, const GridIndex& layout, int& first, int& end) const {
     int lo, hi;
     owner_band(
-        t, owners, n, layout.ny, [&](int i) { return layout.row_of(double(contacts.p.x(i, 1))); },
-        lo, hi);
+        t, owners, n, layout.ny, [&](int i) { return layout.row_of(double(x(i, 1))); }, lo, hi);
     first = lo * layout.nx;
     end = hi * layout.nx;
   }

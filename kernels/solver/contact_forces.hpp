@@ -17,10 +17,12 @@
 
 namespace granshock {
 
-// Mode: forces (the time step) or virial (field sampling: per particle
-// W_i = sum_j 1/2 r_ij (x) F_ij, with r_ij = x_i - x_j, written to `virial`; forces, torques
-// and contact history are left untouched, so sampling cannot change the trajectory).
-enum class ForceMode { forces, virial };
+// Mode: forces (the time step); forces_and_virial (the step's last pass: the forces as in
+// `forces`, and per particle the contact virial W_i = sum_j 1/2 r_ij (x) F_ij of those very
+// pair forces, r_ij = x_i - x_j, written to `virial` for field sampling: docs/fields.md,
+// "The contact virial"); or virial alone (a sample with no such pass before it: forces,
+// torques and contact history are left untouched, so sampling cannot change the trajectory).
+enum class ForceMode { forces, forces_and_virial, virial };
 
 template <class V, class ExecSpace, ForceMode Mode = ForceMode::forces>
 struct ContactForceKernel {
@@ -38,7 +40,7 @@ struct ContactForceKernel {
   Obstacle obstacle;
   Real dt;
   Kokkos::View<int, Mem> history_overflow;       // set when slots run out
-  Kokkos::View<Real * [Dim * Dim], Mem> virial;  // ForceMode::virial only
+  Kokkos::View<Real * [Dim * Dim], Mem> virial;  // not in ForceMode::forces
 
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
     const Vec<Dim, Position> xi = pairs.position(i);
@@ -50,25 +52,37 @@ struct ContactForceKernel {
       int used_slots = 0;
       sum_contacts(i, xi, vi, force, torque, used_slots, w);
       for (int k = 0; k < Dim * Dim; ++k) virial(i, k) = w[k];
+    } else if constexpr (Mode == ForceMode::forces_and_virial) {
+      Vec<Dim, Real> force;
+      Real torque;
+      Real w[Dim * Dim] = {};
+      total(i, xi, vi, force, torque, w);
+      store(i, force, torque);
+      for (int k = 0; k < Dim * Dim; ++k) virial(i, k) = w[k];
     } else {
       Vec<Dim, Real> force;
       Real torque;
       total(i, xi, vi, force, torque);
-      for (int d = 0; d < Dim; ++d) p.f(i, d) = force[d];
-      if constexpr (V::friction) p.torque(i) = torque;
+      store(i, force, torque);
     }
   }
 
-  // The force and torque on particle i at xi with velocity vi (ForceMode::forces): its
-  // contacts, their springs (updated) and the obstacle. The fused step (fused_step.hpp)
-  // calls it directly and keeps the result in registers.
+  KOKKOS_FORCEINLINE_FUNCTION void store(int i, const Vec<Dim, Real>& force, Real torque) const {
+    for (int d = 0; d < Dim; ++d) p.f(i, d) = force[d];
+    if constexpr (V::friction) p.torque(i) = torque;
+  }
+
+  // The force and torque on particle i at xi with velocity vi (not ForceMode::virial): its
+  // contacts, their springs (updated) and the obstacle; w, when given, gets the contacts'
+  // virial (ForceMode::forces_and_virial). The fused step (fused_step.hpp) calls it
+  // directly and keeps the result in registers.
   KOKKOS_FORCEINLINE_FUNCTION void total(int i, const Vec<Dim, Position>& xi,
                                          const Vec<Dim, Real>& vi, Vec<Dim, Real>& force,
-                                         Real& torque) const {
+                                         Real& torque, Real* w = nullptr) const {
     force = Vec<Dim, Real>::zero();
     torque = 0;
     int used_slots = 0;  // bit s set when slot s carried a contact this step
-    sum_contacts(i, xi, vi, force, torque, used_slots, nullptr);
+    sum_contacts(i, xi, vi, force, torque, used_slots, w);
     if constexpr (V::friction) release_unused_slots(i, used_slots);
     if constexpr (V::obstacle::present) {
       const int si = p.species(i);
@@ -76,8 +90,8 @@ struct ContactForceKernel {
     }
   }
 
-  // Sums the pair forces of i's contacts into force (and torque; w, the virial, in
-  // ForceMode::virial).
+  // Sums the pair forces of i's contacts into force (and torque; w, the virial, unless in
+  // ForceMode::forces).
   KOKKOS_FORCEINLINE_FUNCTION void sum_contacts(int i, const Vec<Dim, Position>& xi,
                                                 const Vec<Dim, Real>& vi, Vec<Dim, Real>& force,
                                                 Real& torque, int& used_slots, Real* w) const {
@@ -92,7 +106,7 @@ struct ContactForceKernel {
           const auto normal = Model::normal(c, rsum - r, dot(vrel, n));
           Vec<Dim, Real> pair_force = normal.force * n;
           if constexpr (V::friction) {
-            const int slot = Mode == ForceMode::forces ? claim_slot(i, p.id(j), used_slots)
+            const int slot = Mode != ForceMode::virial ? claim_slot(i, p.id(j), used_slots)
                                                        : find_slot(i, p.id(j));
             const Vec<2, Real> vc =
                 contact_point_velocity(vrel, n, ri * p.omega(i) + table.radius(sj) * p.omega(j));
@@ -100,7 +114,7 @@ struct ContactForceKernel {
             if (slot >= 0)
               xi_t = {{p.history_spring(i, Dim * slot), p.history_spring(i, Dim * slot + 1)}};
             const Vec<2, Real> ft = friction(c, normal, n, vc, xi_t);
-            if constexpr (Mode == ForceMode::forces) {
+            if constexpr (Mode != ForceMode::virial) {
               if (slot >= 0) {
                 p.history_spring(i, Dim * slot) = xi_t[0];
                 p.history_spring(i, Dim * slot + 1) = xi_t[1];
@@ -110,7 +124,7 @@ struct ContactForceKernel {
             pair_force += ft;
           }
           force += pair_force;
-          if constexpr (Mode == ForceMode::virial)
+          if constexpr (Mode != ForceMode::forces)
             for (int a = 0; a < Dim; ++a)
               for (int b = 0; b < Dim; ++b) w[a * Dim + b] += Real(0.5) * dx[a] * pair_force[b];
         });

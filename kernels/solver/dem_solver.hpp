@@ -125,6 +125,8 @@ class DemSolver final : public Solver {
   // half of n+1 and the forces between them are one fused pass (fused_step.hpp); the
   // first step starts with the first half and the last ends with forces and the second
   // half, so between calls x, v and f belong to the same step, as with separate halves.
+  // That last force pass also records each particle's contact virial, which a field
+  // sample at this step reads (compute_forces).
   void advance(long steps) override {
     if (steps <= 0) return;
     const WorkClock work = start_work_clock();
@@ -156,7 +158,8 @@ class DemSolver final : public Solver {
       }
       ++steps_;
     }
-    // Ghosts as their owners end the call (the sampling's virial reads their velocities).
+    // Ghosts as their owners end the call (diagnostics, and a sample that computes its own
+    // virial, read their velocities).
     if (slabs_) slabs_->update_ghosts(p_);
     stop_work_clock(work, steps);
     if constexpr (V::friction) {
@@ -206,12 +209,17 @@ class DemSolver final : public Solver {
     last_build_step_ = steps_;
   }
 
+  // The forces at the current state, and each particle's contact virial of these very
+  // pair forces, for a field sample before the next step (docs/fields.md, "The contact
+  // virial": damping at the velocities the forces see, v^(n+1/2) at the end of a step).
   void compute_forces() {
-    Kokkos::parallel_for("contact_forces", Policy(0, p_.n), force_kernel(p_, pair_loop()));
+    Kokkos::parallel_for("contact_forces_and_virial", Policy(0, p_.n),
+                         force_kernel<ForceMode::forces_and_virial>(p_, pair_loop(), p_.virial));
+    virial_recorded_ = true;
   }
 
   // The force kernel over `from`'s particles and `pairs`' list: the one place its
-  // arguments are listed (the virial view only in ForceMode::virial).
+  // arguments are listed (the virial view not in ForceMode::forces).
   template <ForceMode Mode = ForceMode::forces>
   ContactForceKernel<V, ExecSpace, Mode> force_kernel(
       const Store& from, const PairLoop<Dim, Real, Mem>& pairs,
@@ -389,8 +397,14 @@ class DemSolver final : public Solver {
 
   void configure_sampling(const FieldSampling& f) override { sampler_.configure(f); }
 
+  // The virial of the last force pass where it recorded one at this step; otherwise (a
+  // state from a checkpoint that held none) computed here, at the current velocities.
   void sample_fields(int block) override {
-    sampler_.sample(block, p_, force_kernel<ForceMode::virial>(p_, pair_loop()));
+    if (virial_recorded_) {
+      sampler_.sample(block, p_, p_.virial);
+    } else {
+      sampler_.sample_computing_virial(block, p_, force_kernel<ForceMode::virial>(p_, pair_loop()));
+    }
   }
 
   std::vector<double> field_sums(bool profile) const override {
@@ -412,6 +426,7 @@ class DemSolver final : public Solver {
     s.step = steps_;
     s.next_id = population_.next_id();
     state_io::export_particles<Paths>(p_, s);
+    if (!virial_recorded_) s.contact_virial.clear();  // none to hand on (sample_fields)
     s.list_builds = builds_;
     s.skin = double(skin_);
     s.last_build_step = last_build_step_;
@@ -440,6 +455,7 @@ class DemSolver final : public Solver {
     steps_ = s.step;
     builds_ = s.list_builds;
     last_build_step_ = s.last_build_step;
+    virial_recorded_ = !s.contact_virial.empty();
     use_skin(double(skin));
     if (slabs_) {
       import_own_part(s);
@@ -593,6 +609,9 @@ class DemSolver final : public Solver {
   long exact_checks_ = 0;     // exact displacement passes after a bound that failed
   long step_regions_ = 0;
   double sync_seconds_ = 0;
+  // Whether p_.virial is the contact virial of the force pass that ended the current step
+  // (compute_forces; or a state's that was: import_state), 0 for particles inserted since.
+  bool virial_recorded_ = false;
 };
 
 }  // namespace granshock

@@ -65,7 +65,8 @@ void from_host(const View& view, int n, const std::vector<T>& in, const char* wh
   Kokkos::deep_copy(view, h);
 }
 
-// Every per-particle array of the store into the state, and back.
+// Every per-particle array of the store into the state, and back (an array the state may
+// lack, StateArray::may_be_absent, at its rest value when it does).
 template <class Paths, class Store>
 void export_particles(const Store& p, SolverState& s) {
   Store::for_each_array(
@@ -76,7 +77,14 @@ template <class Paths, class Store>
 void import_particles(Store& p, const SolverState& s) {
   const int n = int(s.size());
   Store::for_each_array(
-      [&](auto array, auto& view) { from_host<Paths>(view, n, s.*array.member, array.name); }, p);
+      [&](auto array, auto& view) {
+        if (array.may_be_absent && (s.*array.member).empty()) {
+          Kokkos::deep_copy(view, array.rest);
+        } else {
+          from_host<Paths>(view, n, s.*array.member, array.name);
+        }
+      },
+      p);
   p.n = n;
 }
 

@@ -39,6 +39,7 @@ void expect_equal(const SolverState& a, const SolverState& b) {
   EXPECT_EQ(a.history_partner, b.history_partner);
   EXPECT_TRUE(same_bits(a.history_spring, b.history_spring));
   EXPECT_TRUE(same_bits(a.history_obstacle_spring, b.history_obstacle_spring));
+  EXPECT_TRUE(same_bits(a.contact_virial, b.contact_virial));
   EXPECT_TRUE(same_bits(a.reference_position, b.reference_position));
   EXPECT_EQ(a.neighbour_offsets, b.neighbour_offsets);
   EXPECT_EQ(a.neighbours, b.neighbours);
@@ -105,6 +106,7 @@ SolverState make_state(int n, int dim, int slots, unsigned seed) {
     }
     for (std::size_t i = 0; i < un * ud; ++i) s.history_obstacle_spring.push_back(value());
   }
+  for (std::size_t i = 0; i < un * ud * ud; ++i) s.contact_virial.push_back(value());
   return s;
 }
 
@@ -172,6 +174,11 @@ TEST(Checkpoint, EmptyStateAndOptionalArraysRoundTrip) {
   // Friction on (slots > 0) but no wall springs yet: the empty array stays empty.
   SolverState partial = make_state<double>(5, 2, 2, 4);
   partial.history_obstacle_spring.clear();
+  write_checkpoint(dir / "checkpoint.h5", partial, none);
+  expect_equal(partial, read_checkpoint(dir / "checkpoint.h5", extras));
+
+  // No contact virial (a solver that held none, as in files from before it): none read.
+  partial.contact_virial.clear();
   write_checkpoint(dir / "checkpoint.h5", partial, none);
   expect_equal(partial, read_checkpoint(dir / "checkpoint.h5", extras));
 }
