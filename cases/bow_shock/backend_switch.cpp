@@ -41,6 +41,15 @@ Backend BackendSwitch::observe(double particle_steps, double seconds) {
   since_try_s_ += window;
   reference_rate_ = std::max(reference_rate_, rate);
   if (since_try_s_ >= gap_s_ || rate < policy_.drop * reference_rate_) {
+    // On one thread, a machine still as busy as when the run moved there is not worth a
+    // try of the threads (each costs a try window at their collapsed rate and two moves):
+    // the try is skipped as a failed one would be, and the gap doubles.
+    if (settled_ == Backend::serial && threads_free_ && !threads_free_()) {
+      ++skipped_tries_;
+      since_try_s_ = 0;
+      gap_s_ = std::min(2 * gap_s_, policy_.longest_gap_s);
+      return current_;
+    }
     settled_rate_ = rate;
     start_trying();
   }

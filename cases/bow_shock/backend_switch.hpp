@@ -8,6 +8,8 @@
 // moves between them as a resume would), so the choice changes only the speed.
 #pragma once
 
+#include <functional>
+
 #include "core/solver.hpp"
 
 namespace granshock {
@@ -33,6 +35,13 @@ struct BackendSwitchPolicy {
 class BackendSwitch {
  public:
   explicit BackendSwitch(BackendSwitchPolicy policy = {});
+
+  // Asked before a try of the threads from one thread: false where the CPUs are still
+  // busy (machine_load.hpp), and the try is skipped. Unset: every try is made.
+  void set_threads_free(std::function<bool()> threads_free) {
+    threads_free_ = std::move(threads_free);
+  }
+  long skipped_tries() const { return skipped_tries_; }
 
   // Starts on one thread (another process keeps the cores busy at the start,
   // machine_load.hpp): the threads are tried after gap_after_move_s, as after a move.
@@ -71,6 +80,8 @@ class BackendSwitch {
   bool first_slice_ = true;  // the run's first: start-up costs, not a rate
   double since_try_s_ = 0, gap_s_ = 0;
   bool started_on_one_thread_ = false;
+  std::function<bool()> threads_free_;
+  long skipped_tries_ = 0;
   long switches_ = 0, tries_ = 0;
   double serial_seconds_ = 0, total_seconds_ = 0;
   double threads_rate_ = 0, serial_rate_ = 0;

@@ -246,6 +246,12 @@ void BowShockRun::choose_start_backend() {
     return;
   backend_switch_.emplace();
   if (options_.backend_switch != BackendSwitchMode::automatic) return;
+  // The threads are tried again only once the others leave them room (or /proc cannot
+  // tell): a try beside the same load would only cost.
+  backend_switch_->set_threads_free([threads] {
+    const std::optional<MachineLoad> now = measure_machine_load();
+    return !now || !threads_would_wait(*now, threads);
+  });
   const std::optional<MachineLoad> load = measure_machine_load();
   if (!load || !threads_would_wait(*load, threads)) return;
   backend_switch_->start_on_one_thread();
@@ -707,6 +713,7 @@ nlohmann::json BowShockRun::backend_summary() const {
           {"ended_on", backend_ == Backend::serial ? "one thread" : "threads"},
           {"moves", backend_moves_},
           {"tries", backend_switch_->tries()},
+          {"tries_skipped_busy", backend_switch_->skipped_tries()},
           {"seconds_on_one_thread", backend_switch_->seconds_on_one_thread()},
           {"seconds_timed", backend_switch_->seconds_total()},
           {"last_threads_rate", backend_switch_->threads_rate()},

@@ -171,5 +171,54 @@ TEST(BackendSwitch, AStartOnOneThreadOnAnIdleMachineReturnsToTheThreads) {
   EXPECT_LT(o.back_to_threads_at, BackendSwitchPolicy{}.gap_after_move_s + 1.0);
 }
 
+// On one thread beside load that /proc still shows (set_threads_free says no), the tries
+// of the threads are skipped: no move after the start, nearly all of one thread's rate,
+// and the skipped tries at the doubling gaps (2, 4, 8, 16 and 30 s of a 60 s run).
+TEST(BackendSwitch, TriesAreSkippedWhileTheMachineStaysBusy) {
+  BackendSwitch s;
+  int asked = 0;
+  s.set_threads_free([&asked] {
+    ++asked;
+    return false;
+  });
+  s.start_on_one_thread();
+  const Machine busy{[](double) { return 3.6e6; }, [](double) { return 1.25e8; }};
+  const Outcome o = simulate(s, busy, 60);
+  EXPECT_EQ(s.current(), Backend::serial);
+  EXPECT_EQ(s.tries(), 0);
+  EXPECT_EQ(s.switches(), 0);
+  EXPECT_EQ(s.skipped_tries(), asked);
+  EXPECT_GE(asked, 4);
+  EXPECT_GT(o.particle_steps / (1.25e8 * o.wall), 0.999);
+}
+
+// Once /proc shows the CPUs free again the threads are tried, and taken back where they
+// are faster.
+TEST(BackendSwitch, TheThreadsAreTriedOnceTheMachineIsFree) {
+  BackendSwitch s;
+  double now = 0;
+  s.set_threads_free([&now] { return now > 10; });
+  s.start_on_one_thread();
+  const Machine lifting{[](double t) { return t < 10 ? 3.6e6 : 2.0e8; },
+                        [](double) { return 1.1e8; }};
+  Outcome o;
+  while (o.wall < 60) {  // simulate() with the clock shared with the load check
+    const bool one = s.current() == Backend::serial;
+    const double rate = one ? lifting.one_thread(o.wall) : lifting.threads(o.wall);
+    const double seconds = s.slice_seconds();
+    o.wall += seconds;
+    now = o.wall;
+    const Backend before = s.current();
+    const long switches = s.switches();
+    s.observe(rate * seconds, seconds);
+    if (s.switches() != switches && before == Backend::default_space && o.back_to_threads_at < 0)
+      o.back_to_threads_at = o.wall;
+  }
+  EXPECT_EQ(s.current(), Backend::default_space);
+  EXPECT_GT(o.back_to_threads_at, 10);
+  EXPECT_LT(o.back_to_threads_at, 10 + 16 + 1);  // within the gap of the time it lifted
+  EXPECT_GE(s.skipped_tries(), 1);
+}
+
 }  // namespace
 }  // namespace granshock
