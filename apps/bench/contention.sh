@@ -11,7 +11,8 @@
 # Usage: contention.sh [REFERENCE.cpp|REFERENCE_BINARY]
 # Environment: GRANSHOCK (default <repo>/build/apps/granshock/granshock), DURATION
 #   (default 0.02 s simulated), REPEATS (default 3), LOADS (default "0 1 2 g": busy `yes`
-#   processes, g = one granshock), CONFIGS (default "2:auto 2:off 1:off").
+#   processes, g = one granshock), CONFIGS (default "2:auto 2:off 1:off"), OLD_GRANSHOCK
+#   (another build: its 2:auto run beside each of granshock's, for old against new).
 set -uo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 root=$(cd "$here/../.." && pwd)
@@ -57,16 +58,17 @@ start_load() {  # LOAD: 0, N busy `yes`, or g (a granshock on one thread, run af
   sleep 1
 }
 
-granshock_rate() {  # THREADS SWITCH -> "rate wall moves" of one run
-  OMP_NUM_THREADS=$1 "$granshock" run "$root/scenes/default.toml" --quiet \
+granshock_rate() {  # THREADS SWITCH [BINARY] -> "rate wall moves skipped" of one run
+  OMP_NUM_THREADS=$1 "${3:-$granshock}" run "$root/scenes/default.toml" --quiet \
     --set time.duration="$duration" --set time.production_start="$production" \
     --backend-switch "$2" --out "$work/run" --overwrite --no-figures \
-    >/dev/null 2>"$work/err" || { echo "nan nan nan"; return; }
+    >/dev/null 2>"$work/err" || { echo "nan nan nan nan"; return; }
   /usr/bin/python3 - "$work/run/summary.json" <<'PY'
 import json, sys
 s = json.load(open(sys.argv[1]))
-moves = s.get("backend_switch", {}).get("moves", 0)
-print("%.3g %.1f %d" % (s["particle_steps_per_second"], s["wall_seconds"], moves))
+b = s.get("backend_switch", {})
+print("%.3g %.1f %d %s" % (s["particle_steps_per_second"], s["wall_seconds"], b.get("moves", 0),
+                           b.get("tries_skipped_busy", "-")))
 PY
 }
 
@@ -80,19 +82,25 @@ median() { tr ' ' '\n' | grep -v '^$' | sort -g | awk '{ a[NR] = $1 } END { prin
 echo "CPU: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//'), $(nproc) CPUs;" \
   "default scene, $duration s simulated; medians of $repeats runs"
 echo
-echo "| load | granshock threads:switch | particle-steps/s | wall s | moves |"
-echo "|---|---|---|---|---|"
+echo "| load | granshock threads:switch | particle-steps/s | wall s | moves | tries skipped |"
+echo "|---|---|---|---|---|---|"
 for load in $loads; do
   start_load "$load"
   label=$([[ $load == g ]] && echo "1 granshock" || echo "$load yes")
-  for config in $configs; do
+  runs=()
+  [[ -n ${OLD_GRANSHOCK:-} ]] && runs+=("old 2:auto")
+  for config in $configs; do runs+=("new $config"); done
+  for run in "${runs[@]}"; do
+    build=${run%% *} config=${run#* }
     threads=${config%%:*} switch=${config##*:}
-    rates="" walls="" moves=""
+    binary=$granshock name=$config
+    [[ $build == old ]] && binary=$OLD_GRANSHOCK name="$config (OLD_GRANSHOCK)"
+    rates="" walls="" moves="" skips=""
     for ((r = 0; r < repeats; ++r)); do
-      read -r rate wall move < <(granshock_rate "$threads" "$switch")
-      rates+=" $rate" walls+=" $wall" moves+=" $move"
+      read -r rate wall move skip < <(granshock_rate "$threads" "$switch" "$binary")
+      rates+=" $rate" walls+=" $wall" moves+=" $move" skips+=" $skip"
     done
-    echo "| $label | $threads:$switch | $(echo "$rates" | median) | $(echo "$walls" | median) | $(echo "$moves" | median) |"
+    echo "| $label | $name | $(echo "$rates" | median) | $(echo "$walls" | median) | $(echo "$moves" | median) | $(echo "$skips" | median) |"
   done
   if [[ -n $reference ]]; then
     for threads in 2 1; do
