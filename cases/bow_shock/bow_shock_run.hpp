@@ -53,7 +53,7 @@ class BowShockRun {
   void analyse();
   std::string interrupted_message(int signal) const;
   long agreed_next_step(long step);
-  bool calibrate_inflow();       // true when it changed sigma (inflow.mach_at = "inlet_bins")
+  bool calibrate_inflow();  // true when it changed sigma (inflow.mach_at = "inlet_bins")
   void choose_start_backend();
   bool calibrate_restitution();  // true when it set the damping (restitution_mode = "discrete")
   void start_fresh();
