@@ -248,12 +248,9 @@ void BowShockRun::choose_start_backend() {
   if (options_.backend_switch != BackendSwitchMode::automatic) return;
   // The threads are tried again only once the others leave them room (or /proc cannot
   // tell): a try beside the same load would only cost.
-  backend_switch_->set_threads_free([threads] {
-    const std::optional<MachineLoad> now = measure_machine_load();
-    return !now || !threads_would_wait(*now, threads);
-  });
-  const std::optional<MachineLoad> load = measure_machine_load();
-  if (!load || !threads_would_wait(*load, threads)) return;
+  backend_switch_->set_threads_free([threads] { return !load_leaving_no_room(threads); });
+  const std::optional<MachineLoad> load = load_leaving_no_room(threads);
+  if (!load) return;
   backend_switch_->start_on_one_thread();
   backend_ = Backend::serial;
   const std::string note = fmt::format(

@@ -38,4 +38,12 @@ inline bool threads_would_wait(const MachineLoad& load, int threads) {
   return load.others_running + threads > load.cpus;
 }
 
+// The load measured now where it leaves `threads` threads no room; nullopt where they
+// have room or /proc cannot tell.
+inline std::optional<MachineLoad> load_leaving_no_room(int threads) {
+  const std::optional<MachineLoad> load = measure_machine_load();
+  if (load && threads_would_wait(*load, threads)) return load;
+  return std::nullopt;
+}
+
 }  // namespace granshock
