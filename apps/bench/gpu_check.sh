@@ -18,6 +18,12 @@
 #   GRANSHOCK_GPU_CHECK_TESTS="ctest arguments"   a part of the suite instead of all of it
 #   GRANSHOCK_GPU_CHECK_OUT=DIR logs, runs and the table (default gpu-check/ in the repo)
 #   GRANSHOCK_GPU_CHECK_CMAKE="args"  more CMake configure arguments for the build
+#   GRANSHOCK_GPU_CHECK_PREBUILT=1  no build: use build-cuda/ as apps/bench/gpu_bundle.sh
+#                               unpacked it (a GPU machine without the Debian packages);
+#                               its runtime-libs/ go on LD_LIBRARY_PATH
+#   GRANSHOCK_GPU_CHECK_PROGRAMS="test_unit ..."  run these test programs directly (no
+#                               ctest), with GRANSHOCK_GPU_CHECK_FILTER as --gtest_filter
+#   GRANSHOCK_PYTHON=PATH       the Python with h5py and numpy (default /usr/bin/python3)
 # Exit status: 0 when every step is ok, 1 otherwise.
 set -uo pipefail
 
@@ -28,7 +34,8 @@ reference=$here/gpu_check_reference.json
 out=${GRANSHOCK_GPU_CHECK_OUT:-$repo/gpu-check}
 factor=${GRANSHOCK_GPU_CHECK_BOXES:-1}
 jobs=$(nproc)
-python=/usr/bin/python3
+python=${GRANSHOCK_PYTHON:-/usr/bin/python3}
+prebuilt=${GRANSHOCK_GPU_CHECK_PREBUILT:-0}
 mode=gpu
 [ "${GRANSHOCK_GPU_CHECK_DRY:-0}" = 1 ] && mode=dry
 if [ $# -gt 0 ]; then
@@ -45,6 +52,7 @@ case $mode in
 esac
 rm -rf "$out" && mkdir -p "$out"
 export OMP_NUM_THREADS=${OMP_NUM_THREADS:-2} OMP_PROC_BIND=false
+export GRANSHOCK_FIGURES=0 GRANSHOCK_PYTHON="$python"  # no figures: nothing here checks them
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1  # the MPI tests, as root
 
 rows=()
@@ -91,27 +99,67 @@ build_variant() {
         cmake --build "$build" --parallel "$jobs" ;;
   esac
 }
-export -f build_variant
+# A prebuilt build (apps/bench/gpu_bundle.sh): its own libraries first; the C++ runtime it
+# was built with only where the machine's own is older (a `not found` symbol version).
+prebuilt_check() {
+  local missing
+  missing=$(ldd "$build"/apps/granshock/granshock "$build"/apps/bench/granshock_bench_gas \
+    2>&1 | grep -E "not found" | sort -u)
+  [ -z "$missing" ] && { echo "prebuilt $build: every library found"; return 0; }
+  echo "prebuilt $build: missing: $missing" >&2
+  return 1
+}
+if [ "$prebuilt" = 1 ]; then
+  export LD_LIBRARY_PATH=$build/runtime-libs${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}
+  if ! prebuilt_check >/dev/null 2>&1; then
+    export LD_LIBRARY_PATH=$build/runtime-libs/cxx-runtime:$LD_LIBRARY_PATH
+  fi
+fi
+export -f build_variant prebuilt_check
 export mode build jobs out here reference python GRANSHOCK_GPU_CHECK_CMAKE
-step build 210 build_variant
-row "$mode build in ${build#"$repo"/}, $jobs cores"
+if [ "$prebuilt" = 1 ]; then
+  step build 10 prebuilt_check
+  row "$(log_tail build)"
+else
+  step build 210 build_variant
+  row "$mode build in ${build#"$repo"/}, $jobs cores"
+fi
 granshock=$build/apps/granshock/granshock
 bench=$build/apps/bench/granshock_bench_gas
 export granshock
 
 # 2. granshock info: the backend and the kernels' paths this mode must have.
 step info 10 "$granshock" info
-got=$($python -c 'import json, sys; j = json.load(open(sys.argv[1]));
+# The JSON starts at its first brace: Kokkos may warn on stderr before it (a GPU newer
+# than the code's architecture, docs/cuda.md).
+got=$($python -c 'import json, sys; t = open(sys.argv[1]).read(); j = json.loads(t[t.index("{"):]);
 print(j["default_execution_space"], j.get("kernel_paths", "?"))' "$out/info.log" 2>/dev/null)
 if [ "$step_status" = ok ] && [ "$got" != "$expect" ]; then step_status=FAIL; fi
 row "${got:-no JSON} (expected: $expect)"
 
 # 3. The test suite (or the part GRANSHOCK_GPU_CHECK_TESTS names), half the cores' worth
 # of test programs at once (each runs 2 OpenMP threads).
+# With GRANSHOCK_GPU_CHECK_PROGRAMS, the named test programs directly, one after the other
+# (ctest's files name this machine's paths and its CMake; a prebuilt build has neither).
+test_programs() {
+  local program failed_programs=0
+  for program in $GRANSHOCK_GPU_CHECK_PROGRAMS; do
+    (cd "$build/tests" && "./$program" --gtest_brief=1 \
+      --gtest_filter="${GRANSHOCK_GPU_CHECK_FILTER:-*}") || failed_programs=1
+  done
+  return $failed_programs
+}
+export -f test_programs
 read -r -a test_args <<<"${GRANSHOCK_GPU_CHECK_TESTS:-}"
-step tests 110 ctest --test-dir "$build" -j $((jobs > 1 ? jobs / 2 : 1)) --timeout 100 \
-  "${test_args[@]}"
-row "$(grep -E 'tests passed|No tests were found' "$out/tests.log" | tail -n 1)"
+if [ -n "${GRANSHOCK_GPU_CHECK_PROGRAMS:-}" ]; then
+  export GRANSHOCK_GPU_CHECK_PROGRAMS GRANSHOCK_GPU_CHECK_FILTER
+  step tests 110 test_programs
+  row "$(grep -E '^\[  (PASSED|FAILED)  \]' "$out/tests.log" | tr '\n' ' ' | cut -c1-300)"
+else
+  step tests 110 ctest --test-dir "$build" -j $((jobs > 1 ? jobs / 2 : 1)) --timeout 100 \
+    "${test_args[@]}"
+  row "$(grep -E 'tests passed|No tests were found' "$out/tests.log" | tail -n 1)"
+fi
 
 # 4. The gas benchmark (sigma 0.15 m/s, as docs/benchmarks.md): particle-steps per
 # second, and the ratio to the 2-core host's in the same case (the reference's "bench").
@@ -154,13 +202,25 @@ print("%d particles, %.3g ps/s, %d list builds" % (d["particles_final"],
     log_tail "$1"
 }
 export -f scene_run
-step default_scene 40 scene_run default_scene scenes/default.toml time.duration=0.05 \
-  time.production_start=0.025
+default_scene=(scenes/default.toml time.duration=0.05 time.production_start=0.025)
+paper_case=(scenes/paper/d50_u1000.toml inflow.mach_at=inserted time.duration=0.05
+  time.production_start=0.025 output.snapshot_interval=0.025 output.checkpoint_interval=0.025)
+step default_scene 40 scene_run default_scene "${default_scene[@]}"
 row "$(scene_result default_scene)"
-step paper_d50_u1000 40 scene_run paper_d50_u1000 scenes/paper/d50_u1000.toml \
-  inflow.mach_at=inserted time.duration=0.05 time.production_start=0.025 \
-  output.snapshot_interval=0.025 output.checkpoint_interval=0.025
+step paper_d50_u1000 40 scene_run paper_d50_u1000 "${paper_case[@]}"
 row "$(scene_result paper_d50_u1000)"
+# The reference also holds the host's field totals for two other seeds: a run that left
+# the host's trajectory may differ from it by what another seed does (gpu_check_compare.py).
+if [ "$mode" = record ]; then
+  for seed in 2 3; do
+    step "default_scene_seed$seed" 40 scene_run "default_scene_seed$seed" \
+      "${default_scene[@]}" "scene.seed=$seed"
+    row "$(scene_result "default_scene_seed$seed")"
+    step "paper_d50_u1000_seed$seed" 40 scene_run "paper_d50_u1000_seed$seed" \
+      "${paper_case[@]}" "scene.seed=$seed"
+    row "$(scene_result "paper_d50_u1000_seed$seed")"
+  done
+fi
 
 # 6. Each run against the host's (the reference's "runs").
 compare_run() {  # NAME
@@ -185,6 +245,10 @@ measured = {name: float("%.3g" % json.load(open(f"{out}/{name}.json"))["results"
 old = json.load(open(reference)) if os.path.exists(reference) else {}
 bench = old.get("bench") or dict(measured, source="gpu_check.sh --record")
 runs = {name: json.load(open(f"{out}/{name}.json")) for name in ("default_scene", "paper_d50_u1000")}
+for name, run in runs.items():
+    run["other_seeds"] = [
+        {path: t["sum"] for path, t in json.load(open(f"{out}/{name}_seed{seed}.json"))["field_totals"].items()}
+        for seed in (2, 3)]
 recorded = {"date": datetime.date.today().isoformat(), "cpu": cpu, "cores": os.cpu_count(),
             "load_average": load, "bench": measured}
 json.dump({"bench": bench, "recorded": recorded, "runs": runs}, open(reference, "w"),
