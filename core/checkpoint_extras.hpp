@@ -14,6 +14,9 @@ struct CheckpointExtras {
   long deleted_inlet = 0;
   double insertion_carry = 0;      // fractional particles owed to the inflow
   double wall_seconds_so_far = 0;  // wall time spent by all earlier legs of the run
+  // CPU time (all threads and processes) of the earlier legs; -1 where a leg did not
+  // record it (checkpoints from before it).
+  double cpu_seconds_so_far = -1;
   // The field accumulators: grid sums, profile sums and samples per block, concatenated;
   // bin_shape holds the three lengths (both empty for a run without field sums).
   std::vector<double> bin_sums;

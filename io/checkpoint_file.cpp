@@ -98,6 +98,7 @@ void write_extras(hid_t file, const CheckpointExtras& e) {
   h5::write_attribute(run.get(), "deleted_inlet", e.deleted_inlet);
   h5::write_attribute(run.get(), "insertion_carry", e.insertion_carry);
   h5::write_attribute(run.get(), "wall_seconds_so_far", e.wall_seconds_so_far);
+  h5::write_attribute(run.get(), "cpu_seconds_so_far", e.cpu_seconds_so_far);
   h5::write_dataset(run.get(), "bin_sums", e.bin_sums, {static_cast<hsize_t>(e.bin_sums.size())});
   h5::write_dataset(run.get(), "bin_shape", e.bin_shape,
                     {static_cast<hsize_t>(e.bin_shape.size())});
@@ -229,6 +230,10 @@ void read_extras(const Reader& in, hid_t file, CheckpointExtras& e) {
   e.deleted_inlet = in.attribute<long>("/run", "deleted_inlet");
   e.insertion_carry = in.attribute<double>("/run", "insertion_carry");
   e.wall_seconds_so_far = in.attribute<double>("/run", "wall_seconds_so_far");
+  Handle run_group = h5::open_group(file, "/run");
+  e.cpu_seconds_so_far = h5::has_attribute(run_group.get(), "cpu_seconds_so_far")
+                             ? in.attribute<double>("/run", "cpu_seconds_so_far")
+                             : -1.0;  // from before the record
   e.bin_sums = in.dataset<double>("/run", "bin_sums");
   e.bin_shape = in.dataset<long>("/run", "bin_shape");
   e.scene_resolved = h5::read_string_dataset(file, "/scene/resolved");

@@ -9,7 +9,7 @@
 //
 // Threads: OMP_NUM_THREADS or --kokkos-threads=N (Kokkos 3.4 removes its own
 // --kokkos-* arguments before the benchmark's options are parsed).
-#include <sys/resource.h>
+#include "core/process_clock.hpp"
 #include <unistd.h>
 #include <CLI/CLI.hpp>
 #include <Kokkos_Core.hpp>
@@ -111,13 +111,6 @@ double resident_bytes() {
   double size_pages = 0, resident_pages = 0;
   if (!(statm >> size_pages >> resident_pages)) return 0;
   return resident_pages * double(sysconf(_SC_PAGESIZE));
-}
-
-double process_cpu_seconds() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
-         1e-6 * double(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
 }
 
 // Advances in chunks until both at least `min_steps` steps and `min_seconds` have

@@ -15,6 +15,7 @@
 #include "cases/bow_shock/run_checks.hpp"
 #include "cases/bow_shock/run_observables.hpp"
 #include "cases/bow_shock/run_state.hpp"
+#include "core/process_clock.hpp"
 #include "cases/bow_shock/run_summary.hpp"
 #include "cases/build_info/build_description.hpp"
 #include "cases/tradeoff/accuracy_choice.hpp"
@@ -168,6 +169,7 @@ int BowShockRun::execute_or_throw() {
   try {
     if (!options_.resume) start_fresh();  // writes the outputs of step 0
     first_step_ = solver_->steps_done();
+    cpu_at_leg_start_ = process_cpu_seconds();
     meter_.emplace(first_step_, total_steps_, scene_.run.progress_interval_s,
                    [this](const std::string& line) { log_.say(line); });
     return advance_to_end();
@@ -478,6 +480,7 @@ void BowShockRun::resume() {
     ++samples_[std::size_t(extension_.catch_up_block)];
   }
   wall_before_ = checkpoint_extras_.wall_seconds_so_far;
+  cpu_before_ = checkpoint_extras_.cpu_seconds_so_far;
   last_checkpoint_step_ = checkpoint_state_.step;
   checkpoint_state_ = SolverState{};  // the solver holds it now
 }
@@ -554,12 +557,18 @@ void BowShockRun::write_snapshot(long step) {
   });
 }
 
+double BowShockRun::cpu_seconds_so_far() const {
+  const double leg = comm_.sum(process_cpu_seconds() - cpu_at_leg_start_);
+  return cpu_before_ >= 0 ? cpu_before_ + leg : -1.0;
+}
+
 void BowShockRun::write_checkpoint_now() {
   const long step = solver_->steps_done();
   if (step == last_checkpoint_step_) return;
   const OutputTimer timer(output_.checkpoint_seconds, output_.checkpoints);
   const double wall = wall_before_ + (meter_ ? meter_->elapsed_s() : 0.0);
-  CheckpointExtras extras = pack_run_state(loaded_.resolved, *solver_, inflow_, samples_, wall);
+  CheckpointExtras extras =
+      pack_run_state(loaded_.resolved, *solver_, inflow_, samples_, wall, cpu_seconds_so_far());
   const SolverState state = solver_->export_state();
   if (root_) {
     writing([&] {
@@ -590,7 +599,8 @@ void BowShockRun::finish(bool completed) {
   const double wall = wall_before_ + meter_->elapsed_s();
   const long steps = solver_->steps_done();
   nlohmann::json j = run_summary(scene_, *solver_, inflow_, calibration_ ? &*calibration_ : nullptr,
-                                 completed, {wall, meter_->elapsed_s(), particle_steps_});
+                                 completed,
+                                 {wall, cpu_seconds_so_far(), meter_->elapsed_s(), particle_steps_});
   // Several processes: how the work was shared (one process: nothing to say).
   if (comm_.size() > 1) j["processes"] = processes_summary();
   if (backend_switch_) j["backend_switch"] = backend_summary();

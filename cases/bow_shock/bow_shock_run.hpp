@@ -63,6 +63,8 @@ class BowShockRun {
   void actions_at(long step);
   void write_series_row(long step);
   void write_snapshot(long step);
+  // CPU seconds of every leg so far, all processes (collective); -1 where not known.
+  double cpu_seconds_so_far() const;
   void write_checkpoint_now();
   void finish(bool completed);
   void read_earlier_summary();
@@ -96,6 +98,8 @@ class BowShockRun {
   Schedule series_{1}, snapshots_{1}, checkpoints_{1};
   long total_steps_ = 0, first_step_ = 0;
   double wall_before_ = 0;     // wall seconds of earlier legs (resumed runs)
+  double cpu_before_ = 0;      // CPU seconds of earlier legs, all processes; -1: not known
+  double cpu_at_leg_start_ = 0;  // this process's CPU clock when the time loop started
   double particle_steps_ = 0;  // particle-steps of this leg
   // --resume: what the summary.json of the earlier legs said (null where it said nothing).
   nlohmann::json earlier_warnings_, earlier_rate_;

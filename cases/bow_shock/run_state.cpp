@@ -8,7 +8,7 @@ namespace granshock {
 // block, with their three lengths in bin_shape.
 CheckpointExtras pack_run_state(const std::string& scene_resolved, const Solver& solver,
                                 const InflowController& inflow, const std::vector<long>& samples,
-                                double wall_seconds) {
+                                double wall_seconds, double cpu_seconds) {
   CheckpointExtras e;
   e.rng_counter = inflow.events();
   e.inserted = inflow.inserted();
@@ -17,6 +17,7 @@ CheckpointExtras pack_run_state(const std::string& scene_resolved, const Solver&
   e.deleted_inlet = removed.low[1];
   e.insertion_carry = inflow.carry();
   e.wall_seconds_so_far = wall_seconds;
+  e.cpu_seconds_so_far = cpu_seconds;
   e.scene_resolved = scene_resolved;
   e.bin_sums = solver.field_sums(false);
   const std::vector<double> profile = solver.field_sums(true);

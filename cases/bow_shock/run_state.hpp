@@ -19,7 +19,7 @@ namespace granshock {
 
 CheckpointExtras pack_run_state(const std::string& scene_resolved, const Solver& solver,
                                 const InflowController& inflow, const std::vector<long>& samples,
-                                double wall_seconds);
+                                double wall_seconds, double cpu_seconds);
 
 // Restores the inflow, the solver's field sums and the samples per block.
 void restore_run_state(const CheckpointExtras& extras, Solver& solver, InflowController& inflow,

@@ -94,6 +94,9 @@ nlohmann::json run_summary(const Scene& s, const Solver& solver, const InflowCon
   j["steps"] = steps;
   j["simulated_time"] = steps * s.setup.dt;
   j["wall_seconds"] = times.wall_seconds;
+  // What the run cost on a shared machine (wall time also counts others' turns); null
+  // when an earlier leg did not record it.
+  j["cpu_seconds"] = times.cpu_seconds >= 0 ? nlohmann::json(times.cpu_seconds) : nlohmann::json();
   j["particles_final"] = solver.global_size();
   j["inserted"] = inflow.inserted();
   j["inflow"] = inflow_summary(inflow);

@@ -14,6 +14,7 @@ namespace granshock {
 
 struct RunTimes {
   double wall_seconds = 0;    // all legs of the run (resumed runs)
+  double cpu_seconds = -1;    // CPU time of all legs, threads and processes; -1: not known
   double leg_seconds = 0;     // this leg alone
   double particle_steps = 0;  // this leg's
 };

@@ -118,6 +118,7 @@ CheckpointExtras make_extras() {
   e.deleted_inlet = 3;
   e.insertion_carry = 0.1 + 0.2;
   e.wall_seconds_so_far = 3600.125;
+  e.cpu_seconds_so_far = 7000.25;
   e.bin_sums = {1.0 / 3.0, 2.0, -0.0, 4e-300, 5, 6};  // 2 grid, 3 profile sums, 1 block
   e.bin_shape = {2, 3, 1};
   e.scene_resolved = "[domain]\nwidth = 0.5\n# ünïcode survives\n";
@@ -195,6 +196,7 @@ TEST(Checkpoint, ExtrasRoundTrip) {
   EXPECT_EQ(back.deleted_inlet, e.deleted_inlet);
   EXPECT_EQ(back.insertion_carry, e.insertion_carry);
   EXPECT_EQ(back.wall_seconds_so_far, e.wall_seconds_so_far);
+  EXPECT_EQ(back.cpu_seconds_so_far, e.cpu_seconds_so_far);
   EXPECT_TRUE(same_bits(back.bin_sums, e.bin_sums));
   EXPECT_EQ(back.bin_shape, e.bin_shape);
   EXPECT_EQ(back.scene_resolved, e.scene_resolved);

@@ -171,6 +171,8 @@ TEST(CheckpointChecks, RunCountersOnTheirOwn) {
       {"outlet", [](Sample& x) { x.e.deleted_outlet = -3; }, "/run@deleted_outlet"},
       {"carry", [](Sample& x) { x.e.insertion_carry = kNaN; }, "/run@insertion_carry"},
       {"wall time", [](Sample& x) { x.e.wall_seconds_so_far = -1; }, "/run@wall_seconds_so_far"},
+      {"CPU time < 0", [](Sample& x) { x.e.cpu_seconds_so_far = -2; }, "/run@cpu_seconds_so_far"},
+      {"CPU time NaN", [](Sample& x) { x.e.cpu_seconds_so_far = kNaN; }, "/run@cpu_seconds_so_far"},
       {"shape entries",
        [](Sample& x) {
          x.e.bin_shape = {32, 2};

@@ -17,8 +17,8 @@ import h5py
 import numpy
 
 # summary.json keys that measure the machine, or name the program, not the physics.
-MACHINE_KEYS = {"wall_seconds", "particle_steps_per_second", "threads", "backend", "variant",
-                "backend_switch", "build"}
+MACHINE_KEYS = {"wall_seconds", "cpu_seconds", "particle_steps_per_second", "threads",
+                "backend", "variant", "backend_switch", "build"}
 
 
 def sha(array):

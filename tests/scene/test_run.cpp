@@ -62,6 +62,15 @@ TEST(RunResume, InterruptedAndResumedEqualsUninterruptedBitwise) {
   EXPECT_EQ(a.force, b.force);
   EXPECT_EQ(ea.inserted, eb.inserted);
   EXPECT_EQ(ea.deleted_outlet, eb.deleted_outlet);
+  // The CPU time of every leg is recorded (summary.json cpu_seconds, the trade table's
+  // cost): the last checkpoint holds the legs up to it, the summary all of them.
+  EXPECT_GT(ea.cpu_seconds_so_far, 0);
+  EXPECT_GT(eb.cpu_seconds_so_far, 0);
+  for (const auto& [dir, extras] : {std::pair{"straight", ea}, std::pair{"split", eb}}) {
+    const nlohmann::json j = read_json(tmp.path() / dir / "summary.json");
+    ASSERT_TRUE(j["cpu_seconds"].is_number()) << dir;
+    EXPECT_GE(j["cpu_seconds"].get<double>(), extras.cpu_seconds_so_far) << dir;
+  }
   const RunFile fa = RunFile::open_read_only(tmp.path() / "straight" / "run.h5");
   const RunFile fb = RunFile::open_read_only(tmp.path() / "split" / "run.h5");
   for (const char* name : {"particles", "kinetic_energy", "temperature", "contacts", "inserted"})

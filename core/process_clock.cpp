@@ -1,0 +1,14 @@
+#include "core/process_clock.hpp"
+
+#include <sys/resource.h>
+
+namespace granshock {
+
+double process_cpu_seconds() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
+         1e-6 * double(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
+
+}  // namespace granshock
