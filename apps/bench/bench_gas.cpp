@@ -187,9 +187,9 @@ Row bench_one(const Options& o, double phi, int n_wanted) {
   const long regions_before = solver->step_regions();
   long timed_steps = 0;
   while (int(row.rates.size()) < o.repeats) {
-    const double cpu_before = process_cpu_seconds();
+    const double cpu_before = granshock::process_cpu_seconds();
     const auto [steps, seconds] = run_at_least(*solver, chunk, planned, o.min_seconds);
-    const double share = (process_cpu_seconds() - cpu_before) / (seconds * double(row.threads));
+    const double share = (granshock::process_cpu_seconds() - cpu_before) / (seconds * double(row.threads));
     const double rate = double(row.particles) * double(steps) / seconds;
     timed_steps += steps;
     if (share < o.min_cpu_share && int(row.rejected_rates.size()) < o.retries) {
