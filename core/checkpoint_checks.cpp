@@ -163,9 +163,10 @@ void check_extras(const CheckpointExtras& e) {
                      e.wall_seconds_so_far));
   if (!std::isfinite(e.cpu_seconds_so_far) ||
       (e.cpu_seconds_so_far < 0 && e.cpu_seconds_so_far != -1))
-    fail(fmt::format("/run@cpu_seconds_so_far = {} is neither a finite time >= 0 nor -1 "
-                     "(not recorded)",
-                     e.cpu_seconds_so_far));
+    fail(
+        fmt::format("/run@cpu_seconds_so_far = {} is neither a finite time >= 0 nor -1 "
+                    "(not recorded)",
+                    e.cpu_seconds_so_far));
   if (!e.run_id.empty() && (e.run_frames < 0 || e.run_rows < 0))
     fail(fmt::format("/run@run_file_frames = {} and @run_file_rows = {} are not counts >= 0",
                      e.run_frames, e.run_rows));

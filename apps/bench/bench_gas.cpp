@@ -9,7 +9,6 @@
 //
 // Threads: OMP_NUM_THREADS or --kokkos-threads=N (Kokkos 3.4 removes its own
 // --kokkos-* arguments before the benchmark's options are parsed).
-#include "core/process_clock.hpp"
 #include <unistd.h>
 #include <CLI/CLI.hpp>
 #include <Kokkos_Core.hpp>
@@ -25,6 +24,7 @@
 
 #include "cases/gas/homogeneous_gas.hpp"
 #include "core/choice_names.hpp"
+#include "core/process_clock.hpp"
 #include "core/solver.hpp"
 #include "core/user_error.hpp"
 #include "device/kokkos_runtime.hpp"
@@ -189,7 +189,8 @@ Row bench_one(const Options& o, double phi, int n_wanted) {
   while (int(row.rates.size()) < o.repeats) {
     const double cpu_before = granshock::process_cpu_seconds();
     const auto [steps, seconds] = run_at_least(*solver, chunk, planned, o.min_seconds);
-    const double share = (granshock::process_cpu_seconds() - cpu_before) / (seconds * double(row.threads));
+    const double share =
+        (granshock::process_cpu_seconds() - cpu_before) / (seconds * double(row.threads));
     const double rate = double(row.particles) * double(steps) / seconds;
     timed_steps += steps;
     if (share < o.min_cpu_share && int(row.rejected_rates.size()) < o.retries) {

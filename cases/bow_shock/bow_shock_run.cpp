@@ -15,13 +15,13 @@
 #include "cases/bow_shock/run_checks.hpp"
 #include "cases/bow_shock/run_observables.hpp"
 #include "cases/bow_shock/run_state.hpp"
-#include "core/process_clock.hpp"
 #include "cases/bow_shock/run_summary.hpp"
 #include "cases/build_info/build_description.hpp"
 #include "cases/tradeoff/accuracy_choice.hpp"
 #include "core/checkpoint_checks.hpp"
 #include "core/choice_names.hpp"
 #include "core/failure_agreement.hpp"
+#include "core/process_clock.hpp"
 #include "core/user_error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/checkpoint_file.hpp"
@@ -598,9 +598,9 @@ void BowShockRun::finish(bool completed) {
   sums.y_end = scene_.setup.box.hi[1];
   const double wall = wall_before_ + meter_->elapsed_s();
   const long steps = solver_->steps_done();
-  nlohmann::json j = run_summary(scene_, *solver_, inflow_, calibration_ ? &*calibration_ : nullptr,
-                                 completed,
-                                 {wall, cpu_seconds_so_far(), meter_->elapsed_s(), particle_steps_});
+  nlohmann::json j =
+      run_summary(scene_, *solver_, inflow_, calibration_ ? &*calibration_ : nullptr, completed,
+                  {wall, cpu_seconds_so_far(), meter_->elapsed_s(), particle_steps_});
   // Several processes: how the work was shared (one process: nothing to say).
   if (comm_.size() > 1) j["processes"] = processes_summary();
   if (backend_switch_) j["backend_switch"] = backend_summary();

@@ -97,10 +97,10 @@ class BowShockRun {
   std::optional<RunFile> run_file_;
   Schedule series_{1}, snapshots_{1}, checkpoints_{1};
   long total_steps_ = 0, first_step_ = 0;
-  double wall_before_ = 0;     // wall seconds of earlier legs (resumed runs)
-  double cpu_before_ = 0;      // CPU seconds of earlier legs, all processes; -1: not known
+  double wall_before_ = 0;       // wall seconds of earlier legs (resumed runs)
+  double cpu_before_ = 0;        // CPU seconds of earlier legs, all processes; -1: not known
   double cpu_at_leg_start_ = 0;  // this process's CPU clock when the time loop started
-  double particle_steps_ = 0;  // particle-steps of this leg
+  double particle_steps_ = 0;    // particle-steps of this leg
   // --resume: what the summary.json of the earlier legs said (null where it said nothing).
   nlohmann::json earlier_warnings_, earlier_rate_;
   std::vector<long> samples_;  // field samples per block
