@@ -105,8 +105,8 @@ prebuilt_check() {
   local missing
   missing=$(ldd "$build"/apps/granshock/granshock "$build"/apps/bench/granshock_bench_gas \
     2>&1 | grep -E "not found" | sort -u)
-  [ -z "$missing" ] && { echo "prebuilt $build: every library found"; return 0; }
-  echo "prebuilt $build: missing: $missing" >&2
+  [ -z "$missing" ] && { echo "prebuilt ${build#"$repo"/}: every library found"; return 0; }
+  echo "prebuilt ${build#"$repo"/}: missing: $missing" >&2
   return 1
 }
 if [ "$prebuilt" = 1 ]; then
@@ -116,7 +116,7 @@ if [ "$prebuilt" = 1 ]; then
   fi
 fi
 export -f build_variant prebuilt_check
-export mode build jobs out here reference python GRANSHOCK_GPU_CHECK_CMAKE
+export mode repo build jobs out here reference python GRANSHOCK_GPU_CHECK_CMAKE
 if [ "$prebuilt" = 1 ]; then
   step build 10 prebuilt_check
   row "$(log_tail build)"
