@@ -70,11 +70,15 @@ StudyDirectoryState check_study_directory(const fs::path& out, const std::string
   if (!fs::is_directory(out, ec))
     throw UserError(
         fmt::format("study directory '{}' exists and is not a directory", out.string()));
+  // The listing first, the marker second: a task claiming the directory meanwhile
+  // (claim_study_directory) links its marker before it makes anything else, so whatever
+  // the listing saw beside temporaries, the marker is there by the second look.
+  const bool empty = is_empty_directory(out);
   if (fs::exists(fs::symlink_status(out / kStudyMarker, ec))) {
     check_marker(out, name);
     return StudyDirectoryState::this_study;
   }
-  if (is_empty_directory(out)) return StudyDirectoryState::empty;
+  if (empty) return StudyDirectoryState::empty;
   throw UserError(fmt::format(
       "study directory '{}' is not empty and holds no study (no {} marker); granshock never "
       "writes into a directory it did not create: choose a new or empty directory with --out",

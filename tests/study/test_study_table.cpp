@@ -3,8 +3,10 @@
 // summary.json is flattened, and that an unfinished case keeps its row.
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 #include "cases/study/case_directory.hpp"
 #include "cases/study/study_directory.hpp"
@@ -158,4 +160,35 @@ TEST(StudyDirectory, IsReusedOnlyByItsOwnStudy) {
   EXPECT_EQ(read(tmp.path() / "mine" / "notes.txt"), "a user's file");
   write(tmp.path() / "file", "x");
   EXPECT_THROW(check_study_directory(tmp.path() / "file", "a"), UserError);
+}
+
+// Slurm array tasks (or `--case` runs started together) look at the study directory while
+// another task claims it and makes its first case directory: a look must see an empty
+// directory or this study, never "not empty and holds no study". Once seen with two
+// `--case` runs started in the same second; the look listed the directory after the
+// other task's marker appeared but had checked for the marker before.
+TEST(StudyDirectory, ALookWhileAnotherTaskClaimsSeesEmptyOrThisStudy) {
+  TempDir tmp;
+  int refused = 0;
+  for (int trial = 0; trial < 400 && refused == 0; ++trial) {
+    const fs::path out = tmp.path() / ("study" + std::to_string(trial));
+    std::atomic<bool> go{false};
+    std::thread claimer([&] {
+      while (!go) {
+      }
+      claim_study_directory(out, "a");
+      fs::create_directory(out / "case-0");
+    });
+    go = true;
+    for (int look = 0; look < 200; ++look) {
+      try {
+        check_study_directory(out, "a");
+      } catch (const UserError&) {
+        ++refused;
+        break;
+      }
+    }
+    claimer.join();
+  }
+  EXPECT_EQ(refused, 0);
 }
