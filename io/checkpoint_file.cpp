@@ -230,15 +230,14 @@ void read_extras(const Reader& in, hid_t file, CheckpointExtras& e) {
   e.deleted_inlet = in.attribute<long>("/run", "deleted_inlet");
   e.insertion_carry = in.attribute<double>("/run", "insertion_carry");
   e.wall_seconds_so_far = in.attribute<double>("/run", "wall_seconds_so_far");
-  Handle run_group = h5::open_group(file, "/run");
-  e.cpu_seconds_so_far = h5::has_attribute(run_group.get(), "cpu_seconds_so_far")
+  Handle run = h5::open_group(file, "/run");
+  e.cpu_seconds_so_far = h5::has_attribute(run.get(), "cpu_seconds_so_far")
                              ? in.attribute<double>("/run", "cpu_seconds_so_far")
                              : -1.0;  // from before the record
   e.bin_sums = in.dataset<double>("/run", "bin_sums");
   e.bin_shape = in.dataset<long>("/run", "bin_shape");
   e.scene_resolved = h5::read_string_dataset(file, "/scene/resolved");
   // The record of run.h5; absent in checkpoints from before it.
-  Handle run = h5::open_group(file, "/run");
   if (h5::has_attribute(run.get(), "run_id")) {
     e.run_id = h5::read_string_attribute(run.get(), "run_id");
     e.run_frames = in.attribute<long>("/run", "run_file_frames");

@@ -165,7 +165,7 @@ def check_checkpoint(path):
         expect(list(state.attrs["removed_low"]) == [0, 2, 0], f"{path}: /state@removed_low")
         run = f["run"]
         for name in ("rng_counter", "inserted", "deleted_outlet", "deleted_inlet",
-                     "insertion_carry", "wall_seconds_so_far"):
+                     "insertion_carry", "wall_seconds_so_far", "cpu_seconds_so_far"):
             expect(name in run.attrs, f"{path}: /run@{name}")
         expect(run.attrs["rng_counter"].dtype == np.uint64, f"{path}: rng_counter dtype")
         expect(list(run["bin_shape"][()]) == [2, 3, 1], f"{path}: bin_shape")
