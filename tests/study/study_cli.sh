@@ -270,11 +270,14 @@ tradeoff_runs_and_tabulates)
       "$work/stderr" || fail "tradeoff --no-figures: the closing note: $(cat "$work/stderr")"
   fi
   /usr/bin/python3 -c '
-import json, sys
+import json, os, sys
 t = json.load(open(sys.argv[1]))
 ref = t["cases"][0]
 assert ref["case"] == "reference" and ref["speedup"] == 1.0, ref
 assert abs(ref["dt_over_tc"] - 0.01) < 1e-6, ref["dt_over_tc"]
+# The speed-ups are CPU times (summary.json cpu_seconds), not wall times (docs/accuracy.md).
+assert all(c["cost_from"] == "cpu_seconds" and c["cpu_seconds"] > 0 for c in t["cases"]), t["cases"]
+assert "| CPU (s) |" in open(os.path.join(os.path.dirname(sys.argv[1]), "trade.md")).read()
 soft = [c for c in t["cases"] if c["case"] == "soft-1000"][0]
 assert soft["speedup"] > 1, soft["speedup"]
 assert t["noise"]["L2.phi"] > 0, t["noise"]
