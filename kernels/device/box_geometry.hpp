@@ -4,6 +4,7 @@
 #pragma once
 
 #include <Kokkos_Core.hpp>
+#include <limits>
 
 #include "device/device_math.hpp"
 #include "device/vec.hpp"
@@ -19,6 +20,11 @@ struct BoxGeometry {
   Real length[Dim];
   Real inv_length[Dim];    // 1/length on periodic axes, 0 on open ones
   Real image_length[Dim];  // length on periodic axes, 0 on open ones
+  // Half the length on periodic axes; on open ones the largest Real, so that
+  // nearby_image's comparisons there are never true: with 0 they were true for every
+  // other pair, a branch the CPU mispredicted at half the pairs of an open axis
+  // (docs/benchmarks.md, "The paper case against the gas at the same N").
+  Real half_image[Dim];
 
   static BoxGeometry from(const Box& box) {
     BoxGeometry g;
@@ -27,6 +33,8 @@ struct BoxGeometry {
       g.length[d] = Real(box.length(d));
       g.inv_length[d] = box.periodic[d] ? Real(1.0 / box.length(d)) : Real(0);
       g.image_length[d] = box.periodic[d] ? g.length[d] : Real(0);
+      g.half_image[d] =
+          box.periodic[d] ? Real(0.5) * g.image_length[d] : std::numeric_limits<Real>::max();
     }
     return g;
   }
@@ -40,12 +48,12 @@ struct BoxGeometry {
   // as between list partners: positions are wrapped at every list build and drift less
   // than the skin until the next). Two selects per axis instead of a rounding, which
   // without SSE4.1 is a library call; where the nearest image is unambiguous (every pair
-  // closer than half the box) the result is bitwise that of minimum_image.
+  // closer than half the box) the result is bitwise that of minimum_image. On an open axis
+  // nothing is done (adding 0 changed nothing either).
   KOKKOS_FORCEINLINE_FUNCTION Vec<Dim, Real> nearby_image(Vec<Dim, Real> dx) const {
     for (int d = 0; d < Dim; ++d) {
-      const Real half = Real(0.5) * image_length[d];
-      if (dx[d] > half) dx[d] -= image_length[d];
-      if (dx[d] < -half) dx[d] += image_length[d];
+      if (dx[d] > half_image[d]) dx[d] -= image_length[d];
+      if (dx[d] < -half_image[d]) dx[d] += image_length[d];
     }
     return dx;
   }
