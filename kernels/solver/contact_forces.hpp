@@ -75,7 +75,9 @@ struct ContactForceKernel {
   // The force and torque on particle i at xi with velocity vi (not ForceMode::virial): its
   // contacts, their springs (updated) and the obstacle; w, when given, gets the contacts'
   // virial (ForceMode::forces_and_virial). The fused step (fused_step.hpp) calls it
-  // directly and keeps the result in registers.
+  // directly and keeps the result in registers, with WithObstacle false for a particle
+  // known not to touch the obstacle (obstacle_runs.hpp).
+  template <bool WithObstacle = V::obstacle::present>
   KOKKOS_FORCEINLINE_FUNCTION void total(int i, const Vec<Dim, Position>& xi,
                                          const Vec<Dim, Real>& vi, Vec<Dim, Real>& force,
                                          Real& torque, Real* w = nullptr) const {
@@ -84,7 +86,7 @@ struct ContactForceKernel {
     int used_slots = 0;  // bit s set when slot s carried a contact this step
     sum_contacts(i, xi, vi, force, torque, used_slots, w);
     if constexpr (V::friction) release_unused_slots(i, used_slots);
-    if constexpr (V::obstacle::present) {
+    if constexpr (WithObstacle) {
       const int si = p.species(i);
       obstacle_contact(i, xi, vi, si, table.radius(si), force, torque);
     }

@@ -39,6 +39,7 @@
 #include "solver/diagnostics.hpp"
 #include "solver/fused_step.hpp"
 #include "solver/fused_steps.hpp"
+#include "solver/obstacle_runs.hpp"
 #include "solver/pair_table.hpp"
 #include "solver/state_io.hpp"
 #include "solver/velocity_verlet.hpp"
@@ -204,9 +205,27 @@ class DemSolver final : public Solver {
       list_.build(grid_, box_, sort_.cell_start, p_.x, p_.species, table_.radius, skin_, p_.n);
     }
     copy_prefix<ExecSpace>(p_.x_ref, p_.x, int(p_.x.extent(0)));  // space_alloc.hpp: not on OpenMP
+    mark_runs_near_obstacle();
     watch_.rebuilt();
     ++builds_;
     last_build_step_ = steps_;
+  }
+
+  // Which of the fused step's work items may touch the obstacle before the next build
+  // (obstacle_runs.hpp); the fused step tests only their particles.
+  void mark_runs_near_obstacle() {
+    if constexpr (V::obstacle::present) {
+      using Kernel = FusedStepKernel<V, ExecSpace, Paths>;
+      const int runs = Kernel::work_items(p_.n);
+      if (int(near_obstacle_runs_.extent(0)) < runs)
+        near_obstacle_runs_ = decltype(near_obstacle_runs_)(
+            alloc_on<ExecSpace>("near_obstacle_runs"), Kernel::work_items(p_.capacity()));
+      const NearObstacleRuns<Dim, Real, Obstacle, Mem> mark{
+          near_obstacle_runs_, p_.x,          p_.species, table_.radius,
+          obstacle_,           double(skin_), p_.n,       Kernel::run_length};
+      Kokkos::parallel_for("near_obstacle_runs", Policy(0, runs), mark);
+      near_obstacle_runs_known_ = runs;
+    }
   }
 
   // The forces at the current state, and each particle's contact virial of these very
@@ -284,7 +303,9 @@ class DemSolver final : public Solver {
             back ? p_.omega : omega_next_,
             integrator_.gravity,
             by_speed,
-            p_.n};
+            p_.n,
+            near_obstacle_runs_,
+            near_obstacle_runs_known_};
   }
   void swap_step_buffers() {
     std::swap(p_.x, x_next_);
@@ -601,6 +622,8 @@ class DemSolver final : public Solver {
   typename Store::PositionView x_next_;  // the fused step's second buffers
   typename Store::VectorView v_next_;
   typename Store::ScalarView omega_next_;
+  Kokkos::View<std::uint8_t*, Mem> near_obstacle_runs_;  // obstacle scenes only
+  int near_obstacle_runs_known_ = 0;                     // work items marked at the build
   long steps_ = 0;
   long builds_ = 0;
   RebuildWatch watch_;

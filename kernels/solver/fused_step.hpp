@@ -17,6 +17,7 @@
 #pragma once
 
 #include <Kokkos_Core.hpp>
+#include <cstdint>
 
 #include "device/backends.hpp"
 #include "solver/contact_forces.hpp"
@@ -42,6 +43,10 @@ struct FusedStepKernel {
   bool report_speed;  // reduce max |v|^2 instead of the displacement since the last build
 
   int n;  // particles
+  // With an obstacle: which work items may touch it (obstacle_runs.hpp), known for the
+  // first `runs_known`; the others' particles are tested as before.
+  Kokkos::View<const std::uint8_t*, Mem> near_obstacle;
+  int runs_known = 0;
 
   // Host paths give each work item a run of particles, so that the running maximum and
   // the step's constants stay in registers: through the reference `worst` and the
@@ -60,10 +65,16 @@ struct FusedStepKernel {
     const Vec<Dim, Real> g = gravity;
     const bool by_speed = report_speed;
     Real largest = worst;
-    for (int i = first; i < last; ++i) advance(i, half, step, g, by_speed, largest);
+    if (!V::obstacle::present || run >= runs_known || near_obstacle(run)) {
+      for (int i = first; i < last; ++i) advance(i, half, step, g, by_speed, largest);
+    } else {
+      for (int i = first; i < last; ++i) advance<false>(i, half, step, g, by_speed, largest);
+    }
     if (largest > worst) worst = largest;
   }
 
+  // WithObstacle false: particle i is known not to touch the obstacle (obstacle_runs.hpp).
+  template <bool WithObstacle = V::obstacle::present>
   KOKKOS_FORCEINLINE_FUNCTION void advance(const int i, const Real half, const Real step,
                                            const Vec<Dim, Real>& g, const bool by_speed,
                                            Real& worst) const {
@@ -72,7 +83,7 @@ struct FusedStepKernel {
     const Vec<Dim, Real> vi = forces.velocity(i);
     Vec<Dim, Real> f;
     Real torque;
-    forces.total(i, xi, vi, f, torque);
+    forces.template total<WithObstacle>(i, xi, vi, f, torque);
     const int s = p.species(i);
     const Real im = forces.table.inv_mass(s);
     Real d2 = 0;
