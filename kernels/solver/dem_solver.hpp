@@ -212,7 +212,10 @@ class DemSolver final : public Solver {
   }
 
   // Which of the fused step's work items may touch the obstacle before the next build
-  // (obstacle_runs.hpp); the fused step tests only their particles.
+  // (obstacle_runs.hpp), from where the particles were at the last build (x_ref): at a
+  // rebuild and when a state is imported with its list. The fused step tests only their
+  // particles, and every particle of a run it does not know: the last run when it is not
+  // full (particles inserted since fill it), or all of them before any marking.
   void mark_runs_near_obstacle() {
     if constexpr (V::obstacle::present) {
       using Kernel = FusedStepKernel<V, ExecSpace, Paths>;
@@ -221,10 +224,10 @@ class DemSolver final : public Solver {
         near_obstacle_runs_ = decltype(near_obstacle_runs_)(
             alloc_on<ExecSpace>("near_obstacle_runs"), Kernel::work_items(p_.capacity()));
       const NearObstacleRuns<Dim, Real, Obstacle, Mem> mark{
-          near_obstacle_runs_, p_.x,          p_.species, table_.radius,
+          near_obstacle_runs_, p_.x_ref,      p_.species, table_.radius,
           obstacle_,           double(skin_), p_.n,       Kernel::run_length};
       Kokkos::parallel_for("near_obstacle_runs", Policy(0, runs), mark);
-      near_obstacle_runs_known_ = runs;
+      near_obstacle_runs_known_ = p_.n / Kernel::run_length;  // the full runs
     }
   }
 
@@ -481,12 +484,13 @@ class DemSolver final : public Solver {
     if (slabs_) {
       import_own_part(s);
       population_.restore(s.next_id, comm_.is_root() ? gone : RemovalCounts{});
-      return;
+    } else {
+      if (int(s.size()) > p_.capacity()) p_.allocate(int(s.size()) + int(s.size()) / 4);
+      state_io::import_particles<Paths>(p_, s);
+      list_.assign(s.neighbour_offsets, s.neighbours);
+      population_.restore(s.next_id, gone);
     }
-    if (int(s.size()) > p_.capacity()) p_.allocate(int(s.size()) + int(s.size()) / 4);
-    state_io::import_particles<Paths>(p_, s);
-    list_.assign(s.neighbour_offsets, s.neighbours);
-    population_.restore(s.next_id, gone);
+    mark_runs_near_obstacle();  // not the marks of the particles this solver held before
   }
 
   // Several processes, from the whole state: the particles whose reference position is in

@@ -5,13 +5,14 @@
 // Between two list builds no particle moves more than skin/2 from where it was at the
 // build (neighbours/rebuild_watch.hpp), so one that touches the obstacle at some step was,
 // at the build, closer to its centre than r_i + R + skin/2 (R: the disk's radius, or the
-// radius of a circle about the centre that holds the polygon). At each build the work
-// items (runs of particles on host paths, one particle on device paths) with such a
-// particle are marked, with a margin of a whole skin; the fused step tests the others'
-// particles against nothing. The skipped test would have found no contact, and a particle
-// whose spring with the obstacle is not zero is in a marked item (it touched it within the
-// list's period, or at the step before this build), so the forces, springs and
-// trajectories are bitwise those of the test at every particle (tests/unit/
+// radius of a circle about the centre that holds the polygon). At each build, and when a
+// state is imported with its list, the work items (runs of particles on host paths, one
+// particle on device paths) with such a particle at its reference position are marked,
+// with a margin of a whole skin; the fused step tests the others' particles against
+// nothing, except in a run it does not know (the last one when not full). The skipped test would
+// have found no contact, and a particle whose spring with the obstacle is not zero is in a marked
+// item (it touched it within the list's period, or at the step before this build), so the forces,
+// springs and trajectories are bitwise those of the test at every particle (tests/unit/
 // test_obstacle_runs.cpp).
 #pragma once
 
