@@ -1,7 +1,8 @@
 // Which work items of the fused step can reach the obstacle before the next list build
 // (docs/design.md, "The solver"). Testing every particle against the obstacle at every step
-// is about a tenth of the paper case's fused step (docs/benchmarks.md, "The paper case
-// against the gas at the same N"), though only the few particles around it can touch it.
+// cost the paper case about 10 instructions per particle-step and 5.5 % of its cycles
+// (docs/benchmarks.md, "The paper case against the gas at the same N"), though only the few
+// particles around it can touch it.
 // Between two list builds no particle moves more than skin/2 from where it was at the
 // build (neighbours/rebuild_watch.hpp), so one that touches the obstacle at some step was,
 // at the build, closer to its centre than r_i + R + skin/2 (R: the disk's radius, or the
