@@ -61,6 +61,11 @@ function(granshock_host_only_toml_sources target)
     if(NOT IS_ABSOLUTE "${source}")
       set(source "${source_dir}/${source}")
     endif()
+    # A source generated at build time (generated/build_stamp.cpp) does not exist yet
+    # when a fresh build is configured; the generators write no TOML reader.
+    if(NOT EXISTS "${source}")
+      continue()
+    endif()
     _granshock_includes_toml("${source}" toml)
     if(toml)
       list(APPEND host_only "${source}")
