@@ -25,6 +25,7 @@
 #include "core/allocation_failure.hpp"
 #include "core/choice_names.hpp"
 #include "core/failure_agreement.hpp"
+#include "core/large_blocks.hpp"
 #include "core/user_error.hpp"
 #include "device/kokkos_runtime.hpp"
 #include "io/hdf5_runtime.hpp"
@@ -288,6 +289,7 @@ int main(int argc, char** argv) {
   // Before any of the solver's code, which may use instructions this CPU lacks (again,
   // where .preinit_array is not).
   granshock::exit_unless_this_cpu_runs_the_build();
+  granshock::keep_large_blocks();  // before the first large allocation (core/large_blocks.hpp)
   CLI::App app{"granshock: GPU-portable DEM for granular gas dynamics"};
   app.set_version_flag("--version", granshock::version_line(),
                        "print the version, commit and build, and exit");
