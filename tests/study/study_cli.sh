@@ -107,7 +107,7 @@ interrupts_and_resumes)
   "$granshock" study "$study" --out "$out" --quiet --stop-after-steps 5000 2>"$work/stderr"
   code=$?
   [ $code -eq 0 ] || fail "--stop-after-steps: exit code $code"
-  grep -q "stopped in case 1/2 e-0.5 at step 5000 of 250000" "$work/stderr" ||
+  grep -q "stopped in case 1/2 e-0.5 at step 5000 of 1000000" "$work/stderr" ||
     fail "no stop message: $(cat "$work/stderr")"
   grep -q '"completed": false' "$case0/summary.json" || fail "case 0 should be unfinished"
   [ ! -e "$out/e-0.8" ] || fail "the study went on after a stopped case"
@@ -121,7 +121,7 @@ interrupts_and_resumes)
   wait $pid
   code=$?
   [ $code -eq 130 ] || fail "SIGINT: exit code $code, expected 130: $(cat "$work/stderr")"
-  grep -q "resuming at step 5000 of 250000" "$work/stderr" || fail "case 0 was not resumed"
+  grep -q "resuming at step 5000 of 1000000" "$work/stderr" || fail "case 0 was not resumed"
   grep -Eq "interrupted (in|before) case" "$work/stderr" || fail "no interruption message"
 
   "$granshock" study "$study" --out "$out" --quiet 2>"$work/stderr"
@@ -129,7 +129,7 @@ interrupts_and_resumes)
   [ $code -eq 0 ] || fail "the third call: exit code $code: $(cat "$work/stderr")"
   for dir in "$out/e-0.5" "$out/e-0.8"; do
     grep -q '"completed": true' "$dir/summary.json" || fail "$dir did not complete"
-    grep -q '"steps": 250000' "$dir/summary.json" || fail "$dir did not run all 250000 steps"
+    grep -q '"steps": 1000000' "$dir/summary.json" || fail "$dir did not run all 1000000 steps"
   done
   [ "$(rows_with_status finished)" -eq 2 ] || fail "expected 2 finished rows"
   ;;
