@@ -2,7 +2,7 @@
 # The cross-check of README.md here, from the repository root with granshock built in
 # build/ and Debian's lammps installed (apps/bench/lammps/install_lammps.sh):
 #
-#   docs/results/cross_check/run_all.sh RUNS_DIR [small|d10|d10_seed2 ...]
+#   docs/results/cross_check/run_all.sh RUNS_DIR [small|d10|d10_seed2|d50 ...]
 #   (default: small d10 d10_seed2)
 #
 # For each case: granshock's run (1 thread), LAMMPS on the same scene with granshock's
@@ -71,6 +71,11 @@ for c in "${cases[@]}"; do
       "$root/scenes/paper/d10_u1000.toml" --set scene.seed=2 --set domain.width=0.1 \
       --set time.duration=0.65 --set time.production_start=0.35 \
       --set output.snapshot_interval=0.00025 --set output.checkpoint_interval=0.65 ;;
-    *) echo "unknown case $c (small, d10, d10_seed2)" >&2; exit 2 ;;
+    # The paper's D = 50 d, U = 1 m/s case narrowed to 200 d (the cylinder a quarter of
+    # the width) and shortened like d10.
+    d50) run_case d50 "$root/scenes/paper/d50_u1000.toml" --set domain.width=0.2 \
+      --set time.duration=0.65 --set time.production_start=0.35 \
+      --set output.snapshot_interval=0.00025 --set output.checkpoint_interval=0.65 ;;
+    *) echo "unknown case $c (small, d10, d10_seed2, d50)" >&2; exit 2 ;;
   esac
 done
