@@ -37,8 +37,8 @@ class CellSort {
     auto fill = fill_;
     auto cell_of = cell_of_;
     auto ord = order;
-    Kokkos::deep_copy(ExecSpace(), fill, 0);
-
+    // fill(c) is zero here without a clearing pass: zero when allocated, and `place` counts
+    // every cell back down to zero.
     Kokkos::parallel_for(
         "cell_sort::count", Policy(0, n), KOKKOS_LAMBDA(const int i) {
           const int c = grid.cell_of(x, i);
@@ -53,15 +53,22 @@ class CellSort {
           running += count;
           if (final && c == ncell - 1) start(ncell) = running;
         });
-    Kokkos::deep_copy(ExecSpace(), fill, 0);
+    // The particle that takes a cell's slot 0 marks itself (cell_of = ~c, negative) as the
+    // one that sorts that cell next, so the sort by id visits particles, not the cells:
+    // in a dilute gas the cells outnumber the particles several times.
     Kokkos::parallel_for(
         "cell_sort::place", Policy(0, n), KOKKOS_LAMBDA(const int i) {
           const int c = cell_of(i);
-          ord(start(c) + Kokkos::atomic_fetch_add(&fill(c), 1)) = i;
+          const int slot = Kokkos::atomic_fetch_add(&fill(c), -1) - 1;
+          ord(start(c) + slot) = i;
+          if (slot == 0) cell_of(i) = ~c;
         });
-    // Cells hold a handful of particles: insertion sort by global id is cheap.
+    // Cells hold a handful of particles: insertion sort by global id is cheap. The order
+    // does not depend on the order of `place`'s atomics.
     Kokkos::parallel_for(
-        "cell_sort::by_id", Policy(0, ncell), KOKKOS_LAMBDA(const int c) {
+        "cell_sort::by_id", Policy(0, n), KOKKOS_LAMBDA(const int i) {
+          if (cell_of(i) >= 0) return;
+          const int c = ~cell_of(i);
           for (int a = start(c) + 1; a < start(c + 1); ++a) {
             const int p = ord(a);
             const int key = id(p);
