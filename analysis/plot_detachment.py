@@ -2,7 +2,8 @@
 """The detachment length of several runs, like the paper's Fig. 6: delta/D against D/d,
 one series per upstream Mach number, with the block-average errors as error bars (a point
 whose error is undeterminable is drawn open, without a bar); one panel
-per definition of the shock front (docs/fields.md, section 6), and in each Billig's
+per definition of the shock front (docs/fields.md, section 6; the fitted fronts with their
+thickness as a band, 10-90 % of the rise = 2.2 w about delta/D), and in each Billig's
 correlation for the bow-shock stand-off of a cylinder in a perfect gas (gamma = 1.4),
 delta/R = 0.386 exp(4.67 / Ma^2) (F. S. Billig, "Shock-wave shapes around spherical- and
 cylindrical-nosed bodies", J. Spacecraft Rockets 4 (1967) 822-823), at each Ma_inf.
@@ -49,6 +50,25 @@ def draw_points(ax, x, y, err, marker, color, label):
     return len(without)
 
 
+# The fitted fronts (docs/fields.md, "The fitted front"): a tanh step of thickness w,
+# whose rise from 10 % to 90 % spans 2.2 w. Fig. 6 shows that span about delta/D as a band.
+FITS = ("temperature_fit", "density_fit")
+RISE_10_90_OVER_W = 2.0 * math.atanh(0.8)  # 2.197
+
+
+def draw_thickness(ax, series, x, y, definition, color, label):
+    """The band delta/D +- (1.1 w) / D over the points whose w is known; True if drawn."""
+    half = [number(r.get(f"w_over_d_{definition}")) * RISE_10_90_OVER_W / 2 / number(r["D_over_d"])
+            for r in series]
+    keep = [i for i, h in enumerate(half) if math.isfinite(h)]
+    if not keep:
+        return False
+    ax.fill_between([x[i] for i in keep], [y[i] - half[i] for i in keep],
+                    [y[i] + half[i] for i in keep], color=color, alpha=0.2, linewidth=0,
+                    label=label)
+    return True
+
+
 def main():
     if len(sys.argv) != 3:
         print(__doc__, file=sys.stderr)
@@ -61,11 +81,15 @@ def main():
         key = float(f"{ma:.3g}") if math.isfinite(ma) else float("nan")
         groups.setdefault(key, []).append(row)
 
+    # Rows of panels: temperature, then density; the fitted fronts in the middle column,
+    # each with its thickness as a band.
     definitions = [("temperature_jump", "T half-rise (primary)"),
+                   ("temperature_fit", "fitted T front"),
+                   ("sonic_line", "sonic point"),
                    ("density_threshold", "$\\phi$ half-way"),
-                   ("density_max_gradient", "steepest $\\phi$ rise"),
-                   ("sonic_line", "sonic point")]
-    fig, axes = plt.subplots(2, 2, figsize=(9.0, 7.0), sharex=True, sharey=True,
+                   ("density_fit", "fitted $\\phi$ front"),
+                   ("density_max_gradient", "steepest $\\phi$ rise")]
+    fig, axes = plt.subplots(2, 3, figsize=(12.5, 7.0), sharex=True, sharey=True,
                              constrained_layout=True)
     markers = "osD^v<>"
     order = sorted(groups, key=lambda k: (math.isnan(k), k))
@@ -78,6 +102,7 @@ def main():
     def x_of(row):
         return float(rows.index(row)) if one_size else number(row["D_over_d"])
     no_error_bar = 0
+    banded = {}  # the panels with a thickness band, which get a legend of their own
     for ax, (definition, title) in zip(axes.flat, definitions):
         key_y = f"delta_over_D_{definition}"
         # Tables before granshock 0.9 have the density threshold only, as delta_over_D.
@@ -107,6 +132,10 @@ def main():
                    for r in series]
             label = f"Ma$_\\infty$ = {key:g}" if math.isfinite(key) else "Ma$_\\infty$ unknown"
             no_error_bar += draw_points(ax, x, y, err, markers[i % len(markers)], color, label)
+            if definition in FITS and draw_thickness(
+                    ax, series, x, y, definition, color,
+                    None if banded.get(ax) else "band: 10-90 % of the rise (2.2 w)"):
+                banded[ax] = True
         if left_out:
             ax.text(0.98, 0.02, f"{left_out} of {len(rows)} runs without a determinable $\\delta$/D",
                     transform=ax.transAxes, ha="right", va="bottom", fontsize=7, color="0.3")
@@ -129,6 +158,10 @@ def main():
         ax.set_ylabel("$\\delta$ / D")
     if axes[0, 0].get_legend_handles_labels()[0]:
         axes[0, 0].legend(fontsize=7)
+    for ax in banded:  # the band only: the series are named in the first panel
+        handles, labels = ax.get_legend_handles_labels()
+        ax.legend([h for h, t in zip(handles, labels) if t.startswith("band:")],
+                  [t for t in labels if t.startswith("band:")], fontsize=7)
     directory, name = os.path.split(os.path.abspath(sys.argv[2]))
     with FigureDirectory(directory) as figures:
         figures.save(fig, name, dpi=150)

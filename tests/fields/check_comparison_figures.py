@@ -5,6 +5,8 @@ an error bar and one not yet steady:
 
 - Fig. 6 (plot_detachment.py) places runs that share one D/d one per run along x, not on
   one vertical line;
+- Fig. 6 draws each fitted front's thickness as a band of 10-90 % of its rise (2.2 w)
+  about delta/D, over the runs whose w is known (a second made-up table: D/d = 10, 50, 100);
 - both it and a study's axis figure (plot_study.py) draw the point without an error bar
   open, and name that in the legend; the study figure crosses the unsteady case.
 
@@ -44,6 +46,33 @@ def legend_texts(fig):
     return [t.get_text() for ax in fig.axes if ax.get_legend() for t in ax.get_legend().get_texts()]
 
 
+def thickness_band(plot_detachment, tmp):
+    """Draws Fig. 6 from three runs at D/d = 10, 50, 100 with fitted T fronts of w = 1, 2 d
+    and unknown; returns {x: half-width of the band} of the fitted T panel, or None."""
+    rows = []
+    for d_over_d, delta, w in [(10.0, 0.40, 1.0), (50.0, 0.17, 2.0), (100.0, 0.14, None)]:
+        row = {"run": f"runs/d{d_over_d:g}", "D_over_d": d_over_d, "ma_inf_target": 5.9,
+               "delta_over_D": delta, "delta_over_D_err": 0.01,
+               "w_over_d_temperature_fit": w, "w_over_d_temperature_fit_err": 0.1}
+        for d in ("temperature_jump", "temperature_fit", "density_threshold", "density_fit",
+                  "density_max_gradient", "sonic_line"):
+            row[f"delta_over_D_{d}"], row[f"delta_over_D_{d}_err"] = delta, 0.01
+        rows.append(row)
+    with open(os.path.join(tmp, "fits.json"), "w") as f:
+        json.dump(rows, f)
+    sys.argv = ["plot_detachment.py", os.path.join(tmp, "fits.json"),
+                os.path.join(tmp, "fits.png")]
+    plot_detachment.main()
+    panel = [ax for ax in DRAWN[-1].axes if "fitted T" in ax.get_title()]
+    polygons = [c for ax in panel for c in ax.collections if type(c).__name__ == "PolyCollection"]
+    if not polygons:
+        return None
+    halves = {}
+    for x, y in polygons[0].get_paths()[0].vertices:
+        halves.setdefault(round(float(x), 9), []).append(float(y))
+    return {x: (max(ys) - min(ys)) / 2 for x, ys in halves.items()}
+
+
 def main():
     source = sys.argv[1]
     sys.path[:0] = [os.path.join(source, "analysis"), os.path.join(source, "cases", "study")]
@@ -76,6 +105,19 @@ def main():
             failures.append(f"Fig. 6: the run without an error bar is not drawn open: {open_points(fig6)}")
         if "open: no error bar (n/a)" not in legend_texts(fig6):
             failures.append(f"Fig. 6: legend {legend_texts(fig6)}")
+
+        bands = thickness_band(plot_detachment, tmp)
+        if bands is None:
+            failures.append("Fig. 6: no thickness band in the fitted T panel")
+        else:
+            for x, half in [(10.0, 1.0 * 2.1972 / 2 / 10), (50.0, 2.0 * 2.1972 / 2 / 50)]:
+                got = bands.get(x)
+                if got is None or abs(got - half) > 1e-4:
+                    failures.append(f"Fig. 6: band half-width at D/d = {x:g} is {got}, not {half:.5f}")
+            if 100.0 in bands:
+                failures.append("Fig. 6: a band drawn at D/d = 100, whose w is unknown")
+            if "band: 10-90 % of the rise (2.2 w)" not in legend_texts(DRAWN[-1]):
+                failures.append(f"Fig. 6: band not in a legend {legend_texts(DRAWN[-1])}")
 
         study = [{"status": "finished", "axis.e": e, "delta_over_D": 0.2 + 0.02 * i,
                   "delta_over_D_err": err, "phi_peak": 0.5, "ma_inf_measured": 6.0,
