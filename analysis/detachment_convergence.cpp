@@ -91,7 +91,10 @@ DetachmentConvergence detachment_convergence(const ConvergenceInput& in, const F
       if (c.label == "first half of the window") first_half = &r;
       if (!r.found) {
         v.consistent = false;
-        failures += (failures.empty() ? "" : "; ") + c.label + ": no front";
+        // Why, in the definition's own words: a verdict that names a cut without a front
+        // should say what that cut lacked (too few bins, a fit that did not converge, ...).
+        failures += (failures.empty() ? "" : "; ") + c.label + ": no front" +
+                    (r.reason.empty() ? "" : " (" + r.reason + ")");
         continue;
       }
       // The halves are compared with each other, every other cut with the reference.

@@ -301,6 +301,21 @@ TEST(FrontDefinitions, ConvergenceTableCoversEveryChoice) {
   }
   EXPECT_EQ(a.convergence.verdicts.size(), kFrontDefinitions.size());
   EXPECT_FALSE(a.convergence.of(kPrimaryFront).text.empty());
+  // A cut without a front is named in the verdict with the reason its definition gave.
+  int without_front = 0;
+  for (std::size_t k = 0; k < kFrontDefinitions.size(); ++k) {
+    const ConvergenceVerdict& v = a.convergence.of(kFrontDefinitions[k]);
+    if (!v.applicable) continue;
+    for (const ConvergenceChoice& c : a.convergence.choices) {
+      const Detachment& r = c.result[k];
+      if (r.found) continue;
+      ++without_front;
+      ASSERT_FALSE(r.reason.empty()) << c.label;
+      EXPECT_NE(v.text.find(c.label + ": no front (" + r.reason + ")"), std::string::npos)
+          << v.text;
+    }
+  }
+  EXPECT_GT(without_front, 0);  // the fits find none on the coarsest rows of this profile
   const std::string csv = convergence_csv(a);
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 13);
   EXPECT_EQ(csv.rfind("choice,kind,size_d,temperature_jump,temperature_jump_err,", 0), 0u);
