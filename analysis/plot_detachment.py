@@ -63,6 +63,11 @@ def draw_thickness(ax, series, x, y, definition, color, label):
     keep = [i for i, h in enumerate(half) if math.isfinite(h)]
     if not keep:
         return False
+    if len(keep) == 1:  # one run in the series: a bar of the band's height, not a zero-width band
+        i = keep[0]
+        ax.vlines([x[i]], [y[i] - half[i]], [y[i] + half[i]], color=color, alpha=0.25, linewidth=9,
+                  label=label)
+        return True
     ax.fill_between([x[i] for i in keep], [y[i] - half[i] for i in keep],
                     [y[i] + half[i] for i in keep], color=color, alpha=0.2, linewidth=0,
                     label=label)
@@ -141,9 +146,12 @@ def main():
                     transform=ax.transAxes, ha="right", va="bottom", fontsize=7, color="0.3")
         if key_y is None:
             ax.text(0.5, 0.5, "not in this table", transform=ax.transAxes, ha="center", color="0.4")
-        ax.set_ylim(bottom=0)
         ax.set_title(f"Detachment length: {title}", fontsize=9)
         ax.grid(alpha=0.3)
+    # The panels share their y axis: its range is set once, from every panel's points and
+    # bands (set in the loop, it would freeze at the first panel's).
+    axes[0, 0].autoscale_view()
+    axes[0, 0].set_ylim(0, axes[0, 0].get_ylim()[1])
     for ax in axes[-1]:
         if one_size:
             ax.set_xticks(range(len(rows)))

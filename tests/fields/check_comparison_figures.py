@@ -6,7 +6,8 @@ an error bar and one not yet steady:
 - Fig. 6 (plot_detachment.py) places runs that share one D/d one per run along x, not on
   one vertical line;
 - Fig. 6 draws each fitted front's thickness as a band of 10-90 % of its rise (2.2 w)
-  about delta/D, over the runs whose w is known (a second made-up table: D/d = 10, 50, 100);
+  about delta/D, over the runs whose w is known, a bar for a series of one run, and its
+  shared y axis holds the highest band (a second made-up table: D/d = 10, 50, 100);
 - both it and a study's axis figure (plot_study.py) draw the point without an error bar
   open, and name that in the legend; the study figure crosses the unsteady case.
 
@@ -50,8 +51,9 @@ def thickness_band(plot_detachment, tmp):
     """Draws Fig. 6 from three runs at D/d = 10, 50, 100 with fitted T fronts of w = 1, 2 d
     and unknown; returns {x: half-width of the band} of the fitted T panel, or None."""
     rows = []
-    for d_over_d, delta, w in [(10.0, 0.40, 1.0), (50.0, 0.17, 2.0), (100.0, 0.14, None)]:
-        row = {"run": f"runs/d{d_over_d:g}", "D_over_d": d_over_d, "ma_inf_target": 5.9,
+    for d_over_d, delta, w, ma in [(10.0, 0.40, 1.0, 5.9), (50.0, 0.17, 2.0, 5.9),
+                                   (100.0, 0.14, None, 5.9), (10.0, 0.45, 1.5, 2.64)]:
+        row = {"run": f"runs/d{d_over_d:g}", "D_over_d": d_over_d, "ma_inf_target": ma,
                "delta_over_D": delta, "delta_over_D_err": 0.01,
                "w_over_d_temperature_fit": w, "w_over_d_temperature_fit_err": 0.1}
         for d in ("temperature_jump", "temperature_fit", "density_threshold", "density_fit",
@@ -70,7 +72,13 @@ def thickness_band(plot_detachment, tmp):
     halves = {}
     for x, y in polygons[0].get_paths()[0].vertices:
         halves.setdefault(round(float(x), 9), []).append(float(y))
-    return {x: (max(ys) - min(ys)) / 2 for x, ys in halves.items()}
+    bands = {x: (max(ys) - min(ys)) / 2 for x, ys in halves.items()}
+    # The Ma 2.64 series has one run: its band is a bar (a LineCollection of one segment).
+    bars = [seg for ax in panel for c in ax.collections if type(c).__name__ == "LineCollection"
+            and c.get_alpha() == 0.25 for seg in c.get_segments()]
+    bands["bar"] = [abs(seg[1][1] - seg[0][1]) / 2 for seg in bars]
+    bands["top"] = panel[0].get_ylim()[1]  # the shared y axis must hold the highest band
+    return bands
 
 
 def main():
@@ -114,6 +122,10 @@ def main():
                 got = bands.get(x)
                 if got is None or abs(got - half) > 1e-4:
                     failures.append(f"Fig. 6: band half-width at D/d = {x:g} is {got}, not {half:.5f}")
+            if [round(h, 5) for h in bands["bar"]] != [round(1.5 * 2.1972 / 2 / 10, 5)]:
+                failures.append(f"Fig. 6: the one-run series' bar half-heights {bands['bar']}")
+            if bands["top"] < 0.45 + 1.5 * 2.1972 / 2 / 10:
+                failures.append(f"Fig. 6: the y axis ends at {bands['top']:.3f}, below the bands")
             if 100.0 in bands:
                 failures.append("Fig. 6: a band drawn at D/d = 100, whose w is unknown")
             if "band: 10-90 % of the rise (2.2 w)" not in legend_texts(DRAWN[-1]):
