@@ -47,6 +47,16 @@ def legend_texts(fig):
     return [t.get_text() for ax in fig.axes if ax.get_legend() for t in ax.get_legend().get_texts()]
 
 
+def draw_fig6(plot_detachment, tmp, name, rows):
+    """Fig. 6 of `rows` (detachment.json's rows) through plot_detachment.py; the figure."""
+    with open(os.path.join(tmp, name + ".json"), "w") as f:
+        json.dump(rows, f)
+    sys.argv = ["plot_detachment.py", os.path.join(tmp, name + ".json"),
+                os.path.join(tmp, name + ".png")]
+    plot_detachment.main()
+    return DRAWN[-1]
+
+
 def thickness_band(plot_detachment, tmp):
     """Draws Fig. 6 from three runs at D/d = 10, 50, 100 with fitted T fronts of w = 1, 2 d
     and unknown; returns {x: half-width of the band} of the fitted T panel, or None."""
@@ -60,12 +70,8 @@ def thickness_band(plot_detachment, tmp):
                   "density_max_gradient", "sonic_line"):
             row[f"delta_over_D_{d}"], row[f"delta_over_D_{d}_err"] = delta, 0.01
         rows.append(row)
-    with open(os.path.join(tmp, "fits.json"), "w") as f:
-        json.dump(rows, f)
-    sys.argv = ["plot_detachment.py", os.path.join(tmp, "fits.json"),
-                os.path.join(tmp, "fits.png")]
-    plot_detachment.main()
-    panel = [ax for ax in DRAWN[-1].axes if "fitted T" in ax.get_title()]
+    fig = draw_fig6(plot_detachment, tmp, "fits", rows)
+    panel = [ax for ax in fig.axes if "fitted T" in ax.get_title()]
     polygons = [c for ax in panel for c in ax.collections if type(c).__name__ == "PolyCollection"]
     if not polygons:
         return None
@@ -99,12 +105,7 @@ def main():
                       "sonic_line"):
                 row[f"delta_over_D_{d}"], row[f"delta_over_D_{d}_err"] = 0.2 + 0.02 * i, err
             rows.append(row)
-        with open(os.path.join(tmp, "detachment.json"), "w") as f:
-            json.dump(rows, f)
-        sys.argv = ["plot_detachment.py", os.path.join(tmp, "detachment.json"),
-                    os.path.join(tmp, "detachment_length.png")]
-        plot_detachment.main()
-        fig6 = DRAWN[-1]
+        fig6 = draw_fig6(plot_detachment, tmp, "detachment", rows)
         xs = {round(float(x), 9) for line in fig6.axes[0].get_lines()
               if line.get_marker() not in (None, "None", "none", "") for x in line.get_xdata()}
         if len(xs) < 4:
