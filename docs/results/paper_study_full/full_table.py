@@ -95,8 +95,12 @@ def main(folder):
             moved = len(items) - missing
             consistent[k] += bool(v["consistent"])
             found_agree[k] += moved == 0
-            change = f"largest change {v['max_deviation_over_D'] * d_over_d:.2f} d"
-            if v["consistent"]:
+            deviation = v["max_deviation_over_D"]  # null: no cut found a front to compare
+            change = (f"largest change {deviation * d_over_d:.2f} d" if deviation is not None
+                      else "no cut to compare")
+            if v["text"].startswith("no delta at the reference cut"):
+                verdict_cells.append("no front at the primary cut")
+            elif v["consistent"]:
                 verdict_cells.append(f"true ({change})")
             else:
                 verdict_cells.append(f"false: {moved} of {cuts - 1} cuts beyond two errors, "
