@@ -70,8 +70,6 @@ def main(folder):
           "cuts | fitted T across the cuts | "
           "wall time | particle-steps/s | backend, threads |")
     print("|---|---|---|---|---|---|---|---|---|")
-    consistent = {"temperature_jump": 0, "temperature_fit": 0}
-    found_agree = dict.fromkeys(consistent, 0)  # no cut beyond two errors (some without a front)
     for name, s, d_over_d, mach in cases:
         det = s["detachment"]["temperature_jump"]
         row = short.get(name)
@@ -85,34 +83,60 @@ def main(folder):
             short_cells = ["n/a", pm(det.get("delta_over_D"), det.get("delta_over_D_err")), "n/a"]
         verdicts = s["detachment_convergence"]["verdicts"]
         cuts = len(s["detachment_convergence"]["choices"])  # rows, strips, grid, halves
-        verdict_cells = []
-        for k in consistent:
-            v = verdicts[k]
-            # The verdict's text lists the failing cuts, "; "-separated: moved by more than
-            # two errors, or without a front (docs/fields.md, "Convergence table").
-            items = v["text"].split(": ", 1)[1].split("; ") if not v["consistent"] else []
-            missing = sum("no front" in item for item in items)
-            moved = len(items) - missing
-            consistent[k] += bool(v["consistent"])
-            found_agree[k] += moved == 0
-            deviation = v["max_deviation_over_D"]  # null: no cut found a front to compare
-            change = (f"largest change {deviation * d_over_d:.2f} d" if deviation is not None
-                      else "no cut to compare")
-            if v["text"].startswith("no delta at the reference cut"):
-                verdict_cells.append("no front at the primary cut")
-            elif v["consistent"]:
-                verdict_cells.append(f"true ({change})")
-            else:
-                verdict_cells.append(f"false: {moved} of {cuts - 1} cuts beyond two errors, "
-                                     f"{missing} without a front ({change})")
+        verdict_cells = [verdict_cell(verdicts[k], d_over_d, cuts)
+                         for k in ("temperature_jump", "temperature_fit")]
         print("| " + " | ".join([name] + short_cells + verdict_cells + [
             f"{s['wall_seconds']:.0f} s", f"{s['particle_steps_per_second']:.3g}",
             f"{s['backend']}, {s['threads']}"]) + " |")
     print()
-    print(f"{len(cases)} cases; consistent across cuts: T half-rise "
-          f"{consistent['temperature_jump']}, fitted T {consistent['temperature_fit']}; "
-          f"no cut beyond two errors where a front is found: T half-rise "
-          f"{found_agree['temperature_jump']}, fitted T {found_agree['temperature_fit']}")
+    print_counts(cases)
+
+
+def failing_cuts(verdict):
+    """(cuts moved beyond two errors, cuts without a front) of one verdict. Its text lists
+    the failing cuts, "; "-separated (docs/fields.md, "Convergence table")."""
+    if verdict["consistent"]:
+        return 0, 0
+    items = verdict["text"].split(": ", 1)[1].split("; ")
+    missing = sum("no front" in item for item in items)
+    return len(items) - missing, missing
+
+
+def verdict_cell(verdict, d_over_d, cuts):
+    moved, missing = failing_cuts(verdict)
+    deviation = verdict["max_deviation_over_D"]  # null: no cut found a front to compare
+    change = (f"largest change {deviation * d_over_d:.2f} d" if deviation is not None
+              else "no cut to compare")
+    if verdict["text"].startswith("no delta at the reference cut"):
+        return "no front at the primary cut"
+    if verdict["consistent"]:
+        return f"true ({change})"
+    return f"false: {moved} of {cuts - 1} cuts beyond two errors, {missing} without a front ({change})"
+
+
+def print_counts(cases):
+    """Per definition, over the cases: how many agree with themselves across every cut,
+    how many move beyond two errors on no cut where a front is found, and the largest
+    change over the cuts in particle diameters."""
+    print("| definition | consistent across every cut | no cut beyond two errors where a front "
+          "is found | no front at the primary cut | largest change over the cuts (d), "
+          "smallest - largest case |")
+    print("|---|---|---|---|---|")
+    n = len(cases)
+    for key, label in DEFINITIONS:
+        consistent = agree = no_primary = 0
+        changes = []
+        for name, s, d_over_d, mach in cases:
+            verdict = s["detachment_convergence"]["verdicts"][key]
+            if verdict["text"].startswith("no delta at the reference cut"):
+                no_primary += 1
+                continue
+            consistent += bool(verdict["consistent"])
+            agree += failing_cuts(verdict)[0] == 0
+            if verdict["max_deviation_over_D"] is not None:
+                changes.append(verdict["max_deviation_over_D"] * d_over_d)
+        spread = f"{min(changes):.2f} - {max(changes):.2f}" if changes else "n/a"
+        print(f"| {label} | {consistent} of {n} | {agree} of {n} | {no_primary} | {spread} |")
 
 
 def figure(folder, png):
