@@ -102,13 +102,17 @@ def failing_cuts(verdict):
     return len(items) - missing, missing
 
 
+def no_primary_front(verdict):
+    return verdict["text"].startswith("no delta at the reference cut")
+
+
 def verdict_cell(verdict, d_over_d, cuts):
+    if no_primary_front(verdict):
+        return "no front at the primary cut"
     moved, missing = failing_cuts(verdict)
     deviation = verdict["max_deviation_over_D"]  # null: no cut found a front to compare
     change = (f"largest change {deviation * d_over_d:.2f} d" if deviation is not None
               else "no cut to compare")
-    if verdict["text"].startswith("no delta at the reference cut"):
-        return "no front at the primary cut"
     if verdict["consistent"]:
         return f"true ({change})"
     return f"false: {moved} of {cuts - 1} cuts beyond two errors, {missing} without a front ({change})"
@@ -128,7 +132,7 @@ def print_counts(cases):
         changes = []
         for name, s, d_over_d, mach in cases:
             verdict = s["detachment_convergence"]["verdicts"][key]
-            if verdict["text"].startswith("no delta at the reference cut"):
+            if no_primary_front(verdict):
                 no_primary += 1
                 continue
             consistent += bool(verdict["consistent"])
