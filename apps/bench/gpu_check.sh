@@ -8,7 +8,7 @@
 # sums, e_eff; apps/bench/gpu_check_compare.py) and prints one table. Every step has a
 # time box (timeout); the boxes add up to 480 s, under 8 minutes of device time.
 #
-# Usage: apps/bench/gpu_check.sh [--record]
+# Usage: apps/bench/gpu_check.sh [--record | --finish DIR]
 #   GRANSHOCK_GPU_CHECK_DRY=1   the same steps on the host, on the device-path build
 #                               (build-device/, -DGRANSHOCK_DEVICE_PATHS=ON): no GPU needed
 #   --record                    the same steps on the host build (build/, host paths); writes
@@ -23,8 +23,17 @@
 #                               its runtime-libs/ go on LD_LIBRARY_PATH
 #   GRANSHOCK_GPU_CHECK_PROGRAMS="test_unit ..."  run these test programs directly (no
 #                               ctest), with GRANSHOCK_GPU_CHECK_FILTER as --gtest_filter
-#   GRANSHOCK_PYTHON=PATH       the Python with h5py and numpy (default /usr/bin/python3)
-# Exit status: 0 when every step is ok, 1 otherwise.
+#   GRANSHOCK_PYTHON=PATH       the Python with h5py and numpy (default /usr/bin/python3);
+#                               without them (a GPU machine's stock Python) the runs still
+#                               run, their digests and comparisons are DEFERRED and the
+#                               files they need packed in DIR/deferred.tar.gz
+#   --finish DIR                on a machine whose Python has h5py (the host): digest the
+#                               deferred runs of DIR (a copy of GRANSHOCK_GPU_CHECK_OUT, or
+#                               a folder holding its deferred.tar.gz) and compare them
+#   GRANSHOCK_GPU_CHECK_ONLY="step ..."  run only the steps named (e.g. "default_scene
+#                               compare_default_scene"); the others are left out of the table
+#   GRANSHOCK_GPU_CHECK_BUILD=DIR  the build to check instead of the mode's own
+# Exit status: 0 when every step is ok, 3 when every step is ok or DEFERRED, 1 otherwise.
 set -uo pipefail
 
 repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
@@ -38,25 +47,50 @@ python=${GRANSHOCK_PYTHON:-/usr/bin/python3}
 prebuilt=${GRANSHOCK_GPU_CHECK_PREBUILT:-0}
 mode=gpu
 [ "${GRANSHOCK_GPU_CHECK_DRY:-0}" = 1 ] && mode=dry
-if [ $# -gt 0 ]; then
-  if [ "$1" != --record ] || [ $# -ne 1 ]; then
-    echo "gpu_check.sh: unexpected argument '$1' (it takes --record or nothing)" >&2
-    exit 2
-  fi
-  mode=record
-fi
+case "$#:${1:-}" in
+  0:) ;;
+  1:--record) mode=record ;;
+  2:--finish) mode=finish out=$(cd "$2" 2>/dev/null && pwd) ||
+    { echo "gpu_check.sh: --finish: no folder $2" >&2; exit 2; } ;;
+  *) echo "gpu_check.sh: unexpected arguments '$*' (it takes --record, --finish DIR or" \
+    "nothing)" >&2; exit 2 ;;
+esac
 case $mode in
   gpu) build=$repo/build-cuda expect="Cuda device" ;;
   dry) build=$repo/build-device expect="OpenMP device" ;;
-  record) build=$repo/build expect="OpenMP host" ;;
+  record | finish) build=$repo/build expect="OpenMP host" ;;
 esac
-rm -rf "$out" && mkdir -p "$out"
+build=${GRANSHOCK_GPU_CHECK_BUILD:-$build}
+if [ "$mode" = finish ]; then
+  [ -f "$out/deferred.tar.gz" ] && tar -xzf "$out/deferred.tar.gz" -C "$out"
+else
+  rm -rf "$out" && mkdir -p "$out"
+fi
+if [ "$mode" = finish ]; then
+  GRANSHOCK_GPU_CHECK_ONLY=
+  for name in default_scene paper_d50_u1000; do
+    [ -f "$out/$name/summary.json" ] &&
+      GRANSHOCK_GPU_CHECK_ONLY+=" digest_$name compare_$name"
+  done
+  [ -n "$GRANSHOCK_GPU_CHECK_ONLY" ] ||
+    { echo "gpu_check.sh: --finish: no deferred runs in $out" >&2; exit 2; }
+fi
+# The digests read HDF5: a Python without h5py defers them (the record needs them now).
+digests=now
+if ! "$python" -c 'import h5py, numpy' >/dev/null 2>&1; then
+  [ "$mode" = gpu ] || [ "$mode" = dry ] || {
+    echo "gpu_check.sh: $python has no h5py and numpy (GRANSHOCK_PYTHON names one that has)" >&2
+    exit 2
+  }
+  digests=deferred
+fi
 export OMP_NUM_THREADS=${OMP_NUM_THREADS:-2} OMP_PROC_BIND=false
 export GRANSHOCK_FIGURES=0 GRANSHOCK_PYTHON="$python"  # no figures: nothing here checks them
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1  # the MPI tests, as root
 
 rows=()
 failed=0
+deferred=0
 total_box=0
 start_all=$(date +%s)
 
@@ -67,6 +101,11 @@ step() {
   local name=$1 box=$2
   shift 2
   local limit start rc
+  step_name=$name
+  if [ -n "${GRANSHOCK_GPU_CHECK_ONLY:-}" ] && [[ " $GRANSHOCK_GPU_CHECK_ONLY " != *" $name "* ]]; then
+    step_status=skipped
+    return 0
+  fi
   limit=$(awk -v b="$box" -v f="$factor" 'BEGIN {printf "%d", b * f}')
   total_box=$((total_box + box))
   start=$(date +%s)
@@ -78,13 +117,18 @@ step() {
     124 | 137) step_status=TIMEOUT ;;
     *) step_status=FAIL ;;
   esac
-  step_name=$name step_box=$limit
+  step_box=$limit
 }
 row() {  # RESULT: the last step's row
-  [ "$step_status" = ok ] || failed=1
+  case $step_status in
+    skipped) return 0 ;;
+    ok) ;;
+    DEFERRED) deferred=1 ;;
+    *) failed=1 ;;
+  esac
   rows+=("| $step_name | $step_status | $step_seconds | $step_box | $1 |")
 }
-log_tail() { tail -n 1 "$out/$1.log" | cut -c1-120; }
+log_tail() { tail -n 1 "$out/$1.log" 2>/dev/null | cut -c1-120; }
 
 # 1. Build, with every core.
 # shellcheck disable=SC2086 # GRANSHOCK_GPU_CHECK_CMAKE: arguments, split on purpose
@@ -154,11 +198,11 @@ read -r -a test_args <<<"${GRANSHOCK_GPU_CHECK_TESTS:-}"
 if [ -n "${GRANSHOCK_GPU_CHECK_PROGRAMS:-}" ]; then
   export GRANSHOCK_GPU_CHECK_PROGRAMS GRANSHOCK_GPU_CHECK_FILTER
   step tests 110 test_programs
-  row "$(grep -E '^\[  (PASSED|FAILED)  \]' "$out/tests.log" | tr '\n' ' ' | cut -c1-300)"
+  row "$(grep -sE '^\[  (PASSED|FAILED)  \]' "$out/tests.log" | tr '\n' ' ' | cut -c1-300)"
 else
   step tests 110 ctest --test-dir "$build" -j $((jobs > 1 ? jobs / 2 : 1)) --timeout 100 \
     "${test_args[@]}"
-  row "$(grep -E 'tests passed|No tests were found' "$out/tests.log" | tail -n 1)"
+  row "$(grep -sE 'tests passed|No tests were found' "$out/tests.log" | tail -n 1)"
 fi
 
 # 4. The gas benchmark (sigma 0.15 m/s, as docs/benchmarks.md): particle-steps per
@@ -192,16 +236,20 @@ scene_run() {  # NAME SCENE SETTINGS...
   shift 2
   local sets=()
   for s in "$@"; do sets+=(--set "$s"); done
-  "$granshock" run "$scene" --out "$out/$name" --quiet "${sets[@]}" &&
-    $python "$here/gpu_check_compare.py" digest "$out/$name" >"$out/$name.json"
+  "$granshock" run "$scene" --out "$out/$name" --quiet "${sets[@]}" || return
+  [ "$digests" = deferred ] || digest_run "$name"
+}
+digest_run() {  # NAME
+  $python "$here/gpu_check_compare.py" digest "$out/$1" >"$out/$1.json"
 }
 scene_result() {  # NAME
   $python -c 'import json, sys; d = json.load(open(sys.argv[1]))
 print("%d particles, %.3g ps/s, %d list builds" % (d["particles_final"],
-      d["particle_steps_per_second"], d["list_builds"]))' "$out/$1.json" 2>/dev/null ||
+      d["particle_steps_per_second"], d["list_builds"]))' "$out/$1/summary.json" 2>/dev/null ||
     log_tail "$1"
 }
-export -f scene_run
+export -f scene_run digest_run
+export digests
 default_scene=(scenes/default.toml time.duration=0.05 time.production_start=0.025)
 paper_case=(scenes/paper/d50_u1000.toml inflow.mach_at=inserted time.duration=0.05
   time.production_start=0.025 output.snapshot_interval=0.025 output.checkpoint_interval=0.025)
@@ -220,6 +268,18 @@ if [ "$mode" = record ]; then
       "${paper_case[@]}" "scene.seed=$seed"
     row "$(scene_result "paper_d50_u1000_seed$seed")"
   done
+fi
+
+# Without h5py here the digests wait for the host: the files they read, packed.
+deferred_runs=(default_scene paper_d50_u1000)
+if [ "$digests" = deferred ]; then
+  packed=()
+  for name in "${deferred_runs[@]}"; do
+    for f in checkpoint.h5 run.h5 summary.json; do
+      [ -f "$out/$name/$f" ] && packed+=("$name/$f")
+    done
+  done
+  [ ${#packed[@]} -eq 0 ] || tar -czf "$out/deferred.tar.gz" -C "$out" "${packed[@]}"
 fi
 
 # 6. Each run against the host's (the reference's "runs").
@@ -257,9 +317,19 @@ print(f"recorded {os.path.basename(reference)}: runs {', '.join(runs)}; rates {m
 PY
   row "$(log_tail record)"
 else
-  for name in default_scene paper_d50_u1000; do
+  for name in "${deferred_runs[@]}"; do
+    if [ "$mode" = finish ]; then
+      step "digest_$name" 20 digest_run "$name"
+      row "$(scene_result "$name")"
+    fi
+    if [ "$digests" = deferred ]; then
+      step "compare_$name" 5 true
+      [ "$step_status" = skipped ] || step_status=DEFERRED
+      row "no h5py in $python: the digest waits for the host (--finish)"
+      continue
+    fi
     step "compare_$name" 5 compare_run "$name"
-    row "$(tail -n 1 "$out/compare_$name.log" | cut -c1-400)"
+    row "$(tail -n 1 "$out/compare_$name.log" 2>/dev/null | cut -c1-400)"
   done
 fi
 
@@ -272,5 +342,11 @@ fi
   printf '%s\n' "${rows[@]}"
   echo
   echo "total $(($(date +%s) - start_all)) s (boxes: $total_box s x $factor); logs in $out"
+  if [ "$deferred" = 1 ]; then
+    echo "digests deferred: bring $out/deferred.tar.gz to a machine whose Python has h5py," \
+      "put it in a folder DIR and run apps/bench/gpu_check.sh --finish DIR there"
+  fi
 } | tee "$out/table.md"
-exit $failed
+[ "$failed" = 1 ] && exit 1
+[ "$deferred" = 1 ] && exit 3
+exit 0
