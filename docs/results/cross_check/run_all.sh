@@ -2,14 +2,16 @@
 # The cross-check of README.md here, from the repository root with granshock built in
 # build/ and Debian's lammps installed (apps/bench/lammps/install_lammps.sh):
 #
-#   docs/results/cross_check/run_all.sh RUNS_DIR [small|d10|d10_seed2|d50|d10_long ...]
+#   docs/results/cross_check/run_all.sh RUNS_DIR [small|d10|d10_seed2|d50|d10_long|d10_long_seed2 ...]
 #   (default: small d10 d10_seed2)
 #
 # For each case: granshock's run (1 thread), LAMMPS on the same scene with granshock's
 # inflow (run_lammps.sh, 1 rank), granshock's snapshots written as a LAMMPS dump with the
 # map of the run's resolved scene (snapshots_to_dump.py), `granshock fields --from-dump`
 # on both dumps with that map, and compare.py's table and figures into this folder.
-# Runs at niceness 10 (NICE); the finished steps of a case are skipped.
+# Runs at niceness 10 (NICE); the finished steps of a case are skipped. LMP_RANKS (default
+# 1): LAMMPS' MPI ranks (its thermostat draws per rank, so another count is another
+# realisation of the same inflow).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 root=$(cd "$here/../../.." && pwd)
@@ -36,7 +38,7 @@ run_case() {
   sigma=$(/usr/bin/python3 -c 'import json, sys; print(repr(json.load(open(sys.argv[1]))["inflow_sigma"]))' \
     "$runs/${SIGMA_FROM:-gs_$name}/summary.json")
   if [[ ! -f $runs/lmp_$name/wall_seconds ]]; then
-    SIGMA=$sigma SEED=${SEED:-1} REFILL_BLOCK=40 DUMP_EVERY=${DUMP_EVERY:-2.5e-4} "$here/run_lammps.sh" 1 "$runs/lmp_$name" \
+    SIGMA=$sigma SEED=${SEED:-1} REFILL_BLOCK=40 DUMP_EVERY=${DUMP_EVERY:-2.5e-4} "$here/run_lammps.sh" "${LMP_RANKS:-1}" "$runs/lmp_$name" \
       "$scene" "${sets[@]}"
   fi
   "$here/snapshots_to_dump.py" "$runs/gs_$name" "$runs/gs_${name}_snap.dump" "$runs/${name}_map.toml"
@@ -81,6 +83,12 @@ for c in "${cases[@]}"; do
     d10_long) DUMP_EVERY=5e-4 run_case d10_long "$root/scenes/paper/d10_u1000.toml" \
       --set domain.width=0.1 --set time.duration=1.65 --set time.production_start=0.35 \
       --set output.snapshot_interval=0.0005 --set output.checkpoint_interval=0.25 ;;
-    *) echo "unknown case $c (small, d10, d10_seed2, d50, d10_long)" >&2; exit 2 ;;
+    # Its second realisation, as d10_seed2 is d10's (LAMMPS with d10_long's sigma).
+    d10_long_seed2) SIGMA_FROM=gs_d10_long SEED=2 WHAT=lmp DUMP_EVERY=5e-4 run_case \
+      d10_long_seed2 "$root/scenes/paper/d10_u1000.toml" --set scene.seed=2 \
+      --set domain.width=0.1 --set time.duration=1.65 --set time.production_start=0.35 \
+      --set output.snapshot_interval=0.0005 --set output.checkpoint_interval=0.25 ;;
+    *) echo "unknown case $c (small, d10, d10_seed2, d50, d10_long, d10_long_seed2)" >&2
+      exit 2 ;;
   esac
 done
