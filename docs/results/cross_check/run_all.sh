@@ -2,8 +2,8 @@
 # The cross-check of README.md here, from the repository root with granshock built in
 # build/ and Debian's lammps installed (apps/bench/lammps/install_lammps.sh):
 #
-#   docs/results/cross_check/run_all.sh RUNS_DIR [small|d10|d10_seed2|d50|d10_long|d10_long_seed2 ...]
-#   (default: small d10 d10_seed2)
+#   docs/results/cross_check/run_all.sh RUNS_DIR [CASE ...]   (CASE: small, d10, d10_seed2,
+#   d50, d10_long, d10_long_seed2, d50_long; default: small d10 d10_seed2)
 #
 # For each case: granshock's run (1 thread), LAMMPS on the same scene with granshock's
 # inflow (run_lammps.sh, 1 rank), granshock's snapshots written as a LAMMPS dump with the
@@ -88,7 +88,12 @@ for c in "${cases[@]}"; do
       d10_long_seed2 "$root/scenes/paper/d10_u1000.toml" --set scene.seed=2 \
       --set domain.width=0.1 --set time.duration=1.65 --set time.production_start=0.35 \
       --set output.snapshot_interval=0.0005 --set output.checkpoint_interval=0.25 ;;
-    *) echo "unknown case $c (small, d10, d10_seed2, d50, d10_long, d10_long_seed2)" >&2
+    # d50 with a four times longer window, [0.35, 1.65] s, frames every 1 ms.
+    d50_long) DUMP_EVERY=1e-3 run_case d50_long "$root/scenes/paper/d50_u1000.toml" \
+      --set domain.width=0.2 --set time.duration=1.65 --set time.production_start=0.35 \
+      --set output.snapshot_interval=0.001 --set output.checkpoint_interval=0.25 ;;
+    *) echo "unknown case $c (small, d10, d10_seed2, d50, d10_long, d10_long_seed2," \
+      "d50_long)" >&2
       exit 2 ;;
   esac
 done
