@@ -61,19 +61,19 @@ case $mode in
   record | finish) build=$repo/build expect="OpenMP host" ;;
 esac
 build=${GRANSHOCK_GPU_CHECK_BUILD:-$build}
+scene_runs=(default_scene paper_d50_u1000)  # the runs compared with the host's (step 5)
 if [ "$mode" = finish ]; then
+  # Only the digests and comparisons of the runs that are there.
   [ -f "$out/deferred.tar.gz" ] && tar -xzf "$out/deferred.tar.gz" -C "$out"
-else
-  rm -rf "$out" && mkdir -p "$out"
-fi
-if [ "$mode" = finish ]; then
   GRANSHOCK_GPU_CHECK_ONLY=
-  for name in default_scene paper_d50_u1000; do
+  for name in "${scene_runs[@]}"; do
     [ -f "$out/$name/summary.json" ] &&
       GRANSHOCK_GPU_CHECK_ONLY+=" digest_$name compare_$name"
   done
   [ -n "$GRANSHOCK_GPU_CHECK_ONLY" ] ||
     { echo "gpu_check.sh: --finish: no deferred runs in $out" >&2; exit 2; }
+else
+  rm -rf "$out" && mkdir -p "$out"
 fi
 # The digests read HDF5: a Python without h5py defers them (the record needs them now).
 digests=now
@@ -271,10 +271,9 @@ if [ "$mode" = record ]; then
 fi
 
 # Without h5py here the digests wait for the host: the files they read, packed.
-deferred_runs=(default_scene paper_d50_u1000)
 if [ "$digests" = deferred ]; then
   packed=()
-  for name in "${deferred_runs[@]}"; do
+  for name in "${scene_runs[@]}"; do
     for f in checkpoint.h5 run.h5 summary.json; do
       [ -f "$out/$name/$f" ] && packed+=("$name/$f")
     done
@@ -317,7 +316,7 @@ print(f"recorded {os.path.basename(reference)}: runs {', '.join(runs)}; rates {m
 PY
   row "$(log_tail record)"
 else
-  for name in "${deferred_runs[@]}"; do
+  for name in "${scene_runs[@]}"; do
     if [ "$mode" = finish ]; then
       step "digest_$name" 20 digest_run "$name"
       row "$(scene_result "$name")"

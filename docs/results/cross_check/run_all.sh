@@ -59,39 +59,35 @@ run_case() {
   fi
 }
 
+# paper_case NAME SCENE WIDTH END FRAME CHECKPOINT [--set ...]: scenes/paper/SCENE.toml
+# narrowed to WIDTH m and END s long, [0.35, END] s averaged, granshock's snapshots and
+# LAMMPS' frames every FRAME s, checkpoints every CHECKPOINT s.
+paper_case() {
+  local name=$1 scene=$2 width=$3 end=$4 frame=$5 checkpoint=$6
+  shift 6
+  DUMP_EVERY=$frame run_case "$name" "$root/scenes/paper/$scene.toml" "$@" \
+    --set "domain.width=$width" --set "time.duration=$end" --set time.production_start=0.35 \
+    --set "output.snapshot_interval=$frame" --set "output.checkpoint_interval=$checkpoint"
+}
+
 for c in "${cases[@]}"; do
   case $c in
     small) run_case small "$here/small.toml" ;;
-    # The paper's D = 10 d, U = 1 m/s case narrowed to 100 d and shortened to 0.65 s,
-    # [0.35, 0.65] s averaged, snapshots every 0.25 ms.
-    d10) run_case d10 "$root/scenes/paper/d10_u1000.toml" --set domain.width=0.1 \
-      --set time.duration=0.65 --set time.production_start=0.35 \
-      --set output.snapshot_interval=0.00025 --set output.checkpoint_interval=0.65 ;;
+    # The paper's D = 10 d, U = 1 m/s case narrowed to 100 d and shortened to 0.65 s.
+    d10) paper_case d10 d10_u1000 0.1 0.65 0.00025 0.65 ;;
     # A second realisation: granshock with seed 2 (it recalibrates sigma), LAMMPS with
     # seed 2 and the sigma of granshock's seed-1 run; only LAMMPS' dump is analysed.
-    d10_seed2) SIGMA_FROM=gs_d10 SEED=2 WHAT=lmp run_case d10_seed2 \
-      "$root/scenes/paper/d10_u1000.toml" --set scene.seed=2 --set domain.width=0.1 \
-      --set time.duration=0.65 --set time.production_start=0.35 \
-      --set output.snapshot_interval=0.00025 --set output.checkpoint_interval=0.65 ;;
+    d10_seed2) SIGMA_FROM=gs_d10 SEED=2 WHAT=lmp paper_case d10_seed2 d10_u1000 0.1 0.65 \
+      0.00025 0.65 --set scene.seed=2 ;;
     # The paper's D = 50 d, U = 1 m/s case narrowed to 200 d (the cylinder a quarter of
     # the width) and shortened like d10.
-    d50) run_case d50 "$root/scenes/paper/d50_u1000.toml" --set domain.width=0.2 \
-      --set time.duration=0.65 --set time.production_start=0.35 \
-      --set output.snapshot_interval=0.00025 --set output.checkpoint_interval=0.65 ;;
-    # d10 with a four times longer window, [0.35, 1.65] s, frames every 0.5 ms: whether
-    # the codes' difference at D = 10 d outlasts the wandering of a 0.3 s window.
-    d10_long) DUMP_EVERY=5e-4 run_case d10_long "$root/scenes/paper/d10_u1000.toml" \
-      --set domain.width=0.1 --set time.duration=1.65 --set time.production_start=0.35 \
-      --set output.snapshot_interval=0.0005 --set output.checkpoint_interval=0.25 ;;
-    # Its second realisation, as d10_seed2 is d10's (LAMMPS with d10_long's sigma).
-    d10_long_seed2) SIGMA_FROM=gs_d10_long SEED=2 WHAT=lmp DUMP_EVERY=5e-4 run_case \
-      d10_long_seed2 "$root/scenes/paper/d10_u1000.toml" --set scene.seed=2 \
-      --set domain.width=0.1 --set time.duration=1.65 --set time.production_start=0.35 \
-      --set output.snapshot_interval=0.0005 --set output.checkpoint_interval=0.25 ;;
-    # d50 with a four times longer window, [0.35, 1.65] s, frames every 1 ms.
-    d50_long) DUMP_EVERY=1e-3 run_case d50_long "$root/scenes/paper/d50_u1000.toml" \
-      --set domain.width=0.2 --set time.duration=1.65 --set time.production_start=0.35 \
-      --set output.snapshot_interval=0.001 --set output.checkpoint_interval=0.25 ;;
+    d50) paper_case d50 d50_u1000 0.2 0.65 0.00025 0.65 ;;
+    # d10 and d50 with a four times longer window: whether the codes' differences outlast
+    # the wandering of a 0.3 s window; d10_long's second realisation as d10_seed2 is d10's.
+    d10_long) paper_case d10_long d10_u1000 0.1 1.65 0.0005 0.25 ;;
+    d10_long_seed2) SIGMA_FROM=gs_d10_long SEED=2 WHAT=lmp paper_case d10_long_seed2 \
+      d10_u1000 0.1 1.65 0.0005 0.25 --set scene.seed=2 ;;
+    d50_long) paper_case d50_long d50_u1000 0.2 1.65 0.001 0.25 ;;
     *) echo "unknown case $c (small, d10, d10_seed2, d50, d10_long, d10_long_seed2," \
       "d50_long)" >&2
       exit 2 ;;

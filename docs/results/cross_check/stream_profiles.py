@@ -14,6 +14,7 @@ production window:
   face: particles per frame, <v_y>/U, and the fraction moving upstream (v_y < 0), of all
   and of each species: the particles the shock layer sends back into the stream.
 """
+import bisect
 import math
 import sys
 import tomllib
@@ -48,14 +49,21 @@ def frames(path, dump, start, every):
             k += 1
 
 
-def profiles(path, scene, every):
+def face_and_edges(scene):
+    """The cylinder's upstream face (y) and the channel's slab edges (m) upstream of it."""
     d = scene["units"]["d"]
-    width = scene["domain"]["width"]
-    xc, yc = scene["obstacle"]["centre"]
-    face = yc - scene["obstacle"]["diameter"] / 2
+    face = scene["obstacle"]["centre"][1] - scene["obstacle"]["diameter"] / 2
+    return face, [e * d for e in CHANNEL_EDGES_D if e * d < face]
+
+
+def profiles(path, scene, every):
+    """Sums over the frames: per channel slab [n, sum v_y, sum v_y^2]; per strip bin n,
+    sum v_y and the counts moving upstream, of all and per species."""
+    d = scene["units"]["d"]
+    xc = scene["obstacle"]["centre"][0]
+    face, edges = face_and_edges(scene)
     types = {int(t): name for t, name in scene["dump"]["types"].items()}
     names = [s["name"] for s in scene["species"]]
-    edges = [e * d for e in CHANNEL_EDGES_D if e * d < face]
     channel = [[0, 0.0, 0.0] for _ in edges[:-1]]
     strip = [{"n": 0, "vy": 0.0, "back": 0, **{f"n_{s}": 0 for s in names},
               **{f"back_{s}": 0 for s in names}} for _ in range(STRIP_BINS)]
@@ -66,13 +74,12 @@ def profiles(path, scene, every):
         for row in rows:
             p = row.split()
             x, y, vy = float(p[ix]), float(p[iy]), float(p[ivy])
-            for b in range(len(edges) - 1):
-                if edges[b] <= y < edges[b + 1]:
-                    c = channel[b]
-                    c[0] += 1
-                    c[1] += vy
-                    c[2] += vy * vy
-                    break
+            b = bisect.bisect_right(edges, y) - 1
+            if 0 <= b < len(channel):
+                c = channel[b]
+                c[0] += 1
+                c[1] += vy
+                c[2] += vy * vy
             dist = (face - y) / d
             if abs(x - xc) < STRIP_HALF_WIDTH_D * d and 0 <= dist < STRIP_BINS:
                 s = strip[int(dist)]
@@ -83,12 +90,14 @@ def profiles(path, scene, every):
                 if vy < 0:
                     s["back"] += 1
                     s[f"back_{species}"] += 1
-    return count, edges, channel, strip, names, d, width
+    return count, channel, strip
 
 
 def table(label, scene, result):
-    count, edges, channel, strip, names, d, width = result
-    u = scene["inflow"]["velocity"]
+    count, channel, strip = result
+    d, width, u = scene["units"]["d"], scene["domain"]["width"], scene["inflow"]["velocity"]
+    _, edges = face_and_edges(scene)
+    names = [s["name"] for s in scene["species"]]
     disc = math.pi * (d / 2) ** 2  # the discs' area: phi in the plane (scene.dim = 2)
     print(f"{label}: {count} frames\n")
     print("| y from the inlet (d) | phi | <v_y>/U | var v_y / U^2 |")
