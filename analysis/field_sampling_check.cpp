@@ -135,9 +135,13 @@ long production_samples(const Scene& s) {
   return (total - first - 1) / s.run.sample_every + 1;
 }
 
-void validate_field_sampling(const Scene& s) {
+void validate_bins(const Scene& s) {
   check_geometry(s);
   check_memory(s);
+}
+
+void validate_field_sampling(const Scene& s) {
+  validate_bins(s);
   check_samples(s);
 }
 

@@ -38,6 +38,11 @@ struct FieldSamplingLimits {
 // Throws UserError when the scene's field sampling breaks one of the limits above.
 void validate_field_sampling(const Scene& scene);
 
+// The limits on the bins alone (their size against the particles, the domain and the
+// obstacle, their sums' bytes), without those on the samples a run's window takes: for a
+// map of another code's dump, whose frames are its samples (cases/dump/dump_sums.hpp).
+void validate_bins(const Scene& scene);
+
 // The field samples the production window will hold: one at every sample_every-th step
 // from round(production_start / dt) up to, not including, round(duration / dt).
 long production_samples(const Scene& scene);

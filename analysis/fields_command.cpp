@@ -112,7 +112,7 @@ void check_run_directories(const std::vector<fs::path>& run_dirs) {
 // middle of being written by a run.
 void refuse_if_being_written(const fs::path& dir) {
   const std::optional<DirectoryMarker> marker = read_marker(dir, kRunMarker);
-  if (marker && locked_by_another(dir, kRunMarker))
+  if (marker && locked_for_writing(dir, kRunMarker))
     throw UserError("run directory '" + dir.string() + "' is in use by another granshock run" +
                     (marker->pid > 0 ? " (pid " + std::to_string(marker->pid) + ")" : "") +
                     "; wait for it to end, then try again");
@@ -155,25 +155,33 @@ int fields_command(const std::vector<fs::path>& run_dirs, const fs::path& out,
   const bool writes_out = !in_place || several;
   const FieldsOutput out_kind = several ? FieldsOutput::comparison : FieldsOutput::one_run;
 
-  // Every directory is checked, every run analysed and every summary read before
-  // anything is written.
+  // Every directory is locked from before its first read to after its last write (the
+  // figures), so that no run replaces run.h5 meanwhile: a run directory written in place
+  // exclusively, one only read (its analysis goes to --out) shared, which refuses a run but
+  // not another reader. Every run is analysed and every summary read before anything is
+  // written.
+  std::vector<RunDirectory> claimed;
+  std::vector<DirectoryLock> read_locks;
   for (const fs::path& dir : run_dirs) {
-    if (!in_place)
+    if (!in_place) {
       refuse_if_being_written(dir);
-    else if (!held_by_caller(o, dir))
-      RunDirectory::check(dir, DirectoryMode::fields);
+      if (read_marker(dir, kRunMarker))
+        read_locks.push_back(DirectoryLock::hold(dir, kRunMarker, LockKind::shared));
+    } else if (!held_by_caller(o, dir)) {
+      claimed.push_back(RunDirectory::hold(dir, DirectoryMode::fields));
+    }
   }
   if (writes_out) FieldsDirectory::check(out, out_kind);
   std::vector<FieldAnalysis> analyses;
-  for (const fs::path& dir : run_dirs) analyses.push_back(analyse_run_file(dir / "run.h5"));
+  for (const fs::path& dir : run_dirs) {
+    if (o.before_read) o.before_read(dir);
+    analyses.push_back(analyse_run_file(dir / "run.h5"));
+  }
   std::vector<nlohmann::json> summaries;
   for (const fs::path& dir : run_dirs) summaries.push_back(read_summary_json(dir / "summary.json"));
 
-  // Then claimed: each is locked until the figures are drawn.
-  std::vector<RunDirectory> claimed;
-  for (const fs::path& dir : run_dirs)
-    if (in_place && !held_by_caller(o, dir))
-      claimed.push_back(RunDirectory::claim(dir, DirectoryMode::fields));
+  // Then claimed: marked as this command's, and still locked until the figures are drawn.
+  for (RunDirectory& held : claimed) held.settle();
   std::optional<FieldsDirectory> out_dir;
   if (writes_out) out_dir.emplace(FieldsDirectory::claim(out, out_kind));
 

@@ -22,6 +22,9 @@ struct FieldsCommandOptions {
   // Where the warning lines go (`granshock run`: its log, stderr and log.txt); stderr when
   // empty.
   std::function<void(const std::string&)> say = nullptr;
+  // Called just before each DIR/run.h5 is read, with DIR: what another process could do
+  // meanwhile, for the tests of the directory's lock (tests/fields/test_fields_command.cpp).
+  std::function<void(const std::filesystem::path&)> before_read = nullptr;
 };
 
 // For each run directory DIR: reads DIR/run.h5, writes fields.h5, fields.xmf,

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/user_error.hpp"
+#include "io/hdf5_helpers.hpp"
 #include "io/run_file.hpp"
 
 namespace granshock {
@@ -58,6 +59,8 @@ template <class F>
 void reading_sums(const RunFile& run, const std::string& group, F&& f) {
   try {
     f();
+  } catch (const h5::DamagedFile&) {
+    throw;  // the sums are there, damaged
   } catch (const UserError& e) {
     throw UserError("'" + run.path().string() + "' holds no usable field sums at " + group +
                     " (written by `granshock run` over its production window): " + e.what());

@@ -41,6 +41,7 @@ void grow_vertex_index(hid_t file, hsize_t n) {
     h5::check(H5Pset_chunk(props.get(), 1, chunk), "setting the chunk shape");
     if (H5Zfilter_avail(H5Z_FILTER_DEFLATE) > 0)
       h5::check(H5Pset_deflate(props.get(), 1), "enabling gzip");
+    h5::add_checksum(props.get());  // as run.h5's other chunks (io/run_file.cpp)
     Handle views = h5::require_group(file, kViews);
     h5::dataset(H5Dcreate2(views.get(), "vertex_index", H5T_STD_I32LE, space.get(), H5P_DEFAULT,
                            props.get(), H5P_DEFAULT),

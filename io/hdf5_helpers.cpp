@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <string_view>
 #include <system_error>
 
 #include <algorithm>
@@ -162,15 +163,47 @@ std::string read_string_attribute(hid_t object, const std::string& name) {
   });
 }
 
+std::vector<hsize_t> checksum_chunk(const std::vector<hsize_t>& shape, std::size_t element_bytes) {
+  std::vector<hsize_t> chunk(shape.begin(), shape.end());
+  for (hsize_t& c : chunk) c = std::max<hsize_t>(c, 1);  // HDF5 refuses a chunk extent of 0
+  hsize_t row_bytes = element_bytes;
+  for (std::size_t k = 1; k < chunk.size(); ++k) row_bytes *= chunk[k];
+  if (!chunk.empty())
+    chunk[0] =
+        std::clamp<hsize_t>(kChecksumChunkBytes / std::max<hsize_t>(row_bytes, 1), 1, chunk[0]);
+  return chunk;
+}
+
+DamagedFile::DamagedFile(const std::filesystem::path& path, const char* doing)
+    : UserError("'" + path.string() + "' is damaged: " + doing +
+                " it, a stored Fletcher32 checksum does not match its data (bytes changed on "
+                "disk or in a copy since granshock wrote it); it cannot be used: restore it "
+                "from a copy, or run the case again") {}
+
+bool is_checksum_failure(const Hdf5Error& e) {
+  return std::string_view(e.what()).find("Fletcher32 checksum") != std::string_view::npos;
+}
+
+void add_checksum(hid_t dataset_creation) {
+  check(H5Pset_fletcher32(dataset_creation), "enabling the Fletcher32 checksum");
+}
+
 void write_dataset_raw(hid_t loc, const std::string& name, hid_t stored_type, hid_t memory_type,
-                       const std::vector<hsize_t>& shape, const void* data) {
+                       const std::vector<hsize_t>& shape, const void* data, Checksum checksum) {
   if (exists(loc, name))
     check(H5Ldelete(loc, name.c_str(), H5P_DEFAULT), "replacing '" + name + "'");
   Handle space = simple_space(shape, "creating the dataspace of '" + name + "'");
   Handle links = plist(H5Pcreate(H5P_LINK_CREATE), "creating link properties");
   check(H5Pset_create_intermediate_group(links.get(), 1), "setting intermediate groups");
+  Handle creation = plist(H5Pcreate(H5P_DATASET_CREATE), "creating dataset properties");
+  // A scalar has no chunks, and a chunked dataset needs a rank of at least 1.
+  if (checksum == Checksum::fletcher32 && !shape.empty()) {
+    const std::vector<hsize_t> chunk = checksum_chunk(shape, H5Tget_size(stored_type));
+    check(H5Pset_chunk(creation.get(), int(chunk.size()), chunk.data()), "setting the chunk shape");
+    add_checksum(creation.get());
+  }
   Handle set = dataset(H5Dcreate2(loc, name.c_str(), stored_type, space.get(), links.get(),
-                                  H5P_DEFAULT, H5P_DEFAULT),
+                                  creation.get(), H5P_DEFAULT),
                        "creating dataset '" + name + "'");
   const hssize_t points = H5Sget_simple_extent_npoints(space.get());
   // An empty dataset has nothing to write (and HDF5 rejects a null buffer).

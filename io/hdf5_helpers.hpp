@@ -102,16 +102,29 @@ std::vector<T> read_attribute_vector(hid_t object, const std::string& name) {
 }
 std::string read_string_attribute(hid_t object, const std::string& name);
 
-// --- Whole datasets (contiguous, fixed shape; a written one replaces an existing one) --
+// --- Whole datasets (fixed shape; a written one replaces an existing one) --------------
+// none: contiguous. fletcher32: chunked (chunks of at most kChecksumChunkBytes) with HDF5's
+// Fletcher32 filter, so that a damaged chunk fails to read instead of reading as numbers
+// (run.h5: io/run_file.hpp). Every HDF5 library reads it: the filter is built in.
+enum class Checksum { none, fletcher32 };
+inline constexpr std::size_t kChecksumChunkBytes = std::size_t(1) << 30;
 void write_dataset_raw(hid_t loc, const std::string& name, hid_t stored_type, hid_t memory_type,
-                       const std::vector<hsize_t>& shape, const void* data);
+                       const std::vector<hsize_t>& shape, const void* data,
+                       Checksum checksum = Checksum::none);
+// The chunk shape write_dataset_raw gives a checksummed dataset of `shape` and elements of
+// `element_bytes`: the whole of it, cut along the first dimension to at most
+// kChecksumChunkBytes.
+std::vector<hsize_t> checksum_chunk(const std::vector<hsize_t>& shape, std::size_t element_bytes);
+// Adds the Fletcher32 filter to a chunked dataset's creation properties.
+void add_checksum(hid_t dataset_creation);
 // Reads the whole dataset; `count` must equal its number of elements.
 void read_dataset_raw(hid_t dataset, hid_t memory_type, std::size_t count, void* data);
 
 template <class T>
 void write_dataset(hid_t loc, const std::string& name, const std::vector<T>& data,
-                   const std::vector<hsize_t>& shape) {
-  write_dataset_raw(loc, name, TypeOf<T>::stored(), TypeOf<T>::memory(), shape, data.data());
+                   const std::vector<hsize_t>& shape, Checksum checksum = Checksum::none) {
+  write_dataset_raw(loc, name, TypeOf<T>::stored(), TypeOf<T>::memory(), shape, data.data(),
+                    checksum);
 }
 
 template <class T>
@@ -132,6 +145,15 @@ std::vector<T> read_dataset(hid_t loc, const std::string& name,
 void write_string_dataset(hid_t loc, const std::string& name, const std::string& text);
 std::string read_string_dataset(hid_t loc, const std::string& name);
 
+// A file whose stored checksum (h5::Checksum::fletcher32) does not match its data: its
+// bytes changed after granshock wrote them. Refused as it is, whatever the reader wanted
+// from it (no "holds no field sums": the sums are there, damaged).
+class DamagedFile : public UserError {
+ public:
+  DamagedFile(const std::filesystem::path& path, const char* doing);
+};
+bool is_checksum_failure(const Hdf5Error& e);
+
 // Runs f; an HDF5 failure inside becomes one UserError line naming the file ("writing
 // 'out/run.h5' failed: ... No space left on device"): I/O trouble is the user's to fix.
 template <class F>
@@ -140,6 +162,7 @@ auto naming_file_in_errors(const std::filesystem::path& path, const char* doing,
   try {
     return std::forward<F>(f)();
   } catch (const Hdf5Error& e) {
+    if (is_checksum_failure(e)) throw DamagedFile(path, doing);
     throw UserError(std::string(doing) + " '" + path.string() + "' failed: " + e.what());
   }
 }

@@ -67,6 +67,14 @@ bool locked_by_another(const fs::path& dir, const char* name) {
   return locked;
 }
 
+bool locked_for_writing(const fs::path& dir, const char* name) {
+  const int fd = ::open((dir / name).c_str(), O_RDONLY | O_CLOEXEC | O_NOFOLLOW);
+  if (fd < 0) return false;
+  const bool locked = ::flock(fd, LOCK_SH | LOCK_NB) != 0 && errno == EWOULDBLOCK;
+  ::close(fd);
+  return locked;
+}
+
 void refuse_in_use(const fs::path& dir, const DirectoryMarker& marker) {
   throw UserError(fmt::format(
       "output directory '{}' is in use by another granshock run or fields command{}; wait for "
@@ -115,6 +123,14 @@ namespace {
 
 }  // namespace
 
+void refuse_hard_link(const fs::path& path, unsigned long links) {
+  throw UserError(fmt::format(
+      "'{}' has {} hard links: it is also another file, which granshock would change by "
+      "writing this one; granshock writes its outputs only as files it creates itself: remove "
+      "this name (the other names keep the file) or choose another directory",
+      path.string(), links));
+}
+
 void check_outputs_are_files(const fs::path& dir, const std::vector<std::string>& outputs) {
   for (const std::string& name : outputs) {
     fs::path p = dir;
@@ -129,6 +145,7 @@ void check_outputs_are_files(const fs::path& dir, const std::vector<std::string>
         refuse_output(p, "a directory where granshock writes a file", "move it away");
       if (leaf && !S_ISREG(st.st_mode))
         refuse_output(p, "not a regular file (granshock writes a file there)", "remove it");
+      if (leaf && st.st_nlink > 1) refuse_hard_link(p, st.st_nlink);
       if (!leaf && !S_ISDIR(st.st_mode))
         refuse_output(p, "not a directory (granshock writes files into it)", "move it away");
     }
@@ -139,12 +156,27 @@ void remove_outputs(const fs::path& dir, const std::vector<std::string>& outputs
   std::set<fs::path> subdirectories;
   for (const std::string& name : outputs) {
     const fs::path path = dir / name;
-    if (::unlink(path.c_str()) != 0 && errno != ENOENT)
+    if (::unlink(path.c_str()) != 0) {
+      if (errno == ENOENT) continue;
       throw UserError(fmt::format("cannot remove '{}': {}", path.string(), std::strerror(errno)));
+    }
     if (fs::path(name).has_parent_path()) subdirectories.insert(dir / fs::path(name).parent_path());
   }
-  for (const fs::path& sub : subdirectories) ::rmdir(sub.c_str());  // only when empty
+  // Only those granshock emptied, and only when empty: a directory that held none of these
+  // outputs stays as it was.
+  for (const fs::path& sub : subdirectories) ::rmdir(sub.c_str());
 }
+
+namespace {
+
+// A marker with more than one name is someone else's file too: writing it (the pid line)
+// would change that file (refuse_hard_link).
+void refuse_hard_linked_marker(const fs::path& path, int fd) {
+  struct stat st {};
+  if (::fstat(fd, &st) == 0 && st.st_nlink > 1) refuse_hard_link(path, st.st_nlink);
+}
+
+}  // namespace
 
 DirectoryLock DirectoryLock::take(const fs::path& dir, const char* name, const std::string& header,
                                   int format) {
@@ -158,27 +190,55 @@ DirectoryLock DirectoryLock::take(const fs::path& dir, const char* name, const s
     throw UserError(fmt::format("cannot write '{}': {}", path.string(), std::strerror(errno)));
   }
   DirectoryLock lock(fd);  // closes fd on any throw below
+  lock.dir_ = dir;
+  lock.name_ = name;
+  lock.created_ = !marked;
   if (::flock(fd, LOCK_EX | LOCK_NB) != 0)
     refuse_in_use(dir, read_marker(dir, name).value_or(DirectoryMarker{}));
+  lock.stamp(header, format);
+  return lock;
+}
+
+DirectoryLock DirectoryLock::hold(const fs::path& dir, const char* name, LockKind kind) {
+  const fs::path path = dir / name;
+  const int fd =
+      ::open(path.c_str(), (kind == LockKind::shared ? O_RDONLY : O_RDWR) | O_CLOEXEC | O_NOFOLLOW);
+  if (fd < 0)
+    throw UserError(fmt::format("cannot open '{}': {}", path.string(), std::strerror(errno)));
+  DirectoryLock lock(fd);
+  lock.dir_ = dir;
+  lock.name_ = name;
+  if (::flock(fd, (kind == LockKind::shared ? LOCK_SH : LOCK_EX) | LOCK_NB) != 0)
+    refuse_in_use(dir, read_marker(dir, name).value_or(DirectoryMarker{}));
+  if (kind == LockKind::exclusive) refuse_hard_linked_marker(path, fd);
+  return lock;
+}
+
+void DirectoryLock::stamp(const std::string& header, int format) {
+  const fs::path path = dir_ / name_;
+  refuse_hard_linked_marker(path, fd_);
   const std::string text = fmt::format("{}\nformat = {}\nversion = {}\npid = {}\n", header, format,
                                        GRANSHOCK_VERSION_STRING, long(::getpid()));
   // Written over the old lines first, then cut to length: a write that fails (a full
   // disk) leaves the previous marker readable instead of an empty one.
   bool written = true;
   for (std::size_t done = 0; written && done < text.size();) {
-    const ssize_t n = ::pwrite(fd, text.data() + done, text.size() - done, off_t(done));
+    const ssize_t n = ::pwrite(fd_, text.data() + done, text.size() - done, off_t(done));
     written = n > 0 || (n < 0 && errno == EINTR);
     if (n > 0) done += std::size_t(n);
   }
-  if (!written || ::ftruncate(fd, off_t(text.size())) != 0 || ::fsync(fd) != 0) {
+  if (!written || ::ftruncate(fd_, off_t(text.size())) != 0 || ::fsync(fd_) != 0) {
     const int error = errno;
-    if (!marked) ::unlink(path.c_str());  // ours, created just now: the directory as it was
+    if (created_) ::unlink(path.c_str());  // ours, created just now: the directory as it was
     throw UserError(fmt::format("cannot write '{}': {}", path.string(), std::strerror(error)));
   }
-  return lock;
 }
 
-DirectoryLock::DirectoryLock(DirectoryLock&& other) noexcept : fd_(other.fd_) {
+DirectoryLock::DirectoryLock(DirectoryLock&& other) noexcept
+    : fd_(other.fd_),
+      dir_(std::move(other.dir_)),
+      name_(std::move(other.name_)),
+      created_(other.created_) {
   other.fd_ = -1;
 }
 
@@ -186,6 +246,9 @@ DirectoryLock& DirectoryLock::operator=(DirectoryLock&& other) noexcept {
   if (this != &other) {
     if (fd_ >= 0) ::close(fd_);
     fd_ = other.fd_;
+    dir_ = std::move(other.dir_);
+    name_ = std::move(other.name_);
+    created_ = other.created_;
     other.fd_ = -1;
   }
   return *this;

@@ -39,6 +39,10 @@ void check_marker_format(const std::filesystem::path& dir, const DirectoryMarker
 // lock on the marker dir/name.
 bool locked_by_another(const std::filesystem::path& dir, const char* name);
 
+// Whether another open file holds the lock on the marker dir/name exclusively (a writer);
+// readers' shared locks do not count.
+bool locked_for_writing(const std::filesystem::path& dir, const char* name);
+
 // Throws the one-line refusal of a directory that another granshock holds.
 [[noreturn]] void refuse_in_use(const std::filesystem::path& dir, const DirectoryMarker& marker);
 
@@ -54,25 +58,41 @@ void check_creatable(const std::filesystem::path& dir);
 
 // Throws UserError, naming the first offender, unless every output (a path relative to
 // dir, perhaps in a subdirectory) is absent or a regular file, and every subdirectory on
-// the way is absent or a real directory: no symbolic link, no directory where granshock
-// writes a file, no special file. Run before anything is written or removed, so that a
-// refusal changes nothing.
+// the way is absent or a real directory: no symbolic link, no hard-linked file, no
+// directory where granshock writes a file, no special file. Run before anything is written or
+// removed, so that a refusal changes nothing.
 void check_outputs_are_files(const std::filesystem::path& dir,
                              const std::vector<std::string>& outputs);
 
+// Throws the one-line refusal of a file granshock would write that has more than one name
+// (a hard link): like a symbolic link, writing it would change a file outside granshock's.
+[[noreturn]] void refuse_hard_link(const std::filesystem::path& path, unsigned long links);
+
 // Removes those outputs that exist (check_outputs_are_files first), then the
-// subdirectories they were in when nothing else is left in them.
+// subdirectories it removed one from when nothing else is left in them.
 void remove_outputs(const std::filesystem::path& dir, const std::vector<std::string>& outputs);
 
-// The exclusive lock on a directory's marker, held while one granshock writes there and
-// released when the object goes (or the process ends, even by kill -9).
+// exclusive: one granshock writes in the directory. shared: granshock reads it (`fields
+// RUN --out OUT`), and none may write it meanwhile; several may read it at once.
+enum class LockKind { exclusive, shared };
+
+// The lock on a directory's marker, held while one granshock writes there (or others read)
+// and released when the object goes (or the process ends, even by kill -9).
 class DirectoryLock {
  public:
   // Creates the marker dir/name when there is none (O_EXCL: of two claims at once, one
-  // creates it), locks it (refuse_in_use when another holds it) and writes `header`,
-  // the format, this granshock's version and pid into it. `dir` must exist.
+  // creates it), locks it exclusively (refuse_in_use when another holds it) and writes
+  // `header`, the format, this granshock's version and pid into it. `dir` must exist.
   static DirectoryLock take(const std::filesystem::path& dir, const char* name,
                             const std::string& header, int format);
+
+  // Locks the existing marker dir/name without writing it (refuse_in_use when another
+  // holds a lock that conflicts): a command holds the directory from its first read, and
+  // a refusal found while it reads leaves the marker as it was. stamp() claims it after.
+  static DirectoryLock hold(const std::filesystem::path& dir, const char* name, LockKind kind);
+
+  // Writes the marker's lines (take() does it at once): an exclusive lock only.
+  void stamp(const std::string& header, int format);
 
   DirectoryLock() = default;
   DirectoryLock(DirectoryLock&& other) noexcept;
@@ -84,6 +104,9 @@ class DirectoryLock {
  private:
   explicit DirectoryLock(int fd) : fd_(fd) {}
   int fd_ = -1;
+  std::filesystem::path dir_;
+  std::string name_;
+  bool created_ = false;  // take() made the marker: a failed stamp removes it again
 };
 
 }  // namespace granshock

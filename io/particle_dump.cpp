@@ -1,13 +1,17 @@
 #include "io/particle_dump.hpp"
 
+#include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <sstream>
 
+#include "core/available_memory.hpp"
+#include "core/quoted_input.hpp"
 #include "core/user_error.hpp"
 #include "io/regular_file.hpp"
 
@@ -43,6 +47,18 @@ constexpr Column kColumns[] = {{"id", nullptr}, {"type", nullptr}, {"x", "xu"},
                                {"y", "yu"},     {"vx", nullptr},   {"vy", nullptr}};
 constexpr int kColumnCount = 6;
 
+// A frame's header items (TIMESTEP, TIME, UNITS, NUMBER OF ATOMS, BOX BOUNDS, ATOMS) and
+// then some: a header that never reaches ITEM: ATOMS is refused before it is read to the end.
+constexpr int kMaxHeaderItems = 64;
+
+// What a frame holds per atom while it is read (DumpFrame: id, type, x, y, vx, vy), twice:
+// a caller keeps a frame beside the one being read (sum_dump_frames keeps the first).
+constexpr double kFrameBytesPerAtom = 2 * 6 * 8;
+
+std::string quoted_path(const std::filesystem::path& path) {
+  return quoted_input(path.string(), 1024);
+}
+
 }  // namespace
 
 DumpFormat parse_dump_format(const std::string& name) {
@@ -62,8 +78,8 @@ DumpReader::DumpReader(const std::filesystem::path& path, DumpFormat format)
   if (fd >= 0) file_ = ::fdopen(fd, "r");
   if (file_ == nullptr) {
     if (fd >= 0) ::close(fd);
-    throw UserError("cannot read " + to_string(format) + " dump '" + path.string() +
-                    "': " + std::strerror(errno));
+    throw UserError("cannot read " + to_string(format) + " dump " + quoted_path(path) + ": " +
+                    std::strerror(errno));
   }
 }
 
@@ -72,28 +88,64 @@ DumpReader::~DumpReader() {
 }
 
 void DumpReader::fail(const std::string& why) const {
-  throw UserError(to_string(format_) + " dump '" + path_.string() + "' line " +
+  throw UserError(to_string(format_) + " dump " + quoted_path(path_) + " line " +
                   std::to_string(line_) + ": " + why);
 }
 
 bool DumpReader::read_line(std::string& line) {
-  char* buffer = nullptr;
-  std::size_t capacity = 0;
+  // Byte by byte up to the cap: getline() would take a whole file without a newline (a
+  // sparse or NUL-padded one) into memory before the line could be judged.
+  line.clear();
+  int c = 0;
   errno = 0;
-  const ssize_t n = ::getline(&buffer, &capacity, file_);
-  if (n < 0) {
-    const int error = errno;
-    std::free(buffer);
-    if (std::ferror(file_))
-      throw UserError("cannot read " + to_string(format_) + " dump '" + path_.string() +
-                      "': " + std::strerror(error));
-    return false;
+  while ((c = getc_unlocked(file_)) != EOF && c != '\n') {
+    if (c == '\0') {
+      ++line_;
+      fail(
+          "the line holds a NUL byte (binary data, not the text of a dump: a damaged or "
+          "padded file?)");
+    }
+    if (line.size() == kMaxDumpLineBytes) {
+      ++line_;
+      fail(fmt::format("the line is longer than {} bytes (not a dump line: a damaged file?)",
+                       kMaxDumpLineBytes));
+    }
+    line.push_back(char(c));
   }
-  line.assign(buffer, static_cast<std::size_t>(n));
-  std::free(buffer);
-  if (!line.empty() && line.back() == '\n') line.pop_back();
+  if (c == EOF) {
+    if (std::ferror(file_))
+      throw UserError("cannot read " + to_string(format_) + " dump " + quoted_path(path_) + ": " +
+                      std::strerror(errno));
+    if (line.empty()) return false;  // a last line without a newline still counts
+  }
   ++line_;
   return true;
+}
+
+void DumpReader::check_frame_memory(long atoms) const {
+  // A frame is read whole before it is binned: its size is checked against the memory
+  // this process may take before any of it is allocated.
+  const double needed = double(atoms) * kFrameBytesPerAtom;
+  const std::optional<double> available = available_memory_bytes();
+  if (atoms > kMaxDumpAtoms || (available && needed > *available))
+    fail(fmt::format(
+        "ITEM: NUMBER OF ATOMS {}: a frame of that many atoms needs about {:.3g} GB while it is "
+        "read, more than {} (a damaged count, or a dump to split into smaller frames)",
+        atoms, needed / 1e9,
+        available && needed > *available
+            ? fmt::format("the {:.3g} GB available (MemAvailable, ulimit -v)", *available / 1e9)
+            : fmt::format("granshock reads ({} atoms a frame)", kMaxDumpAtoms)));
+}
+
+void DumpReader::refuse_duplicate_ids(const DumpFrame& f) const {
+  std::vector<long> ids = f.id;
+  std::sort(ids.begin(), ids.end());
+  const auto twice = std::adjacent_find(ids.begin(), ids.end());
+  if (twice != ids.end())
+    fail(
+        fmt::format("the frame at {} holds atom id {} twice (each atom once a frame: "
+                    "two frames written into one, or a damaged file?)",
+                    f.where, *twice));
 }
 
 std::string DumpReader::expect_line(const std::string& what) {
@@ -134,9 +186,9 @@ bool DumpReader::next(DumpFrame& f) {
     if (!read_line(line)) return false;
   } while (trimmed(line).empty());
   if (trimmed(line) != "ITEM: TIMESTEP")
-    fail("expected 'ITEM: TIMESTEP' at the start of a frame, found '" + trimmed(line) + "'");
+    fail("expected 'ITEM: TIMESTEP' at the start of a frame, found " + quoted_input(trimmed(line)));
   f = DumpFrame{};
-  f.where = path_.string() + ":" + std::to_string(line_);
+  f.where = printable_line(path_.string(), 1024) + ":" + std::to_string(line_);
   bool ok = false;
   f.timestep = parse_integer(trimmed(expect_line("the timestep")), ok);
   if (!ok) fail("the timestep is not an integer");
@@ -145,7 +197,11 @@ bool DumpReader::next(DumpFrame& f) {
   bool have_box = false;
   std::vector<int> at(kColumnCount, -1);
   std::size_t columns = 0;
-  for (;;) {
+  for (int items = 0;; ++items) {
+    // A frame's header has a handful of items; thousands are not a dump.
+    if (items == kMaxHeaderItems)
+      fail(fmt::format("the frame at {} has more than {} header items before ITEM: ATOMS", f.where,
+                       kMaxHeaderItems));
     const std::string item = trimmed(expect_line("the frame's ITEM: ATOMS"));
     if (item == "ITEM: TIME") {
       const double t = parse_number(trimmed(expect_line("the time")), ok);
@@ -154,13 +210,16 @@ bool DumpReader::next(DumpFrame& f) {
     } else if (item == "ITEM: UNITS") {
       expect_line("the units");
     } else if (item == "ITEM: NUMBER OF ATOMS") {
-      atoms = parse_integer(trimmed(expect_line("the number of atoms")), ok);
-      if (!ok || atoms < 0) fail("the number of atoms is not a whole number >= 0");
+      const std::string count = trimmed(expect_line("the number of atoms"));
+      atoms = parse_integer(count, ok);
+      if (!ok || atoms < 0)
+        fail("ITEM: NUMBER OF ATOMS " + quoted_input(count) + " is not a whole number >= 0");
+      check_frame_memory(atoms);
     } else if (starts_with(item, "ITEM: BOX BOUNDS")) {
       const std::vector<std::string> flags = split(item.substr(16));
       for (const std::string& flag : flags)
         if (flag == "xy" || flag == "xz" || flag == "yz")
-          fail("the box is triclinic (BOX BOUNDS " + trimmed(item.substr(16)) +
+          fail("the box is triclinic (BOX BOUNDS " + quoted_input(trimmed(item.substr(16))) +
                "); only orthogonal boxes are read");
       for (int k = 0; k < 3; ++k) {
         const std::vector<std::string> t = split(expect_line("the box bounds"));
@@ -170,6 +229,11 @@ bool DumpReader::next(DumpFrame& f) {
           f.box_hi[k] = parse_number(t[1], ok_hi);
         }
         if (!ok_lo || !ok_hi) fail("a box bounds line is not two numbers 'lo hi'");
+        if (!(f.box_lo[k] < f.box_hi[k]))
+          fail(
+              fmt::format("ITEM: BOX BOUNDS of the frame at {}: the {} bounds {:.17g} {:.17g} are "
+                          "not 'lo hi' with lo < hi",
+                          f.where, "xyz"[k], f.box_lo[k], f.box_hi[k]));
       }
       have_box = true;
     } else if (starts_with(item, "ITEM: ATOMS")) {
@@ -192,7 +256,7 @@ bool DumpReader::next(DumpFrame& f) {
              " (granshock reads id type x y vx vy; write them with dump custom)");
       break;
     } else {
-      fail("unexpected line '" + item + "' in a frame's header");
+      fail("unexpected line " + quoted_input(item) + " in a frame's header");
     }
   }
   if (atoms < 0) fail("the frame has no ITEM: NUMBER OF ATOMS before ITEM: ATOMS");
@@ -213,17 +277,18 @@ bool DumpReader::next(DumpFrame& f) {
       return t[static_cast<std::size_t>(at[static_cast<std::size_t>(k)])];
     };
     f.id.push_back(parse_integer(token(0), ok));
-    if (!ok) fail("the atom id '" + token(0) + "' is not an integer");
+    if (!ok) fail("the atom id " + quoted_input(token(0)) + " is not an integer");
     f.type.push_back(parse_integer(token(1), ok));
-    if (!ok) fail("the atom type '" + token(1) + "' is not an integer");
+    if (!ok) fail("the atom type " + quoted_input(token(1)) + " is not an integer");
     std::vector<double>* values[] = {&f.x, &f.y, &f.vx, &f.vy};
     for (int k = 2; k < kColumnCount; ++k) {
       values[k - 2]->push_back(parse_number(token(k), ok));
       if (!ok)
-        fail("the " + std::string(kColumns[k].name) + " value '" + token(k) +
-             "' is not a finite number");
+        fail("the " + std::string(kColumns[k].name) + " value " + quoted_input(token(k)) +
+             " is not a finite number");
     }
   }
+  refuse_duplicate_ids(f);
   return true;
 }
 

@@ -5,7 +5,8 @@
 // frame after frame. The columns id, type, x (or xu), y (or yu), vx and vy are read in
 // whatever order the ATOMS line names them; any other column is ignored. Every problem is
 // one UserError naming the file and line: an unreadable or truncated file, a missing
-// column, a malformed number, a triclinic box.
+// column, a malformed number, a triclinic box. Input quoted in a message is cut and
+// escaped (core/quoted_input.hpp).
 #pragma once
 
 #include <cstdio>
@@ -32,6 +33,12 @@ struct DumpFrame {
   std::size_t size() const { return id.size(); }
 };
 
+// The longest line a dump may have (ITEM: ATOMS with many columns fits many times over),
+// and the most atoms a frame may hold whatever the machine's memory: past them the file is
+// refused before it is read into memory (a file without newlines, a damaged count).
+inline constexpr std::size_t kMaxDumpLineBytes = 64 * 1024;
+inline constexpr long kMaxDumpAtoms = 1L << 40;
+
 // Reads the frames of one dump file in order.
 class DumpReader {
  public:
@@ -42,12 +49,15 @@ class DumpReader {
   DumpReader& operator=(const DumpReader&) = delete;
 
   // The next frame into `frame`; false at the end of the file. Throws UserError on a
-  // truncated or malformed frame.
+  // truncated or malformed frame: a line past kMaxDumpLineBytes or holding a NUL byte, a
+  // count of atoms the memory cannot hold, an inverted box, an atom id twice.
   bool next(DumpFrame& frame);
 
  private:
   bool read_line(std::string& line);  // false at the end of the file
   std::string expect_line(const std::string& what);
+  void check_frame_memory(long atoms) const;
+  void refuse_duplicate_ids(const DumpFrame& frame) const;
   [[noreturn]] void fail(const std::string& why) const;
 
   std::filesystem::path path_;

@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <cstring>
 
+#include "core/quoted_input.hpp"
 #include "core/user_error.hpp"
 
 namespace granshock {
@@ -24,10 +25,8 @@ const char* kind_of(mode_t mode) {
 }
 
 // A path as a message shows it: on one line.
-std::string one_line(std::string text) {
-  for (char& c : text)
-    if (c == '\n' || c == '\r') c = ' ';
-  return text;
+std::string one_line(const std::string& text) {
+  return printable_line(text, 1024);
 }
 
 }  // namespace

@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <stdexcept>
+
 #include "core/user_error.hpp"
 #include "io/fields_directory.hpp"
 
@@ -68,11 +70,15 @@ void RunDirectory::check(const fs::path& dir, DirectoryMode mode) {
   if (::access(dir.c_str(), W_OK | X_OK) != 0)
     throw UserError(fmt::format("output directory '{}' is not writable", dir.string()));
 
+  // Emptiness first, the marker second: a claim of the directory meanwhile creates its
+  // marker before anything else, so a directory found not empty shows the marker to the
+  // read after (the loser of a race for a new directory is told "in use", not "unmarked").
+  const bool empty = directory_is_empty(dir);
   const std::optional<DirectoryMarker> marker = read_marker(dir, kRunMarker);
   // Empty, or holding only the empty marker of a claim that wrote nothing else.
   if (!marker || holds_only_an_empty_marker(dir, kRunMarker)) {
-    if (mode == DirectoryMode::fields || !(directory_is_empty(dir) || marker))
-      refuse_unmarked(dir, mode);
+    if (mode == DirectoryMode::fields || !(empty || marker)) refuse_unmarked(dir, mode);
+    if (marker && locked_by_another(dir, kRunMarker)) refuse_in_use(dir, *marker);
     if (mode == DirectoryMode::resume)
       throw UserError(
           fmt::format("--resume: '{}' is empty; there is no run to resume", dir.string()));
@@ -98,29 +104,59 @@ void RunDirectory::check(const fs::path& dir, DirectoryMode mode) {
                                 dir.string()));
 }
 
+namespace {
+
+constexpr const char* kRunMarkerHeader =
+    "granshock run directory: granshock removes only its own outputs here";
+
+}  // namespace
+
 RunDirectory RunDirectory::claim(const fs::path& dir, DirectoryMode mode) {
+  if (mode == DirectoryMode::resume || mode == DirectoryMode::fields) {
+    RunDirectory held = hold(dir, mode);
+    held.settle();
+    return held;
+  }
   check(dir, mode);
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec)
     throw UserError(
         fmt::format("cannot create output directory '{}': {}", dir.string(), ec.message()));
-  RunDirectory claimed(
-      dir, DirectoryLock::take(dir, kRunMarker,
-                               "granshock run directory: granshock removes only its own "
-                               "outputs here",
-                               kRunDirectoryFormat));
+  RunDirectory claimed(dir, mode,
+                       DirectoryLock::take(dir, kRunMarker, kRunMarkerHeader, kRunDirectoryFormat));
   // The lock is ours now: check the outputs again (check() looked before we held it),
   // then remove, so that a refusal comes before any file is gone.
   check_outputs_are_files(dir, run_outputs());
-  if (mode == DirectoryMode::overwrite) remove_outputs(dir, run_outputs());
-  if (mode == DirectoryMode::resume) {  // temporaries left by a killed run
+  claimed.clean();
+  claimed.settled_ = true;
+  return claimed;
+}
+
+RunDirectory RunDirectory::hold(const fs::path& dir, DirectoryMode mode) {
+  if (mode != DirectoryMode::resume && mode != DirectoryMode::fields)
+    throw std::logic_error("RunDirectory::hold: a directory to resume or analyse only");
+  check(dir, mode);
+  RunDirectory held(dir, mode, DirectoryLock::hold(dir, kRunMarker, LockKind::exclusive));
+  check_outputs_are_files(dir, run_outputs());  // again, now that the lock is ours
+  return held;
+}
+
+void RunDirectory::settle() {
+  if (settled_) return;
+  lock_.stamp(kRunMarkerHeader, kRunDirectoryFormat);
+  clean();
+  settled_ = true;
+}
+
+void RunDirectory::clean() {
+  if (mode_ == DirectoryMode::overwrite) remove_outputs(dir_, run_outputs());
+  if (mode_ == DirectoryMode::resume) {  // temporaries left by a killed run
     std::vector<std::string> temporaries;
     for (const std::string& name : run_outputs())
       if (is_temporary(name)) temporaries.push_back(name);
-    remove_outputs(dir, temporaries);
+    remove_outputs(dir_, temporaries);
   }
-  return claimed;
 }
 
 }  // namespace granshock

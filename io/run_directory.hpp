@@ -45,13 +45,23 @@ class RunDirectory {
   // lock and (overwrite) removes the previous run's files or (resume) stale temporaries.
   static RunDirectory claim(const std::filesystem::path& dir, DirectoryMode mode);
 
+  // resume, fields: checks again and takes the lock, writing and removing nothing, so
+  // that the command holds the directory from its first read (no run can replace run.h5
+  // under `fields`) and a refusal found while reading leaves it as it was. settle() then
+  // does the rest of claim(): the marker's lines, the stale temporaries.
+  static RunDirectory hold(const std::filesystem::path& dir, DirectoryMode mode);
+  void settle();
+
   const std::filesystem::path& path() const { return dir_; }
 
  private:
-  RunDirectory(std::filesystem::path dir, DirectoryLock lock)
-      : dir_(std::move(dir)), lock_(std::move(lock)) {}
+  RunDirectory(std::filesystem::path dir, DirectoryMode mode, DirectoryLock lock)
+      : dir_(std::move(dir)), mode_(mode), lock_(std::move(lock)) {}
+  void clean();  // claim()'s removals of this mode
   std::filesystem::path dir_;
+  DirectoryMode mode_;
   DirectoryLock lock_;  // released with the object
+  bool settled_ = false;
 };
 
 }  // namespace granshock

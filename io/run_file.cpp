@@ -1,6 +1,7 @@
 #include "io/run_file.hpp"
 
 #include <fmt/format.h>
+#include <sys/stat.h>
 
 #include <algorithm>
 #include <cmath>
@@ -18,6 +19,7 @@
 #include "core/user_error.hpp"
 #include "io/file_room.hpp"
 #include "io/hdf5_helpers.hpp"
+#include "io/marked_directory.hpp"
 #include "io/regular_file.hpp"
 #include "io/run_file_growth.hpp"
 #include "version.hpp"
@@ -73,6 +75,7 @@ void create_time_element(hid_t file, const std::string& group_path, hid_t stored
     Handle space = h5::dataspace(H5Screate_simple(1, dims, max_dims), "creating a dataspace");
     Handle props = h5::plist(H5Pcreate(H5P_DATASET_CREATE), "creating dataset properties");
     h5::check(H5Pset_chunk(props.get(), 1, chunk), "setting the chunk shape");
+    h5::add_checksum(props.get());
     return h5::dataset(
         H5Dcreate2(group.get(), name, type, space.get(), H5P_DEFAULT, props.get(), H5P_DEFAULT),
         "creating '" + group_path + "/" + name + "'");
@@ -107,6 +110,9 @@ void create_time_element(hid_t file, const std::string& group_path, hid_t stored
     h5::check(H5Pset_shuffle(props.get()), "enabling shuffle");
     h5::check(H5Pset_deflate(props.get(), kSnapshotDeflate), "enabling gzip");
   }
+  // Last in the pipeline: the checksum is of the bytes stored, so a damaged chunk fails to
+  // read before gzip or shuffle see it (docs/output_format.md, "Checksums").
+  h5::add_checksum(props.get());
   Handle value = h5::dataset(H5Dcreate2(group.get(), "value", stored_type, space.get(), H5P_DEFAULT,
                                         props.get(), H5P_DEFAULT),
                              "creating '" + group_path + "/value'");
@@ -250,6 +256,11 @@ Handle open_existing(const fs::path& path, unsigned flags, const char* doing) {
     throw UserError(std::string("cannot ") + doing + " '" + path.string() + "': no such file");
   }
   require_regular_file(path, "run file");  // HDF5 would block on a FIFO
+  // Written in place: a second name would see the change (io/marked_directory.hpp).
+  if (flags & H5F_ACC_RDWR) {
+    struct stat st {};
+    if (::lstat(path.c_str(), &st) == 0 && st.st_nlink > 1) refuse_hard_link(path, st.st_nlink);
+  }
   const hid_t id = H5Fopen(path.c_str(), flags, H5P_DEFAULT);
   if (id < 0) {
     throw UserError(std::string("cannot ") + doing + " '" + path.string() +
@@ -464,7 +475,7 @@ void write_layout(hid_t f, const std::string& scene_toml_as_given,
     create_time_element(f, all + "/radius", H5T_IEEE_F64LE, {0}, &kFloatFill, H5T_NATIVE_DOUBLE,
                         "m");
     h5::write_dataset(f, kSpeciesRadius, contents.species_radius,
-                      {hsize_t(contents.species_radius.size())});
+                      {hsize_t(contents.species_radius.size())}, h5::Checksum::fletcher32);
   }
   if (contents.angular_velocity) {
     create_time_element(f, all + "/angular_velocity", H5T_IEEE_F64LE, {0}, &kFloatFill,
@@ -953,8 +964,9 @@ void RunFile::write_array(const std::string& dataset, const std::vector<double>&
     throw std::invalid_argument("RunFile::write_array: shape does not match the value count");
   }
   make_room(run_growth::whole_dataset(values.size() * sizeof(double)), "'" + dataset + "'");
-  h5::naming_file_in_errors(path_, "writing",
-                            [&] { h5::write_dataset(file_.get(), dataset, values, dims); });
+  h5::naming_file_in_errors(path_, "writing", [&] {
+    h5::write_dataset(file_.get(), dataset, values, dims, h5::Checksum::fletcher32);
+  });
 }
 
 std::vector<double> RunFile::read_array(const std::string& dataset,

@@ -100,8 +100,11 @@ std::uintmax_t frame_views(long frames, std::uintmax_t views_per_frame, long ver
 }
 
 std::uintmax_t whole_dataset(std::uintmax_t bytes) {
-  // Its object header and its link: the group's symbol table node and name heap.
-  return bytes + 4 * kPerChange;
+  // Its object header and its link: the group's symbol table node and name heap; stored
+  // checksummed (h5::Checksum::fletcher32), in chunks of at most 1 GiB, each 4 bytes
+  // longer, under one index node.
+  const std::uintmax_t chunks = bytes / (KiB * KiB * KiB) + 1;
+  return bytes + 4 * kPerChange + kIndexNode + chunks * kPerAllocation;
 }
 
 std::uintmax_t attribute(std::uintmax_t bytes) {

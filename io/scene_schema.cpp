@@ -807,6 +807,9 @@ const Key kObstacleKeys[] = {
        t.insert(k, toml::array{c[0], c[1]});
      }},
 };
+// The least gap an obstacle leaves across the periodic channel, in particle diameters.
+constexpr double kMinObstacleGapDiameters = 3;
+
 // The shape's size keys with their values, as a refusal names them.
 std::string obstacle_sizes(const Obstacle& c) {
   switch (c.shape) {
@@ -818,6 +821,19 @@ std::string obstacle_sizes(const Obstacle& c) {
       return fmt::format("width {} m, thickness {} m", c.width_m, c.thickness_m);
   }
   return {};
+}
+
+// The keys that set the shape's width across the flow (the D of delta/D).
+std::string frontal_width_keys(const Obstacle& c) {
+  switch (c.shape) {
+    case ObstacleShape::cylinder:
+      return "obstacle.diameter";
+    case ObstacleShape::wedge:
+      return "obstacle.half_angle' and 'obstacle.length";
+    case ObstacleShape::plate:
+      return "obstacle.width";
+  }
+  return "obstacle";
 }
 
 void after_obstacle(Reading& st) {
@@ -832,6 +848,16 @@ void after_obstacle(Reading& st) {
                      c.centre[1], obstacle_sizes(c), 2 * across, 2 * along),
          fmt::format("the {} must lie inside the domain, downstream of the insertion strip",
                      choice_name(c.shape)));
+  // The periodic channel beside it: an obstacle as wide as the domain closes it, and the
+  // flow it is there to divert piles up in front of it instead.
+  const double gap = width - 2 * across, d = st.s.setup.max_diameter();
+  if (gap < kMinObstacleGapDiameters * d)
+    fail(
+        frontal_width_keys(c),
+        fmt::format("{} m across the flow, in a channel of domain.width = {} m", 2 * across, width),
+        fmt::format("the {} leaves a gap of {:.3g} particle diameters beside it; it must leave "
+                    "at least {:g} for the flow to pass: make it narrower or the domain wider",
+                    choice_name(c.shape), gap / d, kMinObstacleGapDiameters));
   st.s.setup.obstacle = c;
 }
 const Table kObstacle = table("obstacle", kObstacleKeys, after_obstacle);
@@ -851,9 +877,13 @@ const Key kTimeKeys[] = {
      [](TableReader& r, Reading& st, const std::string& k) {
        const double duration = st.s.run.duration_s;
        const double start = st.s.run.production_start_s = r.number(k, 0.5 * duration);
+       // Both keys named, time.duration first: the window is empty when either is wrong,
+       // and a --resume that shortens time.duration meets this before the checkpoint.
        if (!(start >= 0 && start < duration))
-         fail(r.key(k), fmt::format("{}", start),
-              fmt::format("must be in [0, {}): before the end of time.duration", duration));
+         throw UserError(fmt::format(
+             "scene keys 'time.duration' = {} s and '{}' = {} s: the production window "
+             "[production_start, duration) is empty; time.production_start must be in [0, {})",
+             duration, r.key(k), start, duration));
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.s.run.production_start_s);

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/quoted_input.hpp"
 #include "core/user_error.hpp"
 
 namespace granshock::scene_toml {
@@ -22,10 +23,8 @@ std::string fmt_bound(double b) {
 }  // namespace
 
 std::string clip(const std::string& text) {
-  std::string out = text.size() <= kEchoLength ? text : text.substr(0, kEchoLength) + "...";
-  for (char& c : out)
-    if (c == '\n' || c == '\r') c = ' ';
-  return out;
+  // Cut and escaped (core/quoted_input.hpp): no control byte of a value reaches the terminal.
+  return printable_line(text, kEchoLength);
 }
 
 void fail(const std::string& key, const std::string& value, const std::string& what) {

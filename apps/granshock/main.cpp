@@ -21,11 +21,13 @@
 #include "cases/collision/head_on_collision.hpp"
 #include "cases/dump/from_dump_command.hpp"
 #include "cases/study/study_command.hpp"
+#include "cases/tradeoff/accuracy_choice.hpp"
 #include "cases/tradeoff/tradeoff_command.hpp"
 #include "core/allocation_failure.hpp"
 #include "core/choice_names.hpp"
 #include "core/failure_agreement.hpp"
 #include "core/large_blocks.hpp"
+#include "core/quoted_input.hpp"
 #include "core/user_error.hpp"
 #include "device/kokkos_runtime.hpp"
 #include "io/hdf5_runtime.hpp"
@@ -35,11 +37,13 @@
 namespace {
 
 // Messages are printed on one line, however they were built.
+// A message as it reaches stderr: one line, with whatever input it quotes cut and its
+// control bytes escaped (core/quoted_input.hpp), whichever code made it.
 std::string one_line(std::string text) {
   for (char& c : text)
     if (c == '\n' || c == '\r') c = ' ';
   while (!text.empty() && text.back() == ' ') text.pop_back();
-  return text;
+  return granshock::printable_line(text);
 }
 
 // An option whose value is a name of Choices<Enum> (core/choice_names.hpp): CLI11 checks
@@ -113,6 +117,29 @@ std::string whole_case_number(const std::string& text) {
              : text + " is not a case number (0, 1, 2, ...)";
 }
 
+// --accuracy: the budget as parse_error_budget reads it, refused at once, so that an empty
+// value is not taken for no budget at all.
+std::string error_budget(const std::string& text) {
+  try {
+    granshock::parse_error_budget(text);
+    return std::string();
+  } catch (const granshock::UserError& e) {
+    // CLI11 names the option before the message.
+    const std::string why = e.what(), flag = "--accuracy ";
+    return why.compare(0, flag.size(), flag) == 0 ? why.substr(flag.size()) : why;
+  }
+}
+
+// --accuracy and --accuracy-table, which means nothing without it (run, study).
+template <class Options>
+void add_accuracy_options(CLI::App& cmd, Options& o, const std::string& budget_help,
+                          const std::string& table_help) {
+  CLI::Option* budget = cmd.add_option("--accuracy", o.accuracy, budget_help)->check(error_budget);
+  cmd.add_option("--accuracy-table", o.accuracy_table, table_help)
+      ->check(CLI::ExistingFile)
+      ->needs(budget);
+}
+
 void add_run_command(CLI::App& app, granshock::RunOptions& o) {
   auto* cmd = app.add_subcommand("run", "simulate a bow-shock scene and write its run directory");
   cmd->add_option("scene", o.scene_file, "scene file (TOML)")->required();
@@ -145,13 +172,11 @@ void add_run_command(CLI::App& app, granshock::RunOptions& o) {
   cmd->add_flag("--dry-run", o.dry_run,
                 "check the scene and the output directory, print the resolved scene, write "
                 "nothing");
-  cmd->add_option("--accuracy", o.accuracy,
-                  "error budget, e.g. 2%: choose dt, stiffness softening and precision from a "
-                  "measured trade table (docs/accuracy.md) and say what was chosen");
-  cmd->add_option("--accuracy-table", o.accuracy_table,
-                  "the trade.json of `granshock tradeoff` to choose from (default: the paper "
-                  "case's, docs/results/tradeoff/paper_d50_u2375)")
-      ->check(CLI::ExistingFile);
+  add_accuracy_options(*cmd, o,
+                       "error budget, e.g. 2%: choose dt, stiffness softening and precision from "
+                       "a measured trade table (docs/accuracy.md) and say what was chosen",
+                       "the trade.json of `granshock tradeoff` to choose from (default: the "
+                       "paper case's, docs/results/tradeoff/paper_d50_u2375)");
   add_no_figures_flag(*cmd, o.figures);
 }
 
@@ -195,12 +220,11 @@ void add_study_command(CLI::App& app, granshock::StudyOptions& o) {
       ->check(whole_case_number);
   cmd->add_flag("--collect", o.collect,
                 "build the table and figures from the finished cases; run nothing");
-  cmd->add_option("--accuracy", o.accuracy,
-                  "error budget, e.g. 5%: each case's dt, stiffness softening and precision "
-                  "chosen from a measured trade table for its own scene (docs/study.md)");
-  cmd->add_option("--accuracy-table", o.accuracy_table,
-                  "the trade.json to choose from (default: the paper case's)")
-      ->check(CLI::ExistingFile);
+  add_accuracy_options(*cmd, o,
+                       "error budget, e.g. 5%: each case's dt, stiffness softening and "
+                       "precision chosen from a measured trade table for its own scene "
+                       "(docs/study.md)",
+                       "the trade.json to choose from (default: the paper case's)");
   cmd->add_option_function<std::string>(
          "--emit",
          [&o](const std::string& name) {
@@ -413,7 +437,7 @@ int main(int argc, char** argv) {
     return e.exit_code();  // another rank failed and said why
   } catch (const granshock::NumericalFailure& e) {
     // From global sums: every rank meets it at the same step.
-    return leave(4, std::string("granshock: error: ") + e.what(), true);
+    return leave(4, "granshock: error: " + one_line(e.what()), true);
   } catch (const granshock::UserError& e) {
     return leave(2, "granshock: error: " + one_line(e.what()), false);
   } catch (const std::bad_alloc& e) {
@@ -425,7 +449,7 @@ int main(int argc, char** argv) {
     // Kokkos reports an allocation it could not make as a runtime_error.
     if (const auto memory = granshock::allocation_failure(e.what()))
       return leave(2, "granshock: error: " + *memory, false);
-    return leave(3, std::string("granshock: internal error: ") + e.what(), false);
+    return leave(3, "granshock: internal error: " + one_line(e.what()), false);
   }
   return 0;
 }

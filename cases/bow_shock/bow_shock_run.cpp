@@ -148,10 +148,19 @@ int BowShockRun::execute_or_throw() {
   agree_on_failure(comm_, [&] { prepare(); });
   agree_on_failure(comm_, [&] {
     throw_if_interrupted();
-    // Every check is done: from here on the run owns the directory (and holds its lock).
-    if (root_) run_directory_.emplace(RunDirectory::claim(dir_, mode_));
-    claimed_ = true;
+    // Every check of the scene is done: from here on the run holds the directory's lock. A
+    // resume reads and checks the checkpoint under it before it changes anything, so that a
+    // refused --resume leaves the directory as it was (the marker, the temporaries).
+    if (root_ && options_.resume) run_directory_.emplace(RunDirectory::hold(dir_, mode_));
     if (options_.resume) read_checkpoint_and_check();
+    if (root_ && !options_.resume) run_directory_.emplace(RunDirectory::claim(dir_, mode_));
+    if (root_ && options_.resume) {
+      RunFile::check_resumable(
+          dir_ / "run.h5", checkpoint_state_.step,
+          {checkpoint_extras_.run_id, checkpoint_extras_.run_frames, checkpoint_extras_.run_rows});
+      run_directory_->settle();
+    }
+    claimed_ = true;
     open_run_file();
   });
   if (options_.resume) agree_on_failure(comm_, [&] { resume(); });

@@ -46,7 +46,7 @@ RunExtension plan_extension(const Scene& before, const Scene& after, long step) 
   if (!e.changes()) return e;
   if (e.duration_after != e.duration_before && after.total_steps() <= step)
     throw UserError(fmt::format(
-        "--resume: scene key '{}' = {:g} s (was {:g} s) ends by the checkpoint at t = {:g} s "
+        "--resume: scene key '{}' = {} s (was {} s) ends by the checkpoint at t = {} s "
         "(step {}): a resume may lengthen the run, not end it before what it has simulated",
         kDuration, e.duration_after, e.duration_before, e.time, step));
 
@@ -69,29 +69,29 @@ RunExtension plan_extension(const Scene& before, const Scene& after, long step) 
 
   if (e.production_start_after != e.production_start_before)
     throw UserError(fmt::format(
-        "--resume: scene key '{}' = {:g} s (was {:g} s): the checkpoint at t = {:g} s holds the "
-        "{} field samples of a window from {:g} s, not the {} a window from {:g} s takes by "
-        "then; keep {:g} s, or move it to t = {:g} s or later to start a new window (the "
+        "--resume: scene key '{}' = {} s (was {} s): the checkpoint at t = {} s holds the "
+        "{} field samples of a window from {} s, not the {} a window from {} s takes by "
+        "then; keep {} s, or move it to t = {} s or later to start a new window (the "
         "earlier samples are then dropped)",
         kProductionStart, e.production_start_after, e.production_start_before, e.time, taken,
         e.production_start_before, total(new_plan.samples_by(step)), e.production_start_after,
         e.production_start_before, e.time));
   throw UserError(fmt::format(
-      "--resume: scene key '{}' = {:g} s (was {:g} s): the {} field samples taken by the "
-      "checkpoint at t = {:g} s lie in the output.blocks = {} blocks of the window {:g} to {:g} "
-      "s, and a window to {:g} s cuts its blocks elsewhere, so the block sums cannot continue; "
-      "set time.production_start to {:g} s or later to start a new window (the earlier samples "
+      "--resume: scene key '{}' = {} s (was {} s): the {} field samples taken by the "
+      "checkpoint at t = {} s lie in the output.blocks = {} blocks of the window {} to {} "
+      "s, and a window to {} s cuts its blocks elsewhere, so the block sums cannot continue; "
+      "set time.production_start to {} s or later to start a new window (the earlier samples "
       "are then dropped), or start again with --overwrite",
       kDuration, e.duration_after, e.duration_before, taken, e.time, old_plan.blocks(),
       e.production_start_before, e.duration_before, e.duration_after, e.time));
 }
 
 std::string extension_note(const RunExtension& e) {
-  std::string note = fmt::format("granshock: --resume at step {} (t = {:g} s):", e.step, e.time);
+  std::string note = fmt::format("granshock: --resume at step {} (t = {} s):", e.step, e.time);
   if (e.duration_after != e.duration_before)
-    note += fmt::format(" time.duration {:g} s -> {:g} s", e.duration_before, e.duration_after);
+    note += fmt::format(" time.duration {} s -> {} s", e.duration_before, e.duration_after);
   if (e.production_start_after != e.production_start_before)
-    note += fmt::format("{} time.production_start {:g} s -> {:g} s",
+    note += fmt::format("{} time.production_start {} s -> {} s",
                         e.duration_after != e.duration_before ? "," : "", e.production_start_before,
                         e.production_start_after);
   if (e.samples_dropped > 0)

@@ -1,6 +1,7 @@
 #include "cases/bow_shock/run_log.hpp"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -13,6 +14,7 @@
 #include <fmt/format.h>
 
 #include "core/user_error.hpp"
+#include "io/marked_directory.hpp"
 
 namespace granshock {
 
@@ -63,6 +65,14 @@ void RunLog::open(const std::filesystem::path& dir) {
   fd_ = ::open(path_.c_str(), O_WRONLY | O_APPEND | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0644);
   if (fd_ < 0)
     throw UserError(fmt::format("cannot write '{}': {}", path_.string(), std::strerror(errno)));
+  // Nor into a file with a second name (a hard link made since the check): appending would
+  // change that file too.
+  struct stat st {};
+  if (::fstat(fd_, &st) == 0 && st.st_nlink > 1) {
+    ::close(fd_);
+    fd_ = -1;
+    refuse_hard_link(path_, st.st_nlink);
+  }
   for (const std::string& line : pending_) write(line);
   pending_.clear();
 }

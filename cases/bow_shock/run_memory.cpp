@@ -98,33 +98,6 @@ MemoryEstimate estimate_run_memory(const Scene& s, int processes) {
   return estimate_run_memory(s, processes, host ? Space().concurrency() : 0);
 }
 
-std::optional<double> available_memory_bytes() {
-  std::optional<double> available;
-  std::ifstream in("/proc/meminfo");
-  for (std::string line; std::getline(in, line);) {
-    std::istringstream fields(line);
-    std::string key, unit;
-    double kib = 0;
-    if (fields >> key >> kib >> unit && key == "MemAvailable:" && unit == "kB")
-      available = kib * 1024;
-  }
-  rlimit limit{};
-  if (getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY) {
-    // The limit counts the address space already mapped (libraries, thread stacks).
-    double mapped = 0;
-    std::ifstream status("/proc/self/status");
-    for (std::string line; std::getline(status, line);) {
-      std::istringstream fields(line);
-      std::string key;
-      double kib = 0;
-      if (fields >> key >> kib && key == "VmSize:") mapped = kib * 1024;
-    }
-    available =
-        std::min(available.value_or(INFINITY), std::max(0.0, double(limit.rlim_cur) - mapped));
-  }
-  return available;
-}
-
 void check_run_memory(const Scene& s, const MemoryEstimate& m, double available) {
   if (m.total() <= available) return;
   const double particles = m.particles + m.host, sums = m.field_sums + m.analysis;

@@ -10,6 +10,7 @@
 #include <optional>
 #include <string>
 
+#include "core/available_memory.hpp"
 #include "core/scene.hpp"
 
 namespace granshock {
@@ -34,10 +35,6 @@ struct MemoryEstimate {
 MemoryEstimate estimate_run_memory(const Scene& scene, int processes, int threads);
 // The same for this build's default backend and thread count.
 MemoryEstimate estimate_run_memory(const Scene& scene, int processes = 1);
-
-// MemAvailable of /proc/meminfo in bytes, lowered to what the address-space limit
-// (ulimit -v) leaves this process when one is set; nothing where neither can be read.
-std::optional<double> available_memory_bytes();
 
 // Throws UserError naming the key that drives the estimate when the run needs more than
 // `available` bytes.

@@ -1,9 +1,13 @@
 #include "cases/dump/dump_sums.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <sstream>
 
+#include "analysis/field_sampling_check.hpp"
 #include "cases/bow_shock/sampling_plan.hpp"
+#include "core/available_memory.hpp"
 #include "core/user_error.hpp"
 #include "sampling/bin_accumulator.hpp"
 
@@ -76,6 +80,25 @@ std::string box_text(const DumpFrame& f) {
   return s.str();
 }
 
+// The map's domain is the dump's box in x and y: a map of another width would fold x into
+// its own period, and a dump in other units (mm) would bin nothing where it should. Checked
+// on the first frame; every later frame has its box (sum_dump_frames).
+void check_box_against_map(const DumpFrame& f, const Box& box) {
+  for (int k = 0; k < 2; ++k) {
+    const double length = box.length(k);
+    const double tolerance = 1e-6 * length;
+    if (std::abs(f.box_lo[k] - box.lo[k]) <= tolerance &&
+        std::abs(f.box_hi[k] - box.hi[k]) <= tolerance)
+      continue;
+    throw UserError(fmt::format(
+        "the frame at {} has the box {} = [{:.17g}, {:.17g}] m, the map's scene [{:.17g}, "
+        "{:.17g}] m (domain.{}): granshock bins the map's domain, so the dump's box must be it, "
+        "in metres (SI units, as LAMMPS' units si writes them)",
+        f.where, "xy"[k], f.box_lo[k], f.box_hi[k], box.lo[k], box.hi[k],
+        k == 0 ? "width" : "length"));
+  }
+}
+
 // Called after add_dump_frame, which refuses unknown types.
 double kinetic_energy(const DumpFrame& f, const DumpMap& map) {
   double e = 0;
@@ -116,9 +139,28 @@ void add_dump_frame(const DumpFrame& f, const DumpMap& map, int block, BinSums& 
   if (profile) profile->samples[static_cast<std::size_t>(block)] += 1;
 }
 
+void check_dump_analysis_fits(const Scene& scene) {
+  // The map's bins as a run's are checked (at least a particle wide, enough of them across
+  // the obstacle, at most 1 GiB of sums), which also keeps every count below an int's range.
+  validate_bins(scene);
+  // Every block's sums, and the analysis's few copies of them (as a run's final analysis:
+  // cases/bow_shock/run_memory.hpp), against what this process may take.
+  const FieldSampling layout = SamplingPlan(scene).layout();
+  double block = double(layout.grid.bins()) * layout.grid.quantities() * 8;
+  if (layout.has_profile()) block += double(layout.profile.bins()) * layout.grid.quantities() * 8;
+  const double needed = 5 * block * layout.grid.blocks;
+  if (const auto available = available_memory_bytes(); available && needed > *available)
+    throw UserError(fmt::format(
+        "scene keys 'numerics.bin_size' = {} m x 'output.blocks' = {} of the map: its field "
+        "sums and their analysis need about {:.3g} GB, more than the {:.3g} GB available "
+        "(MemAvailable, ulimit -v); make the bins larger or the blocks fewer",
+        scene.bin_size_m, scene.run.blocks, needed / 1e9, *available / 1e9));
+}
+
 DumpSums sum_dump_frames(const DumpMap& map, DumpFormat format,
                          const std::vector<std::filesystem::path>& files) {
   const Scene& scene = map.scene.scene;
+  check_dump_analysis_fits(scene);
   const SamplingPlan plan(scene);
   DumpSums out;
   out.grid = empty_sums(plan.layout().grid, scene);
@@ -126,6 +168,7 @@ DumpSums sum_dump_frames(const DumpMap& map, DumpFormat format,
   const long first_step = std::llround(scene.run.production_start_s / scene.setup.dt);
   const long end_step = scene.total_steps();
 
+  const Box& box_of_map = scene.setup.box;
   DumpFrame frame, first;
   std::optional<long> previous_step;
   std::string previous_where;
@@ -137,20 +180,27 @@ DumpSums sum_dump_frames(const DumpMap& map, DumpFormat format,
                         std::to_string(frame.timestep) + ", not after " +
                         std::to_string(*previous_step) + " of the frame at " + previous_where +
                         " (give the files in time order, each frame once)");
-      if (out.frames_read == 0)
+      if (out.frames_read == 0) {
+        check_box_against_map(frame, box_of_map);
         first = frame;
-      else if (!same_box(frame, first))
+      } else if (!same_box(frame, first))
         throw UserError("mixed box sizes: the frame at " + frame.where + " has the box " +
                         box_text(frame) + ", the first frame (" + first.where + ") " +
                         box_text(first) + "; granshock bins a fixed domain");
-      previous_step = frame.timestep;
-      previous_where = frame.where;
       const double t =
           frame.time ? *frame.time : double(frame.timestep) * map.seconds_per_timestep();
+      // Two frames at one time are one sample written twice, not two samples.
+      if (out.frames_read > 0 && !(t > out.last_time))
+        throw UserError(fmt::format(
+            "frames out of order: the frame at {} is at time {:.17g} s, not after {:.17g} s of "
+            "the frame at {} (ITEM: TIME must grow from frame to frame; give each frame once)",
+            frame.where, t, out.last_time, previous_where));
       // The step of granshock's time grid the frame falls on: the window and its blocks
       // are those of a run of the scene (SamplingPlan).
       const long step = std::llround(t / scene.setup.dt);
       const bool in_window = step >= first_step && step < end_step;
+      previous_step = frame.timestep;
+      previous_where = frame.where;
       add_dump_frame(frame, map, in_window ? plan.block_of(step) : -1, out.grid, out.profile);
       out.series.time.push_back(t - map.flow_start);
       out.series.particles.push_back(double(frame.size()));

@@ -27,10 +27,16 @@ struct DumpSums {
   RunSeries series;
 };
 
+// Throws UserError naming the keys when the map's bins are not ones a run could sample
+// (validate_field_sampling) or their sums would need more memory than there is.
+void check_dump_analysis_fits(const Scene& scene);
+
 // Reads every frame of `files`, in order, and sums those in the production window
-// [time.production_start, time.duration). Throws UserError (nothing written) for an atom
-// type the map does not name, frames whose timesteps do not increase, a box that differs
-// from the first frame's, no frame in the window, or any error of DumpReader.
+// [time.production_start, time.duration). Throws UserError (nothing written) for bins that
+// do not fit (check_dump_analysis_fits), an atom type the map does not name, frames whose
+// timesteps or times do not increase, a first frame whose box is not the map's domain, a
+// box that differs from the first frame's, no frame in the window, or any error of
+// DumpReader.
 DumpSums sum_dump_frames(const DumpMap& map, DumpFormat format,
                          const std::vector<std::filesystem::path>& files);
 

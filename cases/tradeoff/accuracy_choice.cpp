@@ -11,6 +11,7 @@
 #include "cases/bow_shock/run_checks.hpp"
 #include "cases/tradeoff/tradeoff_plan.hpp"
 #include "core/choice_names.hpp"
+#include "core/quoted_input.hpp"
 #include "core/user_error.hpp"
 #include "io/scene_file.hpp"
 #include "tradeoff_paths.hpp"
@@ -122,14 +123,21 @@ SettingChoice reference_outside_range(const AccuracyTable& table, const SceneCor
 
 double parse_error_budget(const std::string& text) {
   const auto bad = [&] {
-    return UserError(fmt::format(
-        "--accuracy '{}': give the error budget as a percentage, e.g. --accuracy 2%", text));
+    return UserError(
+        fmt::format("--accuracy {}: give the error budget as a percentage, e.g. --accuracy 2%",
+                    quoted_input(text)));
   };
   if (text.size() < 2 || text.back() != '%') throw bad();
+  // Decimal digits with at most one point, nothing else: strtod alone would also read hex
+  // ("0x5"), "inf", exponents and leading blanks.
   const std::string number = text.substr(0, text.size() - 1);
-  char* end = nullptr;
-  const double value = std::strtod(number.c_str(), &end);
-  if (end != number.c_str() + number.size() || !std::isfinite(value) || value <= 0) throw bad();
+  const bool decimal = number.find_first_not_of("0123456789.") == std::string::npos &&
+                       std::count(number.begin(), number.end(), '.') <= 1 &&
+                       number.find_first_of("0123456789") != std::string::npos &&
+                       number.size() <= 32;
+  if (!decimal) throw bad();
+  const double value = std::strtod(number.c_str(), nullptr);
+  if (!std::isfinite(value) || value <= 0) throw bad();
   return value / 100;
 }
 

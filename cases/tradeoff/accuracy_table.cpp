@@ -11,6 +11,7 @@
 
 #include "analysis/json_file.hpp"
 #include "core/choice_names.hpp"
+#include "core/quoted_input.hpp"
 #include "core/user_error.hpp"
 
 namespace granshock {
@@ -147,6 +148,11 @@ CertifiedRange read_range(const TableFail& fail, const json& r) {
   return range;
 }
 
+// A JSON value of the table, quoted in a message (core/quoted_input.hpp).
+std::string clip_json(const json& value) {
+  return quoted_input(value.dump());
+}
+
 }  // namespace
 
 AccuracyTable read_accuracy_table(const std::filesystem::path& path) {
@@ -161,6 +167,15 @@ AccuracyTable read_accuracy_table(const std::filesystem::path& path) {
   if (!doc.is_object() || !doc.contains("cases") || !doc["cases"].is_array() ||
       !doc.contains("noise") || !doc["noise"].is_object())
     fail("has no \"cases\" and \"noise\" (not a trade.json of granshock tradeoff)");
+  // The layout's version (cases/tradeoff/trade_table.py writes it): a table of another
+  // version may mean other things by the same keys.
+  if (!doc.contains("table") || doc["table"] != kTradeTableVersion)
+    fail(
+        fmt::format("is {}, not \"{}\" (\"table\"): make it again with this granshock's "
+                    "`granshock tradeoff`",
+                    doc.contains("table") ? "of version " + clip_json(doc["table"])
+                                          : std::string("of no version"),
+                    kTradeTableVersion));
 
   std::map<std::string, json> by_name;
   for (std::size_t k = 0; k < doc["cases"].size(); ++k) {

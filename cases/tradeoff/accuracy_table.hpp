@@ -54,8 +54,12 @@ struct AccuracyTable {
   std::optional<CertifiedRange> range;
 };
 
-// Reads trade.json; throws UserError naming the file and the cause where it cannot be read
-// or lacks the cases "reference", "scene" and "seed-2" or a setting's columns.
+// The version trade.json names in "table" (cases/tradeoff/trade_table.py writes it).
+inline constexpr const char* kTradeTableVersion = "granshock trade table 1";
+
+// Reads trade.json; throws UserError naming the file and the cause where it cannot be read,
+// is of another version or lacks the cases "reference", "scene" and "seed-2" or a setting's
+// columns.
 AccuracyTable read_accuracy_table(const std::filesystem::path& trade_json);
 
 }  // namespace granshock

@@ -14,6 +14,8 @@
 #include <omp.h>
 #endif
 
+#include "core/quoted_input.hpp"
+
 namespace granshock {
 
 namespace {
@@ -50,14 +52,17 @@ void cap_host_threads(int argc, char** argv) {
 #if defined(KOKKOS_ENABLE_OPENMP)
   // OMP_NUM_THREADS as the OpenMP runtime read it (also "8,2" lists), or all CPUs.
   if (const int asked = omp_get_max_threads(); asked > cap) {
+    // The variable's own text: the runtime's count of a number past int wraps
+    // (99999999999 reads as 1215752191).
     const char* env = std::getenv("OMP_NUM_THREADS");
-    say_capped(env ? "OMP_NUM_THREADS" : "the OpenMP runtime", std::to_string(asked), cap);
+    say_capped(env ? "OMP_NUM_THREADS" : "the OpenMP runtime",
+               env ? printable_line(env, 64) : std::to_string(asked), cap);
     omp_set_num_threads(cap);
   }
 #endif
   if (const char* env = std::getenv("KOKKOS_NUM_THREADS")) {
     if (const auto capped = capped_count(env, cap)) {
-      say_capped("KOKKOS_NUM_THREADS", env, cap);
+      say_capped("KOKKOS_NUM_THREADS", printable_line(env, 64), cap);
       setenv("KOKKOS_NUM_THREADS", capped->c_str(), 1);
     }
   }
@@ -68,7 +73,7 @@ void cap_host_threads(int argc, char** argv) {
       const std::size_t length = std::strlen(flag);
       if (std::strncmp(argv[k], flag, length) != 0) continue;
       if (const auto capped = capped_count(argv[k] + length, cap)) {
-        say_capped(std::string(flag, length - 1), argv[k] + length, cap);
+        say_capped(std::string(flag, length - 1), printable_line(argv[k] + length, 64), cap);
         rewritten.push_back(flag + *capped);
         argv[k] = rewritten.back().data();
       }

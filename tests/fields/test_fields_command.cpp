@@ -407,6 +407,39 @@ TEST(FieldsCommandRefuses, ARunDirectoryWithoutItsMarker) {
   EXPECT_EQ(tree(run), before);
 }
 
+// `fields DIR` read run.h5 before it took the lock, and `run --overwrite` started meanwhile
+// replaced the run under it: both exited 0 and DIR held the new run with the old fields.
+// The lock is held from before the first read, exclusively in place, shared for --out.
+TEST(FieldsCommandHolds, TheRunDirectoryFromBeforeItsFirstRead) {
+  test::ScratchDir tmp;
+  const fs::path run = tmp.path() / "run", other = tmp.path() / "other";
+  make_run(run, 12);
+  make_run(other, 12);
+  std::vector<std::string> seen;
+  FieldsCommandOptions o = kNoFigures;
+  o.before_read = [&](const fs::path& dir) {
+    // A run started now, as another process: refused, and with it its --overwrite.
+    try {
+      RunDirectory::check(dir, DirectoryMode::overwrite);
+      seen.push_back("(a run was accepted)");
+    } catch (const UserError& e) {
+      seen.push_back(e.what());
+    }
+  };
+  ASSERT_EQ(fields_command({run}, {}, o), 0);
+  ASSERT_EQ(fields_command({run}, tmp.path() / "out", o), 0);
+  ASSERT_EQ(fields_command({run, other}, tmp.path() / "both", o), 0);
+  ASSERT_EQ(seen.size(), 4u);
+  for (const std::string& why : seen)
+    EXPECT_NE(why.find("is in use by another granshock run or fields command"), std::string::npos)
+        << why;
+  // Readers share: a second `fields RUN --out` reads while the first does.
+  const DirectoryLock reading = DirectoryLock::hold(run, kRunMarker, LockKind::shared);
+  EXPECT_EQ(refusal([&] { fields_command({run}, tmp.path() / "out2", kNoFigures); }), "(accepted)");
+  const std::string why = refusal([&] { fields_command({run}, {}, kNoFigures); });
+  EXPECT_NE(why.find("is in use by another granshock"), std::string::npos) << why;
+}
+
 TEST(FieldsCommandRefuses, ADirectoryAnotherGranshockHolds) {
   test::ScratchDir tmp;
   const fs::path run = tmp.path() / "run";

@@ -321,3 +321,131 @@ TEST(FromDump, ItemTimeGivesTheFramesTime) {
   EXPECT_EQ(s.grid.samples, (std::vector<double>{1, 1}));
   EXPECT_EQ(total_count(s.grid), 6);
 }
+
+// ---- Hostile dumps (docs/stability.md, "Dumps"): each refused in one line that names the
+// frame or item, before its memory is taken.
+
+namespace {
+
+// The message of summing `text` as a LAMMPS dump of the hand map, or "" when accepted.
+std::string refusal(const std::string& text, const std::string& map_text = kHandMap) {
+  const DumpMap map = parse_dump_map(map_text, "hand map");
+  const fs::path dump = write_temp("hostile.dump", text);
+  std::string message;
+  try {
+    sum_dump_frames(map, DumpFormat::lammps, {dump});
+  } catch (const UserError& e) {
+    message = e.what();
+  }
+  fs::remove(dump);
+  return message;
+}
+
+// `text` with every `what` replaced.
+std::string replaced(std::string text, const std::string& what, const std::string& with) {
+  for (std::size_t at = 0; (at = text.find(what, at)) != std::string::npos; at += with.size())
+    text.replace(at, what.size(), with);
+  return text;
+}
+
+}  // namespace
+
+// A valid dump followed by NUL bytes (a preallocated or damaged file) was read as a last
+// line of gigabytes and its garbage ignored; a file without newlines the same.
+TEST(FromDumpHostile, NulBytesAndOverlongLinesAreRefusedAtTheirLine) {
+  const std::string nul = refusal(std::string(kHandDump) + std::string(1 << 20, '\0'));
+  EXPECT_NE(nul.find("line 36: the line holds a NUL byte"), std::string::npos) << nul;
+  const std::string line =
+      refusal(std::string(kHandDump) + std::string(kMaxDumpLineBytes + 1, 'x'));
+  EXPECT_NE(line.find("line 36: the line is longer than 65536 bytes"), std::string::npos) << line;
+  // Exactly at the cap is a line (here not a frame's start: refused for that, quoted short).
+  const std::string at_cap = refusal(std::string(kHandDump) + std::string(kMaxDumpLineBytes, 'x'));
+  EXPECT_NE(at_cap.find("expected 'ITEM: TIMESTEP'"), std::string::npos) << at_cap;
+  EXPECT_LT(at_cap.size(), 400u) << "the garbage line is quoted whole";
+}
+
+// NUMBER OF ATOMS past what memory holds was an internal error (vector::reserve) or "make
+// the scene smaller"; it names the item now.
+TEST(FromDumpHostile, CountsPastTheMemoryAreRefusedNamingTheItem) {
+  for (const char* count : {"9223372036854775807", "4000000000", "1099511627777"}) {
+    const std::string m = refusal(replaced(kHandDump, "ITEM: NUMBER OF ATOMS\n6\n",
+                                           std::string("ITEM: NUMBER OF ATOMS\n") + count + "\n"));
+    EXPECT_NE(m.find(std::string("ITEM: NUMBER OF ATOMS ") + count + ": a frame of that many"),
+              std::string::npos)
+        << m;
+  }
+  const std::string overflow = refusal(replaced(kHandDump, "ITEM: NUMBER OF ATOMS\n6\n",
+                                                "ITEM: NUMBER OF ATOMS\n99999999999999999999\n"));
+  EXPECT_NE(overflow.find("ITEM: NUMBER OF ATOMS '99999999999999999999' is not a whole number"),
+            std::string::npos)
+      << overflow;
+}
+
+// Frames at one time were two samples of one state ("steady: true"); an id twice in a
+// frame was two particles.
+TEST(FromDumpHostile, FramesAtOneTimeAndAnIdTwiceAreRefusedNamingTheFrame) {
+  std::string same_time = kHandDump;
+  same_time = replaced(same_time, "ITEM: TIMESTEP\n0\n", "ITEM: TIMESTEP\n0\nITEM: TIME\n1e-5\n");
+  same_time =
+      replaced(same_time, "ITEM: TIMESTEP\n1000\n", "ITEM: TIMESTEP\n1000\nITEM: TIME\n1e-5\n");
+  const std::string t = refusal(same_time);
+  EXPECT_NE(t.find("frames out of order: the frame at "), std::string::npos) << t;
+  EXPECT_NE(t.find(":18 is at time 1.0000000000000001e-05 s, not after 1.0000000000000001e-05 s"),
+            std::string::npos)
+      << t;
+  const std::string id = refusal(replaced(kHandDump, "2.0 2 0.0022", "2.0 1 0.0022"));
+  EXPECT_NE(id.find(":1 holds atom id 1 twice"), std::string::npos) << id;
+}
+
+// An inverted box was reported as "mixed box sizes" on the next frame.
+TEST(FromDumpHostile, AnInvertedBoxIsRefusedInItsOwnFrame) {
+  const std::string m = refusal(replaced(kHandDump, "0 0.012\n", "0.012 0\n"));
+  EXPECT_NE(m.find("ITEM: BOX BOUNDS of the frame at "), std::string::npos) << m;
+  EXPECT_NE(m.find("the x bounds 0.012 0 are not 'lo hi' with lo < hi"), std::string::npos) << m;
+}
+
+// A map narrower than the dump's box folded x into its own period and reported a Mach
+// number; a dump in mm binned nothing where it should. Both are refused on the first frame.
+TEST(FromDumpHostile, ABoxThatIsNotTheMapsDomainIsRefused) {
+  const std::string narrower =
+      refusal(kHandDump, replaced(kHandMap, "width = \"12 d\"", "width = \"10 d\""));
+  EXPECT_NE(narrower.find("has the box x = [0, 0.012] m, the map's scene [0, 0.01] m "
+                          "(domain.width)"),
+            std::string::npos)
+      << narrower;
+  std::string mm = kHandDump;
+  for (std::size_t at; (at = mm.find("0 0.024\n")) != std::string::npos;)
+    mm.replace(at, 8, "0 24\n");
+  const std::string in_mm = refusal(mm);
+  EXPECT_NE(in_mm.find("has the box y = [0, 24] m, the map's scene [0, 0.024] m (domain.length)"),
+            std::string::npos)
+      << in_mm;
+  // Within round-off of the map (LAMMPS writes the bounds with 17 digits) is the map.
+  EXPECT_EQ(refusal(replaced(kHandDump, "0 0.012\n", "0 0.012000000000000002\n")), "");
+}
+
+// Escape bytes of a dump line reached the terminal, and a 5 MB line made a 5 MB message.
+TEST(FromDumpHostile, QuotedInputIsCutAndEscaped) {
+  const std::string garbage = "\x1b]0;owned\x07\x1b[2J" + std::string(60000, 'A');
+  const std::string m = refusal(replaced(kHandDump, "ITEM: TIMESTEP\n1000\n", garbage + "\n"));
+  EXPECT_LT(m.size(), 400u) << m.substr(0, 400);
+  for (unsigned char c : m) EXPECT_TRUE(c >= 0x20 && c < 0x7f) << int(c);
+  EXPECT_NE(m.find("found '\\x1b]0;owned\\x07\\x1b[2JAAAA"), std::string::npos) << m;
+  EXPECT_NE(m.find("... (60014 bytes in all)"), std::string::npos) << m;
+}
+
+// A map of bins below a particle's width took memory until bad_alloc, naming no key.
+TEST(FromDumpHostile, BinsAMapCannotHoldAreRefusedNamingTheKey) {
+  const std::string tiny =
+      refusal(kHandDump, replaced(kHandMap, "bin_size = \"2 d\"", "bin_size = \"1e-6 d\""));
+  EXPECT_NE(tiny.find("numerics.bin_size = 1e-06 d is smaller than the particle diameter"),
+            std::string::npos)
+      << tiny;
+  // Bins of a particle's width over a domain of 1e5 d x 1e5 d: 1e10 bins a block.
+  std::string huge = replaced(kHandMap, "width = \"12 d\"", "width = \"100000 d\"");
+  huge = replaced(huge, "length = \"24 d\"", "length = \"100000 d\"");
+  huge = replaced(huge, "bin_size = \"2 d\"", "bin_size = \"1 d\"");
+  const std::string big = refusal(kHandDump, huge);
+  EXPECT_NE(big.find("output.blocks = 2 with numerics.bin_size = 1 d needs"), std::string::npos)
+      << big;
+}

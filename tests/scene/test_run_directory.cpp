@@ -6,9 +6,12 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <fstream>
 #include <functional>
 #include <map>
+#include <optional>
+#include <thread>
 
 #include "cases/bow_shock/run_command.hpp"
 #include "core/user_error.hpp"
@@ -366,4 +369,93 @@ TEST(RunDirectoryEmptyMarker, IsTakenAsAClaimThatWasCutShort) {
   EXPECT_EQ(refusal(short_run(scene, fresh)), "(accepted)");
   EXPECT_TRUE(fs::exists(fresh / "run.h5"));
   EXPECT_NE(read(fresh / kRunMarker).find("format = 1"), std::string::npos);
+}
+
+// A refused --resume rewrote the marker and removed an empty figures/ (it claimed the
+// directory before it read the checkpoint): a refusal leaves the directory as it was.
+TEST(RunDirectoryResume, ARefusalLeavesTheDirectoryAsItWas) {
+  TempDir tmp;
+  const auto scene = tmp.write("small.toml", small_scene(true));
+  const fs::path run = tmp.path() / "run";
+  ASSERT_EQ(run_scene(short_run(scene, run)), 0);
+  fs::create_directories(run / "figures");
+  write(run / kRunMarker, read(run / kRunMarker) + "# another claimant's marker\n");
+  const auto before = tree(run);
+  const auto marker_time = fs::last_write_time(run / kRunMarker);
+  for (const char* duration : {"time.duration=0.0003", "time.duration=0.0001"}) {
+    RunOptions shorter = short_run(scene, run);
+    shorter.resume = true;
+    shorter.overrides.push_back(duration);
+    const std::string why = refusal(shorter);
+    EXPECT_NE(why.find("time.duration"), std::string::npos) << why;
+    EXPECT_EQ(tree(run), before) << duration;
+    EXPECT_EQ(fs::last_write_time(run / kRunMarker), marker_time) << duration;
+  }
+}
+
+// Every file a run writes that has a second name (a hard link) is refused like a
+// symbolic link: appending to log.txt or writing run.h5 or the marker in place changed the
+// user's file under its other name.
+TEST(RunDirectoryRefuses, EveryOutputThatIsAHardLink) {
+  TempDir tmp;
+  const auto scene = tmp.write("small.toml", small_scene(true));
+  const fs::path run = tmp.path() / "run";
+  RunOptions first = short_run(scene, run);
+  first.stop_after_steps = 1000;
+  ASSERT_EQ(run_scene(first), 0);
+  for (const char* name : {"log.txt", "run.h5", "checkpoint.h5", kRunMarker}) {
+    const fs::path mine = tmp.path() / "mine";
+    fs::copy_file(run / name, mine, fs::copy_options::overwrite_existing);
+    fs::remove(run / name);
+    fs::create_hard_link(mine, run / name);
+    const std::string kept = read(mine);
+    for (bool resume : {true, false}) {
+      RunOptions o = short_run(scene, run);
+      o.resume = resume;
+      o.overwrite = !resume;
+      const std::string why = refusal(o);
+      EXPECT_NE(why.find("has 2 hard links"), std::string::npos) << name << ": " << why;
+      EXPECT_NE(why.find(name), std::string::npos) << why;
+      EXPECT_EQ(read(mine), kept) << name;
+    }
+    fs::remove(run / name);  // this name only: the user's file stays
+    fs::copy_file(mine, run / name);
+    fs::remove(mine);
+  }
+  RunOptions again = short_run(scene, run);
+  again.resume = true;
+  EXPECT_EQ(refusal(again), "(accepted)") << "the directory is usable once the links are gone";
+}
+
+// Of two runs claiming one new directory at once, the loser was told the directory "has no
+// .granshock-run marker" when it looked between the winner's marker and its check.
+TEST(RunDirectoryRace, TheLoserOfANewDirectoryIsToldItIsInUse) {
+  TempDir tmp;
+  int refusals = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    const fs::path dir = tmp.path() / ("new" + std::to_string(trial));
+    std::atomic<int> ready{0};
+    std::string why[2];
+    std::optional<RunDirectory> won[2];
+    auto claim = [&](int k) {
+      ++ready;
+      while (ready < 2) {
+      }
+      try {
+        won[k].emplace(RunDirectory::claim(dir, DirectoryMode::create));
+      } catch (const UserError& e) {
+        why[k] = e.what();
+      }
+    };
+    std::thread a(claim, 0), b(claim, 1);
+    a.join();
+    b.join();
+    EXPECT_EQ(int(won[0].has_value()) + int(won[1].has_value()), 1) << trial;
+    for (const std::string& w : why) {
+      if (w.empty()) continue;
+      ++refusals;
+      EXPECT_NE(w.find("in use by another granshock"), std::string::npos) << trial << ": " << w;
+    }
+  }
+  EXPECT_EQ(refusals, 200);
 }

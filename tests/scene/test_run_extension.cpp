@@ -15,6 +15,7 @@
 #include "cases/bow_shock/run_command.hpp"
 #include "core/user_error.hpp"
 #include "io/checkpoint_file.hpp"
+#include "io/marked_directory.hpp"
 #include "io/run_file.hpp"
 #include "run_helpers.hpp"
 #include "sampling/bin_accumulator.hpp"
@@ -180,6 +181,7 @@ TEST_P(RunResumeRefusesChange, InOneLineLeavingTheRunAsItWas) {
   const std::string checkpoint = file_text(dir / "checkpoint.h5");
   const std::string run_h5 = file_text(dir / "run.h5");
   const std::string log = file_text(dir / "log.txt");
+  const std::string marker = file_text(dir / kRunMarker);
   RunOptions o = quick(run_options(scene, dir, GetParam().sets));
   o.resume = true;
   try {
@@ -193,6 +195,8 @@ TEST_P(RunResumeRefusesChange, InOneLineLeavingTheRunAsItWas) {
   EXPECT_EQ(file_text(dir / "checkpoint.h5"), checkpoint);
   EXPECT_EQ(file_text(dir / "run.h5"), run_h5);
   EXPECT_EQ(file_text(dir / "log.txt"), log);
+  // The marker too: a refused resume once rewrote it (the claim came before the checks).
+  EXPECT_EQ(file_text(dir / kRunMarker), marker);
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -215,6 +219,15 @@ INSTANTIATE_TEST_SUITE_P(
                      {"time.duration=0.006", "time.production_start=0.003"},
                      "'time.production_start' = 0.003 s (was 0.002 s): the checkpoint at t = "
                      "0.004 s holds the 100 field samples"},
+        // Values that differ are written so that they differ ("0.004 s (was 0.004 s)").
+        BadExtension{"longer_by_less_than_a_step",
+                     {"time.duration=0.00400000001", "time.production_start=0.002"},
+                     "'time.duration' = 0.00400000001 s (was 0.004 s) ends by the checkpoint"},
+        // An empty window names time.duration, which the resume changed, first.
+        BadExtension{"window_empty",
+                     {"time.duration=0.0001", "time.production_start=0.002"},
+                     "scene keys 'time.duration' = 0.0001 s and 'time.production_start' = "
+                     "0.002 s: the production window [production_start, duration) is empty"},
         BadExtension{"window_start_earlier",
                      {"time.duration=0.006", "time.production_start=0.001"},
                      "'time.production_start' = 0.001 s (was 0.002 s)"}),

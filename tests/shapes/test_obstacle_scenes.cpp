@@ -85,6 +85,16 @@ TEST(ObstacleScene, ShapeKeyErrorsNameTheKey) {
   EXPECT_NE(refusal(plate, {"obstacle.width=\"41 d\""})
                 .find("the plate must lie inside the domain, downstream of the insertion strip"),
             std::string::npos);
+  // As wide as the periodic channel (40 d), or nearly: accepted before, the flow closed.
+  EXPECT_EQ(refusal(plate, {"obstacle.width=\"40 d\""}),
+            "scene key 'obstacle.width' = 0.04 m across the flow, in a channel of domain.width "
+            "= 0.04 m: the plate leaves a gap of 0 particle diameters beside it; it must leave "
+            "at least 3 for the flow to pass: make it narrower or the domain wider");
+  EXPECT_NE(refusal(small_scene(true), {"obstacle.diameter=\"37.5 d\""})
+                .find("scene key 'obstacle.diameter' = 0.0375 m across the flow, in a channel of "
+                      "domain.width = 0.04 m: the cylinder leaves a gap of 2.5 particle diameters"),
+            std::string::npos);
+  EXPECT_EQ(refusal(plate, {"obstacle.width=\"36 d\""}), "");
   EXPECT_NE(refusal(wedge, {"obstacle.length=\"50 d\""})
                 .find("the wedge must lie inside the domain, downstream of the insertion strip"),
             std::string::npos);

@@ -198,6 +198,11 @@ TEST(AccuracyTable, MalformedTablesAreRefusedNamingTheField) {
       {with([](auto& d) { d["noise"] = nlohmann::json::array(); }),
        "has no \"cases\" and \"noise\""},
       {nlohmann::json::array(), "has no \"cases\" and \"noise\""},
+      // The layout's version (issue: "granshock trade table 99", or none, was accepted).
+      {with([](auto& d) { d["table"] = "granshock trade table 99"; }),
+       "is of version '\"granshock trade table 99\"', not \"granshock trade table 1\""},
+      {with([](auto& d) { d.erase("table"); }),
+       "is of no version, not \"granshock trade table 1\""},
       {with([](auto& d) { d["certified_range"] = 1; }),
        "\"certified_range\" = 1 must be an object"},
       {with([](auto& d) {
