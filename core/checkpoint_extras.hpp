@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,10 @@ struct CheckpointExtras {
   std::vector<double> bin_sums;
   std::vector<long> bin_shape;
   std::string scene_resolved;  // resume refuses to continue under a changed scene
+  // The --set overrides of every leg, in order (the run's own and those of each resume):
+  // `--resume` applies them again, so that it continues the run as it was set up. Absent in
+  // checkpoints from before they were kept.
+  std::optional<std::vector<std::string>> scene_overrides;
   // run.h5 as it was when the checkpoint was written (io/run_file.hpp, RunFileRecord): the
   // run's id, its snapshot frames and time-series rows. Absent (empty, -1) in checkpoints
   // from before the record.

@@ -90,6 +90,14 @@ void write_state(hid_t file, const SolverState& s) {
                       std::vector<long>(s.removed_high.begin(), s.removed_high.end()));
 }
 
+// /scene/overrides/K: the K-th --set, each a string of its own (a value may hold any
+// character); /run@scene_override_count says how many.
+void write_overrides(hid_t file, hid_t run, const std::vector<std::string>& overrides) {
+  h5::write_attribute(run, "scene_override_count", long(overrides.size()));
+  for (std::size_t k = 0; k < overrides.size(); ++k)
+    h5::write_string_dataset(file, "/scene/overrides/" + std::to_string(k), overrides[k]);
+}
+
 void write_extras(hid_t file, const CheckpointExtras& e) {
   Handle run = h5::require_group(file, "/run");
   h5::write_attribute(run.get(), "rng_counter", e.rng_counter);
@@ -103,6 +111,7 @@ void write_extras(hid_t file, const CheckpointExtras& e) {
   h5::write_dataset(run.get(), "bin_shape", e.bin_shape,
                     {static_cast<hsize_t>(e.bin_shape.size())});
   h5::write_string_dataset(file, "/scene/resolved", e.scene_resolved);
+  if (e.scene_overrides) write_overrides(file, run.get(), *e.scene_overrides);
   if (!e.run_id.empty()) {
     h5::write_attribute(run.get(), "run_id", e.run_id);
     h5::write_attribute(run.get(), "run_file_frames", e.run_frames);
@@ -223,6 +232,18 @@ SolverState read_state(const Reader& in) {
   return s;
 }
 
+std::optional<std::vector<std::string>> read_overrides(const Reader& in, hid_t file) {
+  Handle run = h5::open_group(file, "/run");
+  if (!h5::has_attribute(run.get(), "scene_override_count")) return std::nullopt;
+  const long count = in.attribute<long>("/run", "scene_override_count");
+  if (count < 0 || count > kMaxSceneOverrides)
+    throw UserError("/run@scene_override_count = " + std::to_string(count) + " is out of range");
+  std::vector<std::string> overrides;
+  for (long k = 0; k < count; ++k)
+    overrides.push_back(h5::read_string_dataset(file, "/scene/overrides/" + std::to_string(k)));
+  return overrides;
+}
+
 void read_extras(const Reader& in, hid_t file, CheckpointExtras& e) {
   e.rng_counter = in.attribute<std::uint64_t>("/run", "rng_counter");
   e.inserted = in.attribute<long>("/run", "inserted");
@@ -237,6 +258,7 @@ void read_extras(const Reader& in, hid_t file, CheckpointExtras& e) {
   e.bin_sums = in.dataset<double>("/run", "bin_sums");
   e.bin_shape = in.dataset<long>("/run", "bin_shape");
   e.scene_resolved = h5::read_string_dataset(file, "/scene/resolved");
+  e.scene_overrides = read_overrides(in, file);
   // The record of run.h5; absent in checkpoints from before it.
   if (h5::has_attribute(run.get(), "run_id")) {
     e.run_id = h5::read_string_attribute(run.get(), "run_id");
@@ -262,6 +284,21 @@ void write_checkpoint(const fs::path& path, const SolverState& state,
         write_extras(file, extras);
       },
       sealed);
+}
+
+std::optional<std::vector<std::string>> read_checkpoint_overrides(const fs::path& path) {
+  h5::silence_error_printing();
+  try {
+    std::error_code ec;
+    if (!fs::exists(path, ec)) return std::nullopt;
+    seal::verify_file(path, kFormatVersion);  // as read_checkpoint: nothing damaged is parsed
+    const hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    if (id < 0) return std::nullopt;
+    Handle file(id, H5Fclose);
+    return read_overrides(Reader(file.get(), fs::file_size(path)), file.get());
+  } catch (const std::exception&) {
+    return std::nullopt;  // read_checkpoint says what is wrong
+  }
 }
 
 SolverState read_checkpoint(const fs::path& path, CheckpointExtras& extras) {

@@ -4,6 +4,9 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include "core/checkpoint_extras.hpp"
 #include "core/solver_state.hpp"
@@ -19,6 +22,15 @@ inline constexpr int kCheckpointFormat = 3;
 // std::invalid_argument when a per-particle array of `state` does not divide into rows.
 void write_checkpoint(const std::filesystem::path& path, const SolverState& state,
                       const CheckpointExtras& extras);
+
+// The --set overrides a checkpoint's run was set up with (CheckpointExtras), or nothing
+// when it holds none (from before they were kept), is missing or cannot be read
+// (read_checkpoint then says why).
+std::optional<std::vector<std::string>> read_checkpoint_overrides(
+    const std::filesystem::path& path);
+
+// The most overrides a checkpoint may list (a run's legs each add theirs).
+inline constexpr long kMaxSceneOverrides = 100000;
 
 // Reads a checkpoint back exactly. Throws UserError naming the path when it is missing,
 // unreadable, damaged (checksum), not a granshock checkpoint, or when its contents do not

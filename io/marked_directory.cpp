@@ -31,6 +31,8 @@ std::optional<DirectoryMarker> read_marker(const fs::path& dir, const char* name
         path.string()));
   DirectoryMarker m;
   m.empty = st.st_size == 0;
+  m.path = path;
+  m.links = st.st_nlink;
   std::ifstream in(path);
   for (std::string line; std::getline(in, line);) {
     std::istringstream fields(line);
@@ -51,6 +53,7 @@ void check_marker_format(const fs::path& dir, const DirectoryMarker& marker, int
   // a file of that name (a user who does means to mark the directory). It is taken as a
   // marker of the current format, and the next claim writes it whole: refusing it would
   // leave a directory that only deleting the marker by hand could free again.
+  if (marker.links > 1) refuse_hard_link(marker.path, marker.links);
   if (marker.empty || marker.format == format) return;
   throw UserError(fmt::format(
       "output directory '{}' was written by granshock {} in {} format {}; this granshock {} "

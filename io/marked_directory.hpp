@@ -24,6 +24,8 @@ struct DirectoryMarker {
   long pid = 0;         // the granshock process that claimed the directory last
   std::string version;  // that process's granshock version
   bool empty = false;   // a 0-byte marker (see check_marker_format)
+  std::filesystem::path path;
+  unsigned long links = 1;  // its hard links: more than 1 is a file with another name
 };
 
 // The marker dir/name, if there is one. A marker that is not a regular file is refused,
@@ -31,7 +33,9 @@ struct DirectoryMarker {
 std::optional<DirectoryMarker> read_marker(const std::filesystem::path& dir, const char* name);
 
 // Throws UserError unless the marker is of `format`; `kind` names the layout in the
-// message ("run-directory"). An empty marker counts as `format` (see the .cpp).
+// message ("run-directory"). An empty marker counts as `format` (see the .cpp). A marker
+// with a second name is refused first (refuse_hard_link): whatever it holds, a claim would
+// write it.
 void check_marker_format(const std::filesystem::path& dir, const DirectoryMarker& marker,
                          int format, const std::string& kind);
 

@@ -22,6 +22,7 @@
 #include "core/choice_names.hpp"
 #include "core/failure_agreement.hpp"
 #include "core/process_clock.hpp"
+#include "core/shell_text.hpp"
 #include "core/user_error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/checkpoint_file.hpp"
@@ -115,6 +116,14 @@ int BowShockRun::execute() {
     log_.record(std::string("granshock: internal error: ") + e.what());
     throw;
   }
+}
+
+// The command that continues this run: its checkpoint keeps the scene with every --set of
+// its legs, so the scene file and the directory say it all (docs/output_format.md,
+// "Resuming").
+std::string BowShockRun::resume_command() const {
+  return fmt::format("granshock run {} --out {} --resume", shell_quote(options_.scene_file.string()),
+                     shell_quote(dir_.string()));
 }
 
 // Before the first checkpoint (docs/output_format.md, "Signals").
@@ -374,8 +383,9 @@ int BowShockRun::advance_to_end() {
     if (signal != 0) {
       write_checkpoint_now();
       finish(false);
-      log_.say(fmt::format(
-          "granshock: interrupted at step {}; checkpoint written, continue with --resume", step));
+      log_.say(fmt::format("granshock: interrupted at step {}; checkpoint written, continue with "
+                           "--resume: {}",
+                           step, resume_command()));
       return 128 + signal;
     }
     if (backend_switch_ && next_backend() != backend_) move_solver_to(next_backend());
@@ -383,8 +393,8 @@ int BowShockRun::advance_to_end() {
         step < total_steps_) {
       write_checkpoint_now();
       finish(false);
-      log_.say(fmt::format("granshock: stopped after {} steps at step {}; continue with --resume",
-                           options_.stop_after_steps, step));
+      log_.say(fmt::format("granshock: stopped after {} steps at step {}; continue with --resume: {}",
+                           options_.stop_after_steps, step, resume_command()));
       return 0;
     }
   }
@@ -578,6 +588,7 @@ void BowShockRun::write_checkpoint_now() {
   const double wall = wall_before_ + (meter_ ? meter_->elapsed_s() : 0.0);
   CheckpointExtras extras =
       pack_run_state(loaded_.resolved, *solver_, inflow_, samples_, wall, cpu_seconds_so_far());
+  extras.scene_overrides = options_.overrides;  // with --resume, every leg's (run_command.hpp)
   const SolverState state = solver_->export_state();
   if (root_) {
     writing([&] {

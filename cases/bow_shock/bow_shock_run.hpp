@@ -52,6 +52,7 @@ class BowShockRun {
   std::string what_survives();
   void analyse();
   std::string interrupted_message(int signal) const;
+  std::string resume_command() const;
   long agreed_next_step(long step);
   bool calibrate_inflow();  // true when it changed sigma (inflow.mach_at = "inlet_bins")
   void choose_start_backend();

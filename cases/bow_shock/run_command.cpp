@@ -1,7 +1,9 @@
 #include "cases/bow_shock/run_command.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
+#include <algorithm>
 #include <iostream>
 #include <optional>
 
@@ -9,7 +11,9 @@
 #include "cases/bow_shock/run_checks.hpp"
 #include "cases/tradeoff/accuracy_choice.hpp"
 #include "core/failure_agreement.hpp"
+#include "core/shell_text.hpp"
 #include "core/user_error.hpp"
+#include "io/checkpoint_file.hpp"
 #include "io/run_directory.hpp"
 #include "io/scene_file.hpp"
 #include "models/restitution_calibration.hpp"
@@ -20,7 +24,35 @@ std::filesystem::path run_directory_of(const RunOptions& o, const Scene& scene) 
   return o.out_dir.empty() ? std::filesystem::path("runs") / scene.name : o.out_dir;
 }
 
-RunCheck check_run(const RunOptions& o) {
+RunOptions with_run_overrides(const RunOptions& given, bool speaks) {
+  if (!given.resume) return given;
+  // --resume continues the run as it was set up: the scene file with the --set of every
+  // earlier leg, which its checkpoint keeps, then the --set given now (docs/output_format.md,
+  // "Resuming"). The file alone names the default directory.
+  const std::filesystem::path dir =
+      run_directory_of(given, load_scene_file(given.scene_file, given.overrides).scene);
+  const std::optional<std::vector<std::string>> earlier =
+      read_checkpoint_overrides(dir / "checkpoint.h5");
+  if (!earlier || earlier->empty()) return given;  // the resume's checks say what is missing
+  // An earlier --set given again moves to the end with the others: a resume that repeats
+  // the run's own --set keeps the list (and the checkpoint) as it was.
+  RunOptions o = given;
+  o.overrides.clear();
+  for (const std::string& set : *earlier)
+    if (std::find(given.overrides.begin(), given.overrides.end(), set) == given.overrides.end())
+      o.overrides.push_back(set);
+  o.overrides.insert(o.overrides.end(), given.overrides.begin(), given.overrides.end());
+  const std::size_t kept = o.overrides.size() - given.overrides.size();
+  if (speaks && !given.quiet && kept > 0) {
+    std::string sets;
+    for (std::size_t k = 0; k < kept; ++k) sets += " --set " + shell_quote(o.overrides[k]);
+    std::cerr << "granshock: note: --resume keeps the run's own" << sets << "\n";
+  }
+  return o;
+}
+
+RunCheck check_run(const RunOptions& given) {
+  const RunOptions o = with_run_overrides(given, false);
   LoadedScene loaded = load_scene_file(o.scene_file, o.overrides);
   RunCheck c;
   const std::optional<CertifiedStep> certified = certified_step(o.accuracy_choice);
@@ -83,7 +115,10 @@ int run_scene(const RunOptions& given, const Communicator& comm) {
     return 0;
   }
   std::optional<LoadedScene> loaded;
-  agree_on_failure(comm, [&] { loaded = load_scene_file(o.scene_file, o.overrides); });
+  agree_on_failure(comm, [&] {
+    o = with_run_overrides(o, comm.is_root());
+    loaded = load_scene_file(o.scene_file, o.overrides);
+  });
   BowShockRun run(o, std::move(*loaded), comm);
   return run.execute();
 }

@@ -56,6 +56,11 @@ struct RunCheck {
 };
 RunCheck check_run(const RunOptions& options);
 
+// With --resume: the options with the --set overrides of the run's earlier legs (kept in
+// its checkpoint) before those given now, said in a note on stderr when `speaks`; as given
+// otherwise, or where the checkpoint keeps none.
+RunOptions with_run_overrides(const RunOptions& options, bool speaks);
+
 // The run directory: --out, or runs/<scene name>.
 std::filesystem::path run_directory_of(const RunOptions& options, const Scene& scene);
 

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "cases/study/shell_text.hpp"
+#include "core/shell_text.hpp"
 #include "cases/study/study_cost.hpp"
 #include "core/user_error.hpp"
 

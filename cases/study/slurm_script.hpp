@@ -26,7 +26,7 @@ struct SlurmScript {
 // the script's first argument (0 by default; a study of more cases than the cluster's
 // MaxArraySize is submitted in parts). `rate_source` says where the rate comes from (a
 // comment). Warns of a clamped time limit and of more than 1001 array tasks. Every value
-// written is quoted or escaped (shell_text.hpp); an [slurm] option holding a control
+// written is quoted or escaped (core/shell_text.hpp); an [slurm] option holding a control
 // character is a UserError.
 SlurmScript slurm_script(const StudyPlan& plan, const std::filesystem::path& program, double rate,
                          const std::string& rate_source);

@@ -10,7 +10,7 @@
 #include <set>
 
 #include "cases/study/axis_values.hpp"
-#include "cases/study/shell_text.hpp"
+#include "core/shell_text.hpp"
 #include "core/user_error.hpp"
 #include "io/regular_file.hpp"
 

@@ -51,12 +51,13 @@ void cap_host_threads(int argc, char** argv) {
   const int cap = thread_cap(available_cpus());
 #if defined(KOKKOS_ENABLE_OPENMP)
   // OMP_NUM_THREADS as the OpenMP runtime read it (also "8,2" lists), or all CPUs.
-  if (const int asked = omp_get_max_threads(); asked > cap) {
-    // The variable's own text: the runtime's count of a number past int wraps
-    // (99999999999 reads as 1215752191).
-    const char* env = std::getenv("OMP_NUM_THREADS");
-    say_capped(env ? "OMP_NUM_THREADS" : "the OpenMP runtime",
-               env ? printable_line(env, 64) : std::to_string(asked), cap);
+  // The variable's own text as well as the runtime's count: a number past int wraps in the
+  // runtime (99999999999 reads as 1215752191 threads, 4294967297 as 1).
+  const char* omp_env = std::getenv("OMP_NUM_THREADS");
+  const bool env_past_cap = omp_env && capped_count(omp_env, cap);
+  if (const int asked = omp_get_max_threads(); asked > cap || env_past_cap) {
+    say_capped(omp_env ? "OMP_NUM_THREADS" : "the OpenMP runtime",
+               omp_env ? printable_line(omp_env, 64) : std::to_string(asked), cap);
     omp_set_num_threads(cap);
   }
 #endif

@@ -45,5 +45,9 @@ expect "none\.json: is of no version, not \"granshock trade table 1\"" \
 OMP_NUM_THREADS=99999999999 "$granshock" info >/dev/null 2>"$tmp/err"
 grep -q "OMP_NUM_THREADS asks for 99999999999 threads; capped at" "$tmp/err" ||
   { echo "FAIL: the thread note does not quote OMP_NUM_THREADS:"; cat "$tmp/err"; status=1; }
+# 2^32 + 1 wraps to 1 thread in the runtime, silently before.
+OMP_NUM_THREADS=4294967297 "$granshock" info >/dev/null 2>"$tmp/err"
+grep -q "OMP_NUM_THREADS asks for 4294967297 threads; capped at" "$tmp/err" ||
+  { echo "FAIL: OMP_NUM_THREADS=4294967297 gave no note:"; cat "$tmp/err"; status=1; }
 [ $status -eq 0 ] && echo PASS
 exit $status

@@ -422,6 +422,18 @@ TEST(RunDirectoryRefuses, EveryOutputThatIsAHardLink) {
     fs::copy_file(mine, run / name);
     fs::remove(mine);
   }
+  // The user's own file as the marker: named as a hard link, not as a marker of "format 0".
+  const fs::path notes = tmp.path() / "notes.txt";
+  write(notes, "my notes\n");
+  fs::rename(run / kRunMarker, tmp.path() / "marker");
+  fs::create_hard_link(notes, run / kRunMarker);
+  RunOptions resume = short_run(scene, run);
+  resume.resume = true;
+  const std::string why = refusal(resume);
+  EXPECT_NE(why.find(".granshock-run' has 2 hard links"), std::string::npos) << why;
+  EXPECT_EQ(read(notes), "my notes\n");
+  fs::remove(run / kRunMarker);
+  fs::rename(tmp.path() / "marker", run / kRunMarker);
   RunOptions again = short_run(scene, run);
   again.resume = true;
   EXPECT_EQ(refusal(again), "(accepted)") << "the directory is usable once the links are gone";

@@ -258,3 +258,66 @@ TEST(RunResumeExtended, ProgramRefusesAShorterRunInOneLine) {
             0u)
       << lines[0];
 }
+
+// --resume forgot the run's own --set: a run to 0.004 s (its --set) stopped and resumed
+// without it ran to the scene file's 0.01 s, and repeating the --set was then refused. The
+// checkpoint keeps every leg's --set, and a resume applies them before its own.
+TEST(RunResumeKeeps, TheRunsOwnSetOverrides) {
+  TempDir tmp;
+  const auto scene = tmp.write("small.toml", small_scene(true));
+  ASSERT_EQ(run_scene(quick(run_options(scene, tmp.path() / "straight", kShort))), 0);
+  RunOptions first = quick(run_options(scene, tmp.path() / "resumed", kShort));
+  first.stop_after_steps = 10500;
+  ASSERT_EQ(run_scene(first), 0);
+  RunOptions again = quick(run_options(scene, tmp.path() / "resumed"));  // no --set
+  again.resume = true;
+  ASSERT_EQ(run_scene(again), 0);
+  CheckpointExtras ea, eb;
+  const SolverState a = read_checkpoint(tmp.path() / "straight" / "checkpoint.h5", ea);
+  const SolverState b = read_checkpoint(tmp.path() / "resumed" / "checkpoint.h5", eb);
+  EXPECT_EQ(b.step, 20000) << "the resume ran the scene file's duration";
+  EXPECT_EQ(a.position, b.position);
+  EXPECT_EQ(ea.scene_resolved, eb.scene_resolved);
+  EXPECT_EQ(read_json(tmp.path() / "resumed" / "summary.json")["steps"], 20000);
+  ASSERT_TRUE(eb.scene_overrides);
+  EXPECT_EQ(*eb.scene_overrides, kShort);
+  EXPECT_FALSE(RunFile::open_read_only(tmp.path() / "resumed" / "run.h5").has("/scene/extensions"))
+      << "no extension: the scene is the run's own";
+  // The same --set again is the same scene: accepted, nothing to extend.
+  RunOptions repeated = quick(run_options(scene, tmp.path() / "resumed", kShort));
+  repeated.resume = true;
+  EXPECT_EQ(run_scene(repeated), 0);
+  // A --set with --resume still changes it: a longer run from the kept scene.
+  RunOptions longer = quick(run_options(scene, tmp.path() / "resumed", {"time.duration=0.006"}));
+  longer.resume = true;
+  const std::string why = [&] {
+    try {
+      run_scene(longer);
+    } catch (const UserError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(accepted)");
+  }();
+  // production_start stays the run's 0.002 s: the blocks of a window to 0.006 s cut
+  // elsewhere, the refusal a run of kShort extended to 0.006 s meets (RunResumeRefusesChange).
+  EXPECT_NE(why.find("'time.duration' = 0.006 s (was 0.004 s): the 100 field samples"),
+            std::string::npos)
+      << why;
+}
+
+// The interrupt and --stop-after-steps messages name the command that continues the run.
+TEST(RunResumeKeeps, TheStopMessageNamesTheCommand) {
+  TempDir tmp;
+  const auto scene = tmp.write("small.toml", small_scene(true));
+  const fs::path dir = tmp.path() / "run";
+  RunOptions first = quick(run_options(scene, dir, kShort));
+  first.stop_after_steps = 1000;
+  first.quiet = false;
+  ::testing::internal::CaptureStderr();
+  ASSERT_EQ(run_scene(first), 0);
+  const std::string err = ::testing::internal::GetCapturedStderr();
+  EXPECT_NE(err.find("stopped after 1000 steps at step 1000; continue with --resume: granshock "
+                     "run '" + scene.string() + "' --out '" + dir.string() + "' --resume"),
+            std::string::npos)
+      << err;
+}

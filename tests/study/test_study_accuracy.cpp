@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "cases/study/shell_text.hpp"
+#include "core/shell_text.hpp"
 #include "cases/study/slurm_script.hpp"
 #include "cases/study/study_cost.hpp"
 #include "cases/study/study_file.hpp"

@@ -1,4 +1,5 @@
-// Text written into the shell scripts granshock emits (docs/study.md, "Slurm"). A script
+// Text written into the shell scripts granshock emits (docs/study.md, "Slurm") and into the
+// commands it tells a user to type ("continue with --resume: granshock run ..."). A script
 // line ends only where granshock ends it: no value written into a script, a comment
 // included, may hold a raw control character (a newline would end a comment and start a
 // command; a carriage return makes sbatch refuse the script).

@@ -1,4 +1,4 @@
-#include "cases/study/shell_text.hpp"
+#include "core/shell_text.hpp"
 
 #include <fmt/format.h>
 
