@@ -14,11 +14,29 @@ docs/output_format.md, "The run directory"):
 - what a message promises holds: "continue with --resume" resumes, and a resumed run ends
   where an uninterrupted one does.
 
-Categories: directories and symbolic links for every command that writes (dirs), FIFOs
-and other special files for every input (special), deeply nested inputs (nesting), species,
-memory and thread limits (limits), values that validation must refuse (values), signals
-during setup and analysis (signals), file-size limits during a run (disk), and text that
-reaches an emitted script or table (scripts).
+Categories (--only takes their names):
+
+- dirs: directories and symbolic links in place of every output of every command that writes;
+- special: FIFOs and other special files for every input;
+- nesting: deeply nested inputs;
+- limits: species, memory and thread limits;
+- values: values that validation must refuse (a plate as wide as the channel among them);
+- signals: signals during setup, the loop and the analysis;
+- disk: file-size limits during a run;
+- scripts: text that reaches an emitted script or table;
+- dumps: hostile LAMMPS dumps and maps for fields --from-dump (sparse and NUL-padded files
+  under a memory limit, endless lines, huge atom counts, repeated times and ids, inverted or
+  foreign boxes, terminal escapes in what a message quotes, bins of 1e-6 d);
+- links: a hard link to a user's file in place of each output of run --resume, fields and
+  fields --out, and of the directory's marker: refused, the user's file unchanged;
+- race: fields and run --overwrite on one directory at once, and two runs into one new
+  directory: one of them is told it is in use, and the two never mix;
+- accuracy: malformed --accuracy and --accuracy-table, tables of another version, and the
+  note about a capped OMP_NUM_THREADS;
+- resume: a refused --resume leaves the run directory as it was, and says why in numbers
+  that differ;
+- checksums: a flipped byte in run.h5 is refused or accepted, never an internal error or a
+  crash (the closing lines count both).
 
 Usage: hostile_user.py GRANSHOCK SOURCE_DIR [--deep] [--only CATEGORY[,CATEGORY...]]
 --deep (or GRANSHOCK_PROBE_DEEP=1) runs the whole matrix (every output name for every
@@ -30,7 +48,9 @@ checks cover them: WITH_FIGURES).
 import argparse
 import csv
 import hashlib
+import json
 import os
+import random
 import re
 import shutil
 import signal
@@ -93,6 +113,63 @@ def tree_digest(root):
     return digest
 
 
+def dir_state(root):
+    """tree_digest of root with every entry's modification time, root's own included: a
+    command that refuses leaves it as it was, down to the marker's mtime."""
+    state = {p: (h, os.lstat(p).st_mtime_ns) for p, h in tree_digest(root).items()}
+    state[root] = ("dir", os.lstat(root).st_mtime_ns)
+    return state
+
+
+# The address space of the dumps cases that must stay bounded however large the dump is or
+# claims to be (RLIMIT_AS: the committed dump reads in about 20 MB), and their time.
+MEMORY_LIMIT = 2 << 30
+DUMP_SECONDS = 5
+
+
+def bounded_memory():
+    import resource
+    resource.setrlimit(resource.RLIMIT_AS, (MEMORY_LIMIT, MEMORY_LIMIT))
+
+
+def terminal_problems(raw, code, limit=2000):
+    """What is wrong with a command's raw stderr on a user's terminal: more than `limit`
+    bytes, or a control byte (ESC, C1 CSI 0x9b, BEL, CR, DEL, ...) that could move the cursor,
+    retitle the window or hide text. A refusal (exit 2) is one line: its only newline ends it."""
+    problems = []
+    if len(raw) > limit:
+        problems.append("%d bytes on stderr (at most %d)" % (len(raw), limit))
+    body = raw[:-1] if code == 2 and raw.endswith(b"\n") else raw
+    bad = sorted({b for b in body if (b < 0x20 and (b != 0x0a or code == 2)) or b in (0x7f, 0x9b)})
+    if bad:
+        problems.append("stderr holds the control byte(s) " + " ".join("0x%02x" % b for b in bad))
+    return problems
+
+
+def dataset_storage(path):
+    """(dataset, first byte, end) of the bytes every dataset of an HDF5 file stores its data
+    in: its contiguous block or each of its chunks; empty when h5py cannot say."""
+    spans = []
+    try:
+        import h5py
+
+        def visit(name, obj):
+            if not isinstance(obj, h5py.Dataset):
+                return
+            offset = obj.id.get_offset()
+            if offset is not None:
+                spans.append((name, offset, offset + obj.id.get_storage_size()))
+            elif obj.chunks:
+                for k in range(obj.id.get_num_chunks()):
+                    info = obj.id.get_chunk_info(k)
+                    spans.append((name, info.byte_offset, info.byte_offset + info.size))
+        with h5py.File(path, "r") as f:
+            f.visititems(visit)
+    except Exception:
+        return []
+    return spans
+
+
 class Probe:
     def __init__(self, granshock, source, deep):
         self.granshock = os.path.abspath(granshock)
@@ -107,6 +184,10 @@ class Probe:
         self.finished_run = None
         self.stopped_run = None
         self.finished_study = None
+        self.last_stderr = b""
+        self.notes = []  # counts a category reports in the closing lines (checksums)
+        self.dump = os.path.join(self.source, "tests", "fields", "dump", "small_bow_shock.dump")
+        self.dump_map = os.path.join(self.source, "apps", "bench", "lammps", "dump_map.toml")
 
     # --- running one command ------------------------------------------------------------
     def granshock_cmd(self, *args):
@@ -118,28 +199,40 @@ class Probe:
             out += ["--set", s]
         return out
 
-    def run(self, argv, cwd, timeout=60, env=None, preexec=None, signal_after=None):
-        """Runs argv; returns (code, stdout, own stderr lines, seconds) or code None on a hang."""
+    def start(self, argv, cwd, env=None, preexec=None):
+        """Starts argv in the background (collect() waits for it)."""
         e = dict(self.env)
         if env:
             e.update(env)
+        return subprocess.Popen(argv, cwd=cwd, env=e, stdout=subprocess.PIPE,
+                                stderr=subprocess.PIPE, stdin=subprocess.DEVNULL,
+                                preexec_fn=preexec, start_new_session=True)
+
+    def collect(self, p, timeout):
+        """Waits for a started command: (code, stdout, own stderr lines, raw stderr bytes), or
+        code None when it hung (it is killed)."""
+        try:
+            out, err = p.communicate(timeout=timeout)
+        except subprocess.TimeoutExpired:
+            os.killpg(p.pid, signal.SIGKILL)
+            p.communicate()
+            return None, "", ["(killed after %g s)" % timeout], b""
+        lines = [l for l in err.decode(errors="replace").splitlines() if not KOKKOS_NOISE.match(l)]
+        return p.returncode, out.decode(errors="replace"), lines, err
+
+    def run(self, argv, cwd, timeout=60, env=None, preexec=None, signal_after=None):
+        """Runs argv; returns (code, stdout, own stderr lines, seconds) or code None on a hang.
+        The raw bytes of its stderr stay in self.last_stderr."""
         start = time.monotonic()
-        p = subprocess.Popen(argv, cwd=cwd, env=e, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                             stdin=subprocess.DEVNULL, preexec_fn=preexec, start_new_session=True)
+        p = self.start(argv, cwd, env, preexec)
         if signal_after is not None:
             sig, delay = signal_after
             try:
                 p.wait(timeout=delay)
             except subprocess.TimeoutExpired:
                 p.send_signal(sig)
-        try:
-            out, err = p.communicate(timeout=timeout)
-        except subprocess.TimeoutExpired:
-            os.killpg(p.pid, signal.SIGKILL)
-            p.communicate()
-            return None, "", ["(killed after %g s)" % timeout], time.monotonic() - start
-        lines = [l for l in err.decode(errors="replace").splitlines() if not KOKKOS_NOISE.match(l)]
-        return p.returncode, out.decode(errors="replace"), lines, time.monotonic() - start
+        code, out, lines, self.last_stderr = self.collect(p, timeout)
+        return code, out, lines, time.monotonic() - start
 
     # --- bookkeeping ------------------------------------------------------------------------
     def case(self, category, name, argv, cwd, expect=("ok", "refuse"), timeout=60, env=None,
@@ -520,6 +613,12 @@ class Probe:
                       timeout=30, after=lambda c, o, l: [
                           "the message names a time step or a step count, not the input: " + l[0]]
                       if l and re.search(r"dt = (0|-?nan)|within \d+ steps", l[0]) else [])
+        # A plate as wide as the periodic channel closes it: no gas passes, nothing to measure.
+        self.case("values", "plate-as-wide-as-the-channel",
+                  self.granshock_cmd("run", os.path.join(self.source, "scenes", "plate.toml"),
+                                     "--dry-run", "--set", 'domain.width="150 d"', "--set",
+                                     'obstacle.width="150 d"'),
+                  w, expect=("refuse",), pattern=r"'obstacle(\.width)?'", timeout=30)
         self.case("values", "study-case-minus-one",
                   self.granshock_cmd("study", os.path.join(self.source, "tests", "study",
                                                            "tiny.toml"), "--case", "-1",
@@ -726,6 +825,406 @@ class Probe:
             argv = self.granshock_cmd("study", study, "--quiet")
             self.case("scripts", "study-csv-species-%r" % name, argv, w, after=csv_ok, timeout=180)
 
+    # --- dumps: hostile LAMMPS dumps and maps for fields --from-dump ------------------------
+    def dump_frames(self):
+        """The committed dump, frame by frame, each a list of its lines."""
+        frames = []
+        with open(self.dump) as f:
+            for line in f.read().splitlines():
+                if line.strip() == "ITEM: TIMESTEP":
+                    frames.append([])
+                frames[-1].append(line)
+        return frames
+
+    def dump_case(self, name, make, map_text=None, file_name="bad.dump", expect=("refuse",),
+                  pattern=None, bounded=False, after=None):
+        """fields --from-dump of one dump that make(path) writes, with the committed map or
+        map_text. Every answer's stderr is safe for a terminal (terminal_problems); a refusal
+        leaves no --out behind (docs/fields.md, section 13: every file is read and checked
+        before --out is created). bounded: under an address-space limit (MEMORY_LIMIT), and
+        within DUMP_SECONDS, whatever the dump's size or its claims."""
+        w = self.workdir("dumps")
+        dump = os.path.join(w, file_name)
+        make(dump)
+        map_path = self.dump_map
+        if map_text is not None:
+            map_path = os.path.join(w, "map.toml")
+            with open(map_path, "w") as f:
+                f.write(map_text)
+        out = os.path.join(w, "out")
+        started = time.monotonic()
+
+        def checks(code, o, lines):
+            problems = terminal_problems(self.last_stderr, code)
+            if code != 0 and os.path.lexists(out):
+                problems.append("the refused command left --out behind")
+            seconds = time.monotonic() - started
+            if bounded and seconds > DUMP_SECONDS:
+                problems.append("took %.1f s (at most %g s)" % (seconds, DUMP_SECONDS))
+            return problems + (after(code, o, lines) if after else [])
+        self.case("dumps", name,
+                  self.granshock_cmd("fields", "--from-dump", "lammps", dump, "--map", map_path,
+                                     "--out", out, "--no-figures"),
+                  w, expect=expect, pattern=pattern, preexec=bounded_memory if bounded else None,
+                  timeout=60, after=checks,
+                  guard=[map_path] + ([dump] if os.path.getsize(dump) < 64 << 20 else []))
+
+    def dumps(self):
+        frames = self.dump_frames()
+        with open(self.dump, "rb") as f:
+            valid = f.read()
+        with open(self.dump_map) as f:
+            map_text = f.read()
+
+        def item(frame, name):
+            """The index of the line after the frame's `ITEM: name` line."""
+            return next(i for i, l in enumerate(frame) if l.startswith("ITEM: " + name)) + 1
+
+        def text(fs):
+            return "\n".join(l for frame in fs for l in frame) + "\n"
+
+        def write(content):
+            def make(path):
+                with open(path, "wb") as f:
+                    f.write(content.encode() if isinstance(content, str) else content)
+            return make
+
+        def sparse(size, head=b""):
+            def make(path):
+                write(head)(path)
+                os.truncate(path, len(head) + size)
+            return make
+
+        # The memory limit alone refuses nothing: the committed dump is read under it.
+        self.dump_case("committed-dump-under-the-memory-limit", write(valid), expect=("ok",),
+                       bounded=True)
+        # A sparse file and a dump padded with NULs (a copy cut short by a full disk): nothing
+        # that is not a dump is read whole, into memory or through the disk's holes.
+        for size in [200 << 20, 2 << 30] if self.deep else [200 << 20]:
+            label = "%dMB" % (size >> 20)
+            self.dump_case("sparse-file-" + label, sparse(size), bounded=True)
+            self.dump_case("dump-with-a-NUL-tail-" + label, sparse(size, valid), bounded=True)
+        longer = r"longer than \d+ bytes"
+        self.dump_case("first-line-200KB-no-newline", write("A" * 200000), pattern=longer,
+                       bounded=True)
+        self.dump_case("timestep-line-100KB-no-newline",
+                       write("ITEM: TIMESTEP\n" + "1" * 100000), pattern=longer, bounded=True)
+        if self.deep:
+            def long_line(path):
+                with open(path, "w") as f:
+                    for _ in range(100):
+                        f.write("A" * (1 << 20))
+            self.dump_case("line-100MB-no-newline", long_line, pattern=longer, bounded=True)
+        # An atom count no frame can hold, one that fits a long and one that fits no int.
+        for count in ("9223372036854775807", "4000000000"):
+            first = list(frames[0])
+            first[item(first, "NUMBER OF ATOMS")] = count
+            self.dump_case("number-of-atoms-" + count, write(text([first] + frames[1:])),
+                           pattern="NUMBER OF ATOMS", bounded=True)
+        # ITEM: TIME on every frame (dump_modify time yes): the frame's time, not timestep x dt.
+        timed = []
+        for frame in frames:
+            t = int(frame[1].strip()) * 2e-7  # the map's dump.dt
+            timed.append(frame[:2] + ["ITEM: TIME", "%.17g" % t] + frame[2:])
+        self.dump_case("item-time-on-every-frame", write(text(timed)), expect=("ok",))
+        same = [list(frame) for frame in timed]
+        same[1][3] = same[0][3]
+        self.dump_case("two-timesteps-at-one-time", write(text(same)), pattern="out of order")
+        twice = list(frames[0])
+        a = item(twice, "ATOMS")
+        twice[a + 1] = " ".join([twice[a].split()[0]] + twice[a + 1].split()[1:])
+        self.dump_case("atom-id-twice", write(text([twice] + frames[1:])), pattern="twice")
+        inverted = list(frames[0])
+        inverted[item(inverted, "BOX BOUNDS")] = "1 0"
+        self.dump_case("box-lo-above-hi-in-the-first-frame",
+                       write(text([inverted] + frames[1:])), pattern="lo < hi",
+                       # at the first frame (its line 6, the frame at FILE:1), not later
+                       after=lambda c, o, l: ["refused as mixed box sizes, or not at the first "
+                                              "frame: " + l[0]]
+                       if l and ("mixed box" in l[0] or not re.search(r"line 6\b|:1\b", l[0]))
+                       else [])
+        # A map of another domain than the dump's box, and a dump written in millimetres.
+        narrow = map_text.replace('width = "30 d"', 'width = "20 d"')
+        assert narrow != map_text, "the dump map's domain.width is no longer 30 d"
+        self.dump_case("map-width-20-d-dump-box-30-d", write(valid), map_text=narrow,
+                       pattern=r"\bbox\b")
+        mm = []
+        for frame in frames:
+            frame = list(frame)
+            b = item(frame, "BOX BOUNDS")
+            for k in range(b, b + 3):
+                frame[k] = " ".join("%.17g" % (float(v) * 1000) for v in frame[k].split())
+            a = item(frame, "ATOMS")
+            columns = frame[a - 1].split()[2:]
+            scaled = [columns.index(c) for c in ("x", "y", "z")]
+            for k in range(a, len(frame)):
+                v = frame[k].split()
+                for c in scaled:
+                    v[c] = "%.17g" % (float(v[c]) * 1000)
+                frame[k] = " ".join(v)
+            mm.append(frame)
+        self.dump_case("dump-in-millimetres", write(text(mm)), pattern=r"\bbox\b")
+        # Terminal escapes and floods in what a message quotes: the dump's lines, its name.
+        first = frames[0]
+        n = item(first, "NUMBER OF ATOMS") - 1
+        a = item(first, "ATOMS")
+        rng = random.Random(5)
+        garbage = rng.randbytes(5 << 20).replace(b"\n", b"\x1b").replace(b"\0", b"\x9b")
+        escapes = {
+            "esc-csi-as-the-first-line": write("\x1b[2J\x1b[31mred\x1b[0m\n" + text(frames)),
+            "osc-title-in-a-header": write(text([first[:n] + ["\x1b]0;owned title\x07"]
+                                                 + first[n:]])),
+            "c1-csi-in-a-header": write(text([first[:n]]).encode() + b"\x9b2J \xc2\x9b2J\r\n"),
+            "esc-in-an-atom-id": write(text([first[:a] + ["1\x1b[8m 1 0 0 0 0 0 0"]
+                                              + first[a + 1:]])),
+            "garbage-header-line-60KB": write(text([first[:n]]).encode() + garbage[:60000]
+                                              + b"\n"),
+            "garbage-header-line-5MB": write(text([first[:n]]).encode() + garbage + b"\n"),
+        }
+        for name, make in escapes.items():
+            self.dump_case(name, make)
+        for name, file_name in (("esc-in-the-file-name", "d\x1b]0;owned\x07\x1b[2J.dump"),
+                                ("newline-in-the-file-name", "d\ngranshock: error: fake.dump")):
+            self.dump_case(name, write(text([first[:a + 3]])), file_name=file_name)
+        # A map of bins a millionth of a diameter: refused by the key, not by the memory.
+        tiny_bins = re.sub(r'^bin_size = .*$', 'bin_size = "1e-6 d"', map_text, flags=re.M)
+        assert tiny_bins != map_text, "the dump map has no bin_size line"
+        self.dump_case("map-bin-size-1e-6-d", write(valid), map_text=tiny_bins,
+                       pattern=r"numerics\.bin_size", bounded=True)
+
+    # --- links: a hard link in place of every file a command writes ------------------------------
+    def links(self):
+        """A user's file ~/x with a second name in a run or fields directory: the user's own
+        file linked in (ln ~/x RUN/NAME), or a 'backup' of granshock's (ln RUN/NAME ~/x).
+        Writing NAME would change ~/x, so each writer refuses, naming the hard link, and ~/x
+        stays as it was."""
+        deep = self.deep
+        base = self.workdir("links")
+        fields_out = os.path.join(base, "out")  # what `fields RUN --out OUT` wrote
+        code, _, lines, _ = self.run(self.granshock_cmd("fields", self.finished_run, "--out",
+                                                        fields_out), base, timeout=120)
+        if code != 0:
+            sys.exit("probe: fields --out failed (%s): %s" % (code, " | ".join(lines)))
+        writers = {
+            # writer: (the directory it writes, the output names, the command)
+            "resume": (self.stopped_run,
+                       OUTPUTS + [".granshock-run"] if deep
+                       else ["log.txt", "run.h5", ".granshock-run"],
+                       lambda run, out: self.granshock_cmd("run", self.scene, "--out", run,
+                                                           "--resume", "--quiet", *self.tiny())),
+            "fields": (self.finished_run,
+                       OUTPUTS + [".granshock-run"] if deep else ["summary.json", "fields.h5"],
+                       lambda run, out: self.granshock_cmd("fields", run)),
+            "fields-out": (fields_out,
+                           [n for n in OUTPUTS if n.split(".")[0] not in ("run", "log", "checkpoint")]
+                           + [".granshock-fields"] if deep else ["summary.json"],
+                           lambda run, out: self.granshock_cmd("fields", run, "--out", out)),
+        }
+        for writer, (which, names, command) in writers.items():
+            for name in names:
+                for how in ("user-file-as", "backup-of"):
+                    if how == "backup-of" and not os.path.isfile(os.path.join(which, name)):
+                        continue
+                    w = self.workdir("links")
+                    run = self.copy_run(self.finished_run if writer == "fields-out" else which, w)
+                    where = run
+                    if writer == "fields-out":
+                        where = os.path.join(w, "out")
+                        shutil.copytree(fields_out, where, symlinks=True)
+                    home = os.path.join(w, "home")
+                    p = os.path.join(where, name)
+                    mine = os.path.join(home, "x")
+                    if how == "backup-of":
+                        os.makedirs(home)
+                        os.link(p, mine)
+                    else:
+                        self.victim(home, "x")
+                        if os.path.lexists(p):
+                            os.remove(p)
+                        os.makedirs(os.path.dirname(p), exist_ok=True)
+                        os.link(mine, p)
+                    env = {"GRANSHOCK_FIGURES": "1"} if name.startswith("figures/") else None
+                    self.case("links", "%s-%s-%s" % (writer, how, name), command(run, where), w,
+                              expect=("refuse",), pattern="hard link", guard=[home], env=env,
+                              timeout=120)
+
+    # --- race: two commands on one directory at once --------------------------------------------
+    def race(self):
+        trials = 8 if self.deep else 3
+        with open(os.path.join(self.finished_run, "run.h5"), "rb") as f:
+            finished_h5 = hashlib.sha256(f.read()).hexdigest()
+        # `granshock fields B &`, then a run --overwrite into B 0.3 s later: fields takes
+        # 0.3 s without its figures (the run arrives as it writes) and 2 s with them.
+        for k in range(trials):
+            w = self.workdir("race")
+            run = self.copy_run(self.finished_run, w)
+            fields = self.start(self.granshock_cmd("fields", run), w,
+                                env={"GRANSHOCK_FIGURES": "1" if k % 2 else "0"})
+            time.sleep(0.3)
+
+            def unmixed(code, out, lines, fields=fields, run=run):
+                fcode, _, flines, _ = self.collect(fields, 120)
+                problems = []
+                if fcode is None:
+                    return ["the fields command hung"]
+                if fcode == 2 and (len(flines) != 1 or "in use" not in flines[0]):
+                    problems.append("fields refused other than 'in use': " + " | ".join(flines))
+                elif fcode not in (0, 2):
+                    problems.append("fields ended with %s: %s" % (fcode, " | ".join(flines[-3:])))
+                if code == 2 and sha(os.path.join(run, "run.h5")) != finished_h5:
+                    problems.append("the refused run changed run.h5")
+                if code == 0 and fcode == 0:
+                    # Both went through: only right when fields ended before the run began,
+                    # and then --overwrite removed what fields wrote.
+                    left = [n for n in ("fields.h5", "fields.xmf", "detachment_convergence.csv",
+                                        "figures") if os.path.lexists(os.path.join(run, n))]
+                    try:
+                        with open(os.path.join(run, "summary.json")) as f:
+                            summary = json.load(f)
+                        if summary.get("completed") is not False or "delta_over_D" in summary:
+                            left.append("summary.json (of the analysis, not the stopped run's)")
+                    except (OSError, ValueError) as e:
+                        left.append("summary.json (%s)" % e)
+                    if left:
+                        problems.append("both exited 0 and the stopped run's directory holds "
+                                        "the old run's %s: the two mixed" % ", ".join(left))
+                return problems
+            self.case("race", "fields-then-run-overwrite-%d" % k,
+                      self.granshock_cmd("run", self.scene, "--out", run, "--overwrite",
+                                         "--quiet", "--stop-after-steps", 100, *self.tiny()),
+                      w, pattern="in use", after=unmixed, timeout=120)
+        # Two runs started at once on a directory that does not exist yet: one runs, the other
+        # is told the directory is in use. 8 ms simulated (0.8 s): the winner still holds the
+        # directory when a loser slowed by a busy machine gets there.
+        for k in range(trials):
+            w = self.workdir("race")
+            new = os.path.join(w, "new")
+            argv = self.granshock_cmd("run", self.scene, "--out", new, "--quiet", *self.tiny(),
+                                      "--set", "time.duration=0.008")
+            first = self.start(argv, w)
+
+            def one_runs(code, out, lines, first=first):
+                fcode, _, flines, _ = self.collect(first, 120)
+                if fcode is None:
+                    return ["the first run hung"]
+                if sorted([code, fcode]) != [0, 2]:
+                    return ["exit codes %s and %s, expected one run (0) and one refusal (2): %s"
+                            % (fcode, code, " | ".join(flines[-2:] + lines[-2:]))]
+                if fcode == 2 and (len(flines) != 1 or "in use" not in flines[0]):
+                    return ["the first run's refusal is not 'in use': " + " | ".join(flines)]
+                return []
+            self.case("race", "two-runs-into-one-new-directory-%d" % k, argv, w,
+                      pattern="in use", after=one_runs, timeout=120)
+
+    # --- accuracy: --accuracy, its tables and the thread count ----------------------------------
+    def accuracy(self):
+        w = self.workdir("accuracy")
+        trade = os.path.join(self.source, "docs", "results", "tradeoff", "paper_d50_u2375",
+                             "trade.json")
+        with open(trade) as f:
+            table = f.read()
+        versions = {"version-99": table.replace('"granshock trade table 1"',
+                                                '"granshock trade table 99"'),
+                    "no-version": re.sub(r'\s*"table": "[^"]*",', "", table, count=1)}
+        assert all(t != table for t in versions.values()), "trade.json's \"table\" has moved"
+        tables = {}
+        for name, text in versions.items():
+            tables[name] = os.path.join(w, name + ".json")
+            with open(tables[name], "w") as f:
+                f.write(text)
+        cases = {
+            "empty": (["--accuracy", ""], None),
+            "table-without-accuracy": (["--accuracy-table", trade], r"--accuracy"),
+            "hex-percentage": (["--accuracy", "0x5%"], None),
+            "table-version-99": (["--accuracy", "5%", "--accuracy-table",
+                                  tables["version-99"]], "version"),
+            "table-without-a-version": (["--accuracy", "5%", "--accuracy-table",
+                                         tables["no-version"]], "version"),
+        }
+        for name, (args, pattern) in cases.items():
+            self.case("accuracy", name, self.granshock_cmd("run", self.scene, "--dry-run", *args),
+                      w, expect=("refuse",), pattern=pattern, timeout=30)
+        # The note about a capped OMP_NUM_THREADS quotes what was asked, not its 32-bit wrap
+        # (2^32 + 1 wraps to 1). Past 2^64 the OpenMP runtime itself complains, before main.
+        for threads in ["99999999999", "4294967297"] if self.deep else ["99999999999"]:
+            def quoted(code, out, lines, threads=threads):
+                said = " ".join(l for l in lines if "OMP_NUM_THREADS" in l)
+                if not said:
+                    return ["no note about OMP_NUM_THREADS=%s" % threads]
+                if threads not in said or "1215752191" in said:
+                    return ["the note does not quote %s: %s" % (threads, said)]
+                return []
+            self.case("accuracy", "omp-threads-" + threads, self.granshock_cmd("info"), w,
+                      expect=("ok",), env={"OMP_NUM_THREADS": threads}, timeout=60, after=quoted)
+
+    # --- resume: a refused --resume leaves the directory as it was -----------------------------
+    def resume(self):
+        durations = {"shorter": ("0.003", ("refuse",), None),
+                     "window-empty": ("0.0001", ("refuse",), r"time\.duration"),
+                     "longer-by-1e-11-s": ("0.00400000001", ("ok", "refuse"), None)}
+        if self.deep:
+            durations["shorter-by-1e-11-s"] = ("0.00399999999", ("refuse",), None)
+        for name, (duration, expect, pattern) in durations.items():
+            w = self.workdir("resume")
+            run = self.copy_run(self.finished_run, w)
+            # An empty figures/ (the user deleted the PNGs): a refusal removes no directory.
+            for png in FIGURES:
+                os.remove(os.path.join(run, png))
+            before = dir_state(run)
+
+            def unchanged(code, out, lines, run=run, before=before):
+                problems = []
+                if code == 2:
+                    now = dir_state(run)
+                    changed = sorted(p for p in set(before) | set(now)
+                                     if before.get(p) != now.get(p))
+                    if changed:
+                        problems.append("the refusal changed the directory: %s"
+                                        % ", ".join(os.path.relpath(p, run) for p in changed))
+                    same = re.search(r"= ([-+0-9.e]+) s \(was \1 s\)", lines[0] if lines else "")
+                    if same:
+                        problems.append("the message shows two equal numbers: " + same.group(0))
+                return problems
+            self.case("resume", "duration-" + name,
+                      self.granshock_cmd("run", self.scene, "--out", run, "--resume", "--quiet",
+                                         *self.tiny(), "--set", "time.duration=" + duration),
+                      w, expect=expect, pattern=pattern, after=unchanged, timeout=120)
+
+    # --- checksums: a flipped byte in run.h5 ----------------------------------------------------
+    def checksums(self):
+        flips = 30 if self.deep else 10
+        source = os.path.join(self.finished_run, "run.h5")
+        size = os.path.getsize(source)
+        stored = dataset_storage(source)
+        rng = random.Random(20240601)
+        counts = {"refused": 0, "accepted": 0}
+        unchecked = []  # the datasets that an accepted flip changed
+        for _ in range(flips):
+            offset = rng.randrange(size)
+            w = self.workdir("checksums")
+            run = self.copy_run(self.finished_run, w)
+            with open(os.path.join(run, "run.h5"), "r+b") as f:
+                f.seek(offset)
+                byte = f.read(1)[0]
+                f.seek(offset)
+                f.write(bytes([byte ^ rng.randrange(1, 256)]))
+            inside = next((d for d, lo, hi in stored if lo <= offset < hi), None)
+            code, _, _ = self.case("checksums", "flip-byte-%d%s" % (offset, " (" + inside + ")"
+                                                                   if inside else ""),
+                                   self.granshock_cmd("fields", run, "--no-figures"), w,
+                                   timeout=60)
+            if code == 2:
+                counts["refused"] += 1
+            elif code == 0:
+                counts["accepted"] += 1
+                if inside:
+                    unchecked.append(inside)
+        note = ("checksums: of %d flipped bytes in run.h5, %d refused, %d accepted (%d of them "
+                "in the data of %s)" % (flips, counts["refused"], counts["accepted"],
+                                        len(unchecked), ", ".join(sorted(set(unchecked))) or "none"))
+        print("     " + note, flush=True)
+        self.notes.append(note)
+
     # ------------------------------------------------------------------------------------------
     def study_fixture(self):
         out = os.path.join(self.root, "fixtures", "study")
@@ -751,7 +1250,8 @@ def main():
     ap.add_argument("--only", default="")
     a = ap.parse_args()
     probe = Probe(a.granshock, a.source, a.deep)
-    categories = ["dirs", "special", "nesting", "limits", "values", "signals", "disk", "scripts"]
+    categories = ["dirs", "special", "nesting", "limits", "values", "signals", "disk", "scripts",
+                  "dumps", "links", "race", "accuracy", "resume", "checksums"]
     only = [c for c in a.only.split(",") if c]
     start = time.monotonic()
     try:
@@ -766,6 +1266,8 @@ def main():
     print("hostile probe%s: %d cases in %.0f s, %d refused with one line, %d accepted"
           % (" (deep)" if a.deep else "", cases, time.monotonic() - start, probe.refusals,
              probe.accepted))
+    for note in probe.notes:
+        print(note)
     if probe.failures:
         print("failed: " + ", ".join(probe.failures))
     print("%d passed, %d failed" % (probe.passed, probe.failed))
