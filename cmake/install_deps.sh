@@ -23,7 +23,8 @@ packages=(
   libopenmpi-dev openmpi-bin libhdf5-openmpi-dev hdf5-tools
   libgtest-dev libgmock-dev libbenchmark-dev
   libtomlplusplus-dev libcli11-dev libfmt-dev nlohmann-json3-dev
-  python3-matplotlib python3-h5py
+  # The Python reader (python/granshock, docs/python.md) and the thermo table (docs/output_format.md).
+  python3-matplotlib python3-h5py python3-pandas
   # ParaView's pvbatch and an X server without a screen, for io.paraview_opens_outputs
   # (docs/output_format.md, "What ParaView shows"): about 140 MB to download, 800 MB installed.
   python3-paraview xvfb xauth

@@ -13,12 +13,14 @@ namespace granshock {
 namespace fs = std::filesystem;
 
 const std::vector<std::string>& run_outputs() {
-  // run.h5 (io/run_file.cpp), its XDMF (io/xdmf_writer.cpp), the checkpoint and the log
-  // (cases/bow_shock/run_log.hpp); the summary (cases/bow_shock/bow_shock_run.cpp) is among
-  // the field analysis' outputs, which a run writes at its end. Atomic writers use NAME.tmp.
+  // run.h5 (io/run_file.cpp), its XDMF (io/xdmf_writer.cpp), the checkpoint, the log
+  // (cases/bow_shock/run_log.hpp) and the thermo table (cases/bow_shock/thermo_table.hpp); the
+  // summary (cases/bow_shock/bow_shock_run.cpp) is among the field analysis' outputs, which a run
+  // writes at its end. Atomic writers use NAME.tmp.
   static const std::vector<std::string> outputs = [] {
     std::vector<std::string> all = {"run.h5",        "run.xmf",           "run.xmf.tmp",
-                                    "checkpoint.h5", "checkpoint.h5.tmp", "log.txt"};
+                                    "checkpoint.h5", "checkpoint.h5.tmp", "log.txt",
+                                    "thermo.txt"};
     all.insert(all.end(), fields_outputs().begin(), fields_outputs().end());
     return all;
   }();

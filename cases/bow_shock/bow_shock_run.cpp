@@ -122,8 +122,8 @@ int BowShockRun::execute() {
 // its legs, so the scene file and the directory say it all (docs/output_format.md,
 // "Resuming").
 std::string BowShockRun::resume_command() const {
-  return fmt::format("granshock run {} --out {} --resume", shell_quote(options_.scene_file.string()),
-                     shell_quote(dir_.string()));
+  return fmt::format("granshock run {} --out {} --resume",
+                     shell_quote(options_.scene_file.string()), shell_quote(dir_.string()));
 }
 
 // Before the first checkpoint (docs/output_format.md, "Signals").
@@ -176,6 +176,10 @@ int BowShockRun::execute_or_throw() {
   // The log once the run is accepted: a refused --resume leaves the directory as it was.
   agree_on_failure(comm_, [&] {
     log_.open(dir_);
+    if (root_)
+      thermo_.open(dir_, fmt::format("{}: {} from step {}", version_line(),
+                                     options_.resume ? "--resume" : "new run",
+                                     solver_->steps_done()));
     if (options_.resume && root_) read_earlier_summary();
     if (options_.resume && extension_.changes()) {
       if (options_.quiet)
@@ -189,7 +193,12 @@ int BowShockRun::execute_or_throw() {
     first_step_ = solver_->steps_done();
     cpu_at_leg_start_ = process_cpu_seconds();
     meter_.emplace(first_step_, total_steps_, scene_.run.progress_interval_s,
-                   [this](const std::string& line) { log_.say(line); });
+                   [this](const std::string& line) {
+                     if (options_.quiet)
+                       log_.record(line);
+                     else
+                       log_.say(line);
+                   });
     return advance_to_end();
   } catch (const WriteFailed& e) {
     throw UserError(fmt::format("{}; {}", e.what(), what_survives()));
@@ -371,33 +380,33 @@ int BowShockRun::advance_to_end() {
     warn_if_inflow_falls_short();
     // Collective: every rank takes part in the counts rank 0 reports. Rank 0's clock alone
     // says when: the other ranks' meters never report, so they would be due at every slice.
-    if (comm_.any(root_ && meter_->due() && !options_.quiet)) {
-      const long particles = solver_->global_size();
-      const long contacts = solver_->diagnostics().contacts;
-      if (root_)
-        meter_->report(step, step * scene_.setup.dt, particles, contacts, particle_steps_,
-                       inflow_note());
-    }
+    // A --quiet run shows nothing but keeps its thermo table.
+    if (comm_.any(root_ && meter_->due())) report_thermo(step);
     // A signal reaches the ranks at different moments: the highest one seen stops all.
     const int signal = int(comm_.max(double(interrupt_signal())));
     if (signal != 0) {
       write_checkpoint_now();
+      report_thermo(step);
       finish(false);
-      log_.say(fmt::format("granshock: interrupted at step {}; checkpoint written, continue with "
-                           "--resume: {}",
-                           step, resume_command()));
+      log_.say(
+          fmt::format("granshock: interrupted at step {}; checkpoint written, continue with "
+                      "--resume: {}",
+                      step, resume_command()));
       return 128 + signal;
     }
     if (backend_switch_ && next_backend() != backend_) move_solver_to(next_backend());
     if (options_.stop_after_steps > 0 && step >= first_step_ + options_.stop_after_steps &&
         step < total_steps_) {
       write_checkpoint_now();
+      report_thermo(step);
       finish(false);
-      log_.say(fmt::format("granshock: stopped after {} steps at step {}; continue with --resume: {}",
-                           options_.stop_after_steps, step, resume_command()));
+      log_.say(
+          fmt::format("granshock: stopped after {} steps at step {}; continue with --resume: {}",
+                      options_.stop_after_steps, step, resume_command()));
       return 0;
     }
   }
+  report_thermo(step);
   finish(true);
   return 0;
 }
@@ -516,6 +525,25 @@ void BowShockRun::actions_at(long step) {
   if (series_.due(step) || step == total_steps_) write_series_row(step);
   if (snapshots_.due(step) || step == total_steps_) write_snapshot(step);
   if (checkpoints_.due(step) || step == total_steps_) write_checkpoint_now();
+}
+
+// Collective: every rank takes part in the sums; rank 0 shows the row (not with --quiet:
+// log.txt alone) and appends it to thermo.txt (thermo_table.hpp).
+void BowShockRun::report_thermo(long step) {
+  const Diagnostics d = solver_->diagnostics();
+  const RemovalCounts removed = solver_->removed();
+  ThermoRow row;
+  row.step = step;
+  row.time_s = step * scene_.setup.dt;
+  row.particles = solver_->global_size();
+  row.contacts = d.contacts;
+  row.kinetic_energy_j = d.kinetic_energy + d.rotational_energy;
+  row.temperature_j = mixture_temperature(scene_, solver_->species_moments());
+  row.inserted = inflow_.inserted();
+  row.deleted = removed.high[1] + removed.low[1];
+  if (!root_ || step == last_thermo_step_) return;  // the last report was at this step
+  last_thermo_step_ = step;
+  thermo_.append(meter_->report(row, particle_steps_, inflow_note()));
 }
 
 // Collective: every rank forms the row (global sums), rank 0 writes it.

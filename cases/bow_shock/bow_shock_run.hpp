@@ -22,6 +22,7 @@
 #include "cases/bow_shock/run_extension.hpp"
 #include "cases/bow_shock/run_log.hpp"
 #include "cases/bow_shock/sampling_plan.hpp"
+#include "cases/bow_shock/thermo_table.hpp"
 #include "core/checkpoint_extras.hpp"
 #include "core/communicator.hpp"
 #include "core/solver.hpp"
@@ -63,6 +64,7 @@ class BowShockRun {
   nlohmann::json processes_summary() const;
   void actions_at(long step);
   void write_series_row(long step);
+  void report_thermo(long step);
   void write_snapshot(long step);
   // CPU seconds of every leg so far, all processes (collective); -1 where not known.
   double cpu_seconds_so_far() const;
@@ -78,8 +80,10 @@ class BowShockRun {
 
   const RunOptions& options_;
   const Communicator& comm_;
-  const bool root_;  // rank 0: writes the files and speaks
-  RunLog log_;       // stderr and log.txt (rank 0's)
+  const bool root_;    // rank 0: writes the files and speaks
+  RunLog log_;         // stderr and log.txt (rank 0's)
+  ThermoFile thermo_;  // thermo.txt (rank 0's)
+  long last_thermo_step_ = -1;
   LoadedScene loaded_;
   const Scene& scene_;
   std::filesystem::path dir_;

@@ -55,20 +55,18 @@ void ProgressMeter::report_prefill(long slabs_done, long slabs, long particles) 
                     eta_s / 60 % 60, eta_s % 60));
 }
 
-void ProgressMeter::report(long step, double time_s, long particles, long contacts,
-                           double particle_steps, const std::string& note) {
+ThermoRow ProgressMeter::report(ThermoRow row, double particle_steps, const std::string& note) {
   const auto now = Clock::now();
   const double elapsed = std::chrono::duration<double>(now - start_).count();
   last_ = now;
-  const double overall = elapsed > 0 ? double(step - first_step_) / elapsed : 0;
-  const double eta = overall > 0 ? double(total_steps_ - step) / overall : 0;
-  const int eta_s = int(std::lround(eta));
-  sink_(
-      fmt::format("step {}/{} ({:.1f}%)  t = {:.4f} s  particles {}  contacts {}  "
-                  "{:.3g} particle-steps/s  ETA {}:{:02d}:{:02d}{}{}",
-                  step, total_steps_, 100.0 * step / std::max(1L, total_steps_), time_s, particles,
-                  contacts, elapsed > 0 ? particle_steps / elapsed : 0.0, eta_s / 3600,
-                  eta_s / 60 % 60, eta_s % 60, note.empty() ? "" : "  ", note));
+  const double overall = elapsed > 0 ? double(row.step - first_step_) / elapsed : 0;
+  row.eta_s = overall > 0 ? std::lround(double(total_steps_ - row.step) / overall) : 0;
+  row.particle_steps_per_s = elapsed > 0 ? particle_steps / elapsed : 0.0;
+  row.done_percent = 100.0 * double(row.step) / double(std::max(1L, total_steps_));
+  if (!header_shown_) sink_(thermo_header());
+  header_shown_ = true;
+  sink_(thermo_line(row) + (note.empty() ? "" : "  " + note));
+  return row;
 }
 
 }  // namespace granshock

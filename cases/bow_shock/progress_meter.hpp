@@ -1,12 +1,15 @@
-// The one-line progress display of long runs: step, simulated time, particles, contacts,
-// particle-steps per second and the estimated time to the end, at most every
-// `interval` wall seconds.
+// The progress display of long runs, at most every `interval` wall seconds: rows of the
+// thermo table (thermo_table.hpp: step, simulated time, particles, contacts, energy,
+// temperature, insertions, deletions, particle-steps per second, the share done and the
+// estimated time to the end) under a header shown with the first.
 #pragma once
 
 #include <chrono>
 #include <cstdio>
 #include <functional>
 #include <string>
+
+#include "cases/bow_shock/thermo_table.hpp"
 
 namespace granshock {
 
@@ -18,10 +21,11 @@ class ProgressMeter {
   ProgressMeter(long first_step, long total_steps, double interval_s, LineSink sink);
 
   bool due() const;
-  // particle_steps: done since the meter started (for the rate).
-  // note: appended to the line when not empty (e.g. an inflow that falls short).
-  void report(long step, double time_s, long particles, long contacts, double particle_steps,
-              const std::string& note = {});
+  // `row` with its state filled in (step to deleted); particle_steps: done since the meter
+  // started (for the rate). Shows the row with its rate, share done and ETA (the header
+  // before the first) and returns it so. note: appended to the line when not empty (e.g.
+  // an inflow that falls short).
+  ThermoRow report(ThermoRow row, double particle_steps, const std::string& note = {});
   // The prefill's line, in the same form: slabs filled of all, particles placed, ETA.
   void report_prefill(long slabs_done, long slabs, long particles);
   double elapsed_s() const;
@@ -41,6 +45,7 @@ class ProgressMeter {
   LineSink sink_;
   Clock::time_point start_, last_, rate_since_;
   long rate_since_step_ = 0;
+  bool header_shown_ = false;
   double step_rate_ = 0;  // steps per wall second
 };
 

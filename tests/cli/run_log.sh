@@ -54,7 +54,18 @@ for line in stderr:
 legs = [t for t in texts if re.match(r"granshock \S+ \(commit .*\): run .* on 1 process$", t)]
 expect(len(legs) == 3 and "(new)" in legs[0] and "(--resume)" in legs[1],
        "not one first line per leg: %r" % legs)
-expect(any(t.startswith("step ") for t in texts), "no progress line in log.txt")
+header = [t.split() for t in texts if t.split()[:3] == ["Step", "Time", "Particles"]]
+expect(header, "no thermo header in log.txt")
+expect(any(re.match(r"^ *\d+ +[\d.e+-]+ +\d+ +\d+ ", t) for t in texts), "no thermo row in log.txt")
+# thermo.txt: the same columns, read by pandas as it is; one comment per leg, the steps
+# growing within each leg, the last row the run's end.
+import pandas
+table = pandas.read_csv(d + "/run/thermo.txt", sep=r"\s+", comment="#")
+expect(header and list(table.columns) == header[0], "thermo.txt columns %r" % list(table.columns))
+legs_noted = [l for l in open(d + "/run/thermo.txt") if l.startswith("# ")]
+expect(len(legs_noted) == 3, "thermo.txt notes %d legs, not 3" % len(legs_noted))
+expect(len(table) >= 2 and table["Step"].iloc[-1] == 8000, "thermo.txt rows %r" % table.tail(3))
+expect(table["Particles"].min() > 0 and table["KinEng"].min() > 0, "thermo.txt values")
 expect(any("stopped after 4000 steps" in t for t in texts), "no stop line in log.txt")
 expect(any(" done: " in t for t in texts), "no done line in log.txt")
 

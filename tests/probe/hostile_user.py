@@ -77,8 +77,9 @@ ATOMIC_OUTPUTS = ["run.xmf", "checkpoint.h5", "summary.json", "fields.h5", "fiel
                   "detachment_convergence.csv"]
 FIGURES = ["figures/solid_fraction.png", "figures/temperature.png", "figures/mach.png",
            "figures/stagnation_profiles.png"]
-# log.txt: appended to, never replaced (cases/bow_shock/run_log.hpp).
-OUTPUTS = ["run.h5", "log.txt"] + ATOMIC_OUTPUTS + [n + ".tmp" for n in ATOMIC_OUTPUTS] + FIGURES
+# log.txt and thermo.txt: appended to, never replaced (cases/bow_shock/run_log.hpp,
+# thermo_table.hpp).
+OUTPUTS = ["run.h5", "log.txt", "thermo.txt"] + ATOMIC_OUTPUTS + [n + ".tmp" for n in ATOMIC_OUTPUTS] + FIGURES
 
 # The categories whose checks cover what the figures write (a link in place of figures/ or
 # of a PNG, a full disk or a signal while they are drawn) draw them, as a user's commands
