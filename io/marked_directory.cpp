@@ -102,16 +102,27 @@ bool holds_only_an_empty_marker(const fs::path& dir, const char* name) {
 }
 
 void check_creatable(const fs::path& dir) {
-  fs::path probe = fs::absolute(dir);
+  fs::path probe = fs::absolute(dir), first_missing;
   std::error_code ec;
-  while (!probe.empty() && !fs::exists(probe, ec) && probe != probe.parent_path())
+  while (!probe.empty() && !fs::exists(probe, ec) && probe != probe.parent_path()) {
+    first_missing = probe;
     probe = probe.parent_path();
+  }
   if (!fs::is_directory(probe, ec))
     throw UserError(fmt::format("output directory '{}': '{}' is not a directory", dir.string(),
                                 probe.string()));
   if (::access(probe.c_str(), W_OK | X_OK) != 0)
     throw UserError(
         fmt::format("output directory '{}': '{}' is not writable", dir.string(), probe.string()));
+  // access() says yes to root wherever the mode bits would, in /proc as on a file system
+  // that takes no new directory: the first missing directory is made and removed again,
+  // so that --dry-run knows what the run will meet.
+  if (!first_missing.empty()) {
+    if (::mkdir(first_missing.c_str(), 0755) != 0)
+      throw UserError(fmt::format("output directory '{}' cannot be created in '{}': {}",
+                                  dir.string(), probe.string(), std::strerror(errno)));
+    ::rmdir(first_missing.c_str());
+  }
 }
 
 namespace {

@@ -57,7 +57,7 @@ bool directory_is_empty(const std::filesystem::path& dir);
 bool holds_only_an_empty_marker(const std::filesystem::path& dir, const char* name);
 
 // Throws UserError unless the directory can be created: its nearest existing ancestor
-// must be a writable directory.
+// must be a writable directory that takes a new directory (made and removed again).
 void check_creatable(const std::filesystem::path& dir);
 
 // Throws UserError, naming the first offender, unless every output (a path relative to

@@ -476,6 +476,7 @@ void write_layout(hid_t f, const std::string& scene_toml_as_given,
                         "m");
     h5::write_dataset(f, kSpeciesRadius, contents.species_radius,
                       {hsize_t(contents.species_radius.size())}, h5::Checksum::fletcher32);
+    h5::write_attribute(h5::open_dataset(f, kSpeciesRadius).get(), "unit", "m");
   }
   if (contents.angular_velocity) {
     create_time_element(f, all + "/angular_velocity", H5T_IEEE_F64LE, {0}, &kFloatFill,

@@ -2,9 +2,12 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <vector>
 
+#include "core/nearest_name.hpp"
 #include "core/quoted_input.hpp"
 #include "core/user_error.hpp"
 
@@ -64,7 +67,7 @@ const toml::node* TableReader::node(const std::string& name) {
 double TableReader::number(const std::string& name, std::optional<double> fallback) {
   const toml::node* n = node(name);
   if (!n) {
-    if (!fallback) fail(key(name), "(missing)", "this key is required (a number)");
+    if (!fallback) missing(name, "a number");
     return *fallback;
   }
   const auto v = n->value<double>();
@@ -118,7 +121,7 @@ bool TableReader::boolean(const std::string& name, bool fallback) {
 std::string TableReader::string(const std::string& name, std::optional<std::string> fallback) {
   const toml::node* n = node(name);
   if (!n) {
-    if (!fallback) fail(key(name), "(missing)", "this key is required (a string)");
+    if (!fallback) missing(name, "a string");
     return *fallback;
   }
   if (!n->is_string()) fail(key(name), show(*n), "must be a string");
@@ -136,7 +139,7 @@ std::string TableReader::choice(const std::string& name, const std::vector<std::
 double TableReader::length(const std::string& name, std::optional<double> fallback) {
   const toml::node* n = node(name);
   if (!n) {
-    if (!fallback) fail(key(name), "(missing)", "this key is required (a length)");
+    if (!fallback) missing(name, "a length");
     return *fallback;
   }
   return length_of(*n, key(name));
@@ -182,13 +185,29 @@ const toml::table* TableReader::table(const std::string& name) {
   return n->as_table();
 }
 
+void TableReader::missing(const std::string& name, const std::string& what) const {
+  // A required key spelled wrong is named as the typo it is, not as a missing key.
+  if (table_)
+    for (const auto& [k, v] : *table_) {
+      const std::string typed(k.str());
+      if (!known_.count(typed) && looks_like_typo_of(typed, name))
+        fail(key(typed), show(v),
+             fmt::format("unknown key; did you mean '{}' (required here: {})?", name, what));
+    }
+  fail(key(name), "(missing)", "this key is required (" + what + ")");
+}
+
 void TableReader::finish() const {
   if (!table_) return;
   for (const auto& [k, v] : *table_) {
     const std::string name(k.str());
-    if (!known_.count(name))
-      fail(key(name), show(v),
-           fmt::format("unknown key (accepted here: {})", fmt::join(known_, ", ")));
+    if (known_.count(name)) continue;
+    const std::string nearest =
+        nearest_name(name, std::vector<std::string>(known_.begin(), known_.end()));
+    fail(key(name), show(v),
+         fmt::format("unknown key{} (accepted here: {})",
+                     nearest.empty() ? "" : "; did you mean '" + nearest + "'?",
+                     fmt::join(known_, ", ")));
   }
 }
 

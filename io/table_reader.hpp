@@ -51,10 +51,14 @@ class TableReader {
                        std::optional<double> fallback = std::nullopt, const std::string& why = {});
   const toml::table* table(const std::string& name);
 
-  // Refuses the first key of the table that was never asked for, listing those that were.
+  // Refuses the first key of the table that was never asked for, listing those that were
+  // and naming the nearest of them where it looks like a typo.
   void finish() const;
 
  private:
+  // Refuses a required key that is absent: as a typo where the table has an unknown key a
+  // few edits from it ("restitucion"), else as missing. `what`: "a number", ...
+  [[noreturn]] void missing(const std::string& name, const std::string& what) const;
   const toml::table* table_;
   std::string path_;
   double d_m_;

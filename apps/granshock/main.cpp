@@ -1,7 +1,9 @@
 // granshock: the command-line program (docs/design.md, "The command-line contract").
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <CLI/CLI.hpp>
 #include <Kokkos_Core.hpp>
+#include <algorithm>
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
@@ -27,6 +29,7 @@
 #include "core/choice_names.hpp"
 #include "core/failure_agreement.hpp"
 #include "core/large_blocks.hpp"
+#include "core/nearest_name.hpp"
 #include "core/quoted_input.hpp"
 #include "core/user_error.hpp"
 #include "device/kokkos_runtime.hpp"
@@ -117,6 +120,34 @@ std::string whole_case_number(const std::string& text) {
              : text + " is not a case number (0, 1, 2, ...)";
 }
 
+// The first argument, where it names no command ("granshock runn"): CLI11 said only "A
+// subcommand is required". Names it, with the command it looks like and the commands.
+std::string unknown_command(CLI::App& app, int argc, char** argv) {
+  if (argc < 2 || argv[1][0] == '-') return {};
+  const std::string typed = argv[1];
+  std::vector<std::string> names;
+  for (const CLI::App* command : app.get_subcommands({})) names.push_back(command->get_name());
+  if (std::find(names.begin(), names.end(), typed) != names.end()) return {};
+  const std::string nearest = granshock::nearest_name(typed, names);
+  return fmt::format("unknown command {}{}; the commands are {} (see granshock --help)",
+                     granshock::quoted_input(typed),
+                     nearest.empty() ? "" : " (did you mean '" + nearest + "'?)",
+                     fmt::join(names, ", "));
+}
+
+// An input that must exist (a run directory, a dump file, a map), named as the user gave it:
+// CLI11's own check said "dirs: Path does not exist".
+CLI::Validator existing_input(const std::string& what) {
+  return CLI::Validator(
+      [what](std::string& path) {
+        std::error_code ec;
+        return std::filesystem::exists(std::filesystem::symlink_status(path, ec))
+                   ? std::string()
+                   : granshock::quoted_input(path, 1024) + " does not exist: " + what;
+      },
+      "PATH");
+}
+
 // --accuracy: the budget as parse_error_budget reads it, refused at once, so that an empty
 // value is not taken for no budget at all.
 std::string error_budget(const std::string& text) {
@@ -186,16 +217,17 @@ void add_fields_command(CLI::App& app, std::vector<std::filesystem::path>& dirs,
   auto* cmd = app.add_subcommand("fields",
                                  "recompute fields, figures and summary from DIR/run.h5; "
                                  "with several DIRs also the delta/D table and figure");
-  cmd->add_option("dirs", dirs, "run directories (with --from-dump: the dump files, in time order)")
+  cmd->add_option("DIR", dirs, "run directories (with --from-dump: the dump files, in time order)")
       ->required()
-      ->check(CLI::ExistingPath);
+      ->check(existing_input("granshock fields reads run directories (with --from-dump, dump "
+                             "files)"));
   cmd->add_option("--from-dump", dump.format,
                   "analyse the particles of another code's dump files instead of run "
                   "directories: lammps | liggghts (needs --map and --out; docs/fields.md)")
       ->check(CLI::IsMember({"lammps", "liggghts"}));
   cmd->add_option("--map", dump.map,
                   "with --from-dump: the scene and the atom types' species (TOML)")
-      ->check(CLI::ExistingPath);
+      ->check(existing_input("the map is a scene file with a [dump] table (docs/fields.md)"));
   cmd->add_option("--out", out,
                   "where to write (required with several DIRs): a new or empty directory, or "
                   "one granshock fields wrote before");
@@ -364,6 +396,10 @@ int main(int argc, char** argv) {
       std::cerr << "granshock: error: --out: the directory name is empty\n";
       return 2;
     }
+  }
+  if (const std::string unknown = unknown_command(app, argc, argv); !unknown.empty()) {
+    std::cerr << "granshock: error: " << unknown << "\n";
+    return 2;
   }
   try {
     app.parse(argc, argv);

@@ -60,6 +60,9 @@ def check_run(path, dim, counts, species_radius, spin):
                 expect((data[frame, n:] == -1).all(), f"{path}: {name} frame {frame} past n")
         # Format 2: radius (from the species) and, with friction, the spin about z.
         expect(list(f["parameters/species_radius"][()]) == species_radius, f"{path}: species_radius")
+        unit = f["parameters/species_radius"].attrs.get("unit")
+        expect((unit.decode() if isinstance(unit, bytes) else unit) == "m",
+               f"{path}: species_radius has no unit attribute 'm' ({unit!r})")
         elements = ["radius"] + (["angular_velocity"] if spin else [])
         expect(("angular_velocity" in all_) == spin, f"{path}: angular_velocity present")
         species = all_["species/value"][()]

@@ -138,6 +138,26 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"bad_override", {"inflow.velocity"}, "expected key=value"}),
     [](const auto& param_info) { return std::string(param_info.param.name); });
 
+// A typo of a required key was reported as the key missing ("contact.restitution =
+// (missing)"); it names the unknown key and the one it looks like now, and so does a typo
+// of a key that has a default.
+TEST(SceneErrorsText, ATypoNamesTheUnknownKeyAndTheNearestValidOne) {
+  std::string text = small_scene();
+  text.replace(text.find("velocity = 1.0"), 8, "veloctiy");
+  EXPECT_EQ(error_of(text),
+            "scene key 'inflow.veloctiy' = 1.0: unknown key; did you mean 'velocity' (required "
+            "here: a number)?");
+  EXPECT_EQ(
+      error_of(small_scene(), {"output.blcks=4"})
+          .rfind("scene key 'output.blcks' = 4: unknown key; did you mean 'blocks'? (accepted "
+                 "here: ",
+                 0),
+      0u)
+      << error_of(small_scene(), {"output.blcks=4"});
+  // Far from every key: no guess.
+  EXPECT_EQ(error_of(small_scene(), {"output.colour=4"}).find("did you mean"), std::string::npos);
+}
+
 TEST(SceneErrorsText, MissingKeyAndBrokenToml) {
   std::string text = small_scene();
   text.erase(text.find("velocity = 1.0"), 14);
