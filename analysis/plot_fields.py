@@ -123,10 +123,28 @@ class Run:
         return ", ".join(parts)
 
 
+def joined(line_set):
+    """The polylines of one set (the sonic line, one definition's front) as one (k, 2)
+    array with a NaN row between consecutive lines, or None when none has two points.
+    matplotlib breaks a line at NaN, so the lines stay apart, as the analysis stored them
+    (a front's polyline runs over consecutive columns with a front; a column without one
+    ends it, docs/fields.md section 5), and one artist draws the set: its legend entry does
+    not depend on which line comes first. A line of one point (a front in a single column
+    between columns without one) draws nothing and is left out; a set of only such lines
+    draws nothing and has no legend entry."""
+    drawn = [line for line in line_set if len(line) > 1]
+    if not drawn:
+        return None
+    gap = np.full((1, 2), np.nan)
+    return np.concatenate([part for line in drawn for part in (gap, line)][1:])
+
+
 def field_figure(run, values, label, title, figures, png, norm=None, cmap="viridis", lines=(),
                  ticks=None):
     """One field on the bin grid; masked (NaN) bins show a hatched background, named in
-    the legend (a note under the axes overlapped the x label)."""
+    the legend (a note under the axes overlapped the x label). `lines`: (polylines, plot
+    style) pairs, each style with its legend label and as gid the name of its /lines
+    dataset (tests/fields/check_figure_fronts.py finds each set's artist by it)."""
     width = run.x_nodes[-1] - run.x_nodes[0]
     height = run.y_nodes[-1] - run.y_nodes[0]
     fig_w = 6.0
@@ -141,11 +159,9 @@ def field_figure(run, values, label, title, figures, png, norm=None, cmap="virid
     if ticks is not None:
         bar.set_ticks(ticks)
     for line_set, style in lines:
-        style = dict(style)
-        label = style.pop("label", None)
-        for i, line in enumerate(line_set):
-            if len(line) > 1:
-                ax.plot(line[:, 0], line[:, 1], **style, label=label if i == 0 else None)
+        points = joined(line_set)
+        if points is not None:  # one artist per set: one legend entry, whichever lines it has
+            ax.plot(points[:, 0], points[:, 1], **style)
     handles, labels = ax.get_legend_handles_labels()
     if not run.all_masked and np.isnan(values).any():
         handles.append(Rectangle((0, 0), 1, 1, hatch="///", fill=False, edgecolor="0.6"))
@@ -277,9 +293,9 @@ def front_lines(run, color):
     lines = []
     if run.front_temperature:
         lines.append((run.front_temperature,
-                      dict(color=color, linestyle="-", linewidth=1.3,
+                      dict(color=color, linestyle="-", linewidth=1.3, gid="shock_temperature",
                            label="shock front: T half-rise (primary, as $\\delta$/D)")))
-    lines.append((run.front, dict(color=color, linestyle=":", linewidth=1.1,
+    lines.append((run.front, dict(color=color, linestyle=":", linewidth=1.1, gid="shock_threshold",
                                   label="shock front: $\\phi$ half-way (angle fit)")))
     return lines
 
@@ -305,7 +321,8 @@ def draw_figures(run, out):
                  out, "mach.png", cmap="coolwarm",
                  norm=matplotlib.colors.TwoSlopeNorm(vmin=0.0, vcenter=1.0, vmax=vmax),
                  ticks=mach_ticks(vmax),
-                 lines=((run.sonic, dict(color="k", linewidth=1.4, label="sonic line Ma = 1")),
+                 lines=((run.sonic, dict(color="k", linewidth=1.4, gid="sonic",
+                                         label="sonic line Ma = 1")),
                         *front_lines(run, "w")))
     profile_figure(run, out, "stagnation_profiles.png")
 

@@ -88,8 +88,13 @@ DumpReader::~DumpReader() {
 }
 
 void DumpReader::fail(const std::string& why) const {
-  throw UserError(to_string(format_) + " dump " + quoted_path(path_) + " line " +
-                  std::to_string(line_) + ": " + why);
+  const std::string where =
+      to_string(format_) + " dump " + quoted_path(path_) + " line " + std::to_string(line_) + ": ";
+  // Whatever is wrong with the file's last line inside a frame, cut off before its
+  // newline, is its cut.
+  if (unterminated_ && in_frame_)
+    throw TruncatedDump(where + why + " (the file's last line, cut off before its newline)");
+  throw UserError(where + why);
 }
 
 bool DumpReader::read_line(std::string& line) {
@@ -118,6 +123,7 @@ bool DumpReader::read_line(std::string& line) {
                       std::strerror(errno));
     if (line.empty()) return false;  // a last line without a newline still counts
   }
+  unterminated_ = c == EOF;
   ++line_;
   return true;
 }
@@ -152,8 +158,9 @@ std::string DumpReader::expect_line(const std::string& what) {
   std::string line;
   if (!read_line(line)) {
     ++line_;
-    fail("the file ends where " + what +
-         " should follow (a truncated dump: was it still being written?)");
+    throw TruncatedDump(to_string(format_) + " dump " + quoted_path(path_) + " line " +
+                        std::to_string(line_) + ": the file ends where " + what +
+                        " should follow (a truncated dump: was it still being written?)");
   }
   return line;
 }
@@ -185,8 +192,11 @@ bool DumpReader::next(DumpFrame& f) {
   do {
     if (!read_line(line)) return false;
   } while (trimmed(line).empty());
+  // The first line of a frame cut off: the start of "ITEM: TIMESTEP" and the end of the file.
+  in_frame_ = unterminated_ && std::string("ITEM: TIMESTEP").rfind(trimmed(line), 0) == 0;
   if (trimmed(line) != "ITEM: TIMESTEP")
     fail("expected 'ITEM: TIMESTEP' at the start of a frame, found " + quoted_input(trimmed(line)));
+  in_frame_ = true;
   f = DumpFrame{};
   f.where = printable_line(path_.string(), 1024) + ":" + std::to_string(line_);
   bool ok = false;
@@ -196,6 +206,7 @@ bool DumpReader::next(DumpFrame& f) {
   long atoms = -1;
   bool have_box = false;
   std::vector<int> at(kColumnCount, -1);
+  int z_at = -1, vz_at = -1;  // optional: the projection's warning (DumpFrame::has_z)
   std::size_t columns = 0;
   for (int items = 0;; ++items) {
     // A frame's header has a handful of items; thousands are not a dump.
@@ -247,6 +258,10 @@ bool DumpReader::next(DumpFrame& f) {
               fail("ITEM: ATOMS names column " + std::string(kColumns[k].name) + " twice");
             at[static_cast<std::size_t>(k)] = static_cast<int>(c);
           }
+      for (std::size_t c = 0; c < names.size(); ++c) {
+        if (names[c] == "z" || names[c] == "zu") z_at = int(c);
+        if (names[c] == "vz") vz_at = int(c);
+      }
       std::string missing;
       for (int k = 0; k < kColumnCount; ++k)
         if (at[static_cast<std::size_t>(k)] < 0)
@@ -270,9 +285,11 @@ bool DumpReader::next(DumpFrame& f) {
     const std::string row = expect_line("atom " + std::to_string(i + 1) + " of " +
                                         std::to_string(n) + " of the frame at " + f.where);
     const std::vector<std::string> t = split(row);
-    if (t.size() != columns)
+    if (t.size() != columns) {
+      // A truncated frame where the line is the file's last, cut off (fail).
       fail("an atom line has " + std::to_string(t.size()) + " values, ITEM: ATOMS names " +
            std::to_string(columns) + " columns (a truncated or corrupted line?)");
+    }
     auto token = [&](int k) {
       return t[static_cast<std::size_t>(at[static_cast<std::size_t>(k)])];
     };
@@ -287,8 +304,24 @@ bool DumpReader::next(DumpFrame& f) {
         fail("the " + std::string(kColumns[k].name) + " value " + quoted_input(token(k)) +
              " is not a finite number");
     }
+    // z and vz are not binned: a value that does not parse only leaves the spread unknown.
+    if (z_at >= 0) {
+      bool z_ok = false;
+      const double z = parse_number(t[std::size_t(z_at)], z_ok);
+      if (z_ok) {
+        f.z_min = f.has_z ? std::min(f.z_min, z) : z;
+        f.z_max = f.has_z ? std::max(f.z_max, z) : z;
+        f.has_z = true;
+      }
+    }
+    if (vz_at >= 0) {
+      bool vz_ok = false;
+      const double vz = parse_number(t[std::size_t(vz_at)], vz_ok);
+      if (vz_ok) f.vz_max_abs = std::max(f.vz_max_abs, std::abs(vz));
+    }
   }
   refuse_duplicate_ids(f);
+  in_frame_ = false;
   return true;
 }
 

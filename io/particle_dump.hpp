@@ -15,11 +15,20 @@
 #include <string>
 #include <vector>
 
+#include "core/user_error.hpp"
+
 namespace granshock {
 
 enum class DumpFormat { lammps, liggghts };
 DumpFormat parse_dump_format(const std::string& name);  // "lammps" | "liggghts"
 std::string to_string(DumpFormat format);               // "LAMMPS" | "LIGGGHTS"
+
+// The file ended inside a frame (a dump still being written, or cut off): the frames before
+// are whole (sum_dump_frames uses them from the last file, with a warning).
+class TruncatedDump : public UserError {
+ public:
+  using UserError::UserError;
+};
 
 struct DumpFrame {
   long timestep = 0;
@@ -28,6 +37,10 @@ struct DumpFrame {
   std::vector<long> id;
   std::vector<long> type;
   std::vector<double> x, y, vx, vy;
+  // z and vz where the dump has them (3-D, or a quasi-2-D layer at one z): their spread, for
+  // the warning that a 3-D dump is binned as its x-y projection.
+  bool has_z = false;
+  double z_min = 0, z_max = 0, vz_max_abs = 0;
   std::string where;  // "FILE:LINE" of its ITEM: TIMESTEP line, for messages
 
   std::size_t size() const { return id.size(); }
@@ -48,8 +61,9 @@ class DumpReader {
   DumpReader(const DumpReader&) = delete;
   DumpReader& operator=(const DumpReader&) = delete;
 
-  // The next frame into `frame`; false at the end of the file. Throws UserError on a
-  // truncated or malformed frame: a line past kMaxDumpLineBytes or holding a NUL byte, a
+  // The next frame into `frame`; false at the end of the file. Throws TruncatedDump where
+  // the file ends inside the frame (or its last line, without a newline, is cut short), and
+  // UserError on a malformed frame: a line past kMaxDumpLineBytes or holding a NUL byte, a
   // count of atoms the memory cannot hold, an inverted box, an atom id twice.
   bool next(DumpFrame& frame);
 
@@ -64,6 +78,8 @@ class DumpReader {
   DumpFormat format_;
   std::FILE* file_ = nullptr;
   long line_ = 0;
+  bool unterminated_ = false;  // the line read last ended at the end of the file, not "\n"
+  bool in_frame_ = false;      // between a frame's ITEM: TIMESTEP and its last atom
 };
 
 }  // namespace granshock

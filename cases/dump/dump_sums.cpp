@@ -66,6 +66,13 @@ std::string seconds(double t) {
   return s.str();
 }
 
+// Particles at more than one z, or moving along z: more than a quasi-2-D layer. A
+// spread below a millionth of the box's thickness is round-off of a layer written at z=0.
+bool is_three_dimensional(const DumpFrame& f) {
+  const double thickness = f.box_hi[2] - f.box_lo[2];
+  return (f.has_z && f.z_max - f.z_min > 1e-6 * thickness) || f.vz_max_abs > 0;
+}
+
 bool same_box(const DumpFrame& a, const DumpFrame& b) {
   for (int k = 0; k < 3; ++k)
     if (a.box_lo[k] != b.box_lo[k] || a.box_hi[k] != b.box_hi[k]) return false;
@@ -172,9 +179,28 @@ DumpSums sum_dump_frames(const DumpMap& map, DumpFormat format,
   DumpFrame frame, first;
   std::optional<long> previous_step;
   std::string previous_where;
-  for (const std::filesystem::path& file : files) {
-    DumpReader reader(file, format);
-    while (reader.next(frame)) {
+  bool warned_3d = false;
+  for (std::size_t f = 0; f < files.size(); ++f) {
+    DumpReader reader(files[f], format);
+    for (;;) {
+      try {
+        if (!reader.next(frame)) break;
+      } catch (const TruncatedDump& e) {
+        // A dump still being written ends inside its last frame: the frames before it are
+        // whole. Inside an earlier file, or with no whole frame at all, it is an error.
+        if (f + 1 < files.size() || out.frames_read == 0) throw;
+        out.warnings.push_back(std::string(e.what()) + "; its last frame is left out, the " +
+                               std::to_string(out.frames_read) + " frames before it are used");
+        break;
+      }
+      if (!warned_3d && is_three_dimensional(frame)) {
+        warned_3d = true;
+        out.warnings.push_back(fmt::format(
+            "the frame at {} is 3-D (z from {:.6g} to {:.6g} m, |vz| up to {:.3g} m/s): granshock "
+            "bins its x-y projection, as a quasi-2-D layer (the fields count particles per "
+            "area of the layer and leave vz out of the temperature)",
+            frame.where, frame.z_min, frame.z_max, frame.vz_max_abs));
+      }
       if (previous_step && !(frame.timestep > *previous_step))
         throw UserError("frames out of order: the frame at " + frame.where + " has timestep " +
                         std::to_string(frame.timestep) + ", not after " +

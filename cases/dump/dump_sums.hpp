@@ -25,6 +25,9 @@ struct DumpSums {
   // Per frame: the time since [dump] flow_start, the particles and their translational
   // kinetic energy sum m (vx^2 + vy^2) / 2 (the steadiness check's series).
   RunSeries series;
+  // Said on stderr and kept in summary.json: a truncated last frame left out, a 3-D dump
+  // binned as its x-y projection.
+  std::vector<std::string> warnings;
 };
 
 // Throws UserError naming the keys when the map's bins are not ones a run could sample

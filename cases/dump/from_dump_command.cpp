@@ -84,6 +84,7 @@ int from_dump_command(const FromDumpOptions& d, const FieldsCommandOptions& o) {
   nlohmann::json warnings = nlohmann::json::array();
   if (!a.steadiness.warning.empty()) warnings.push_back(a.steadiness.warning);
   if (!a.inflow.warning.empty()) warnings.push_back(a.inflow.warning);
+  for (const std::string& w : sums.warnings) warnings.push_back(w);
   keys["warnings"] = warnings;
 
   const FieldsDirectory out = FieldsDirectory::claim(d.out, FieldsOutput::one_run);

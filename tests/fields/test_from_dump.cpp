@@ -360,7 +360,7 @@ TEST(FromDumpHostile, NulBytesAndOverlongLinesAreRefusedAtTheirLine) {
   EXPECT_NE(line.find("line 36: the line is longer than 65536 bytes"), std::string::npos) << line;
   // Exactly at the cap is a line (here not a frame's start: refused for that, quoted short).
   const std::string at_cap = refusal(std::string(kHandDump) + std::string(kMaxDumpLineBytes, 'x'));
-  EXPECT_NE(at_cap.find("expected 'ITEM: TIMESTEP'"), std::string::npos) << at_cap;
+  EXPECT_NE(at_cap.find("expected 'ITEM: TIMESTEP'"), std::string::npos) << at_cap.substr(0, 300);
   EXPECT_LT(at_cap.size(), 400u) << "the garbage line is quoted whole";
 }
 
@@ -448,4 +448,53 @@ TEST(FromDumpHostile, BinsAMapCannotHoldAreRefusedNamingTheKey) {
   const std::string big = refusal(kHandDump, huge);
   EXPECT_NE(big.find("output.blocks = 2 with numerics.bin_size = 1 d needs"), std::string::npos)
       << big;
+}
+
+// A dump still being written ends inside its last frame: the frames before it are used, with
+// a warning (it was refused whole). Inside an earlier file, or with no whole frame, it stays
+// an error.
+TEST(FromDumpInterop, ATruncatedLastFrameIsLeftOutWithAWarning) {
+  const DumpMap map = parse_dump_map(kHandMap, "hand map");
+  const std::string whole = kHandDump;
+  // Cut inside the third frame's atom line, and at its ATOMS header.
+  for (const std::size_t cut : {whole.size() - 20, whole.rfind("ITEM: ATOMS") + 5}) {
+    const fs::path dump = write_temp("cut.dump", whole.substr(0, cut));
+    const DumpSums s = sum_dump_frames(map, DumpFormat::lammps, {dump});
+    EXPECT_EQ(s.frames_read, 2);
+    EXPECT_EQ(s.frames_used, 2);
+    ASSERT_EQ(s.warnings.size(), 1u);
+    EXPECT_NE(s.warnings[0].find("its last frame is left out, the 2 frames before it are used"),
+              std::string::npos)
+        << s.warnings[0];
+    const fs::path after = write_temp("after.dump", whole);
+    EXPECT_THROW(sum_dump_frames(map, DumpFormat::lammps, {dump, after}), TruncatedDump);
+    fs::remove(after);
+    fs::remove(dump);
+  }
+  const std::string first = whole.substr(0, whole.find("ITEM: TIMESTEP\n1000"));
+  const fs::path only = write_temp("only.dump", first.substr(0, first.size() - 12));
+  EXPECT_THROW(sum_dump_frames(map, DumpFormat::lammps, {only}), TruncatedDump);
+  fs::remove(only);
+}
+
+// A 3-D dump is binned as its x-y projection: said once, naming the z range.
+TEST(FromDumpInterop, AThreeDimensionalDumpIsProjectedWithOneWarning) {
+  const DumpMap map = parse_dump_map(kHandMap, "hand map");
+  std::string spread = kHandDump;
+  spread.replace(spread.find("1.0 1 0.002 1 7 0.5 0.001 0"), 27,
+                 "1.0 1 0.002 1 7 0.5 0.001 0.0002");
+  spread.replace(spread.find("2.0 2 0.0022 2 7 -0.5 0.0015 0"), 30,
+                 "2.0 2 0.0022 2 7 -0.5 0.0015 -0.0001");
+  const fs::path dump = write_temp("3d.dump", spread);
+  const DumpSums s = sum_dump_frames(map, DumpFormat::lammps, {dump});
+  fs::remove(dump);
+  ASSERT_EQ(s.warnings.size(), 1u);
+  EXPECT_NE(s.warnings[0].find("is 3-D (z from -0.0001 to 0.0002 m"), std::string::npos)
+      << s.warnings[0];
+  EXPECT_EQ(total_count(s.grid), 6) << "projected, every particle binned";
+  // The committed LAMMPS dump is a layer at z = 0: no warning.
+  const DumpMap lammps = load_dump_map(kSource / "apps/bench/lammps/dump_map.toml");
+  EXPECT_TRUE(sum_dump_frames(lammps, DumpFormat::lammps,
+                              {kSource / "tests/fields/dump/small_bow_shock.dump"})
+                  .warnings.empty());
 }

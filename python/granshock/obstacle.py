@@ -1,0 +1,109 @@
+"""The obstacle's cross-section in the x-y plane (docs/scene_format.md, "Obstacle shapes";
+kernels/models/cylinder.hpp, wedge.hpp, plate.hpp): a prism along z, symmetric about
+x = centre[0], spanning centre +- half its size along x and y. The flow runs along +y."""
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+# Segments of a cylinder's outline: a multiple of 4, so that it holds the points at its
+# widest (x = xc +- R) and on the axis (y = yc +- R).
+CYLINDER_SEGMENTS = 256
+
+
+@dataclass(frozen=True)
+class Obstacle:
+    """An obstacle, in m.
+
+    shape: "cylinder", "wedge" or "plate".
+    centre: (x, y), the middle of the shape's extent along x and y.
+    frontal_width: D, the width across the flow (what delta/D divides by).
+    length: the extent along the flow.
+    sizes: the scene's size keys of the shape: {"diameter"}, {"half_angle" (degrees),
+        "length"} or {"width", "thickness"}.
+    outline: (N, 2) array of (x, y), counter-clockwise and closed (the last row repeats
+        the first), ready for plotting.
+    face, back: y of the upstream and downstream faces on the axis.
+    """
+    shape: str
+    centre: tuple
+    frontal_width: float
+    length: float
+    sizes: dict
+    outline: np.ndarray
+
+    @property
+    def face(self):
+        """y of the upstream face on the axis (a wedge's tip)."""
+        return self.centre[1] - 0.5 * self.length
+
+    @property
+    def back(self):
+        """y of the downstream face on the axis."""
+        return self.centre[1] + 0.5 * self.length
+
+
+def corners(shape, sizes):
+    """The outline about the centre, counter-clockwise, not yet closed."""
+    if shape == "cylinder":
+        angle = np.linspace(0.0, 2 * np.pi, CYLINDER_SEGMENTS, endpoint=False)
+        radius = 0.5 * sizes["diameter"]
+        return np.column_stack([radius * np.cos(angle), radius * np.sin(angle)])
+    if shape == "wedge":
+        # The tip upstream on the axis, the base closing it (kernels/models/wedge.hpp).
+        half_length = 0.5 * sizes["length"]
+        half_base = sizes["length"] * math.tan(math.radians(sizes["half_angle"]))
+        return np.array([[0.0, -half_length], [half_base, half_length],
+                         [-half_base, half_length]])
+    if shape == "plate":
+        w, t = 0.5 * sizes["width"], 0.5 * sizes["thickness"]
+        return np.array([[-w, -t], [w, -t], [w, t], [-w, t]])
+    raise ValueError(f"unknown obstacle shape {shape!r} (cylinder, wedge or plate)")
+
+
+def frontal_width_and_length(shape, sizes):
+    """(D, the width across the flow; the extent along it)."""
+    if shape == "cylinder":
+        return sizes["diameter"], sizes["diameter"]
+    if shape == "wedge":
+        return 2 * sizes["length"] * math.tan(math.radians(sizes["half_angle"])), sizes["length"]
+    return sizes["width"], sizes["thickness"]
+
+
+def make_obstacle(shape, centre, sizes):
+    """An Obstacle of `shape` at `centre` with the scene's size keys `sizes`."""
+    centre = (float(centre[0]), float(centre[1]))
+    outline = corners(shape, sizes) + np.array(centre)
+    width, length = frontal_width_and_length(shape, sizes)
+    return Obstacle(shape, centre, width, length, dict(sizes),
+                    np.vstack([outline, outline[:1]]))
+
+
+SIZE_KEYS = {"cylinder": ["diameter"], "wedge": ["half_angle", "length"],
+             "plate": ["width", "thickness"]}
+
+
+def obstacle_from_scene(scene):
+    """The obstacle of a resolved scene (a dict, as Run.scene gives it), or None when the
+    scene has none."""
+    table = scene.get("obstacle")
+    if table is None:
+        return None
+    shape = table.get("shape", "cylinder")
+    return make_obstacle(shape, table["centre"], {k: float(table[k]) for k in SIZE_KEYS[shape]})
+
+
+def obstacle_from_fields_attributes(attributes):
+    """The obstacle described by fields.h5's root attributes (@obstacle_shape, _xc, _yc,
+    _width, _face, _back), or None when it has none: what a fields directory without the
+    scene knows of it."""
+    shape = attributes.get("obstacle_shape", "cylinder")
+    width = attributes.get("obstacle_width", math.nan)
+    if shape == "none" or not width > 0:
+        return None
+    length = attributes["obstacle_back"] - attributes["obstacle_face"]
+    sizes = {"cylinder": {"diameter": width},
+             "wedge": {"half_angle": math.degrees(math.atan(0.5 * width / length)),
+                       "length": length},
+             "plate": {"width": width, "thickness": length}}[shape]
+    return make_obstacle(shape, (attributes["obstacle_xc"], attributes["obstacle_yc"]), sizes)
