@@ -51,14 +51,31 @@ void remove_stale_temporary(const fs::path& tmp) {
 }
 
 void write_file_atomically(const fs::path& path, const std::string& contents) {
+  write_file_atomically(path, [&](const AtomicWrite& write) { write(contents); });
+}
+
+void write_file_atomically(const fs::path& path,
+                           const std::function<void(const AtomicWrite&)>& produce) {
   const fs::path tmp = path.string() + ".tmp";
   remove_stale_temporary(tmp);
   const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
   if (fd < 0)
     throw UserError("cannot write '" + path.string() + "': " + std::strerror(errno) +
                     (errno == EEXIST ? " (its temporary appeared meanwhile)" : ""));
-  const bool written = write_all(fd, contents);
-  const int write_errno = errno;
+  bool written = true;
+  int write_errno = 0;
+  try {
+    produce([&](const std::string& piece) {
+      if (written && !write_all(fd, piece)) {
+        written = false;
+        write_errno = errno;
+      }
+    });
+  } catch (...) {
+    ::close(fd);
+    ::unlink(tmp.c_str());
+    throw;
+  }
   const bool closed = ::close(fd) == 0;
   if (!written || !closed) {
     ::unlink(tmp.c_str());

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <string>
 
 namespace granshock {
@@ -17,6 +18,12 @@ namespace granshock {
 // Throws UserError naming the path when the directory is not writable or the write fails
 // (then the temporary is removed and the previous file stays).
 void write_file_atomically(const std::filesystem::path& path, const std::string& contents);
+
+// The same for a file too large to hold in memory: `produce` hands its text piece by piece
+// to the writer it is given. An exception of `produce` removes the temporary and goes on.
+using AtomicWrite = std::function<void(const std::string& piece)>;
+void write_file_atomically(const std::filesystem::path& path,
+                           const std::function<void(const AtomicWrite&)>& produce);
 
 // Makes room for a temporary file that granshock is about to create: removes `tmp` when
 // it is a regular file, does nothing when it is absent, and throws UserError when it is

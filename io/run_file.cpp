@@ -864,6 +864,60 @@ std::vector<SnapshotFrame> RunFile::frames() const {
   });
 }
 
+namespace {
+
+// Rows [0, count) of frame `frame` of the per-particle dataset GROUP/value: `width`
+// components a row (0: one scalar), into `out`.
+template <class T>
+void read_frame_rows(hid_t file, const std::string& group, long frame, long count, hsize_t width,
+                     std::vector<T>& out) {
+  Handle set = h5::open_dataset(file, group + "/value");
+  Handle file_space = h5::dataspace(H5Dget_space(set.get()), "reading a dataspace");
+  const hsize_t start[3] = {hsize_t(frame), 0, 0};
+  const hsize_t rows[3] = {1, hsize_t(count), std::max<hsize_t>(width, 1)};
+  const int rank = width > 0 ? 3 : 2;
+  h5::check(H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start, nullptr, rows, nullptr),
+            "selecting a frame's rows of '" + group + "'");
+  out.resize(std::size_t(count) * std::max<hsize_t>(width, 1));
+  Handle memory_space =
+      h5::dataspace(H5Screate_simple(rank, rows, nullptr), "creating a dataspace");
+  if (count > 0)
+    h5::check(H5Dread(set.get(), h5::TypeOf<T>::memory(), memory_space.get(), file_space.get(),
+                      H5P_DEFAULT, out.data()),
+              "reading a frame of '" + group + "'");
+}
+
+}  // namespace
+
+HostParticles RunFile::read_snapshot(long frame) const {
+  return h5::naming_file_in_errors(path_, "reading", [&] {
+    const std::vector<SnapshotFrame> all = frames();
+    if (frame < 0 || std::size_t(frame) >= all.size())
+      throw UserError(fmt::format("'{}' has {} snapshots; there is no snapshot {}", path_.string(),
+                                  all.size(), frame));
+    const long n = all[std::size_t(frame)].count;
+    const std::string base = kParticles;
+    std::vector<double> x, v;
+    read_frame_rows(file_.get(), base + "/position", frame, n, hsize_t(dim_), x);
+    read_frame_rows(file_.get(), base + "/velocity", frame, n, hsize_t(dim_), v);
+    HostParticles p;
+    read_frame_rows(file_.get(), base + "/species", frame, n, 0, p.species);
+    read_frame_rows(file_.get(), base + "/id", frame, n, 0, p.id);
+    if (contents_.angular_velocity)
+      read_frame_rows(file_.get(), base + "/angular_velocity", frame, n, 0, p.angular_velocity);
+    for (long i = 0; i < n; ++i) {
+      std::array<double, 3> xi{0, 0, 0}, vi{0, 0, 0};
+      for (int k = 0; k < dim_; ++k) {
+        xi[std::size_t(k)] = x[std::size_t(i * dim_ + k)];
+        vi[std::size_t(k)] = v[std::size_t(i * dim_ + k)];
+      }
+      p.position.push_back(xi);
+      p.velocity.push_back(vi);
+    }
+    return p;
+  });
+}
+
 RunFileRecord RunFile::record() const {
   return h5::naming_file_in_errors(path_, "reading", [&] {
     RunFileRecord r;

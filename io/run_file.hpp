@@ -102,6 +102,10 @@ class RunFile {
 
   // The frames written so far, in order.
   std::vector<SnapshotFrame> frames() const;
+  // The particles of frame `frame` (0-based), its `count` rows: positions and velocities
+  // with z = 0 in 2-D, species, ids and, where the file has them, spins. Throws UserError
+  // for a frame it does not hold.
+  HostParticles read_snapshot(long frame) const;
   // The run id and the frames and rows written so far, for a checkpoint to record.
   RunFileRecord record() const;
   // The particle extent of the snapshot datasets (>= every frame's count).

@@ -22,6 +22,7 @@
 #include "cases/build_info/build_description.hpp"
 #include "cases/collision/head_on_collision.hpp"
 #include "cases/dump/from_dump_command.hpp"
+#include "cases/export/lammps_export.hpp"
 #include "cases/study/study_command.hpp"
 #include "cases/tradeoff/accuracy_choice.hpp"
 #include "cases/tradeoff/tradeoff_command.hpp"
@@ -234,6 +235,20 @@ void add_fields_command(CLI::App& app, std::vector<std::filesystem::path>& dirs,
   add_no_figures_flag(*cmd, o.figures);
 }
 
+void add_export_command(CLI::App& app, granshock::ExportOptions& o) {
+  auto* cmd = app.add_subcommand(
+      "export", "write a run's snapshots as a LAMMPS dump custom text file (OVITO, read_dump)");
+  cmd->add_option("DIR", o.run_dir, "run directory")
+      ->required()
+      ->check(existing_input("granshock export reads a run directory"));
+  cmd->add_option("--lammps-dump", o.lammps_dump,
+                  "the dump to write: id type x y z vx vy vz radius, ids and types from 1")
+      ->required();
+  cmd->add_option("--map", o.map,
+                  "also write the map `granshock fields --from-dump` needs for the dump");
+  cmd->add_flag("--quiet", o.quiet, "no result line on stdout");
+}
+
 void add_study_command(CLI::App& app, granshock::StudyOptions& o) {
   auto* cmd = app.add_subcommand(
       "study",
@@ -363,6 +378,8 @@ int main(int argc, char** argv) {
   add_fields_command(app, field_dirs, field_out, field_options, field_dump);
   granshock::StudyOptions study;
   add_study_command(app, study);
+  granshock::ExportOptions export_options;
+  add_export_command(app, export_options);
   granshock::TradeoffOptions tradeoff;
   add_tradeoff_command(app, tradeoff);
   auto* info = app.add_subcommand("info", "version, Kokkos backends and threads, build options");
@@ -457,6 +474,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("fields"))
       return run_fields_command(field_dirs, field_out, field_options, field_dump);
     if (app.got_subcommand("study")) return granshock::study_command(study);
+    if (app.got_subcommand("export")) return granshock::export_command(export_options);
     if (app.got_subcommand("tradeoff")) return granshock::tradeoff_command(tradeoff);
     if (info->parsed()) {
       if (mpi->rank() == 0) std::cout << granshock::build_info_json(mpi->size()) << "\n";

@@ -1,12 +1,12 @@
 #!/usr/bin/python3
-"""A granshock run's own particles, written as a LAMMPS dump, through `granshock fields
---from-dump` (docs/fields.md, section 13) give the densities and velocities that summing
-the same particles directly gives.
+"""A granshock run's own particles, written as a LAMMPS dump by `granshock export`, through
+`granshock fields --from-dump` (docs/fields.md, section 13) give the densities and
+velocities that summing the same particles directly gives: the round trip of the export.
 
 granshock runs apps/bench/lammps/small_bow_shock.toml with a snapshot every 0.5 ms; the
 snapshots of its production window (run.h5 /particles/all, docs/output_format.md) become
-the frames of a LAMMPS `dump custom` (columns in LAMMPS' order, z and vz zero) and the
-run's resolved scene with a [dump] table the map. This script bins the same particles
+the frames of a LAMMPS `dump custom` (`granshock export --lammps-dump`, every value checked
+against run.h5) and the run's resolved scene with a [dump] table the map (`--map`). This script bins the same particles
 itself, by the rule of docs/fields.md (section 1 and section 13: x wrapped into the
 periodic width, the wrapping column, the last row clipped at the outlet), on the grid
 fields.h5 names, and compares n_s, mean_count and phi in every bin, and ux_s, uy_s where
@@ -62,18 +62,11 @@ def main():
         if len(frames) < 10:
             raise SystemExit(f"FAIL: only {len(frames)} snapshots in the window")
         width, length = 0.030, 0.048
-        with open(f"{tmp}/run.dump", "w") as out:
-            for fr in frames:
-                out.write(f"ITEM: TIMESTEP\n{round(fr['t'] / dt)}\nITEM: NUMBER OF ATOMS\n"
-                          f"{len(fr['id'])}\nITEM: BOX BOUNDS pp ff pp\n0 {width!r}\n"
-                          f"0 {length!r}\n-0.0005 0.0005\nITEM: ATOMS id type x y z vx vy vz\n")
-                for i in range(len(fr["id"])):
-                    x, v = fr["x"][i], fr["v"][i]
-                    out.write(f"{fr['id'][i] + 1} {fr['species'][i] + 1} {float(x[0])!r} "
-                              f"{float(x[1])!r} 0 {float(v[0])!r} {float(v[1])!r} 0\n")
-        with open(f"{tmp}/map.toml", "w") as out:
-            out.write(resolved + f'\n[dump]\ndt = {dt!r}\n\n[dump.types]\n1 = "steel"\n'
-                      '2 = "aluminium"\n')
+        # `granshock export` writes the dump and its map (docs/output_format.md, "Export to
+        # LAMMPS and OVITO"); every exported value must be the snapshot's, bit for bit.
+        run([granshock, "export", f"{tmp}/run", "--lammps-dump", f"{tmp}/run.dump", "--map",
+             f"{tmp}/map.toml", "--quiet"])
+        check_export(f"{tmp}/run.dump", snapshots(f"{tmp}/run/run.h5", 0, float("inf")))
         run([granshock, "fields", "--from-dump", "lammps", f"{tmp}/run.dump", "--map",
              f"{tmp}/map.toml", "--out", f"{tmp}/out", "--no-figures"])
         with h5py.File(f"{tmp}/out/fields.h5", "r") as f:
@@ -83,6 +76,34 @@ def main():
             names = f.attrs["species"]
             names = (names.decode() if isinstance(names, bytes) else names).split(",")
     check(frames, g, fields, samples, names, width, length)
+
+
+def check_export(dump, frames):
+    """The exported dump holds every snapshot, its atoms by id (granshock id + 1, species +
+    1), with the snapshot's times, positions and velocities as the same doubles."""
+    failures, k, lines = [], 0, open(dump).read().split("\n")
+    i = 0
+    while i < len(lines) and lines[i] == "ITEM: TIMESTEP":
+        time = float(lines[i + 3])
+        n = int(lines[i + 5])
+        rows = np.array([[float(v) for v in line.split()] for line in lines[i + 11:i + 11 + n]])
+        fr = frames[k]
+        order = np.argsort(fr["id"])
+        if time != fr["t"] or n != len(fr["id"]):
+            failures.append(f"frame {k}: time {time} and {n} atoms, run.h5 {fr['t']} and {len(fr['id'])}")
+        elif n and not (np.array_equal(rows[:, 0], fr["id"][order] + 1) and
+                        np.array_equal(rows[:, 1], fr["species"][order] + 1) and
+                        np.array_equal(rows[:, 2:4], fr["x"][order]) and
+                        np.array_equal(rows[:, 5:7], fr["v"][order]) and
+                        (rows[:, 8] == 0.0005).all()):
+            failures.append(f"frame {k}: the atoms differ from run.h5's")
+        i += 11 + n
+        k += 1
+    if k != len(frames):
+        failures.append(f"the dump holds {k} frames, run.h5 {len(frames)}")
+    for f in failures:
+        print("FAIL: export:", f)
+    print(f"export: {k} frames compared with run.h5")
 
 
 def check(frames, g, fields, samples, names, width, length):
