@@ -9,6 +9,7 @@
 #include "core/variant_names.hpp"
 #include "io/atomic_file.hpp"
 #include "io/fields_xdmf.hpp"
+#include "kernels/models/obstacle_shapes.hpp"
 
 namespace granshock {
 
@@ -73,6 +74,10 @@ FieldsFileContent fields_file_content(const FieldAnalysis& a) {
   c.y0 = a.grid.y0;
   c.dx = a.grid.dx;
   c.dy = a.grid.dy;
+  if (p.obstacle) {
+    const Obstacle& o = p.obstacle->body;
+    c.obstacle_outline = outline_points(obstacle_outline(o), o.centre[0], o.centre[1]);
+  }
 
   std::vector<std::string> species;
   for (const std::string& s : p.species) species.push_back(dataset_name(s));

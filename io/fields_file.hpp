@@ -44,6 +44,9 @@ struct FieldsFileContent {
 
   std::vector<CellField> cell_fields;
   std::vector<CellFlag> cell_flags;
+  // The obstacle's cross-section, a closed polygon in m (empty: none), which fields.xmf
+  // shows as a grid of its own (io/xdmf_writer.hpp, obstacle_grid_xml).
+  std::vector<std::array<double, 2>> obstacle_outline;
   std::vector<Lines> lines;
   std::vector<Series> series;
   std::vector<Attribute> attributes;

@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "io/atomic_file.hpp"
+#include "io/xdmf_writer.hpp"
 #include "io/xml_escape.hpp"
 
 namespace granshock {
@@ -43,7 +44,7 @@ void write_fields_xdmf(const std::filesystem::path& xmf_path, const std::string&
         << "      </Attribute>\n";
   }
   out << "    </Grid>\n"
-      << "  </Domain>\n"
+      << obstacle_grid_xml(c.obstacle_outline, 2, 4) << "  </Domain>\n"
       << "</Xdmf>\n";
   write_file_atomically(xmf_path, out.str());
 }

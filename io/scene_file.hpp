@@ -33,7 +33,7 @@ std::vector<std::string> differing_keys(const std::string& toml_a, const std::st
 // The canonical TOML of a scene (SI units); parse_scene of it gives the same scene.
 std::string scene_to_toml(const Scene& scene);
 
-// A key a scene file accepts, named as docs/scene_format.md ("Keys") names it
+// A key a scene file accepts, named as docs/scene_keys.md names it
 // ("inflow.mach", "materials.NAME.density", "[[species]] diameter"), with the type that
 // table gives it ("length", "number (m/s)").
 struct SceneKey {

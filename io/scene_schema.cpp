@@ -35,7 +35,7 @@ constexpr long kMaxBlocks = 10000;
 // the field sums grow with the species as well. The paper's mixture has two.
 constexpr long kMaxSpecies = 64;
 
-// Physical ranges of the scene's numbers (docs/scene_format.md, "Keys"): values outside
+// Physical ranges of the scene's numbers (docs/scene_keys.md): values outside
 // them passed every check and failed late, as -nan particle counts (units.d = 1e-320),
 // a diameter of 1e-320 m, or a restitution of 1e-6 that ran the whole simulation before
 // its effective restitution could not be measured.
@@ -944,7 +944,7 @@ const Key kOutputKeys[] = {
 };
 const Table kOutput = table("output", kOutputKeys);
 
-// Every table, in the order of docs/scene_format.md ("Keys").
+// Every table, in the order of docs/scene_keys.md.
 const Table* const kTables[] = {&kScene,  &kUnits,    &kMaterial, &kSpecies, &kContact, &kPair,
                                 &kDomain, &kObstacle, &kInflow,   &kTime,    &kOutput,  &kNumerics};
 

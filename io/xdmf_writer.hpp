@@ -4,6 +4,7 @@
 // run.h5 (frame_views.hpp; docs/output_format.md, "run.xmf").
 #pragma once
 
+#include <array>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -20,9 +21,20 @@ namespace granshock {
 // has three components. Frames with no particles are left out (viewers reject empty
 // arrays). Throws std::invalid_argument for a negative count, a dim other than 2 or 3 or
 // an array of another width, UserError when the file cannot be written.
+// `obstacle_outline`: the obstacle's cross-section as a closed polygon (x, y in m; empty for
+// none): each frame is then a spatial collection of the particles' grid, "particles", and
+// the obstacle's, "obstacle", one Polygon cell whose points the file holds itself, so that
+// ParaView shows the obstacle, not a hole.
 void write_particles_xdmf(const std::filesystem::path& xmf_path,
                           const std::string& h5_filename_relative,
                           const std::vector<SnapshotFrame>& frames, int dim,
-                          const std::vector<FrameViewArray>& arrays);
+                          const std::vector<FrameViewArray>& arrays,
+                          const std::vector<std::array<double, 2>>& obstacle_outline = {});
+
+// That obstacle grid's XML, indented by `indent` spaces (fields.xmf has it too): "" for
+// fewer than three points. `arrays`: point arrays it carries as the particles do, all zero
+// (integers -1), so that a filter of the particles' arrays passes over it.
+std::string obstacle_grid_xml(const std::vector<std::array<double, 2>>& outline, int dim,
+                              int indent, const std::vector<FrameViewArray>& arrays = {});
 
 }  // namespace granshock

@@ -422,7 +422,7 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);  // --help
-    // One line and exit code 2, like every other user error (README).
+    // One line and exit code 2, like every other user error (docs/stability.md, "Exit codes").
     std::cerr << "granshock: error: " << one_line(e.what()) << " (see granshock "
               << (app.get_subcommands().empty() ? std::string("")
                                                 : app.get_subcommands()[0]->get_name() + " ")

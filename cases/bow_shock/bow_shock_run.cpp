@@ -28,6 +28,7 @@
 #include "io/checkpoint_file.hpp"
 #include "io/field_sums_file.hpp"
 #include "io/xdmf_writer.hpp"
+#include "kernels/models/obstacle_shapes.hpp"
 #include "models/restitution_calibration.hpp"
 #include "parallel/mpi_communicator.hpp"
 
@@ -36,6 +37,13 @@ namespace granshock {
 namespace fs = std::filesystem;
 
 namespace {
+
+// The obstacle's cross-section as run.xmf shows it (none without an obstacle).
+std::vector<std::array<double, 2>> obstacle_polygon(const Scene& scene) {
+  if (!scene.setup.obstacle) return {};
+  const Obstacle& o = *scene.setup.obstacle;
+  return outline_points(obstacle_outline(o), o.centre[0], o.centre[1]);
+}
 
 // Adds the wall time of one output (gather and write) to a total and counts it.
 struct OutputTimer {
@@ -177,9 +185,9 @@ int BowShockRun::execute_or_throw() {
   agree_on_failure(comm_, [&] {
     log_.open(dir_);
     if (root_)
-      thermo_.open(dir_, fmt::format("{}: {} from step {}", version_line(),
-                                     options_.resume ? "--resume" : "new run",
-                                     solver_->steps_done()));
+      thermo_.open(dir_,
+                   fmt::format("{}: {} from step {}", version_line(),
+                               options_.resume ? "--resume" : "new run", solver_->steps_done()));
     if (options_.resume && root_) read_earlier_summary();
     if (options_.resume && extension_.changes()) {
       if (options_.quiet)
@@ -600,7 +608,7 @@ void BowShockRun::write_snapshot(long step) {
   if (!root_) return;
   writing([&] {
     write_particles_xdmf(dir_ / "run.xmf", "run.h5", run_file_->frames(), run_file_->dim(),
-                         run_file_->frame_view_arrays());
+                         run_file_->frame_view_arrays(), obstacle_polygon(scene_));
   });
 }
 

@@ -29,8 +29,13 @@ RunOptions with_run_overrides(const RunOptions& given, bool speaks) {
   // --resume continues the run as it was set up: the scene file with the --set of every
   // earlier leg, which its checkpoint keeps, then the --set given now (docs/output_format.md,
   // "Resuming"). The file alone names the default directory.
+  // With --out the directory is known without the scene: the file with only the --set given
+  // now may not be a valid scene (a shorter time.duration than the file's production_start,
+  // where an earlier leg's --set moved it).
   const std::filesystem::path dir =
-      run_directory_of(given, load_scene_file(given.scene_file, given.overrides).scene);
+      given.out_dir.empty()
+          ? run_directory_of(given, load_scene_file(given.scene_file, given.overrides).scene)
+          : given.out_dir;
   const std::optional<std::vector<std::string>> earlier =
       read_checkpoint_overrides(dir / "checkpoint.h5");
   if (!earlier || earlier->empty()) return given;  // the resume's checks say what is missing

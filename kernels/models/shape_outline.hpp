@@ -58,6 +58,24 @@ inline void widen_by_polygon(const std::vector<std::array<double, 2>>& p, double
 
 }  // namespace outline_detail
 
+// The outline as a closed polygon about the centre (cx, cy), counter-clockwise, without
+// repeating its first point: a polygon's corners, or a disk as a regular polygon of
+// `disk_segments` corners on its circle (what a viewer draws: run.xmf, fields.xmf).
+inline std::vector<std::array<double, 2>> outline_points(const ShapeOutline& s, double cx,
+                                                         double cy, int disk_segments = 72) {
+  std::vector<std::array<double, 2>> points;
+  if (s.kind == ShapeOutline::Kind::disk) {
+    for (int k = 0; k < disk_segments; ++k) {
+      const double a = 2 * M_PI * k / disk_segments;
+      points.push_back({cx + s.radius * std::cos(a), cy + s.radius * std::sin(a)});
+    }
+  } else {
+    for (int c = 0; c < s.corners; ++c)
+      points.push_back({cx + s.corner[c][0], cy + s.corner[c][1]});
+  }
+  return points;
+}
+
 // The signed distance of the point (x, y), relative to the centre, from the outline:
 // negative inside.
 inline double outline_distance(const ShapeOutline& s, double x, double y) {

@@ -44,16 +44,60 @@ def open_with(reader, path):
     return {"Xdmf3ReaderS": Xdmf3ReaderS, "Xdmf3ReaderT": Xdmf3ReaderT}[reader](FileName=[path])
 
 
+def leaves_of(data):
+    """The grids of a reader's output, however it nests them in blocks and pieces."""
+    if data.IsA("vtkMultiBlockDataSet"):
+        children = [data.GetBlock(i) for i in range(data.GetNumberOfBlocks())]
+    elif data.IsA("vtkMultiPieceDataSet"):
+        children = [data.GetPiece(i) for i in range(data.GetNumberOfPieces())]
+    else:
+        return [data]
+    return [leaf for child in children if child is not None for leaf in leaves_of(child)]
+
+
+def is_obstacle(grid):
+    # The obstacle's grid: one polygon (VTK_POLYGON = 7); the particles are vertices and the
+    # fields quadrilaterals of a structured grid.
+    return (grid.IsA("vtkDataSet") and grid.GetNumberOfCells() == 1 and
+            grid.GetCellType(0) == 7)
+
+
 def dataset_at(proxy, time=None):
+    """The reader's grid (the particles, the fields, a table) and the obstacle's grid beside
+    it (None where the file has none)."""
     if time is None:
         proxy.UpdatePipeline()
     else:
         proxy.UpdatePipeline(time)
-    data = servermanager.Fetch(proxy)
-    while data.IsA("vtkMultiBlockDataSet"):  # a reader may wrap the grid in blocks
-        expect(data.GetNumberOfBlocks() == 1, f"{data.GetNumberOfBlocks()} blocks")
-        data = data.GetBlock(0)
-    return data
+    leaves = leaves_of(servermanager.Fetch(proxy))
+    obstacles = [g for g in leaves if is_obstacle(g)]
+    others = [g for g in leaves if not is_obstacle(g)]
+    expect(len(others) == 1 and len(obstacles) <= 1,
+           f"{len(others)} grids and {len(obstacles)} obstacles")
+    return (others[0] if others else None), (obstacles[0] if obstacles else None)
+
+
+def check_obstacle(obstacle, what, run_h5):
+    """The obstacle grid: one polygon of the outline's corners around the scene's obstacle."""
+    with h5py.File(run_h5, "r") as f:
+        resolved = f["scene/resolved"][()]
+    resolved = resolved.decode() if isinstance(resolved, bytes) else resolved
+    import tomllib
+    o = tomllib.loads(resolved).get("obstacle")
+    if o is None:
+        expect(obstacle is None, f"{what}: an obstacle grid without an obstacle")
+        return
+    expect(obstacle is not None, f"{what}: no obstacle grid")
+    if obstacle is None:
+        return
+    expect(obstacle.GetNumberOfCells() == 1, f"{what}: obstacle of {obstacle.GetNumberOfCells()} cells")
+    points = vtk_to_numpy(obstacle.GetPoints().GetData())
+    centre = np.array(o["centre"], dtype=float)
+    if o.get("shape", "cylinder") == "cylinder":
+        r = np.hypot(points[:, 0] - centre[0], points[:, 1] - centre[1])
+        expect(np.allclose(r, o["diameter"] / 2, rtol=1e-12), f"{what}: obstacle points off its circle")
+    expect(np.allclose(points[:, :2].mean(axis=0), centre, rtol=0, atol=1e-9),
+           f"{what}: obstacle centred at {points[:, :2].mean(axis=0)}, scene {centre}")
 
 
 def timesteps(proxy):
@@ -89,7 +133,10 @@ def check_particles(xmf, expected_arrays, default_reader):
         expect(np.array_equal(steps, times[frames]), f"{what}: time steps {steps}, run.h5 {times[frames]}")
         for k in frames:
             n = int(counts[k])
-            grid = dataset_at(proxy, float(times[k]))
+            grid, obstacle = dataset_at(proxy, float(times[k]))
+            check_obstacle(obstacle, f"{what} frame {k}", h5_path)
+            if grid is None:
+                continue
             expect(grid.GetNumberOfPoints() == n, f"{what} frame {k}: {grid.GetNumberOfPoints()} points, expected {n}")
             expect(grid.GetNumberOfCells() == n, f"{what} frame {k}: {grid.GetNumberOfCells()} cells, expected {n}")
             points = vtk_to_numpy(grid.GetPoints().GetData())
@@ -138,7 +185,10 @@ def check_fields(xmf):
         if reader == "default":
             expect(proxy.GetXMLName() == "Xdmf3ReaderS", f"{what}: ParaView picks {proxy.GetXMLName()}")
         expect(timesteps(proxy) == [], f"{what}: time steps {timesteps(proxy)}")
-        grid = dataset_at(proxy)
+        grid, obstacle = dataset_at(proxy)
+        check_obstacle(obstacle, what, os.path.join(os.path.dirname(xmf), "run.h5"))
+        if grid is None:
+            continue
         got = arrays_of(grid.GetCellData())
         expected = sorted(list(stored) + list(vectors))
         expect(sorted(got) == expected, f"{what}: cell arrays {sorted(got)}, fields.h5 {expected}")
@@ -157,7 +207,7 @@ def check_fields(xmf):
 def check_csv(path):
     proxy = OpenDataFile(path)
     expect(proxy is not None and proxy.GetXMLName() == "CSVReader", f"{path}: reader")
-    table = dataset_at(proxy)
+    table, _ = dataset_at(proxy)
     with open(path, newline="") as f:
         rows = list(csv.reader(f))
     expect(table.GetNumberOfColumns() == len(rows[0]), f"{path}: {table.GetNumberOfColumns()} columns")

@@ -58,6 +58,21 @@ def check_item(f, item, frame, n, element):
         expect((values >= 0).all(), f"{what}: reaches fill values")
 
 
+def check_obstacle(grid, frame):
+    """The obstacle's grid of a frame: one closed polygon whose points the file holds."""
+    if grid is None:
+        return
+    topology, geometry = grid.find("Topology"), grid.find("Geometry/DataItem")
+    n = int(topology.get("NodesPerElement"))
+    expect(topology.get("TopologyType") == "Polygon" and topology.get("NumberOfElements") == "1",
+           f"frame {frame}: the obstacle is not one polygon")
+    expect(list(map(int, topology.find("DataItem").text.split())) == list(range(n)),
+           f"frame {frame}: the obstacle's cell is not its points in order")
+    points = np.array(geometry.text.split(), dtype=float).reshape(dims(geometry.get("Dimensions")))
+    expect(geometry.get("Format") == "XML" and points.shape[0] == n >= 3,
+           f"frame {frame}: the obstacle's {points.shape[0]} points for a polygon of {n}")
+
+
 def main():
     xmf, expected_grids = sys.argv[1], int(sys.argv[2])
     base = os.path.dirname(os.path.abspath(xmf))
@@ -80,6 +95,12 @@ def main():
         for grid, frame in zip(grids, frames):
             n = int(counts[frame])
             expect(float(grid.find("Time").get("Value")) == times[frame], f"frame {frame}: time")
+            if grid.get("CollectionType") == "Spatial":
+                # With an obstacle: the frame holds the particles' grid and the obstacle's.
+                parts = {g.get("Name"): g for g in grid.findall("Grid")}
+                expect(sorted(parts) == ["obstacle", "particles"], f"frame {frame}: {sorted(parts)}")
+                check_obstacle(parts.get("obstacle"), frame)
+                grid = parts.get("particles", grid)
             topology = grid.find("Topology")
             expect(topology.get("TopologyType") == "Polyvertex", "Polyvertex topology")
             expect(int(topology.get("NumberOfElements")) == n, f"frame {frame}: NumberOfElements")

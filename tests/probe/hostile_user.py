@@ -2,7 +2,7 @@
 """The hostile-user probe (docs/stability.md, "The hostile-user probe").
 
 Plays a hostile but realistic user against a built granshock, case after case, and checks
-the rules every command must keep whatever it is given (README, "Your files are safe";
+the rules every command must keep whatever it is given (docs/output_format.md, "Your files are safe";
 docs/output_format.md, "The run directory"):
 
 - it ends: no case may hang (each has a time limit);

@@ -1,7 +1,7 @@
 // Every name of every choice (core/choice_names.hpp, core/variant_names.hpp) goes through
 // every place that reads or writes it: parse and write back, the per-choice parse and
 // to_string functions, the scene schema (accepted, stored, echoed in the resolved scene
-// that run.h5 and the checkpoint keep, read back the same), docs/scene_format.md's list,
+// that run.h5 and the checkpoint keep, read back the same), docs/scene_keys.md's list,
 // and for contact laws the compiled law of that name. The command line and the files of a
 // run are checked by tests/cli/every_choice_name.sh. A name missing in any of them fails
 // here: the `hooke` that `to_string` gave every law but hertz would.
@@ -120,7 +120,7 @@ const std::map<std::string, ChoiceKey>& choice_keys() {
     k["inflow.mach_at"].echoed = false;
     k["inflow.mach_at"].also = {"inflow.mach=7.5"};
     k["inflow.mach_at"].drop = "sigma = 0.1\n";
-    // Each shape has its own size keys (docs/scene_format.md, [obstacle]).
+    // Each shape has its own size keys (docs/scene_keys.md, [obstacle]).
     k["obstacle.shape"] =
         choice_key<ObstacleShape>([](const Scene& s) { return s.setup.obstacle->shape; });
     k["obstacle.shape"].drop = "diameter = \"10 d\"\n";
@@ -175,10 +175,10 @@ TEST(ChoiceNames, TheSceneRefusesAnUnknownNameListingTheTablesNames) {
   }
 }
 
-// docs/scene_format.md ("Keys"): the valid values of each choice key are the table's names.
+// docs/scene_keys.md ("Keys"): the valid values of each choice key are the table's names.
 TEST(ChoiceNames, TheDocsListEveryNameOfEveryChoiceKey) {
-  std::ifstream in(std::filesystem::path(GRANSHOCK_SOURCE_DIR) / "docs" / "scene_format.md");
-  ASSERT_TRUE(in) << "docs/scene_format.md";
+  std::ifstream in(std::filesystem::path(GRANSHOCK_SOURCE_DIR) / "docs" / "scene_keys.md");
+  ASSERT_TRUE(in) << "docs/scene_keys.md";
   std::map<std::string, std::string> documented;  // key -> its column of valid values
   for (std::string line; std::getline(in, line);) {
     if (line.rfind("| `", 0) != 0) continue;
@@ -191,7 +191,7 @@ TEST(ChoiceNames, TheDocsListEveryNameOfEveryChoiceKey) {
   for (const auto& [key, choice] : choice_keys()) {
     std::string list;
     for (const std::string& n : choice.names) list += (list.empty() ? "" : ", ") + n;
-    ASSERT_TRUE(documented.count(key)) << key << " is not in docs/scene_format.md";
+    ASSERT_TRUE(documented.count(key)) << key << " is not in docs/scene_keys.md";
     EXPECT_EQ(documented[key], list) << "the valid values of " << key;
   }
 }

@@ -305,6 +305,24 @@ TEST(RunResumeKeeps, TheRunsOwnSetOverrides) {
       << why;
 }
 
+// A --set with --resume that only the kept ones make valid: the run's production_start
+// (0.002 s) before a new duration the file's own (0.005 s) would refuse as an empty window.
+TEST(RunResumeKeeps, ASetThatOnlyTheKeptOnesMakeValid) {
+  TempDir tmp;
+  const auto scene = tmp.write("small.toml", small_scene(true));
+  RunOptions first = quick(run_options(scene, tmp.path() / "run", kShort));
+  first.stop_after_steps = 10500;
+  ASSERT_EQ(run_scene(first), 0);
+  RunOptions inside = quick(run_options(scene, tmp.path() / "run", {"time.duration=0.0045"}));
+  inside.resume = true;
+  inside.dry_run = true;  // the checks alone: 0.0045 s cuts the blocks elsewhere when run
+  ::testing::internal::CaptureStdout();
+  EXPECT_EQ(run_scene(inside), 0);
+  const std::string resolved = ::testing::internal::GetCapturedStdout();
+  EXPECT_NE(resolved.find("production_start = 0.002"), std::string::npos) << resolved;
+  EXPECT_NE(resolved.find("duration = 0.0045"), std::string::npos) << resolved;
+}
+
 // The interrupt and --stop-after-steps messages name the command that continues the run.
 TEST(RunResumeKeeps, TheStopMessageNamesTheCommand) {
   TempDir tmp;

@@ -1,7 +1,7 @@
 // The scene schema (io/scene_schema.cpp) declares each key once, for reading and for
 // writing the resolved scene. For every key of the schema: a scene given a non-default
 // value of it, written back and read again, is the same Scene field by field, and the
-// written scene holds the value under the key's own name. And docs/scene_format.md
+// written scene holds the value under the key's own name. And docs/scene_keys.md
 // ("Keys") documents exactly the schema's keys, with the schema's types.
 #include <gtest/gtest.h>
 
@@ -299,10 +299,11 @@ TEST(SceneSchema, EveryKeyHasANonDefaultValue) {
   EXPECT_EQ(keys.size(), non_default_values().size());
 }
 
-// The "Keys" table of docs/scene_format.md: one row per key, `name` | type | ...
+// The "Keys" table of docs/scene_keys.md: one row per key, `name` | type | ... (its
+// defaults and ranges: tests/docs/check_scene_keys.py).
 TEST(SceneSchema, TheDocsListTheSameKeysWithTheSameTypes) {
-  std::ifstream in(std::filesystem::path(GRANSHOCK_SOURCE_DIR) / "docs" / "scene_format.md");
-  ASSERT_TRUE(in) << "docs/scene_format.md";
+  std::ifstream in(std::filesystem::path(GRANSHOCK_SOURCE_DIR) / "docs" / "scene_keys.md");
+  ASSERT_TRUE(in) << "docs/scene_keys.md";
   std::map<std::string, std::string> documented;
   bool in_keys = false;
   for (std::string line; std::getline(in, line);) {
@@ -328,10 +329,10 @@ TEST(SceneSchema, TheDocsListTheSameKeysWithTheSameTypes) {
     EXPECT_EQ(doc->second, k.type) << "the type of " << k.name;
     documented.erase(doc);
   }
-  EXPECT_EQ(joined(undocumented), "") << "schema keys missing from docs/scene_format.md";
+  EXPECT_EQ(joined(undocumented), "") << "schema keys missing from docs/scene_keys.md";
   std::vector<std::string> unknown;
   for (const auto& [name, type] : documented) unknown.push_back(name);
-  EXPECT_EQ(joined(unknown), "") << "keys in docs/scene_format.md that the schema does not have";
+  EXPECT_EQ(joined(unknown), "") << "keys in docs/scene_keys.md that the schema does not have";
 }
 
 // Pair names split at the dash that leaves two known species; an unknown species is
