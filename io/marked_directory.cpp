@@ -115,13 +115,15 @@ void check_creatable(const fs::path& dir) {
     throw UserError(
         fmt::format("output directory '{}': '{}' is not writable", dir.string(), probe.string()));
   // access() says yes to root wherever the mode bits would, in /proc as on a file system
-  // that takes no new directory: the first missing directory is made and removed again,
-  // so that --dry-run knows what the run will meet.
+  // that takes no new directory: a directory of this process' own name is made there and
+  // removed again, so that --dry-run knows what the run will meet. Not the target itself:
+  // another command may be creating it at this moment.
   if (!first_missing.empty()) {
-    if (::mkdir(first_missing.c_str(), 0755) != 0)
+    const fs::path trial = probe / fmt::format(".granshock-mkdir-probe.{}", long(::getpid()));
+    if (::mkdir(trial.c_str(), 0700) != 0 && errno != EEXIST)
       throw UserError(fmt::format("output directory '{}' cannot be created in '{}': {}",
                                   dir.string(), probe.string(), std::strerror(errno)));
-    ::rmdir(first_missing.c_str());
+    ::rmdir(trial.c_str());
   }
 }
 
