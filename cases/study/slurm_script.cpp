@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/shell_text.hpp"
 #include "cases/study/study_cost.hpp"
+#include "core/shell_text.hpp"
 #include "core/user_error.hpp"
 
 namespace granshock {

@@ -335,7 +335,8 @@ TEST(RunResumeKeeps, TheStopMessageNamesTheCommand) {
   ASSERT_EQ(run_scene(first), 0);
   const std::string err = ::testing::internal::GetCapturedStderr();
   EXPECT_NE(err.find("stopped after 1000 steps at step 1000; continue with --resume: granshock "
-                     "run '" + scene.string() + "' --out '" + dir.string() + "' --resume"),
+                     "run '" +
+                     scene.string() + "' --out '" + dir.string() + "' --resume"),
             std::string::npos)
       << err;
 }

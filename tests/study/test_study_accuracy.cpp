@@ -7,13 +7,13 @@
 #include <string>
 #include <vector>
 
-#include "core/shell_text.hpp"
 #include "cases/study/slurm_script.hpp"
 #include "cases/study/study_cost.hpp"
 #include "cases/study/study_file.hpp"
 #include "cases/study/study_plan.hpp"
 #include "cases/study/study_table.hpp"
 #include "cases/tradeoff/accuracy_choice.hpp"
+#include "core/shell_text.hpp"
 #include "io/scene_file.hpp"
 #include "scene_fixtures.hpp"
 #include "trade_table_fixture.hpp"
