@@ -122,6 +122,10 @@ TEST(AccuracyChoice, BudgetIsAPercentage) {
   EXPECT_DOUBLE_EQ(parse_error_budget("0.5%"), 0.005);
   for (const char* bad : {"2", "%", "-1%", "0%", "two%", "2 %%", "nan%"})
     EXPECT_THROW(parse_error_budget(bad), UserError) << bad;
+  // strtod alone read these as budgets (0x5% as 5 %): decimal digits and one point only.
+  for (const char* bad : {"", "0x5%", " 5%", "inf%", "1e1%", "5..0%", "+5%"})
+    EXPECT_THROW(parse_error_budget(bad), UserError) << bad;
+  EXPECT_DOUBLE_EQ(parse_error_budget("5.%"), 0.05);
 }
 
 TEST(AccuracyTable, UnreadableTablesNameFileAndCause) {
