@@ -24,6 +24,7 @@
 #include "core/process_clock.hpp"
 #include "core/shell_text.hpp"
 #include "core/user_error.hpp"
+#include "device/launch_counter.hpp"
 #include "io/atomic_file.hpp"
 #include "io/checkpoint_file.hpp"
 #include "io/field_sums_file.hpp"
@@ -369,6 +370,7 @@ bool BowShockRun::calibrate_inflow() {
 // The time loop from the current step to the end, a signal or --stop-after-steps.
 int BowShockRun::advance_to_end() {
   long step = first_step_;
+  launches_.start();  // what the time loop costs beyond arithmetic (summary.json)
   while (step < total_steps_) {
     // Advance to the next event (insertion, output) or a slice of about 0.25 s of wall
     // time, so that progress and signals are answered promptly.
@@ -654,12 +656,26 @@ void BowShockRun::finish(bool completed) {
   sums.y_end = scene_.setup.box.hi[1];
   const double wall = wall_before_ + meter_->elapsed_s();
   const long steps = solver_->steps_done();
+  const bool counted = launches_.running();
+  const LaunchCounts launched = launches_.stop();
   nlohmann::json j =
       run_summary(scene_, *solver_, inflow_, calibration_ ? &*calibration_ : nullptr, completed,
                   {wall, cpu_seconds_so_far(), meter_->elapsed_s(), particle_steps_});
   // Several processes: how the work was shared (one process: nothing to say).
   if (comm_.size() > 1) j["processes"] = processes_summary();
   if (backend_switch_) j["backend_switch"] = backend_summary();
+  // Per step of this leg's time loop, this process' (docs/cuda.md, "Launches per step");
+  // null where a profiling tool held Kokkos' hooks or no step ran, and fences where this
+  // Kokkos does not report them (3.4).
+  const long looped = steps - first_step_;
+  const auto per_step = [&](std::uint64_t n) {
+    return counted && looped > 0 ? nlohmann::json(double(n) / double(looped)) : nlohmann::json();
+  };
+  j["kernel_launches_per_step"] = per_step(launched.kernels);
+  j["fences_per_step"] = launched.fences_reported ? per_step(launched.fences) : nlohmann::json();
+  j["device_to_host_copies_per_step"] = per_step(launched.device_to_host_copies);
+  j["deep_copies_per_step"] = per_step(launched.deep_copies);
+  j["reductions_per_step"] = per_step(launched.reductions);
   if (!root_) return;
   if (!options_.accuracy_choice.is_null()) j["accuracy_choice"] = options_.accuracy_choice;
   if (!extensions_.empty()) j["extensions"] = extensions_;

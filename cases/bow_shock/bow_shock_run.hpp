@@ -26,6 +26,7 @@
 #include "core/checkpoint_extras.hpp"
 #include "core/communicator.hpp"
 #include "core/solver.hpp"
+#include "device/launch_counter.hpp"
 #include "io/run_directory.hpp"
 #include "io/run_file.hpp"
 #include "io/scene_file.hpp"
@@ -84,6 +85,7 @@ class BowShockRun {
   RunLog log_;         // stderr and log.txt (rank 0's)
   ThermoFile thermo_;  // thermo.txt (rank 0's)
   long last_thermo_step_ = -1;
+  LaunchCounter launches_;  // over the time loop of this leg
   LoadedScene loaded_;
   const Scene& scene_;
   std::filesystem::path dir_;

@@ -82,6 +82,14 @@ with h5py.File(d + "/run/run.h5", "r") as f:
     stored = f["h5md/creator"].attrs.get("build")
     stored = stored.decode() if isinstance(stored, bytes) else stored
     expect(stored is not None and json.loads(stored) == build, "run.h5 /h5md/creator@build")
+# What the time loop launched (docs/cuda.md, "Launches per step"): the first leg's counts;
+# a host build's copies never cross memory spaces.
+first = json.load(open(d + "/finished.json"))
+expect(first.get("kernel_launches_per_step", 0) > 0, "no kernel launches counted")
+expect(0 <= first.get("reductions_per_step", -1) <= first["kernel_launches_per_step"],
+       "reductions_per_step %r" % first.get("reductions_per_step"))
+expect(first.get("device_to_host_copies_per_step") == 0, "copies across spaces on the host")
+expect("fences_per_step" in first, "no fences_per_step key")
 finished = json.load(open(d + "/finished.json"))
 expect(finished["particle_steps_per_second"] > 0, "the finished run measured no rate")
 expect(summary["particle_steps_per_second"] == finished["particle_steps_per_second"],
