@@ -16,9 +16,13 @@ import sys
 import h5py
 import numpy
 
-# summary.json keys that measure the machine, or name the program, not the physics.
+# summary.json keys that measure the machine, or name the program, not the physics: the
+# launches per step depend on the build's paths and on how the wall clock slices the loop
+# (docs/cuda.md, "Launches per step").
 MACHINE_KEYS = {"wall_seconds", "cpu_seconds", "particle_steps_per_second", "threads",
-                "backend", "variant", "backend_switch", "build"}
+                "backend", "variant", "backend_switch", "build", "kernel_launches_per_step",
+                "reductions_per_step", "deep_copies_per_step", "device_to_host_copies_per_step",
+                "fences_per_step"}
 
 
 def sha(array):
