@@ -108,16 +108,6 @@ void check_run_directories(const std::vector<fs::path>& run_dirs) {
   }
 }
 
-// A run directory that is only read (its analysis goes to --out) must not be in the
-// middle of being written by a run.
-void refuse_if_being_written(const fs::path& dir) {
-  const std::optional<DirectoryMarker> marker = read_marker(dir, kRunMarker);
-  if (marker && locked_for_writing(dir, kRunMarker))
-    throw UserError("run directory '" + dir.string() + "' is in use by another granshock run" +
-                    (marker->pid > 0 ? " (pid " + std::to_string(marker->pid) + ")" : "") +
-                    "; wait for it to end, then try again");
-}
-
 bool held_by_caller(const FieldsCommandOptions& o, const fs::path& dir) {
   return o.held != nullptr && same_directory(o.held->path(), dir);
 }
@@ -164,9 +154,8 @@ int fields_command(const std::vector<fs::path>& run_dirs, const fs::path& out,
   std::vector<DirectoryLock> read_locks;
   for (const fs::path& dir : run_dirs) {
     if (!in_place) {
-      refuse_if_being_written(dir);
-      if (read_marker(dir, kRunMarker))
-        read_locks.push_back(DirectoryLock::hold(dir, kRunMarker, LockKind::shared));
+      if (std::optional<DirectoryLock> lock = hold_for_reading(dir))
+        read_locks.push_back(std::move(*lock));
     } else if (!held_by_caller(o, dir)) {
       claimed.push_back(RunDirectory::hold(dir, DirectoryMode::fields));
     }

@@ -113,6 +113,17 @@ constexpr const char* kRunMarkerHeader =
 
 }  // namespace
 
+std::optional<DirectoryLock> hold_for_reading(const fs::path& dir) {
+  const std::optional<DirectoryMarker> marker = read_marker(dir, kRunMarker);
+  if (!marker) return std::nullopt;
+  if (locked_for_writing(dir, kRunMarker))
+    throw UserError(fmt::format(
+        "run directory '{}' is in use by another granshock run{}; wait for it to end, then try "
+        "again",
+        dir.string(), marker->pid > 0 ? fmt::format(" (pid {})", marker->pid) : ""));
+  return DirectoryLock::hold(dir, kRunMarker, LockKind::shared);
+}
+
 RunDirectory RunDirectory::claim(const fs::path& dir, DirectoryMode mode) {
   if (mode == DirectoryMode::resume || mode == DirectoryMode::fields) {
     RunDirectory held = hold(dir, mode);

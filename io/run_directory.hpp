@@ -11,6 +11,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,12 @@ inline constexpr int kRunDirectoryFormat = 1;
 // write into a run directory, temporaries included; `--overwrite` removes these and
 // nothing else.
 const std::vector<std::string>& run_outputs();
+
+// A run directory that is only read (`fields DIR --out OUT`, `export`): refused while a run
+// or `fields DIR` writes it, naming the holder's pid, then held with a shared lock until the
+// object goes, so that no run starts writing it meanwhile (other readers may share it).
+// Nothing for a directory without a marker, which no run writes.
+std::optional<DirectoryLock> hold_for_reading(const std::filesystem::path& dir);
 
 class RunDirectory {
  public:

@@ -540,24 +540,15 @@ void BowShockRun::actions_at(long step) {
 // Collective: every rank takes part in the sums; rank 0 shows the row (not with --quiet:
 // log.txt alone) and appends it to thermo.txt (thermo_table.hpp).
 void BowShockRun::report_thermo(long step) {
-  const Diagnostics d = solver_->diagnostics();
-  const RemovalCounts removed = solver_->removed();
-  ThermoRow row;
-  row.step = step;
-  row.time_s = step * scene_.setup.dt;
-  row.particles = solver_->global_size();
-  row.contacts = d.contacts;
-  row.kinetic_energy_j = d.kinetic_energy + d.rotational_energy;
-  row.temperature_j = mixture_temperature(scene_, solver_->species_moments());
-  row.inserted = inflow_.inserted();
-  row.deleted = removed.high[1] + removed.low[1];
+  const TimeSeriesRow row = observe(step);
   if (!root_ || step == last_thermo_step_) return;  // the last report was at this step
   last_thermo_step_ = step;
-  thermo_.append(meter_->report(row, particle_steps_, inflow_note()));
+  thermo_.append(meter_->report(thermo_row(row), particle_steps_, inflow_note()));
 }
 
-// Collective: every rank forms the row (global sums), rank 0 writes it.
-void BowShockRun::write_series_row(long step) {
+// Collective: the time-series row of the run's state now (global sums); `diagnostics`
+// receives the solver's, for the health check.
+TimeSeriesRow BowShockRun::observe(long step, Diagnostics* diagnostics) {
   const Diagnostics d = solver_->diagnostics();
   const RemovalCounts removed = solver_->removed();
   TimeSeriesRow row;
@@ -567,10 +558,18 @@ void BowShockRun::write_series_row(long step) {
   row.kinetic_energy = d.kinetic_energy + d.rotational_energy;
   row.temperature = mixture_temperature(scene_, solver_->species_moments());
   row.contacts = d.contacts;
-  check_health(scene_, step, d, std::size_t(row.particles));
   row.inserted = inflow_.inserted();
   row.deleted_outlet = removed.high[1];
   row.deleted_inlet = removed.low[1];
+  if (diagnostics) *diagnostics = d;
+  return row;
+}
+
+// Collective: every rank forms the row (global sums), rank 0 writes it.
+void BowShockRun::write_series_row(long step) {
+  Diagnostics d;
+  const TimeSeriesRow row = observe(step, &d);
+  check_health(scene_, step, d, std::size_t(row.particles));
   if (!root_) return;
   writing([&] { run_file_->append_time_series(row); });
   if (!warned_energy_) {

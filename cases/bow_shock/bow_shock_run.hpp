@@ -66,6 +66,7 @@ class BowShockRun {
   void actions_at(long step);
   void write_series_row(long step);
   void report_thermo(long step);
+  TimeSeriesRow observe(long step, Diagnostics* diagnostics = nullptr);
   void write_snapshot(long step);
   // CPU seconds of every leg so far, all processes (collective); -1 where not known.
   double cpu_seconds_so_far() const;

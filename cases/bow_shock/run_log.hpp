@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "io/appended_file.hpp"
+
 namespace granshock {
 
 class RunLog {
@@ -23,7 +25,6 @@ class RunLog {
   explicit RunLog(bool speaks) : speaks_(speaks) {}
   RunLog(const RunLog&) = delete;
   RunLog& operator=(const RunLog&) = delete;
-  ~RunLog();
 
   // A line on stderr and in the log.
   void say(const std::string& line);
@@ -33,7 +34,7 @@ class RunLog {
   void record(const std::string& line);
   // From now on lines go to DIR/log.txt (appended), beginning with those waiting.
   void open(const std::filesystem::path& dir);
-  bool is_open() const { return fd_ >= 0; }
+  bool is_open() const { return file_.is_open(); }
 
   const std::vector<std::string>& warnings() const { return warnings_; }
 
@@ -41,11 +42,8 @@ class RunLog {
   static std::string now();
 
  private:
-  void write(const std::string& stamped);
   bool speaks_;
-  int fd_ = -1;
-  bool failed_ = false;  // a write failed: said once, then the log is left alone
-  std::filesystem::path path_;
+  AppendedFile file_{"its log"};
   std::vector<std::string> pending_;  // stamped lines, before open()
   std::vector<std::string> warnings_;
 };

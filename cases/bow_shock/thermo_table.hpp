@@ -10,6 +10,9 @@
 #include <filesystem>
 #include <string>
 
+#include "core/time_series.hpp"
+#include "io/appended_file.hpp"
+
 namespace granshock {
 
 struct ThermoRow {
@@ -26,32 +29,26 @@ struct ThermoRow {
   long eta_s = 0;
 };
 
+// The state columns of a row (step to deleted) from the run's time-series row.
+ThermoRow thermo_row(const TimeSeriesRow& row);
+
 // The header line, and a row under it: fixed-width columns separated by blanks, no blank
 // inside a value (the ETA is H:MM:SS).
 std::string thermo_header();
 std::string thermo_line(const ThermoRow& row);
 
-// DIR/thermo.txt, appended to as log.txt is (io/run_directory.hpp: one of the run's
-// outputs, never through a link, a hard-linked file refused; a failed write said once and
-// the run goes on). A new file starts with the header; each leg starts with a comment.
+// DIR/thermo.txt, appended to as log.txt is (io/appended_file.hpp): one of the run's
+// outputs, never through a link, a hard-linked file refused, a failed write said once. A
+// new file starts with the header; each leg starts with a comment.
 class ThermoFile {
  public:
-  ThermoFile() = default;
-  ThermoFile(const ThermoFile&) = delete;
-  ThermoFile& operator=(const ThermoFile&) = delete;
-  ~ThermoFile();
-
-  // Opens DIR/thermo.txt and writes "# leg_note" (and the header first when the file is
-  // new). Throws UserError when it cannot be created.
+  // Opens DIR/thermo.txt and writes "# leg_note" (the header first when the file is new).
+  // Throws UserError when it cannot be opened.
   void open(const std::filesystem::path& dir, const std::string& leg_note);
   void append(const ThermoRow& row);
-  bool is_open() const { return fd_ >= 0; }
 
  private:
-  void write(const std::string& line);
-  int fd_ = -1;
-  bool failed_ = false;
-  std::filesystem::path path_;
+  AppendedFile file_{"its thermo table"};
 };
 
 }  // namespace granshock

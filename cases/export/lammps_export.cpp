@@ -8,7 +8,7 @@
 
 #include "core/user_error.hpp"
 #include "io/atomic_file.hpp"
-#include "io/marked_directory.hpp"
+#include "io/run_directory.hpp"
 #include "io/run_file.hpp"
 #include "io/scene_file.hpp"
 
@@ -75,14 +75,7 @@ int export_command(const ExportOptions& o) {
   if (!fs::exists(run_h5, ec))
     throw UserError("'" + run_h5.string() +
                     "' does not exist: granshock export writes the snapshots of a run directory");
-  // Read while no run writes the directory (as `fields DIR --out`, a shared lock).
-  std::optional<DirectoryLock> reading;
-  if (read_marker(o.run_dir, kRunMarker)) {
-    if (locked_for_writing(o.run_dir, kRunMarker))
-      throw UserError("run directory '" + o.run_dir.string() +
-                      "' is in use by another granshock run; wait for it to end, then try again");
-    reading.emplace(DirectoryLock::hold(o.run_dir, kRunMarker, LockKind::shared));
-  }
+  const std::optional<DirectoryLock> reading = hold_for_reading(o.run_dir);  // as fields --out
   const RunFile run = RunFile::open_read_only(run_h5);
   const std::string resolved = run.scene_resolved();
   const Scene scene = parse_scene(resolved, {}, run_h5.string() + ":/scene/resolved").scene;
