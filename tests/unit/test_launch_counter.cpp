@@ -1,7 +1,7 @@
 // The launch counter (kernels/device/launch_counter.hpp) against a known sequence of
 // kernels, fences and copies: what it counts per step of a run is what summary.json and
 // docs/cuda.md ("Launches per step") report. The kernels here are Kokkos' own fills
-// (deep_copy of a value is a parallel_for): tests hold no device code (.ci/run).
+// (deep_copy of a value is one kernel launch): tests hold no device code (.ci/run).
 #include <gtest/gtest.h>
 
 #include <Kokkos_Core.hpp>
