@@ -24,6 +24,7 @@
 
 #include "cases/gas/homogeneous_gas.hpp"
 #include "core/choice_names.hpp"
+#include "core/cpu_model.hpp"
 #include "core/process_clock.hpp"
 #include "core/solver.hpp"
 #include "core/user_error.hpp"
@@ -87,17 +88,6 @@ double median_of(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   const std::size_t n = v.size();
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
-std::string cpu_model() {
-  std::ifstream in("/proc/cpuinfo");
-  std::string line;
-  while (std::getline(in, line))
-    if (line.rfind("model name", 0) == 0) {
-      const auto colon = line.find(':');
-      if (colon != std::string::npos) return line.substr(line.find_first_not_of(" \t", colon + 1));
-    }
-  return "unknown";
 }
 
 std::string kokkos_version() {
@@ -334,7 +324,7 @@ int main(int argc, char** argv) {
     std::printf("# granshock_bench_gas: Kokkos %s, backend %s, %d threads, %s precision\n",
                 kokkos_version().c_str(), Kokkos::DefaultExecutionSpace::name(), threads,
                 o.precision.c_str());
-    std::printf("# CPU: %s\n", cpu_model().c_str());
+    std::printf("# CPU: %s\n", granshock::cpu_model_name().c_str());
     std::printf(
         "# paper mixture (steel/aluminium, d = 1 mm), e = %g, dt = %g s, sigma = %g m/s, "
         "skin %g d%s, %d repeats of >= %g s each\n",
@@ -371,7 +361,7 @@ int main(int argc, char** argv) {
                             {"kokkos", kokkos_version()},
                             {"backend", Kokkos::DefaultExecutionSpace::name()},
                             {"threads", threads},
-                            {"cpu", cpu_model()},
+                            {"cpu", granshock::cpu_model_name()},
                             {"precision", o.precision},
                             {"restitution", o.restitution},
                             {"dt_s", o.dt},

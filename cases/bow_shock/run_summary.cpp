@@ -6,6 +6,7 @@
 #include "cases/bow_shock/run_checks.hpp"
 #include "cases/build_info/build_description.hpp"
 #include "cases/collision/head_on_collision.hpp"
+#include "core/cpu_model.hpp"
 #include "models/restitution_calibration.hpp"
 
 namespace granshock {
@@ -119,6 +120,7 @@ nlohmann::json run_summary(const Scene& s, const Solver& solver, const InflowCon
   j["variant"] = solver.variant();
   j["backend"] = Kokkos::DefaultExecutionSpace::name();
   j["threads"] = Kokkos::DefaultExecutionSpace().concurrency();
+  j["cpu_model"] = cpu_model_name();  // beside the speeds (core/cpu_model.hpp)
   j["list_builds"] = solver.list_builds();
   j["skin_m"] = solver.skin();  // the last list's: adaptive skins change (core/skin_model.hpp)
   // The rate of this leg only (earlier legs of a resumed run are in wall_seconds).

@@ -1,6 +1,7 @@
 #include "cases/study/case_directory.hpp"
 
 #include "analysis/json_file.hpp"
+#include "cases/study/case_record.hpp"
 #include "io/run_directory.hpp"
 #include "io/run_file.hpp"
 
@@ -66,6 +67,21 @@ CaseDirectory inspect_case_directory(const fs::path& dir) {
   const bool resumable = fs::exists(dir / "checkpoint.h5", ec) && fs::exists(dir / "run.h5", ec);
   c.state = resumable ? CaseState::resumable : CaseState::restartable;
   if (!resumable) c.steps_done = 0;
+  return c;
+}
+
+CaseDirectory inspect_case_directory(const fs::path& dir, const fs::path& record_dir) {
+  CaseDirectory c = inspect_case_directory(dir);
+  if (c.state != CaseState::missing) return c;
+  nlohmann::json summary = read_case_record(record_dir);
+  if (summary.is_null()) return c;
+  c.state = CaseState::finished;
+  c.from_record = true;
+  const nlohmann::json steps = summary_value(summary, "steps");
+  const nlohmann::json wall = summary_value(summary, "wall_seconds");
+  c.steps_done = steps.is_number() ? steps.get<long>() : 0;
+  c.wall_seconds = wall.is_number() ? wall.get<double>() : 0.0;
+  c.summary = std::move(summary);
   return c;
 }
 

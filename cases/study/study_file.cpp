@@ -213,7 +213,7 @@ StudySpec parse_study(const std::string& text, const fs::path& path) {
   const toml::table* study = root.get_as<toml::table>("study");
   if (!study) throw UserError(file + ": needs a [study] table with name and base");
   const std::string where = file + ": [study]";
-  check_keys(*study, {"name", "base", "out", "mode", "set"}, where);
+  check_keys(*study, {"name", "base", "out", "mode", "set", "records"}, where);
 
   StudySpec s;
   s.file = path;
@@ -223,6 +223,11 @@ StudySpec parse_study(const std::string& text, const fs::path& path) {
   s.out = study->contains("out") ? fs::path(required_string(*study, "out", where))
                                  : fs::path("runs") / s.name;
   if (s.out.empty()) throw UserError(where + ": out is empty");
+  if (study->contains("records")) {
+    const fs::path records = required_string(*study, "records", where);
+    if (records.empty()) throw UserError(where + ": records is empty");
+    s.records = (records.is_absolute() ? records : path.parent_path() / records).lexically_normal();
+  }
   s.mode = parse_mode(*study, where);
   s.common = read_set(*study, where);
   if (const toml::array* axes = array_of_tables(root, "axis", file))

@@ -46,6 +46,9 @@ struct StudySpec {
   std::string name;
   std::filesystem::path base;  // the base scene, relative paths taken from the study file's folder
   std::filesystem::path out;   // [study] out (relative to the working directory), or runs/<name>
+  // [study] records (relative to the study file's folder), where each finished case's
+  // compact record is written (docs/study.md, "Campaign records"); empty: <out>/records.
+  std::filesystem::path records;
   std::vector<std::string> common;  // [study] set: overrides of every case, before its own
   // `granshock study --set`: overrides of every case given on the command line, after the
   // file's (already in `common`; kept apart so that a Slurm script passes them on).

@@ -5,6 +5,7 @@
 #include "cases/study/case_directory.hpp"
 #include "cases/study/study_cost.hpp"
 #include "cases/study/study_rate.hpp"
+#include "cases/tradeoff/accuracy_choice.hpp"
 
 namespace granshock {
 
@@ -17,6 +18,9 @@ std::string accuracy_line(const nlohmann::json& r) {
                                   ? fmt::format("certified (error at most {:.3g} %)",
                                                 100 * r.at("error_bound").get<double>())
                                   : "not certified";
+  if (r.at("case") == kAsGivenCase)
+    return fmt::format("accuracy {:g} %: not certified, the scene as given, dt = {:.4g} t_c",
+                       100 * r.at("budget").get<double>(), r.at("dt_over_tc").get<double>());
   return fmt::format(
       "accuracy {:g} %: the table's case \"{}\", {}, dt = {:.4g} t_c, softening {:g}, {}",
       100 * r.at("budget").get<double>(), r.at("case").get<std::string>(), verdict,
@@ -38,7 +42,7 @@ void print_study_listing(const StudyPlan& plan, const std::vector<std::size_t>& 
   std::size_t to_run = 0;
   for (std::size_t k : selected) {
     const PlannedCase& c = plan.cases[k];
-    const CaseDirectory dir = inspect_case_directory(c.dir);
+    const CaseDirectory dir = inspect_case_directory(c.dir, c.record_dir);
     const double cost = expected_particle_steps(c.scene);
     const bool done = dir.state == CaseState::finished || dir.state == CaseState::needs_fields;
     const double rest = done ? 0.0 : expected_particle_steps(c.scene, dir.steps_done);

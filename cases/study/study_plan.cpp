@@ -36,6 +36,10 @@ LoadedScene load_case(const StudySpec& s, const StudyCase& c) {
 
 }  // namespace
 
+std::filesystem::path records_root(const StudySpec& spec, const std::filesystem::path& out) {
+  return spec.records.empty() ? out / "records" : spec.records;
+}
+
 std::vector<std::string> run_overrides(const StudySpec& s, const PlannedCase& c) {
   // Quoted: a name such as "10" or "true" must stay a string (docs/scene_format.md).
   std::vector<std::string> o{"scene.name=\"" + c.spec.name + "\""};
@@ -93,6 +97,7 @@ StudyPlan plan_study(const StudySpec& s, const std::filesystem::path& out) {
     p.accuracy_choice = choices[k].record;
     p.accuracy_report = choices[k].report;
     p.dir = out / cases[k].name;
+    p.record_dir = records_root(s, out) / "cases" / cases[k].name;
     p.scene = loaded[k].scene;
     const auto [it, fresh] = scenes.emplace(unnamed(p.scene), p.spec.name);
     if (!fresh)

@@ -16,7 +16,9 @@ namespace granshock {
 
 struct PlannedCase {
   StudyCase spec;
-  std::filesystem::path dir;          // <out>/<name>
+  std::filesystem::path dir;  // <out>/<name>
+  // Its record (cases/study/case_record.hpp): <records>/cases/<name>.
+  std::filesystem::path record_dir;
   Scene scene;                        // resolved, named after the case
   std::string resolved;               // its TOML (what `run --dry-run` prints)
   std::vector<std::string> warnings;  // of the checks before a run
@@ -38,6 +40,9 @@ struct StudyPlan {
 // step, field sampling without enough samples), and for two cases of the same scene.
 // `out`: the study's directory (--out, else the study file's out).
 StudyPlan plan_study(const StudySpec& spec, const std::filesystem::path& out);
+
+// Where a study's records go: [study] records, else <out>/records.
+std::filesystem::path records_root(const StudySpec& spec, const std::filesystem::path& out);
 
 // The overrides `granshock run` gets for a case: scene.name, the study's [study] set, then
 // the case's own.

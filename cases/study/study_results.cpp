@@ -9,6 +9,7 @@
 #include "cases/study/case_directory.hpp"
 #include "cases/study/study_claims.hpp"
 #include "cases/study/study_figures.hpp"
+#include "cases/study/study_runner.hpp"
 #include "cases/study/study_table.hpp"
 #include "core/user_error.hpp"
 
@@ -49,19 +50,38 @@ void compare_finished(const StudyPlan& plan, const std::vector<fs::path>& finish
   }
 }
 
+// study.csv and study.json beside the records, where some case has one.
+void copy_table_to_records(const StudyPlan& plan, const StudyTable& table) {
+  const fs::path records = records_root(plan.spec, plan.out);
+  std::error_code ec;
+  if (!fs::is_directory(records / "cases", ec)) return;
+  try {
+    write_study_table(records, table);
+  } catch (const UserError& e) {
+    warn(std::string("the table was not copied beside the records: ") + e.what());
+  }
+}
+
 }  // namespace
 
 int write_study_results(const StudyPlan& plan, const std::map<int, std::string>& failures,
                         bool quiet, bool figures) {
+  // The finished cases with their run directories are analysed again and recorded anew;
+  // those known by their records alone are tabulated from the records.
   std::vector<fs::path> finished;
-  std::vector<std::string> not_finished;
+  std::vector<std::size_t> with_runs;
+  std::vector<std::string> not_finished, from_records;
   const StudyTable states = study_table(plan, failures);
   for (std::size_t k = 0; k < plan.cases.size(); ++k) {
     const std::string status = states.rows[k]["status"].get<std::string>();
-    if (status == "finished")
+    if (status == "finished" && states.rows[k]["source"] == "record") {
+      from_records.push_back(plan.cases[k].spec.name);
+    } else if (status == "finished") {
       finished.push_back(plan.cases[k].dir);
-    else
+      with_runs.push_back(k);
+    } else {
       not_finished.push_back(plan.cases[k].spec.name + " (" + status + ")");
+    }
   }
   int code = 0;
   try {
@@ -71,9 +91,17 @@ int write_study_results(const StudyPlan& plan, const std::map<int, std::string>&
               << "\n";
     code = 1;
   }
-  // The table from the summaries as the analysis above left them.
+  for (std::size_t k : with_runs) record_case(plan, plan.cases[k]);
+  // The table from the summaries as the analysis above left them; a copy beside the
+  // records, which outlive the study's directory.
   const StudyTable table = study_table(plan, failures);
   write_study_table(plan.out, table);
+  copy_table_to_records(plan, table);
+  if (!from_records.empty() && !quiet)
+    std::cerr << fmt::format("granshock study: {} case{} from {} alone (no run directory): {}\n",
+                             from_records.size(), from_records.size() == 1 ? "" : "s",
+                             records_root(plan.spec, plan.out).string(),
+                             fmt::join(from_records, ", "));
   write_claims(plan.out, check_paper_claims(table));
   try {
     if (figures) plot_study_figures(plan);

@@ -10,6 +10,7 @@
 #include "cases/bow_shock/interrupt.hpp"
 #include "cases/bow_shock/run_command.hpp"
 #include "cases/study/case_directory.hpp"
+#include "cases/study/case_record.hpp"
 #include "cases/study/study_cost.hpp"
 #include "cases/study/study_preflight.hpp"
 #include "cases/study/study_rate.hpp"
@@ -117,6 +118,17 @@ std::string try_case(const StudyPlan& plan, const PlannedCase& c, const CaseActi
 
 }  // namespace
 
+void record_case(const StudyPlan& plan, const PlannedCase& c) {
+  try {
+    write_case_record(c.dir, c.record_dir,
+                      CaseRecordOrigin{plan.spec.name, plan.spec.file.string(), c.spec.name,
+                                       c.spec.index, run_overrides(plan.spec, c)});
+  } catch (const UserError& e) {
+    std::cerr << fmt::format("granshock study: warning: case {}: no record: {}\n", c.spec.name,
+                             e.what());
+  }
+}
+
 StudyRunResult run_study_cases(const StudyPlan& plan, const std::vector<std::size_t>& selected,
                                const StudyRunOptions& o) {
   StudyRunResult result;
@@ -124,7 +136,8 @@ StudyRunResult run_study_cases(const StudyPlan& plan, const std::vector<std::siz
   // Expected particle-steps still to run, case by case, from the directories as they are.
   std::vector<double> left(selected.size(), 0.0);
   for (std::size_t p = 0; p < selected.size(); ++p) {
-    const CaseDirectory dir = inspect_case_directory(plan.cases[selected[p]].dir);
+    const CaseDirectory dir =
+        inspect_case_directory(plan.cases[selected[p]].dir, plan.cases[selected[p]].record_dir);
     if (dir.state != CaseState::finished && dir.state != CaseState::needs_fields)
       left[p] = expected_particle_steps(plan.cases[selected[p]].scene, dir.steps_done);
   }
@@ -145,11 +158,13 @@ StudyRunResult run_study_cases(const StudyPlan& plan, const std::vector<std::siz
       result.stopped = true;
       return result;
     }
-    const CaseDirectory dir = inspect_case_directory(c.dir);
+    const CaseDirectory dir = inspect_case_directory(c.dir, c.record_dir);
     const CaseAction action = action_for(dir.state);
     if (dir.state == CaseState::finished) {
-      std::cerr << fmt::format("granshock study: case {}/{} {}: finished before, skipped\n", p + 1,
-                               selected.size(), c.spec.name);
+      std::cerr << fmt::format(
+          "granshock study: case {}/{} {}: finished before{}, skipped\n", p + 1, selected.size(),
+          c.spec.name,
+          dir.from_record ? " (its record in " + c.record_dir.string() + ")" : std::string());
       continue;
     }
     progress.before(p, c, dir, remaining(p));
@@ -157,7 +172,7 @@ StudyRunResult run_study_cases(const StudyPlan& plan, const std::vector<std::siz
     int code = 0;
     const std::string failure = try_case(plan, c, action, o, code);
     const double seconds = seconds_since(start);
-    const CaseDirectory after = inspect_case_directory(c.dir);
+    const CaseDirectory after = inspect_case_directory(c.dir, c.record_dir);
     if (!failure.empty() && after.state == CaseState::finished) {
       // Finished, fields and summary written; what failed came after them (the figures
       // of a machine without matplotlib, say).
@@ -189,6 +204,7 @@ StudyRunResult run_study_cases(const StudyPlan& plan, const std::vector<std::siz
       return result;
     }
     progress.after(p, c, "finished", seconds, remaining(p + 1));
+    record_case(plan, c);
   }
   return result;
 }

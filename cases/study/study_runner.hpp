@@ -25,6 +25,10 @@ struct StudyRunResult {
 
 // Runs plan.cases[k] for each k in `selected`, in that order. A failing case is reported
 // and the next one runs; SIGINT or SIGTERM stops the study after the case's checkpoint.
+// Writes the record of the finished case `c` (cases/study/case_record.hpp); a failure is a
+// warning: the run itself is done.
+void record_case(const StudyPlan& plan, const PlannedCase& c);
+
 StudyRunResult run_study_cases(const StudyPlan& plan, const std::vector<std::size_t>& selected,
                                const StudyRunOptions& options);
 

@@ -81,13 +81,13 @@ void flatten_summary(const nlohmann::json& j, const std::string& prefix, Row& ro
 
 StudyTable study_table(const StudyPlan& plan, const std::map<int, std::string>& failures) {
   StudyTable t;
-  std::vector<std::string> lead = {"case", "index", "status", "wall_seconds"};
+  std::vector<std::string> lead = {"case", "index", "status", "source", "wall_seconds"};
   for (const StudyAxis& a : plan.spec.axes) lead.push_back("axis." + a.name);
   std::vector<std::string> scene_cols;
   std::set<std::string> summary_cols;
   for (const PlannedCase& c : plan.cases) {
     Row row;
-    const CaseDirectory dir = inspect_case_directory(c.dir);
+    const CaseDirectory dir = inspect_case_directory(c.dir, c.record_dir);
     const auto failure = failures.find(c.spec.index);
     row["case"] = c.spec.name;
     row["index"] = c.spec.index;
@@ -95,6 +95,10 @@ StudyTable study_table(const StudyPlan& plan, const std::map<int, std::string>& 
                     : dir.state == CaseState::finished ? "finished"
                     : dir.state == CaseState::missing  ? "missing"
                                                        : "unfinished";
+    // Where a finished case's numbers come from: its run directory or its record alone.
+    row["source"] = dir.state != CaseState::finished ? nlohmann::json()
+                    : dir.from_record                ? nlohmann::json("record")
+                                                     : nlohmann::json("run");
     row["wall_seconds"] = dir.summary.is_object() ? nlohmann::json(dir.wall_seconds) : nullptr;
     for (std::size_t a = 0; a < plan.spec.axes.size(); ++a)
       row["axis." + plan.spec.axes[a].name] = axis_cell(plan.spec, c.spec, a);

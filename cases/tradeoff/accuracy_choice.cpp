@@ -109,14 +109,54 @@ SettingChoice reference_outside_range(const AccuracyTable& table, const SceneCor
   c.certified = false;
   c.setting = *find_case(table, "reference");  // read_accuracy_table requires it
   c.reasons.push_back(fmt::format(
-      "not certified for this scene (D/d = {:.3g}, Ma = {:.3g}): {}; chose the most accurate "
-      "case, {}",
+      "not certified for this scene (D/d = {:.3g}, Ma = {:.3g}): {}; its most accurate case "
+      "is {}",
       corner.obstacle_over_particle, corner.mach,
       table.range ? "the table's settings were shown to hold for " + describe(*table.range)
                   : std::string("the table states no range where its settings hold (a table "
                                 "from before it was recorded: run granshock tradeoff again)"),
       describe(c.setting)));
   return c;
+}
+
+// Nothing certified (outside the table's range, or a budget below its noise floor): the
+// scene runs as given, and the report says why in its first line after the budget
+// (docs/accuracy.md, "Where a certificate holds"). The table's most accurate case would
+// cost several times the scene's own settings and certify nothing either.
+AccuracyChoice as_given(const LoadedScene& given, const TimeStepAssessment& guard,
+                        const SceneCorner& corner, const AccuracyTable& table,
+                        const fs::path& table_path, double budget, const SettingChoice& sc) {
+  const Scene& s = given.scene;
+  AccuracyChoice out;
+  out.report.push_back(fmt::format("budget {} on e_eff, delta/D, phi_peak and Ma_inf, from {}",
+                                   percent(budget), table_path.string()));
+  out.report.push_back("cannot certify: " + sc.reasons.front());
+  out.report.push_back(fmt::format(
+      "so: nothing changed, the scene as given (dt = {:.4g} s = {:.3g} t_c, softening {:g}, {} "
+      "precision, {} restitution)",
+      s.setup.dt, guard.dt_over_tc(), s.setup.contacts.softening, choice_name(s.setup.precision),
+      choice_name(s.setup.contacts.restitution_mode)));
+  out.record = {{"budget", budget},
+                {"table", table_path.string()},
+                {"case", kAsGivenCase},
+                {"certified", false},
+                {"why_not", sc.reasons.front()},
+                {"error_bound", nullptr},
+                {"bound_by", nullptr},
+                {"noise_floor", table.noise_floor},
+                {"noise_seeds", table.noise_seeds},
+                {"speedup_over_scene", 1.0},
+                {"scene_dt", s.setup.dt},
+                {"dt", s.setup.dt},
+                {"dt_over_tc", guard.dt_over_tc()},
+                {"softening", s.setup.contacts.softening},
+                {"restitution_mode", choice_name(s.setup.contacts.restitution_mode)},
+                {"precision", choice_name(s.setup.precision)},
+                {"scene_D_over_d", corner.obstacle_over_particle},
+                {"scene_mach", corner.mach},
+                {"certified_range", table.range ? to_json(*table.range) : nlohmann::json()},
+                {"overrides", nlohmann::json::array()}};
+  return out;
 }
 
 }  // namespace
@@ -155,13 +195,15 @@ SettingChoice choose_setting(const AccuracyTable& table, double budget) {
     c.certified = false;
     c.setting = *find_case(table, "reference");  // read_accuracy_table requires it
     c.reasons.push_back(fmt::format(
-        "no measured setting is within {}: the table cannot bound an error below its noise, "
-        "{} ({} between two seeds); chose the most accurate case, {}",
-        percent(budget), percent(table.noise_floor), table.noise_floor_by, describe(c.setting)));
+        "no measured setting is within {}: the table cannot bound an error below its noise "
+        "floor, {} ({}; noise from {} seeds); its most accurate case is {}",
+        percent(budget), percent(table.noise_floor), table.noise_floor_by, table.noise_seeds,
+        describe(c.setting)));
     return c;  // single precision is a cheaper setting: not without a certified budget
   }
   c.setting = *best;
-  c.reasons.push_back("chose " + describe(c.setting));
+  c.reasons.push_back(
+      fmt::format("chose {}; noise from {} seeds", describe(c.setting), table.noise_seeds));
   for (const MeasuredSetting* s : candidates)
     if (s->speedup > best->speedup)
       c.reasons.push_back("not " + describe(*s) + ": past the budget");
@@ -212,6 +254,7 @@ AccuracyChoice choose_accuracy(const fs::path& scene_file,
   const SettingChoice sc = table.range && holds_at(*table.range, corner)
                                ? choose_setting(table, budget)
                                : reference_outside_range(table, corner);
+  if (!sc.certified) return as_given(given, given_guard, corner, table, table_path, budget, sc);
   const MeasuredSetting& s = sc.setting;
   const MeasuredSetting& reference = *find_case(table, "reference");
 
@@ -265,6 +308,7 @@ AccuracyChoice choose_accuracy(const fs::path& scene_file,
       {"error_bound", s.error_bound},
       {"bound_by", s.bound_by},
       {"noise_floor", table.noise_floor},
+      {"noise_seeds", table.noise_seeds},
       {"e_eff_error_phase_averaged", s.e_eff_error_phase_averaged},
       {"e_eff_error_one_phase", s.e_eff_error},
       {"speedup_over_scene", over_scene},

@@ -36,9 +36,14 @@ struct SettingChoice {
 SettingChoice choose_setting(const AccuracyTable& table, double budget);
 
 // The choice applied to a scene: dt = (dt/t_c of the case) x t_c of this scene at the chosen
-// softening (the time-step guard's t_c), the sample interval kept in simulated time. Its
+// softening (the time-step guard's t_c), the sample interval kept in simulated time; where
+// nothing is certified (outside the table's range, a budget below its noise floor), no
+// override: the scene as given, and the report says why. Its
 // speed is stated against the scene as given (its own dt, softening and precision): the
 // ratio of the steps times step_speed; the table's speed-up over its reference beside it.
+// The record's "case" where nothing was certified and the scene runs as given.
+inline constexpr const char* kAsGivenCase = "scene as given";
+
 struct AccuracyChoice {
   std::vector<std::string> overrides;  // to append to the run's --set overrides
   std::vector<std::string> report;     // what was chosen and why, one line each

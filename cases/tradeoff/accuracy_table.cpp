@@ -169,7 +169,8 @@ AccuracyTable read_accuracy_table(const std::filesystem::path& path) {
     fail("has no \"cases\" and \"noise\" (not a trade.json of granshock tradeoff)");
   // The layout's version (cases/tradeoff/trade_table.py writes it): a table of another
   // version may mean other things by the same keys.
-  if (!doc.contains("table") || doc["table"] != kTradeTableVersion)
+  const bool version1 = doc.contains("table") && doc["table"] == kTradeTableVersion1;
+  if (!doc.contains("table") || (doc["table"] != kTradeTableVersion && !version1))
     fail(
         fmt::format("is {}, not \"{}\" (\"table\"): make it again with this granshock's "
                     "`granshock tradeoff`",
@@ -193,6 +194,17 @@ AccuracyTable read_accuracy_table(const std::filesystem::path& path) {
 
   AccuracyTable table;
   table.source = path;
+  if (version1) {
+    // "the reference's 4 seeds, RMS over their 6 pairs" or "scene against seed-2".
+    const std::string from = doc.value("noise_from", std::string());
+    table.noise_seeds = from.find("4 seeds") != std::string::npos ? 4 : 2;
+  } else {
+    table.noise_seeds = int(number_at(fail, doc, "the table", "noise_seeds", 2, 1e6, true).value());
+    if (!doc.contains("certificate") || !doc["certificate"].is_object())
+      fail("has no \"certificate\" (its bound's factor k on the noise)");
+    table.noise_factor =
+        number_at(fail, doc["certificate"], "certificate", "k", 0, 100, true).value();
+  }
   if (doc.contains("certified_range")) table.range = read_range(fail, doc["certified_range"]);
   // Relative noise of every answer the reference measured; an answer it lacks (no front)
   // bounds nothing.
@@ -205,7 +217,7 @@ AccuracyTable read_accuracy_table(const std::filesystem::path& path) {
                                  std::numeric_limits<double>::max(), false);
     if (!value || *value == 0 || !noise) continue;
     reference_value[answer] = std::abs(*value);
-    relative_noise[answer] = *noise / std::abs(*value);
+    relative_noise[answer] = table.noise_factor * *noise / std::abs(*value);
     if (relative_noise[answer] > table.noise_floor) {
       table.noise_floor = relative_noise[answer];
       table.noise_floor_by = answer;
@@ -223,8 +235,9 @@ AccuracyTable read_accuracy_table(const std::filesystem::path& path) {
     for (const auto& [answer, ref] : reference_value) {
       const auto diff =
           number_at(fail, row, at, "diff." + answer, 0, std::numeric_limits<double>::max(), false);
-      const double bound = diff ? std::max(*diff / ref, relative_noise[answer])
-                                : std::numeric_limits<double>::infinity();
+      const double bound = !diff      ? std::numeric_limits<double>::infinity()
+                           : version1 ? std::max(*diff / ref, relative_noise[answer])
+                                      : *diff / ref + relative_noise[answer];
       if (bound > s.error_bound) {
         s.error_bound = bound;
         s.bound_by = answer;

@@ -35,10 +35,10 @@ struct MeasuredSetting {
   double e_eff_error = 0;
   double e_eff_error_phase_averaged = 0;
   // The largest relative error it is known not to exceed: over the phase-averaged e_eff
-  // and every answer,
-  // max(|difference from the reference|, noise) / |reference|. A difference below the
-  // noise is no error, but no smaller bound can be claimed for it either. Infinite when
-  // the setting lost an answer the reference has.
+  // and every answer, (|difference from the reference| + k x noise) / |reference|, the
+  // certificate of docs/accuracy.md ("The certificate"; a table of version 1:
+  // max(|difference|, noise) / |reference|). Infinite when the setting lost an answer the
+  // reference has.
   double error_bound = 0;
   std::string bound_by;  // the answer that sets error_bound
 };
@@ -46,16 +46,24 @@ struct MeasuredSetting {
 struct AccuracyTable {
   std::filesystem::path source;
   std::vector<MeasuredSetting> settings;  // in the table's order
-  // The smallest bound any setting can have: the largest relative noise over the answers.
+  // The smallest bound any setting can have: k x the largest relative noise over the
+  // answers.
   double noise_floor = 0;
   std::string noise_floor_by;
+  // How many seeds the noise came from, and the factor on it of the certificate's bound
+  // (trade.json "noise_seeds", "certificate": {"k"}; a table of version 1: from its
+  // "noise_from", and 1).
+  int noise_seeds = 2;
+  double noise_factor = 1;
   // Where its settings were shown to hold ("certified_range"); none: a table from before
   // it was recorded, which certifies nowhere.
   std::optional<CertifiedRange> range;
 };
 
-// The version trade.json names in "table" (cases/tradeoff/trade_table.py writes it).
-inline constexpr const char* kTradeTableVersion = "granshock trade table 1";
+// The version trade.json names in "table" (cases/tradeoff/trade_table.py writes it), and
+// the one before it, still read: noise from seed pairs and bounds max(|difference|, noise).
+inline constexpr const char* kTradeTableVersion = "granshock trade table 2";
+inline constexpr const char* kTradeTableVersion1 = "granshock trade table 1";
 
 // Reads trade.json; throws UserError naming the file and the cause where it cannot be read,
 // is of another version or lacks the cases "reference", "scene" and "seed-2" or a setting's

@@ -67,7 +67,8 @@ def main(granshock, study_file, trade_dir):
                   file=sys.stderr)
     kept = {k: v for k, v in doc.items() if k not in ("table", "noise", "noise_from", "cases")}
     trade_table.write_tables(rows, doc["noise"], trade_dir,
-                             doc.get("noise_from", "scene against seed-2"), kept)
+                             doc.get("noise_from", "scene against seed-2"), kept,
+                             doc.get("table", trade_table.TABLE_VERSION))
 
 
 if __name__ == "__main__":

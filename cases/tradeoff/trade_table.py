@@ -1,23 +1,31 @@
 #!/usr/bin/python3
 """The speed-against-accuracy table of `granshock tradeoff` (docs/accuracy.md).
 
-Usage: /usr/bin/python3 trade_table.py STUDY_DIR OUT_DIR [--no-figures] (granshock tradeoff
-runs it; --no-figures: the tables without pareto.png)
+Usage: /usr/bin/python3 trade_table.py RECORDS_DIR OUT_DIR [--no-figures] (granshock
+tradeoff runs it; --no-figures: the tables without pareto.png)
+
+RECORDS_DIR holds the study's case records (docs/study.md, "Campaign records"): one folder
+cases/<case>/ each, with summary.json, scene.toml and the reduced fields.h5, and the study's
+study.csv, whose order the table keeps. The run directories are not read: the table can be
+made again from committed records.
 
 Every case is compared with the case "reference" (the most accurate settings) and the
 difference set beside the noise: the root mean square of the same comparison between every
-pair of the reference's seeds ("reference", "reference-seed-2", ...; at least 4 seeds, 6
-pairs), or, in a study from before those cases, between the case "scene" (the scene as
-given) and "seed-2" (one pair). A difference at or below the noise is not an error the
-setting made; for delta/D the noise is at least the combined block errors of two runs,
-since the seeds can agree by chance. Writes OUT_DIR/trade.csv and trade.json (every number),
-trade.md (the table of docs/accuracy.md) and pareto.png (speed-up against each error).
-The e_eff error is given for one impact (one phase of the first contact step on the time
-grid) and averaged over the phases (the one `granshock run --accuracy` judges).
+pair of the seeds of the scene as given ("scene", "seed-2", "seed-3", ...; at least 4 seeds,
+6 pairs); in a table from before those cases, the reference's seeds ("reference",
+"reference-seed-2", ...) or "scene" against "seed-2" (one pair). For delta/D the noise is
+at least the combined block errors of two runs, since the seeds can agree by chance. The
+certificate of a case (docs/accuracy.md, "The certificate") bounds each answer's error by
+|difference| + k x noise, k the one-sided Student t quantile at CONFIDENCE with seeds - 1
+degrees of freedom. Writes OUT_DIR/trade.csv and trade.json (every number), trade.md (the
+table of docs/accuracy.md) and pareto.png (speed-up against each error). The e_eff error is
+given for one impact (one phase of the first contact step on the time grid) and averaged
+over the phases (the one `granshock run --accuracy` judges).
 """
 import csv
 import json
 import os
+import re
 import sys
 
 import tomllib
@@ -25,12 +33,29 @@ import tomllib
 import h5py
 import numpy as np
 
+# The layout of trade.json (cases/tradeoff/accuracy_table.hpp, kTradeTableVersion).
+TABLE_VERSION = "granshock trade table 2"
 DEFINITIONS = ["temperature_jump", "sonic_line", "density_threshold"]
 FIELDS = ["phi", "T", "Ma"]
 
 
-def load(study, name):
-    d = os.path.join(study, name)
+def case_dir(records, name):
+    return os.path.join(records, "cases", name)
+
+
+def case_names(records):
+    """The recorded cases, in study.csv's order where the records have one."""
+    recorded = {n for n in os.listdir(os.path.join(records, "cases"))
+                if os.path.isfile(os.path.join(case_dir(records, n), "summary.json"))}
+    table = os.path.join(records, "study.csv")
+    if not os.path.isfile(table):
+        return sorted(recorded)
+    order = [r["case"] for r in csv.DictReader(open(table))]
+    return [n for n in order if n in recorded] + sorted(recorded - set(order))
+
+
+def load(records, name):
+    d = case_dir(records, name)
     s = json.load(open(os.path.join(d, "summary.json")))
     with h5py.File(os.path.join(d, "fields.h5"), "r") as f:
         fields = {q: f["fields/" + q][...] for q in FIELDS}
@@ -46,10 +71,9 @@ def load(study, name):
 INCIDENTAL = {"scene.name", "output.sample_every", "inflow.sigma"}
 
 
-def resolved_scene(study, name):
-    with h5py.File(os.path.join(study, name, "run.h5"), "r") as f:
-        text = f["scene/resolved"][()]
-    return tomllib.loads(text.decode() if isinstance(text, bytes) else text)
+def resolved_scene(records, name):
+    with open(os.path.join(case_dir(records, name), "scene.toml"), "rb") as f:
+        return tomllib.load(f)
 
 
 def flatten(table, prefix=""):
@@ -111,7 +135,28 @@ def differences(case, ref):
     return out
 
 
-MIN_REFERENCE_SEEDS = 4
+MIN_NOISE_SEEDS = 4
+# The confidence of a certificate's bound (one-sided) and the Student t quantiles it takes,
+# by degrees of freedom (seeds - 1): scipy is not among the project's packages.
+CONFIDENCE = 0.90
+T_QUANTILE_90 = {1: 3.078, 2: 1.886, 3: 1.638, 4: 1.533, 5: 1.476, 6: 1.440, 7: 1.415,
+                 8: 1.397, 9: 1.383, 10: 1.372}
+
+
+def t_quantile(seeds):
+    return T_QUANTILE_90.get(seeds - 1, 1.2816)  # past 11 seeds, the normal quantile
+
+
+def noise_seeds(names):
+    """The runs whose spread is the noise, and what the table says of them."""
+    scene = ["scene"] + sorted((n for n in names if re.fullmatch(r"seed-\d+", n)),
+                               key=lambda n: int(n.split("-")[1]))
+    reference = ["reference"] + sorted(n for n in names if n.startswith("reference-seed-"))
+    for seeds, what in [(scene, "the scene's"), (reference, "the reference's")]:
+        if len(seeds) >= MIN_NOISE_SEEDS:
+            pairs = len(seeds) * (len(seeds) - 1) // 2
+            return seeds, f"{what} {len(seeds)} seeds, RMS over their {pairs} pairs"
+    return ["scene", "seed-2"], "scene against seed-2"
 
 
 def seed_noise(runs, seeds):
@@ -135,25 +180,31 @@ def seed_noise(runs, seeds):
     return noise
 
 
-def main(study, out_dir, figures=True):
-    names = [r["case"] for r in csv.DictReader(open(os.path.join(study, "study.csv")))]
-    runs = {n: load(study, n) for n in names}
+def main(records, out_dir, figures=True):
+    names = case_names(records)
+    missing = [n for n in ["reference", "scene", "seed-2"] if n not in names]
+    if missing:
+        sys.exit(f"{records}: no record of the case{'s' if len(missing) > 1 else ''} "
+                 f"{', '.join(missing)}: the table needs the reference and two seeds of the scene")
+    runs = {n: load(records, n) for n in names}
     ref = runs["reference"]
-    seeds = ["reference"] + sorted(n for n in names if n.startswith("reference-seed-"))
-    if len(seeds) >= MIN_REFERENCE_SEEDS:
-        noise = seed_noise(runs, seeds)
-        noise_from = f"the reference's {len(seeds)} seeds, RMS over their {len(seeds) * (len(seeds) - 1) // 2} pairs"
-    else:
-        noise = seed_noise(runs, ["scene", "seed-2"])
-        noise_from = "scene against seed-2"
-    title = os.path.basename(os.path.normpath(study))
+    seeds, noise_from = noise_seeds(names)
+    noise = seed_noise(runs, seeds)
+    k = t_quantile(len(seeds))
+    certificate = {"confidence": CONFIDENCE, "sided": "one", "k": k, "seeds": len(seeds),
+                   "pairing": "unpaired",
+                   "rule": "|difference| + k x noise, relative to the reference's value"}
+    # A study's own records are <out>/records: named after the study's directory.
+    title = os.path.basename(os.path.normpath(records))
+    if title == "records":
+        title = os.path.basename(os.path.dirname(os.path.normpath(records)))
     # The cost of a case: its CPU time where every case recorded one (summary.json
     # cpu_seconds: on a shared machine wall time also counts the other programs' turns,
     # and a run that found the machine busy ran on fewer threads), else its wall time.
     cost_key = ("cpu_seconds" if all(runs[n][0].get("cpu_seconds") for n in names)
                 else "wall_seconds")
     cost_ref = ref[0][cost_key]
-    scenes = {n: resolved_scene(study, n) for n in names}
+    scenes = {n: resolved_scene(records, n) for n in names}
     rows = []
     for n in names:
         s = runs[n][0]
@@ -177,25 +228,91 @@ def main(study, out_dir, figures=True):
                      "column to an existing table with cases/tradeoff/phase_averaged_e_eff.py")
         row.update({k: v for k, v in scalars(s).items()})
         diff = differences(runs[n], ref)
-        for k, v in diff.items():
-            row["diff." + k] = v
-            row["over_noise." + k] = v / noise[k] if v is not None and noise[k] else None
+        for q, v in diff.items():
+            row["diff." + q] = v
+            row["over_noise." + q] = v / noise[q] if v is not None and noise[q] else None
         rows.append(row)
-    write_tables(rows, noise, out_dir, noise_from)
+    reference_row = rows[names.index("reference")]
+    for row in rows:
+        row["bound"], row["bound_by"] = certificate_bound(row, reference_row, noise, k)
+    floor = noise_floor(reference_row, noise, k)
+    extra = {"noise_seeds": len(seeds), "certificate": certificate, "noise_floor": floor,
+             "bias_second_seed": second_seed_bias(runs)}
+    shown = own_range(records, title)
+    if shown:
+        extra["certified_range"] = shown
+    write_tables(rows, noise, out_dir, noise_from, extra)
     if figures:
         write_figure(rows, noise, title, out_dir)
 
 
-def write_tables(rows, noise, out_dir, noise_from, extra=None):
+def own_range(records, title):
+    """Where the table holds before any transfer check: its reference's D/d and Ma_inf, from
+    the study table beside the records (its columns scene.D_over_d, the obstacle's frontal
+    width over units.d, and scene.mach); None without them. `granshock tradeoff` writes
+    its scene's point itself (cases/tradeoff/accuracy_range.hpp), by the mean diameter."""
+    table = os.path.join(records, "study.csv")
+    if not os.path.isfile(table):
+        return None
+    for r in csv.DictReader(open(table)):
+        if r["case"] == "reference" and r.get("scene.D_over_d") and r.get("scene.mach"):
+            D, ma = float(r["scene.D_over_d"]), float(r["scene.mach"])
+            return {"D_over_d": [D, D], "mach": [ma, ma], "shown_on": [title]}
+    return None
+
+
+BUDGET_ANSWERS = ["delta_over_D." + d for d in DEFINITIONS] + ["phi_peak", "ma_inf_measured"]
+
+
+def certificate_bound(row, reference_row, noise, k):
+    """The bound `granshock run --accuracy` gives the case (docs/accuracy.md, "The
+    certificate"; computed again there, cases/tradeoff/accuracy_table.cpp): the largest of
+    its phase-averaged e_eff error and (|difference| + k x noise) / |reference| over the
+    answers the reference has; None (unbounded) where the case lost one of them."""
+    bound, by = row["e_eff_error_phase_averaged"], "e_eff (phase-averaged)"
+    for q in BUDGET_ANSWERS:
+        ref, n = reference_row.get(q), noise.get(q)
+        if not ref or n is None:
+            continue
+        d = row.get("diff." + q)
+        if d is None:
+            return None, q
+        if (d + k * n) / abs(ref) > bound:
+            bound, by = (d + k * n) / abs(ref), q
+    return bound, by
+
+
+def noise_floor(reference_row, noise, k):
+    """The smallest bound a certificate can give: k x noise / |reference| of the answer
+    where it is largest (a setting identical to the reference is bounded by it)."""
+    worst = {"bound": 0.0, "by": None}
+    for q in BUDGET_ANSWERS:
+        ref, n = reference_row.get(q), noise.get(q)
+        if ref and n is not None and k * n / abs(ref) > worst["bound"]:
+            worst = {"bound": k * n / abs(ref), "by": q}
+    return worst
+
+
+def second_seed_bias(runs):
+    """The scene's setting against the reference on the second seed's particles, beside the
+    first seed's: the same bias measured twice (None without reference-seed-2)."""
+    if "reference-seed-2" not in runs or "seed-2" not in runs:
+        return None
+    return {"seed-2 against reference-seed-2": differences(runs["seed-2"], runs["reference-seed-2"]),
+            "scene against reference": differences(runs["scene"], runs["reference"])}
+
+
+def write_tables(rows, noise, out_dir, noise_from, extra=None, version=TABLE_VERSION):
     """trade.csv, trade.json and trade.md of the rows (also cases/tradeoff/phase_averaged_e_eff.py,
-    which passes the keys of the table it rewrites that are not the rows' in `extra`)."""
+    which passes the keys of the table it rewrites that are not the rows' in `extra`, and
+    that table's version)."""
     os.makedirs(out_dir, exist_ok=True)
     with open(os.path.join(out_dir, "trade.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
         w.writeheader()
         w.writerows(rows)
     with open(os.path.join(out_dir, "trade.json"), "w") as f:
-        json.dump({"table": "granshock trade table 1", "noise": noise, "noise_from": noise_from,
+        json.dump({"table": version, "noise": noise, "noise_from": noise_from,
                    **(extra or {}), "cases": rows}, f, indent=1)
 
     def cell(r, k, fmt):
@@ -210,10 +327,12 @@ def write_tables(rows, noise, out_dir, noise_from, extra=None):
 
     cost_key = rows[0]["cost_from"]
     cost_label = "CPU (s)" if cost_key == "cpu_seconds" else "wall (s)"
+    bounds = "bound" in rows[0]
     lines = [f"| case | dt/t_c | {cost_label} | speed-up | e_eff error, phase-averaged | "
              "e_eff error, one phase | delta/D (primary) | "
-             "|delta/D - ref| | L2 phi | L2 T | L2 Ma | |phi_peak - ref| | |Ma_inf - ref| |",
-             "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+             "|delta/D - ref| | L2 phi | L2 T | L2 Ma | |phi_peak - ref| | |Ma_inf - ref| |"
+             + (" certified bound (set by) |" if bounds else ""),
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|" + ("---|" if bounds else "")]
     for r in rows:
         lines.append(
             f"| {r['case']} | {r['dt_over_tc']:.3f} | {r[cost_key]:.1f} | "
@@ -222,10 +341,19 @@ def write_tables(rows, noise, out_dir, noise_from, extra=None):
             f"{num(r['delta_over_D.temperature_jump'], '.3f')} | "
             f"{cell(r, 'delta_over_D.temperature_jump', '.3f')} | {cell(r, 'L2.phi', '.3f')} | "
             f"{cell(r, 'L2.T', '.3f')} | {cell(r, 'L2.Ma', '.3f')} | "
-            f"{cell(r, 'phi_peak', '.3f')} | {cell(r, 'ma_inf_measured', '.3f')} |")
+            f"{cell(r, 'phi_peak', '.3f')} | {cell(r, 'ma_inf_measured', '.3f')} |"
+            + (f" {num(r['bound'] and 100 * r['bound'], '.2f')} % ({r['bound_by']}) |"
+               if bounds else ""))
     lines.append("")
     lines.append(f"Noise ({noise_from}): " + ", ".join(
         f"{k} {v:.3g}" for k, v in noise.items() if v is not None))
+    if extra and "certificate" in extra:
+        c, floor = extra["certificate"], extra["noise_floor"]
+        lines.append("")
+        lines.append(f"Certificate: {c['rule']}, k = {c['k']:.3f} (one-sided "
+                     f"{100 * c['confidence']:.0f} %, Student t with {c['seeds'] - 1} degrees of "
+                     f"freedom, {c['pairing']}); noise floor {100 * floor['bound']:.2f} % "
+                     f"(set by {floor['by']}).")
     open(os.path.join(out_dir, "trade.md"), "w").write("\n".join(lines) + "\n")
     print("\n".join(lines))
 
@@ -263,5 +391,5 @@ def write_figure(rows, noise, title, out_dir):
 
 if __name__ == "__main__":
     if len(sys.argv) not in (3, 4) or sys.argv[3:] not in ([], ["--no-figures"]):
-        sys.exit("usage: trade_table.py STUDY_DIR OUT_DIR [--no-figures]")
+        sys.exit("usage: trade_table.py RECORDS_DIR OUT_DIR [--no-figures]")
     main(sys.argv[1], sys.argv[2], figures=sys.argv[3:] != ["--no-figures"])

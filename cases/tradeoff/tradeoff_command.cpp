@@ -82,7 +82,8 @@ int tradeoff_command(const TradeoffOptions& o) {
     return code;
   }
   require_plotting_python();
-  std::vector<std::string> args{out.string(), out.string()};
+  // From the cases' records (docs/study.md, "Campaign records"), not their run directories.
+  std::vector<std::string> args{(out / "records").string(), out.string()};
   if (!o.figures) args.push_back("--no-figures");  // the tables without pareto.png
   run_figure_script(figure_script("trade_table.py", GRANSHOCK_TRADEOFF_SCRIPT_DIR), args);
   record_range(out / "trade.json", range_of(scene_corner(loaded.scene), loaded.scene.name));

@@ -28,7 +28,8 @@ class Run:
     """The outputs of one run (or of one run's field analysis).
 
     kind: "run" (run.h5 is there) or "fields" (a fields directory: fields.h5 and
-    summary.json only). In a fields directory scene, observables, times, steps and
+    summary.json only; also a study case's record, docs/study.md "Campaign records", whose
+    reduced fields.h5 holds fewer fields, as float32, and whose scene.toml gives scene). In a fields directory scene, observables, times, steps and
     snapshot() raise NoRunFileError; everything else works in both.
     """
 
@@ -63,7 +64,12 @@ class Run:
     @functools.cached_property
     def scene(self):
         """The resolved scene (every default filled in, lengths in m) as a dict, parsed from
-        run.h5's /scene/resolved."""
+        run.h5's /scene/resolved, or in a case's record (docs/study.md, "Campaign records")
+        from its scene.toml."""
+        record_scene = self.path / "scene.toml"
+        if self.kind == "fields" and record_scene.is_file():
+            with open(record_scene, "rb") as f:
+                return tomllib.load(f)
         with self._open("run") as f:
             return tomllib.loads(_h5.read_text(f["scene/resolved"]))
 

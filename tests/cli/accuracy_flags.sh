@@ -33,9 +33,9 @@ json.dump(t, open(sys.argv[2] + "/v99.json", "w"))
 del t["table"]
 json.dump(t, open(sys.argv[2] + "/none.json", "w"))
 PY
-expect "v99\.json: is of version '\"granshock trade table 99\"', not \"granshock trade table 1\"" \
+expect "v99\.json: is of version '\"granshock trade table 99\"', not \"granshock trade table 2\"" \
   "$granshock" run "$scene" --out "$tmp/never" --dry-run --accuracy 5% --accuracy-table "$tmp/v99.json"
-expect "none\.json: is of no version, not \"granshock trade table 1\"" \
+expect "none\.json: is of no version, not \"granshock trade table 2\"" \
   "$granshock" run "$scene" --out "$tmp/never" --dry-run --accuracy 5% --accuracy-table "$tmp/none.json"
 # A budget in decimals is a budget.
 "$granshock" run "$scene" --out "$tmp/never" --dry-run --accuracy 5.0% >/dev/null 2>"$tmp/err" ||

@@ -11,6 +11,7 @@ Usage: test_reader.py GRANSHOCK SOURCE_DIR [unittest options]
 """
 import contextlib
 import csv
+import json
 import io
 import math
 import os
@@ -333,6 +334,24 @@ class Study(unittest.TestCase):
                 self.assertEqual(cell, value, column)
             else:
                 self.assertTrue(math.isclose(float(cell), value, rel_tol=1e-9), column)
+
+    def test_a_record_opens_as_its_run(self):
+        # The record of the finished case (docs/study.md, "Campaign records"): its summary
+        # and scene the run's, its fields the run's to float32's rounding.
+        record = granshock.open_run(runs("tiny") / "records" / "cases" / TINY_CASES[0])
+        run = granshock.open_study(runs("tiny")).run(0)
+        self.assertEqual(record.kind, "fields")
+        # A record names the run directory by its case (no path of the machine: the run's
+        # warnings name it as the study was given it, runs/tiny/<case>).
+        text = re.sub(r'[^"\s]*/' + re.escape(TINY_CASES[0]), TINY_CASES[0],
+                      json.dumps(run.summary))
+        self.assertEqual(record.summary, json.loads(text))
+        self.assertEqual(record.scene, run.scene)
+        for name in ("phi", "T", "Ma"):
+            a, b = record.fields[name], run.fields[name]
+            self.assertEqual(a.dtype, np.float32)
+            self.assertTrue(np.allclose(a, b, rtol=1e-6, atol=0, equal_nan=True), name)
+        self.assertTrue(same_number(record.fronts.delta_over_D, run.fronts.delta_over_D))
 
     def test_cases_open_as_runs(self):
         study = granshock.open_study(runs("tiny"))

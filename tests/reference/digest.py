@@ -20,7 +20,7 @@ import numpy
 # launches per step depend on the build's paths and on how the wall clock slices the loop
 # (docs/cuda.md, "Launches per step").
 MACHINE_KEYS = {"wall_seconds", "cpu_seconds", "particle_steps_per_second", "threads",
-                "backend", "variant", "backend_switch", "build", "kernel_launches_per_step",
+                "backend", "cpu_model", "variant", "backend_switch", "build", "kernel_launches_per_step",
                 "reductions_per_step", "deep_copies_per_step", "device_to_host_copies_per_step",
                 "fences_per_step"}
 

@@ -23,6 +23,10 @@
 #                          CR) in the study directory, the study file's path and [study] set,
 #                          --set and the program's path: the script runs case 1 and nothing else
 #   emit_slurm_many_cases  more array tasks than Slurm's default MaxArraySize: one warning line
+#   records_outlive_the_runs  each finished case's record (docs/study.md, "Campaign records"):
+#                          its files and size; with the run directories removed, --collect
+#                          tabulates every recorded case from its record and lists the rest
+#                          as missing, and the study runs only the case without a record
 #   summary_extremes       a case's summary.json with wall_seconds = 1e300 (the time limit is
 #                          clamped), then nested 200 000 levels deep (one line, exit 2, for
 #                          study --collect, --emit slurm, fields and run --accuracy-table)
@@ -53,7 +57,7 @@ runs_and_tabulates)
   grep -q "study ETA" "$work/stderr" || fail "no ETA in the progress lines"
   header=$(head -1 "$out/study.csv")
   case $header in
-  case,index,status,wall_seconds,axis.phi,axis.e,scene.D_over_d,scene.U,scene.phi_inf,*) ;;
+  case,index,status,source,wall_seconds,axis.phi,axis.e,scene.D_over_d,scene.U,scene.phi_inf,*) ;;
   *) fail "study.csv header: $header" ;;
   esac
   for column in scene.restitution scene.number_fraction.steel scene.duration \
@@ -132,6 +136,72 @@ interrupts_and_resumes)
     grep -q '"steps": 1000000' "$dir/summary.json" || fail "$dir did not run all 1000000 steps"
   done
   [ "$(rows_with_status finished)" -eq 2 ] || fail "expected 2 finished rows"
+  ;;
+records_outlive_the_runs)
+  "$granshock" study "$studies/tiny.toml" --out "$out" --quiet 2>"$work/stderr" ||
+    fail "the study failed: $(cat "$work/stderr")"
+  records=$out/records
+  for name in phi-0.1_e-0.5 phi-0.1_e-0.8 phi-0.12_e-0.5 phi-0.12_e-0.8; do
+    for f in summary.json scene.toml fields.h5 record.json; do
+      [ -s "$records/cases/$name/$f" ] || fail "no record file $name/$f"
+    done
+    bytes=$(du -cb "$records/cases/$name"/* | tail -1 | cut -f1)
+    [ "$bytes" -lt 1000000 ] || fail "the record of $name is $bytes bytes, past 1 MB"
+  done
+  [ -s "$records/study.csv" ] || fail "no study.csv beside the records"
+  # The record's fields: the run's own, as float32 (to float32's rounding), the grid and the
+  # profile kept; the summary the run's byte for byte; the scene the resolved one.
+  /usr/bin/python3 - "$out/phi-0.1_e-0.8" "$records/cases/phi-0.1_e-0.8" <<'EOF' || fail "the record does not hold the run's fields"
+import json, sys
+import h5py, numpy as np
+run, rec = sys.argv[1:]
+with h5py.File(run + "/fields.h5") as a, h5py.File(rec + "/fields.h5") as b:
+    assert b.attrs["granshock_record"] == 1 and b.attrs["granshock_file"] == a.attrs["granshock_file"]
+    for q in ["phi", "T", "Ma", "mean_count"]:
+        x, y = a["fields/" + q][...], b["fields/" + q][...]
+        assert y.dtype == np.float32 and y.shape == x.shape, (q, y.dtype, y.shape)
+        ok = np.isfinite(x)
+        assert np.array_equal(ok, np.isfinite(y)), q
+        assert np.all(np.abs(y[ok] - x[ok]) <= 1e-6 * np.abs(x[ok]) + 1e-30), q
+    assert np.array_equal(a["fields/masked"][...] != 0, b["fields/masked"][...] != 0)
+    assert np.array_equal(a["grid/x"][...], b["grid/x"][...])
+    assert np.array_equal(a["profile/phi"][...], b["profile/phi"][...], equal_nan=True)
+    assert "vectors" not in b and "nodes" not in b["grid"]
+# The summary the run's, with no path of this machine: the run directory's named by the case.
+import os
+text = open(run + "/summary.json").read().replace(os.path.abspath(run), "phi-0.1_e-0.8")
+assert json.loads(text) == json.load(open(rec + "/summary.json"))
+assert os.path.dirname(os.path.abspath(run)) not in open(rec + "/summary.json").read()
+origin = json.load(open(rec + "/record.json"))
+assert origin["record"] == "granshock case record 1" and origin["case"] == "phi-0.1_e-0.8", origin
+# The study file was named by its absolute path here: the record keeps its name alone.
+assert origin["command"] in ("granshock study tiny.toml --case 1", "granshock study 'tiny.toml' --case 1"), origin
+assert origin["cpu_model"], origin
+assert origin["study_file"] == "tiny.toml", origin
+EOF
+  grep -Eq "^name = [\"']phi-0.1_e-0.8[\"']" "$records/cases/phi-0.1_e-0.8/scene.toml" ||
+    fail "the record's scene is not the case's resolved scene"
+  # The run directories gone: every case from its record.
+  rm -r "${out:?}"/phi-*
+  "$granshock" study "$studies/tiny.toml" --out "$out" --collect 2>"$work/stderr" >/dev/null ||
+    fail "--collect from records failed: $(cat "$work/stderr")"
+  [ "$(rows_with_status finished)" -eq 4 ] || fail "expected 4 finished rows from the records"
+  [ "$(grep -c '"finished","record",' "$out/study.csv")" -eq 4 ] ||
+    fail "the rows do not say they come from the records: $(cut -c1-80 "$out/study.csv")"
+  grep -q "4 cases from $records alone" "$work/stderr" || fail "no note of the records: $(cat "$work/stderr")"
+  head -1 "$out/study.csv" | tr ',' '\n' | grep -qx delta_over_D || fail "no summary columns"
+  # One record gone too: listed as missing, and the only case a run runs again.
+  rm -r "${records:?}/cases/phi-0.12_e-0.5"
+  "$granshock" study "$studies/tiny.toml" --out "$out" --collect 2>"$work/stderr" >/dev/null
+  [ $? -eq 1 ] || fail "--collect with a case missing: exit code, expected 1"
+  grep -q "1 of 4 cases not finished: phi-0.12_e-0.5 (missing)" "$work/stderr" ||
+    fail "the missing case is not listed: $(cat "$work/stderr")"
+  "$granshock" study "$studies/tiny.toml" --out "$out" --quiet 2>"$work/stderr" ||
+    fail "the study failed: $(cat "$work/stderr")"
+  [ "$(grep -c 'finished before (its record in' "$work/stderr")" -eq 3 ] ||
+    fail "the recorded cases were not skipped: $(cat "$work/stderr")"
+  [ -d "$out/phi-0.12_e-0.5" ] && [ ! -e "$out/phi-0.1_e-0.5" ] || fail "the wrong cases ran"
+  [ -s "$records/cases/phi-0.12_e-0.5/summary.json" ] || fail "the case run again has no record"
   ;;
 collect_lists_missing)
   "$granshock" study "$studies/tiny.toml" --out "$out" --collect 2>"$work/stderr"
@@ -241,7 +311,7 @@ tradeoff_runs_and_tabulates)
     --set output.series_interval=0.0005 --set output.progress_interval=1000)
   "$granshock" tradeoff "$source/scenes/default.toml" --out "$out" --dry-run "${tiny[@]}" \
     >"$work/stdout" 2>"$work/stderr" || fail "--dry-run failed: $(cat "$work/stderr")"
-  grep -q -- "--case 21  reference-seed-4" "$work/stdout" ||
+  grep -q -- "--case 21  reference-seed-2" "$work/stdout" ||
     fail "the dry run lists no 22nd case: $(cat "$work/stdout")"
   [ ! -e "$out" ] || fail "--dry-run wrote $out"
   GRANSHOCK_FIGURES=0 "$granshock" tradeoff "$source/scenes/default.toml" --out "$out" --quiet "${tiny[@]}" \
@@ -294,12 +364,16 @@ assert r["shown_on"] == ["default"], r
 # the one-phase value, both from the summary.json of each case.
 for c in t["cases"]:
     assert 0 <= c["e_eff_error_phase_averaged"] < 1 and 0 <= c["e_eff_error"] < 1, c
-# The noise: the RMS over the 6 pairs of the 4 seeds of the reference, recomputed here from
-# their summary.json; for delta/D at least the combined block errors of two runs (the
-# seeds can agree by chance).
+# The noise: the RMS over the 6 pairs of the 4 seeds of the scene as given, recomputed here
+# from their summary.json; for delta/D at least the combined block errors of two runs (the
+# seeds can agree by chance). The certificate: one-sided 90 %, t at 3 degrees of freedom.
 import itertools, math, os
-seeds = ["reference", "reference-seed-2", "reference-seed-3", "reference-seed-4"]
-assert "4 seeds" in t["noise_from"] and "6 pairs" in t["noise_from"], t["noise_from"]
+seeds = ["scene", "seed-2", "seed-3", "seed-4"]
+assert t["noise_from"].startswith("the scene") and "4 seeds" in t["noise_from"], t["noise_from"]
+assert "6 pairs" in t["noise_from"], t["noise_from"]
+assert t["table"] == "granshock trade table 2" and t["noise_seeds"] == 4, t["table"]
+assert t["certificate"]["k"] == 1.638 and t["certificate"]["confidence"] == 0.9, t["certificate"]
+assert t["noise_floor"]["bound"] > 0 and t["noise_floor"]["by"], t["noise_floor"]
 runs = {n: json.load(open(os.path.join(os.path.dirname(sys.argv[1]), n, "summary.json")))
         for n in seeds}
 pairs = list(itertools.combinations(seeds, 2))
@@ -316,15 +390,46 @@ for f in ("10", "100", "1000"):
     assert c["restitution_mode"] == "discrete" and c["softening"] == float(f), c
     assert c["changed"] == "contact.restitution_mode contact.softening time.dt", c
 ' "$out/trade.json" || fail "trade.json: the reference, the speed-up, the noise or a setting is wrong"
-  # The table feeds --accuracy: a budget the table cannot certify falls back to the
-  # reference's dt = t_c/100, and says so.
+  # The table from the records alone (docs/study.md, "Campaign records"): the run
+  # directories removed, trade_table.py makes the same table.
+  mv "$out/trade.json" "$work/trade_from_runs.json"
+  rm -r "${out:?}/reference" "${out:?}/scene" "${out:?}/soft-1000"
+  /usr/bin/python3 "$source/cases/tradeoff/trade_table.py" "$out/records" "$work/again" --no-figures \
+    >/dev/null || fail "trade_table.py on the records failed"
+  /usr/bin/python3 -c '
+import json, sys
+a, b = (json.load(open(p)) for p in sys.argv[1:])
+a.pop("certified_range")
+b.pop("certified_range", None)
+assert a == b, "the table from the records differs from the one from the runs"
+' "$work/trade_from_runs.json" "$work/again/trade.json" || fail "the records give another table"
+  mv "$work/trade_from_runs.json" "$out/trade.json"
+  # The table feeds --accuracy: a budget the table cannot certify runs the scene as given
+  # (its own dt, not the reference's t_c/100), and says so with the seeds of the noise.
   "$granshock" run "$source/scenes/default.toml" "${tiny[@]}" --accuracy 0.001% \
     --accuracy-table "$out/trade.json" --dry-run --out "$work/never" >"$work/choice" 2>&1 ||
     fail "--accuracy with the table failed: $(cat "$work/choice")"
-  grep -q '# accuracy: no measured setting is within 0.001 %' "$work/choice" ||
+  grep -q '# accuracy: cannot certify: no measured setting is within 0.001 %.*noise from 4 seeds' "$work/choice" ||
     fail "--accuracy did not say that nothing met the budget: $(cat "$work/choice")"
-  grep -q '# time.dt = .* is 0.01 t_c' "$work/choice" ||
-    fail "--accuracy did not fall back to the reference's dt: $(cat "$work/choice")"
+  grep -q '# accuracy: so: nothing changed, the scene as given' "$work/choice" ||
+    fail "--accuracy did not run the scene as given: $(cat "$work/choice")"
+  grep -q '^dt = 2e-07$' "$work/choice" || grep -q '^dt = 2.0e-07$' "$work/choice" ||
+    grep -Eq '^dt = 2(\.0*)?e-0?7' "$work/choice" ||
+    fail "the scene's own dt is not the resolved one: $(grep '^dt' "$work/choice")"
+  # The certified bound trade_table.py writes for each case is the one --accuracy computes
+  # (cases/tradeoff/accuracy_table.cpp): a budget every case meets chooses the fastest, and
+  # names its bound.
+  "$granshock" run "$source/scenes/default.toml" "${tiny[@]}" --accuracy 100000% \
+    --accuracy-table "$out/trade.json" --dry-run --out "$work/never" >"$work/choice" 2>&1 ||
+    fail "--accuracy 100000% failed: $(cat "$work/choice")"
+  /usr/bin/python3 - "$out/trade.json" "$work/choice" <<'EOF' || fail "trade.json's bound is not the one --accuracy computes"
+import json, re, sys
+table = json.load(open(sys.argv[1]))
+line = next(l for l in open(sys.argv[2]) if l.startswith("# accuracy: chose "))
+name, bound = re.match(r'# accuracy: chose "([^"]+)" .*?error at most ([0-9.e+-]+) %', line).groups()
+row = next(c for c in table["cases"] if c["case"] == name)
+assert abs(100 * row["bound"] - float(bound)) <= 0.006 * float(bound), (row["bound"], bound, line)
+EOF
   ;;
 accuracy_per_case)
   # The default scene's table (docs/results/tradeoff/default: shown on D = 20 d, Ma 5.9) and
@@ -332,7 +437,7 @@ accuracy_per_case)
   table=$source/docs/results/tradeoff/default/trade.json
   "$granshock" study "$studies/tiny.toml" --out "$out" --accuracy 20% --accuracy-table "$table" \
     --dry-run >"$work/stdout" 2>"$work/stderr" || fail "--dry-run failed: $(cat "$work/stderr")"
-  [ "$(grep -c 'accuracy 20 %: the table.s case "reference", not certified' "$work/stdout")" -eq 4 ] ||
+  [ "$(grep -c 'accuracy 20 %: not certified, the scene as given' "$work/stdout")" -eq 4 ] ||
     fail "D = 10 d should not be certified by a table shown on D = 20 d: $(cat "$work/stdout")"
   wide=(--set "obstacle.diameter=20 d")
   "$granshock" study "$studies/tiny.toml" --out "$out" --quiet --accuracy 20% \

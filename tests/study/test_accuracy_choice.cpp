@@ -104,7 +104,44 @@ TEST(AccuracyChoice, BelowTheNoiseTheMostAccurateCaseAndSaysSo) {
   EXPECT_EQ(c.setting.name, "reference");
   EXPECT_FALSE(c.certified);
   EXPECT_FALSE(c.single_precision);
-  EXPECT_TRUE(mentions(c.reasons, "cannot bound an error below its noise, 1 %"));
+  EXPECT_TRUE(mentions(c.reasons, "cannot bound an error below its noise floor, 1 %"));
+  // A table of version 1 says how many seeds by its "noise_from": one pair here.
+  EXPECT_TRUE(mentions(c.reasons, "noise from 2 seeds"));
+}
+
+// The certificate of a table of version 2 (docs/accuracy.md, "The certificate"): the
+// difference plus k times the noise, k = 1.638 in the fixture, each relative to the
+// reference's value: no setting is bounded below k x the noise.
+TEST(AccuracyTable, CertificateIsTheDifferencePlusKTimesTheNoise) {
+  TempDir dir;
+  const AccuracyTable t = table_of(granshock::testing::fake_trade_table_v2(), dir);
+  EXPECT_EQ(t.noise_seeds, 4);
+  EXPECT_NEAR(t.noise_factor, 1.638, 1e-12);
+  EXPECT_NEAR(t.noise_floor, 0.01638, 1e-12);
+  EXPECT_NEAR(setting(t, "reference").error_bound, 0.01638, 1e-12);
+  EXPECT_NEAR(setting(t, "dt-tc25").error_bound, 0.005 + 0.01638, 1e-12);
+  EXPECT_NEAR(setting(t, "scene").error_bound, 0.02 + 0.01638, 1e-12);
+  EXPECT_NEAR(setting(t, "soft-100").error_bound, 0.04 + 0.01638, 1e-12);
+  EXPECT_NEAR(setting(t, "dt-stable").error_bound, 0.14, 1e-12);  // e_eff's, past the rest
+  // The scene's 3.638 % is past a 3.5 % budget that the version-1 rule (2 %) would meet.
+  EXPECT_EQ(choose_setting(t, 0.035).setting.name, "dt-tc25");
+  const SettingChoice c = choose_setting(t, 0.06);
+  EXPECT_EQ(c.setting.name, "soft-100");
+  EXPECT_TRUE(mentions(c.reasons, "chose \"soft-100\"")) << c.reasons.front();
+  EXPECT_TRUE(mentions(c.reasons, "noise from 4 seeds")) << c.reasons.front();
+}
+
+TEST(AccuracyTable, Version2NeedsItsCertificate) {
+  TempDir dir;
+  nlohmann::json doc = granshock::testing::fake_trade_table_v2();
+  doc.erase("certificate");
+  std::string what;
+  try {
+    table_of(doc, dir);
+  } catch (const UserError& e) {
+    what = e.what();
+  }
+  EXPECT_NE(what.find("has no \"certificate\""), std::string::npos) << what;
 }
 
 TEST(AccuracyChoice, SinglePrecisionOnlyWhereMeasuredFasterAndWithin) {
@@ -204,9 +241,9 @@ TEST(AccuracyTable, MalformedTablesAreRefusedNamingTheField) {
       {nlohmann::json::array(), "has no \"cases\" and \"noise\""},
       // The layout's version (issue: "granshock trade table 99", or none, was accepted).
       {with([](auto& d) { d["table"] = "granshock trade table 99"; }),
-       "is of version '\"granshock trade table 99\"', not \"granshock trade table 1\""},
+       "is of version '\"granshock trade table 99\"', not \"granshock trade table 2\""},
       {with([](auto& d) { d.erase("table"); }),
-       "is of no version, not \"granshock trade table 1\""},
+       "is of no version, not \"granshock trade table 2\""},
       {with([](auto& d) { d["certified_range"] = 1; }),
        "\"certified_range\" = 1 must be an object"},
       {with([](auto& d) {
@@ -411,7 +448,10 @@ TEST(AccuracyRange, ACertificateHoldsOnlyWhereTheTableWasShownToHold) {
   narrow["certified_range"]["D_over_d"] = {20, 60};
   const AccuracyChoice outside = choose(narrow);
   EXPECT_FALSE(outside.record.at("certified").get<bool>());
-  EXPECT_EQ(outside.record.at("case"), "reference");
+  // Uncertified: the scene as given, no override (not the table's reference).
+  EXPECT_EQ(outside.record.at("case"), "scene as given");
+  EXPECT_TRUE(outside.overrides.empty());
+  EXPECT_TRUE(mentions(outside.report, "so: nothing changed, the scene as given"));
   EXPECT_TRUE(mentions(outside.report, "not certified for this scene (D/d = 10, Ma = "))
       << outside.report[1];
   EXPECT_TRUE(

@@ -127,9 +127,11 @@ set = ["contact.restitution=0.8"]
   EXPECT_EQ(t.rows[0]["inflow.requested"], 10.5);
   EXPECT_TRUE(t.rows[1]["inflow.requested"].is_null()) << "only finished cases give results";
   for (const auto& row : t.rows) EXPECT_EQ(row.size(), t.columns.size());
-  const std::vector<std::string> lead = {"case",         "index",    "status",
+  const std::vector<std::string> lead = {"case",         "index",    "status", "source",
                                          "wall_seconds", "axis.phi", "axis.U"};
-  EXPECT_EQ(std::vector<std::string>(t.columns.begin(), t.columns.begin() + 6), lead);
+  EXPECT_EQ(std::vector<std::string>(t.columns.begin(), t.columns.begin() + 7), lead);
+  EXPECT_EQ(t.rows[0]["source"], "run");
+  EXPECT_TRUE(t.rows[1]["source"].is_null()) << "a case that is not finished has no source";
 
   write_study_table(tmp.path(), t);
   const std::string csv = read(tmp.path() / "study.csv");
@@ -137,8 +139,10 @@ set = ["contact.restitution=0.8"]
   std::string header, first;
   std::getline(lines, header);
   std::getline(lines, first);
-  EXPECT_EQ(header.rfind("case,index,status,wall_seconds,axis.phi,axis.U,scene.", 0), 0u) << header;
-  EXPECT_EQ(first.rfind("\"phi-0.05_slow\",0,\"finished\",2.5,0.05,\"slow\",", 0), 0u) << first;
+  EXPECT_EQ(header.rfind("case,index,status,source,wall_seconds,axis.phi,axis.U,scene.", 0), 0u)
+      << header;
+  EXPECT_EQ(first.rfind("\"phi-0.05_slow\",0,\"finished\",\"run\",2.5,0.05,\"slow\",", 0), 0u)
+      << first;
   EXPECT_NE(csv.find(",\"no front\""), std::string::npos);
   const auto json = nlohmann::json::parse(read(tmp.path() / "study.json"));
   ASSERT_EQ(json.size(), 3u);

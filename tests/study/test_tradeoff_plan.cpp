@@ -59,12 +59,17 @@ TEST(TradeoffPlan, EverySettingAtItsValue) {
   EXPECT_EQ(value_of(cases["soft-1000-discrete"], "contact.restitution_mode"), "\"discrete\"");
   EXPECT_EQ(value_of(cases["soft-1000-discrete"], "contact.softening"), "1000");
   EXPECT_EQ(dt("soft-1000-discrete"), dt("soft-1000"));
-  // Four seeds of the reference, for the noise: its settings and seeds 8, 9, 10.
+  // Four seeds of the scene as given, for the noise: its own settings and seeds 7 to 10.
   for (int k = 2; k <= 4; ++k) {
-    const std::string name = "reference-seed-" + std::to_string(k);
-    EXPECT_EQ(dt(name), dt("reference")) << name;
-    EXPECT_EQ(value_of(cases[name], "scene.seed"), std::to_string(6 + k)) << name;
+    const std::string name = "seed-" + std::to_string(k);
+    EXPECT_EQ(cases[name].overrides,
+              std::vector<std::string>{"scene.seed=" + std::to_string(6 + k)})
+        << name;
   }
+  // The reference with the second seed: the bias of the scene's setting on other particles.
+  EXPECT_EQ(dt("reference-seed-2"), dt("reference"));
+  EXPECT_EQ(value_of(cases["reference-seed-2"], "scene.seed"), "8");
+  EXPECT_EQ(cases.count("reference-seed-3"), 0u);
 }
 
 TEST(TradeoffPlan, StudyFileReadsBackWithEveryCase) {
