@@ -70,11 +70,14 @@ CaseDirectory inspect_case_directory(const fs::path& dir) {
   return c;
 }
 
-CaseDirectory inspect_case_directory(const fs::path& dir, const fs::path& record_dir) {
+CaseDirectory inspect_case_directory(const fs::path& dir, const fs::path& record_dir,
+                                     const std::vector<std::string>& overrides) {
   CaseDirectory c = inspect_case_directory(dir);
   if (c.state != CaseState::missing) return c;
-  nlohmann::json summary = read_case_record(record_dir);
-  if (summary.is_null()) return c;
+  ReadRecord record = read_case_record(record_dir, overrides);
+  c.record_refused = record.refused;
+  if (record.summary.is_null()) return c;
+  nlohmann::json summary = std::move(record.summary);
   c.state = CaseState::finished;
   c.from_record = true;
   const nlohmann::json steps = summary_value(summary, "steps");

@@ -28,17 +28,19 @@ struct CaseDirectory {
   // Finished by its record alone: the run directory is gone (or was never here), its
   // record (cases/study/case_record.hpp) holds the summary.
   bool from_record = false;
+  std::string record_refused;  // why a record that is there was not used
 };
 
 // The summary key the field analysis always writes (docs/fields.md, "summary.json").
 inline constexpr const char* kFieldsSummaryKey = "fields_bins";
 
 CaseDirectory inspect_case_directory(const std::filesystem::path& dir);
-// The same for a study's case: a case with no run directory whose record is whole is
-// finished, from its record (a run directory, even an unfinished one, comes first: it is
-// what the user is working on).
+// The same for a study's case run with `overrides`: a case with no run directory whose
+// record is whole and of those overrides is finished, from its record (a run directory, even an
+// unfinished one, comes first: it is what the user is working on).
 CaseDirectory inspect_case_directory(const std::filesystem::path& dir,
-                                     const std::filesystem::path& record_dir);
+                                     const std::filesystem::path& record_dir,
+                                     const std::vector<std::string>& overrides);
 
 // summary.json of `dir`, or null when it is missing or not a JSON object.
 nlohmann::json read_summary(const std::filesystem::path& dir);

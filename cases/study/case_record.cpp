@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "analysis/json_file.hpp"
 #include "cases/build_info/build_description.hpp"
 #include "cases/study/case_directory.hpp"
 #include "core/cpu_model.hpp"
@@ -97,13 +98,26 @@ void write_case_record(const fs::path& run_dir, const fs::path& record_dir,
       without_run_path(file_text(run_dir / "summary.json"), run_dir, origin.case_name));
 }
 
-nlohmann::json read_case_record(const fs::path& record_dir) {
-  const nlohmann::json summary = read_summary(record_dir);
+ReadRecord read_case_record(const fs::path& record_dir, const std::vector<std::string>& overrides) {
+  ReadRecord r;
+  nlohmann::json summary = read_summary(record_dir);
   std::error_code ec;
   if (!summary.is_object() || summary.value("completed", false) != true ||
       !summary.contains(kFieldsSummaryKey) || !fs::exists(record_dir / "fields.h5", ec))
-    return nullptr;
-  return summary;
+    return r;
+  const nlohmann::json origin = fs::exists(record_dir / "record.json", ec)
+                                    ? read_json_file(record_dir / "record.json", "record").value
+                                    : nlohmann::json();
+  if (!origin.is_object() || !origin.contains("overrides") ||
+      origin["overrides"] != nlohmann::json(overrides)) {
+    r.refused = fmt::format(
+        "its record in {} was made with other settings (record.json \"overrides\"), so it runs "
+        "again and its record is replaced",
+        record_dir.string());
+    return r;
+  }
+  r.summary = std::move(summary);
+  return r;
 }
 
 std::uintmax_t case_record_bytes(const fs::path& record_dir) {

@@ -36,9 +36,17 @@ inline constexpr const char* kCaseRecordVersion = "granshock case record 1";
 void write_case_record(const std::filesystem::path& run_dir,
                        const std::filesystem::path& record_dir, const CaseRecordOrigin& origin);
 
-// The summary of a whole record (summary.json completed, with the field analysis' keys), or
-// null where `record_dir` holds none.
-nlohmann::json read_case_record(const std::filesystem::path& record_dir);
+// A record read back for a case run with `overrides` (every --set, in order).
+struct ReadRecord {
+  nlohmann::json summary;  // null: no whole record, or one of other settings
+  std::string refused;     // why a record that is there is not used ("" when none is there)
+};
+
+// The summary of a whole record (summary.json completed, with the field analysis' keys)
+// made with exactly `overrides`: a record of a case that has since changed its settings
+// under the same name is not the case's (ReadRecord::refused says so).
+ReadRecord read_case_record(const std::filesystem::path& record_dir,
+                            const std::vector<std::string>& overrides);
 
 // Bytes of the record's files together.
 std::uintmax_t case_record_bytes(const std::filesystem::path& record_dir);

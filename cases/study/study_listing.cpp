@@ -42,7 +42,7 @@ void print_study_listing(const StudyPlan& plan, const std::vector<std::size_t>& 
   std::size_t to_run = 0;
   for (std::size_t k : selected) {
     const PlannedCase& c = plan.cases[k];
-    const CaseDirectory dir = inspect_case_directory(c.dir, c.record_dir);
+    const CaseDirectory dir = inspect_planned_case(plan, c);
     const double cost = expected_particle_steps(c.scene);
     const bool done = dir.state == CaseState::finished || dir.state == CaseState::needs_fields;
     const double rest = done ? 0.0 : expected_particle_steps(c.scene, dir.steps_done);

@@ -36,6 +36,10 @@ LoadedScene load_case(const StudySpec& s, const StudyCase& c) {
 
 }  // namespace
 
+CaseDirectory inspect_planned_case(const StudyPlan& plan, const PlannedCase& c) {
+  return inspect_case_directory(c.dir, c.record_dir, run_overrides(plan.spec, c));
+}
+
 std::filesystem::path records_root(const StudySpec& spec, const std::filesystem::path& out) {
   return spec.records.empty() ? out / "records" : spec.records;
 }

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "cases/study/case_directory.hpp"
 #include "cases/study/study_cases.hpp"
 #include "cases/study/study_file.hpp"
 #include "core/scene.hpp"
@@ -40,6 +41,10 @@ struct StudyPlan {
 // step, field sampling without enough samples), and for two cases of the same scene.
 // `out`: the study's directory (--out, else the study file's out).
 StudyPlan plan_study(const StudySpec& spec, const std::filesystem::path& out);
+
+// The state of a planned case: its run directory, else its record if that was made with
+// the case's overrides (cases/study/case_directory.hpp).
+CaseDirectory inspect_planned_case(const StudyPlan& plan, const PlannedCase& c);
 
 // Where a study's records go: [study] records, else <out>/records.
 std::filesystem::path records_root(const StudySpec& spec, const std::filesystem::path& out);

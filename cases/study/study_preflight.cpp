@@ -58,7 +58,7 @@ CaseAction action_for(CaseState state) {
 void check_case_directories(const StudyPlan& plan, const std::vector<std::size_t>& selected) {
   for (std::size_t k : selected) {
     const PlannedCase& c = plan.cases[k];
-    const CaseAction a = action_for(inspect_case_directory(c.dir, c.record_dir).state);
+    const CaseAction a = action_for(inspect_planned_case(plan, c).state);
     if (a.state != CaseState::missing) check_stored_scene(plan, c);
     if (a.state == CaseState::finished || a.state == CaseState::needs_fields) continue;
     try {

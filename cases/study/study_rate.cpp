@@ -13,7 +13,7 @@ StudyRate study_rate(const StudyPlan& plan) {
   double particle_steps = 0, seconds = 0;
   int cases = 0;
   for (const PlannedCase& c : plan.cases) {
-    const CaseDirectory dir = inspect_case_directory(c.dir, c.record_dir);
+    const CaseDirectory dir = inspect_planned_case(plan, c);
     // A duration no run reports (zero, negative, not finite) is not a measurement.
     if (dir.state != CaseState::finished || !(dir.wall_seconds > 0) ||
         !std::isfinite(dir.wall_seconds))

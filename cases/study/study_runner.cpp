@@ -136,8 +136,7 @@ StudyRunResult run_study_cases(const StudyPlan& plan, const std::vector<std::siz
   // Expected particle-steps still to run, case by case, from the directories as they are.
   std::vector<double> left(selected.size(), 0.0);
   for (std::size_t p = 0; p < selected.size(); ++p) {
-    const CaseDirectory dir =
-        inspect_case_directory(plan.cases[selected[p]].dir, plan.cases[selected[p]].record_dir);
+    const CaseDirectory dir = inspect_planned_case(plan, plan.cases[selected[p]]);
     if (dir.state != CaseState::finished && dir.state != CaseState::needs_fields)
       left[p] = expected_particle_steps(plan.cases[selected[p]].scene, dir.steps_done);
   }
@@ -158,7 +157,7 @@ StudyRunResult run_study_cases(const StudyPlan& plan, const std::vector<std::siz
       result.stopped = true;
       return result;
     }
-    const CaseDirectory dir = inspect_case_directory(c.dir, c.record_dir);
+    const CaseDirectory dir = inspect_planned_case(plan, c);
     const CaseAction action = action_for(dir.state);
     if (dir.state == CaseState::finished) {
       std::cerr << fmt::format(
@@ -167,12 +166,15 @@ StudyRunResult run_study_cases(const StudyPlan& plan, const std::vector<std::siz
           dir.from_record ? " (its record in " + c.record_dir.string() + ")" : std::string());
       continue;
     }
+    if (!dir.record_refused.empty())
+      std::cerr << fmt::format("granshock study: case {}/{} {}: {}\n", p + 1, selected.size(),
+                               c.spec.name, dir.record_refused);
     progress.before(p, c, dir, remaining(p));
     const auto start = Clock::now();
     int code = 0;
     const std::string failure = try_case(plan, c, action, o, code);
     const double seconds = seconds_since(start);
-    const CaseDirectory after = inspect_case_directory(c.dir, c.record_dir);
+    const CaseDirectory after = inspect_planned_case(plan, c);
     if (!failure.empty() && after.state == CaseState::finished) {
       // Finished, fields and summary written; what failed came after them (the figures
       // of a machine without matplotlib, say).

@@ -87,7 +87,7 @@ StudyTable study_table(const StudyPlan& plan, const std::map<int, std::string>& 
   std::set<std::string> summary_cols;
   for (const PlannedCase& c : plan.cases) {
     Row row;
-    const CaseDirectory dir = inspect_case_directory(c.dir, c.record_dir);
+    const CaseDirectory dir = inspect_planned_case(plan, c);
     const auto failure = failures.find(c.spec.index);
     row["case"] = c.spec.name;
     row["index"] = c.spec.index;

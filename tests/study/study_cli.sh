@@ -202,6 +202,15 @@ EOF
     fail "the recorded cases were not skipped: $(cat "$work/stderr")"
   [ -d "$out/phi-0.12_e-0.5" ] && [ ! -e "$out/phi-0.1_e-0.5" ] || fail "the wrong cases ran"
   [ -s "$records/cases/phi-0.12_e-0.5/summary.json" ] || fail "the case run again has no record"
+  # A record of other settings under the same name is not the case's: it runs again, and
+  # its record is replaced.
+  "$granshock" study "$studies/tiny.toml" --out "$out" --quiet --case 0 \
+    --set output.series_interval=0.001 2>"$work/stderr" || fail "--case 0 failed: $(cat "$work/stderr")"
+  grep -q "phi-0.1_e-0.5: its record in .* was made with other settings" "$work/stderr" ||
+    fail "a record of other settings was used: $(cat "$work/stderr")"
+  [ -s "$out/phi-0.1_e-0.5/summary.json" ] || fail "the case of other settings did not run"
+  grep -q "output.series_interval=0.001" "$records/cases/phi-0.1_e-0.5/record.json" ||
+    fail "its record was not replaced"
   ;;
 collect_lists_missing)
   "$granshock" study "$studies/tiny.toml" --out "$out" --collect 2>"$work/stderr"
