@@ -208,7 +208,7 @@ void add_run_command(CLI::App& app, granshock::RunOptions& o) {
                        "error budget, e.g. 2%: choose dt, stiffness softening and precision from "
                        "a measured trade table (docs/accuracy.md) and say what was chosen",
                        "the trade.json of `granshock tradeoff` to choose from (default: the "
-                       "paper case's, docs/results/tradeoff/paper_d50_u2375)");
+                       "paper case's, docs/results/certificate/d50_u2375)");
   add_no_figures_flag(*cmd, o.figures);
 }
 

@@ -60,7 +60,7 @@ AccuracyChoice choose_accuracy(const std::filesystem::path& scene_file,
 std::optional<CertifiedStep> certified_step(const nlohmann::json& accuracy_choice);
 
 // The table used when none is named: the paper case's, measured on this code
-// (docs/results/tradeoff/paper_d50_u2375/trade.json; installed in share/granshock).
+// (docs/results/certificate/d50_u2375/trade.json; installed in share/granshock).
 std::filesystem::path default_accuracy_table();
 
 }  // namespace granshock
