@@ -153,6 +153,93 @@ std::string clip_json(const json& value) {
   return quoted_input(value.dump());
 }
 
+// One scene's part of a table (the table itself, or one of its transfer checks): its cases
+// by name, and per answer the reference's value and k x noise relative to it.
+struct ScenePart {
+  std::string name;
+  bool version1 = false;
+  std::map<std::string, json> by_name;
+  std::map<std::string, double> reference_value, relative_noise;
+  int noise_seeds = 2;
+  double noise_factor = 1;
+  double noise_floor = 0;
+  std::string noise_floor_by;
+};
+
+ScenePart read_part(const TableFail& fail, const json& doc, const std::string& where,
+                    bool version1) {
+  ScenePart part;
+  part.version1 = version1;
+  const std::string in = where == "the table" ? "" : where + ": ";
+  for (std::size_t k = 0; k < doc["cases"].size(); ++k) {
+    const json& row = doc["cases"][k];
+    const std::string at = fmt::format("{}cases[{}]", in, k);
+    if (!row.is_object()) fail(fmt::format("{} = {} must be an object", at, row.dump()));
+    const std::string name = string_at(fail, row, at, "case", "");
+    if (name.empty()) fail(fmt::format("{} has no \"case\" name", at));
+    if (!part.by_name.emplace(name, row).second)
+      fail(fmt::format("{}: case \"{}\" appears twice", at, name));
+  }
+  for (const char* needed : {"reference", "scene", "seed-2"})
+    if (!part.by_name.count(needed)) fail(fmt::format("{}has no case \"{}\"", in, needed));
+  if (version1) {
+    // "the reference's 4 seeds, RMS over their 6 pairs" or "scene against seed-2".
+    const std::string from = doc.value("noise_from", std::string());
+    part.noise_seeds = from.find("4 seeds") != std::string::npos ? 4 : 2;
+  } else {
+    part.noise_seeds = int(number_at(fail, doc, where, "noise_seeds", 2, 1e6, true).value());
+    if (!doc.contains("certificate") || !doc["certificate"].is_object())
+      fail(in + "has no \"certificate\" (its bound's factor k on the noise)");
+    part.noise_factor =
+        number_at(fail, doc["certificate"], in + "certificate", "k", 0, 100, true).value();
+  }
+  // Relative noise of every answer the reference measured; an answer it lacks (no front)
+  // bounds nothing.
+  const json& reference = part.by_name["reference"];
+  for (const std::string& answer : kBudgetAnswers) {
+    const auto value =
+        number_at(fail, reference, in + "case \"reference\"", answer,
+                  -std::numeric_limits<double>::max(), std::numeric_limits<double>::max(), false);
+    const auto noise = number_at(fail, doc["noise"], in + "noise", answer, 0,
+                                 std::numeric_limits<double>::max(), false);
+    if (!value || *value == 0 || !noise) continue;
+    part.reference_value[answer] = std::abs(*value);
+    part.relative_noise[answer] = part.noise_factor * *noise / std::abs(*value);
+    if (part.relative_noise[answer] > part.noise_floor) {
+      part.noise_floor = part.relative_noise[answer];
+      part.noise_floor_by = answer;
+    }
+  }
+  return part;
+}
+
+// Raises s's bound to the row's on this scene part: (|difference| + k x noise) / reference
+// per answer (version 1: max(|difference|, noise) / reference), infinite where the row lost
+// an answer the reference has; `on` names the scene in bound_by ("" for the table's own).
+void raise_bound(const TableFail& fail, const ScenePart& part, const json& row,
+                 const std::string& on, MeasuredSetting& s) {
+  const std::string at = fmt::format("case \"{}\"{}", s.name, on);
+  if (!on.empty()) {
+    const auto e = number_at(fail, row, at, "e_eff_error_phase_averaged", 0, 1e6, true);
+    if (*e > s.error_bound) {
+      s.error_bound = *e;
+      s.bound_by = "e_eff (phase-averaged)" + on;
+    }
+  }
+  for (const auto& [answer, ref] : part.reference_value) {
+    const auto diff =
+        number_at(fail, row, at, "diff." + answer, 0, std::numeric_limits<double>::max(), false);
+    const double noise = part.relative_noise.at(answer);
+    const double bound = !diff           ? std::numeric_limits<double>::infinity()
+                         : part.version1 ? std::max(*diff / ref, noise)
+                                         : *diff / ref + noise;
+    if (bound > s.error_bound) {
+      s.error_bound = bound;
+      s.bound_by = answer + on;
+    }
+  }
+}
+
 }  // namespace
 
 AccuracyTable read_accuracy_table(const std::filesystem::path& path) {
@@ -178,70 +265,52 @@ AccuracyTable read_accuracy_table(const std::filesystem::path& path) {
                                           : std::string("of no version"),
                     kTradeTableVersion));
 
-  std::map<std::string, json> by_name;
-  for (std::size_t k = 0; k < doc["cases"].size(); ++k) {
-    const json& row = doc["cases"][k];
-    const std::string where = fmt::format("cases[{}]", k);
-    if (!row.is_object()) fail(fmt::format("{} = {} must be an object", where, row.dump()));
-    const std::string name = string_at(fail, row, where, "case", "");
-    if (name.empty()) fail(fmt::format("{} has no \"case\" name", where));
-    if (!by_name.emplace(name, row).second)
-      fail(fmt::format("{}: case \"{}\" appears twice", where, name));
-  }
-  for (const char* needed : {"reference", "scene", "seed-2"})
-    if (!by_name.count(needed)) fail(fmt::format("has no case \"{}\"", needed));
-  const json& reference = by_name["reference"];
-
+  const ScenePart base = read_part(fail, doc, "the table", version1);
   AccuracyTable table;
   table.source = path;
-  if (version1) {
-    // "the reference's 4 seeds, RMS over their 6 pairs" or "scene against seed-2".
-    const std::string from = doc.value("noise_from", std::string());
-    table.noise_seeds = from.find("4 seeds") != std::string::npos ? 4 : 2;
-  } else {
-    table.noise_seeds = int(number_at(fail, doc, "the table", "noise_seeds", 2, 1e6, true).value());
-    if (!doc.contains("certificate") || !doc["certificate"].is_object())
-      fail("has no \"certificate\" (its bound's factor k on the noise)");
-    table.noise_factor =
-        number_at(fail, doc["certificate"], "certificate", "k", 0, 100, true).value();
-  }
+  table.noise_seeds = base.noise_seeds;
+  table.noise_factor = base.noise_factor;
+  table.noise_floor = base.noise_floor;
+  table.noise_floor_by = base.noise_floor_by;
   if (doc.contains("certified_range")) table.range = read_range(fail, doc["certified_range"]);
-  // Relative noise of every answer the reference measured; an answer it lacks (no front)
-  // bounds nothing.
-  std::map<std::string, double> reference_value, relative_noise;
-  for (const std::string& answer : kBudgetAnswers) {
-    const auto value =
-        number_at(fail, reference, "case \"reference\"", answer,
-                  -std::numeric_limits<double>::max(), std::numeric_limits<double>::max(), false);
-    const auto noise = number_at(fail, doc["noise"], "noise", answer, 0,
-                                 std::numeric_limits<double>::max(), false);
-    if (!value || *value == 0 || !noise) continue;
-    reference_value[answer] = std::abs(*value);
-    relative_noise[answer] = table.noise_factor * *noise / std::abs(*value);
-    if (relative_noise[answer] > table.noise_floor) {
-      table.noise_floor = relative_noise[answer];
-      table.noise_floor_by = answer;
+  // Transfer checks (cases/tradeoff/transfer_table.py): the same settings on other scenes,
+  // each bounded by its own reference and noise.
+  std::vector<ScenePart> transfers;
+  if (doc.contains("transfers")) {
+    if (version1 || !doc["transfers"].is_array()) fail("\"transfers\" must be a list");
+    for (std::size_t t = 0; t < doc["transfers"].size(); ++t) {
+      const json& part = doc["transfers"][t];
+      const std::string where = fmt::format("transfers[{}]", t);
+      if (!part.is_object() || !part.contains("cases") || !part["cases"].is_array() ||
+          !part.contains("noise") || !part["noise"].is_object())
+        fail(where + " has no \"cases\" and \"noise\"");
+      transfers.push_back(read_part(fail, part, where, false));
+      transfers.back().name = string_at(fail, part, where, "shown_on", where);
+      const ScenePart& last = transfers.back();
+      table.noise_seeds = std::min(table.noise_seeds, last.noise_seeds);
+      if (last.noise_floor > table.noise_floor) {
+        table.noise_floor = last.noise_floor;
+        table.noise_floor_by = last.noise_floor_by + " on " + last.name;
+      }
     }
   }
 
   for (std::size_t k = 0; k < doc["cases"].size(); ++k) {
     const json& row = doc["cases"][k];
     MeasuredSetting s = read_setting(fail, row, fmt::format("cases[{}]", k));
-    const std::string at = fmt::format("case \"{}\"", s.name);
     // e_eff averaged over the phase of the first contact step: one phase is one impact,
     // 16 % off at the paper's dt where the average is 3 % off (docs/accuracy.md).
     s.error_bound = s.e_eff_error_phase_averaged;
     s.bound_by = "e_eff (phase-averaged)";
-    for (const auto& [answer, ref] : reference_value) {
-      const auto diff =
-          number_at(fail, row, at, "diff." + answer, 0, std::numeric_limits<double>::max(), false);
-      const double bound = !diff      ? std::numeric_limits<double>::infinity()
-                           : version1 ? std::max(*diff / ref, relative_noise[answer])
-                                      : *diff / ref + relative_noise[answer];
-      if (bound > s.error_bound) {
-        s.error_bound = bound;
-        s.bound_by = answer;
+    raise_bound(fail, base, row, "", s);
+    for (const ScenePart& part : transfers) {
+      const auto match = part.by_name.find(s.name);
+      if (match == part.by_name.end()) {
+        s.error_bound = std::numeric_limits<double>::infinity();
+        s.bound_by = "not measured on " + part.name;
+        break;
       }
+      raise_bound(fail, part, match->second, " on " + part.name, s);
     }
     table.settings.push_back(s);
   }

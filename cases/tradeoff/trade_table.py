@@ -180,7 +180,10 @@ def seed_noise(runs, seeds):
     return noise
 
 
-def main(records, out_dir, figures=True):
+def build_table(records):
+    """The table of one records folder: (rows, noise, noise_from, title, extra), extra the
+    keys of trade.json beside its cases (the seeds, the certificate, the noise floor, the
+    reference's second seed, its own range)."""
     names = case_names(records)
     missing = [n for n in ["reference", "scene", "seed-2"] if n not in names]
     if missing:
@@ -241,6 +244,11 @@ def main(records, out_dir, figures=True):
     shown = own_range(records, title)
     if shown:
         extra["certified_range"] = shown
+    return rows, noise, noise_from, title, extra
+
+
+def main(records, out_dir, figures=True):
+    rows, noise, noise_from, title, extra = build_table(records)
     write_tables(rows, noise, out_dir, noise_from, extra)
     if figures:
         write_figure(rows, noise, title, out_dir)

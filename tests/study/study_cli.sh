@@ -439,6 +439,24 @@ name, bound = re.match(r'# accuracy: chose "([^"]+)" .*?error at most ([0-9.e+-]
 row = next(c for c in table["cases"] if c["case"] == name)
 assert abs(100 * row["bound"] - float(bound)) <= 0.006 * float(bound), (row["bound"], bound, line)
 EOF
+  # A transfer check (cases/tradeoff/transfer_table.py) with the same records as the other
+  # scene: every bound as the table's own, the range named twice, and --accuracy reads it.
+  /usr/bin/python3 "$source/cases/tradeoff/transfer_table.py" "$out/records" "$work/combined" \
+    "$out/records" --no-figures >/dev/null || fail "transfer_table.py failed"
+  /usr/bin/python3 - "$out/trade.json" "$work/combined/trade.json" <<'EOF' || fail "the transfer table is wrong"
+import json, sys
+own, combined = (json.load(open(p)) for p in sys.argv[1:])
+assert len(combined["transfers"]) == 1 and combined["transfers"][0]["shown_on"] == "out"
+assert combined["certified_range"]["shown_on"] == ["out", "out"], combined["certified_range"]
+for a, b in zip(own["cases"], combined["cases"]):
+    assert a["case"] == b["case"] and a["bound"] == b["bound"], (a["case"], a["bound"], b["bound"])
+    assert set(b["bound_on"]) == {"out"}, b["bound_on"]
+EOF
+  "$granshock" run "$source/scenes/default.toml" "${tiny[@]}" --accuracy 100000% \
+    --accuracy-table "$work/combined/trade.json" --dry-run --out "$work/never" >"$work/choice2" 2>&1 ||
+    fail "--accuracy with the transfer table failed: $(cat "$work/choice2")"
+  [ "$(grep '^# accuracy: chose ' "$work/choice")" = "$(grep '^# accuracy: chose ' "$work/choice2")" ] ||
+    fail "the transfer table chose otherwise: $(grep 'chose' "$work/choice2")"
   ;;
 accuracy_per_case)
   # The default scene's table (docs/results/tradeoff/default: shown on D = 20 d, Ma 5.9) and

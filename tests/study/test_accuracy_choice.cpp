@@ -503,3 +503,46 @@ TEST(AccuracyChoice, SofteningWithTheDiscreteModeIsChosenWithItsMode) {
   doc["cases"].back()["restitution_mode"] = "sticky";
   EXPECT_THROW(table_of(doc, dir), UserError);
 }
+
+// A table checked on another scene (cases/tradeoff/transfer_table.py; docs/accuracy.md,
+// "Transfer checks"): each setting is bounded on every scene by that scene's reference
+// and noise, its bound the largest; a setting the other scene did not run is unbounded.
+TEST(AccuracyTable, TransferChecksBoundEachSettingOnEveryScene) {
+  TempDir dir;
+  nlohmann::json doc = granshock::testing::fake_trade_table_v2();
+  nlohmann::json other = granshock::testing::fake_trade_table_v2();
+  other["shown_on"] = "other";
+  nlohmann::json kept = nlohmann::json::array();
+  for (nlohmann::json row : other["cases"]) {
+    if (row["case"] == "dt-stable") continue;  // not run on the other scene
+    if (row["case"] == "soft-100") row["diff.delta_over_D.temperature_jump"] = 0.08 * 0.2;
+    kept.push_back(row);
+  }
+  other["cases"] = kept;
+  doc["transfers"] = nlohmann::json::array({other});
+  const AccuracyTable t = table_of(doc, dir);
+  // Past its own scene's 4 % + 1.638 %: the other scene's 8 % + 1.638 %, named.
+  EXPECT_NEAR(setting(t, "soft-100").error_bound, 0.08 + 0.01638, 1e-12);
+  EXPECT_EQ(setting(t, "soft-100").bound_by, "delta_over_D.temperature_jump on other");
+  EXPECT_NEAR(setting(t, "scene").error_bound, 0.02 + 0.01638, 1e-12);
+  EXPECT_EQ(setting(t, "scene").bound_by, "delta_over_D.temperature_jump");
+  EXPECT_EQ(setting(t, "dt-stable").error_bound, std::numeric_limits<double>::infinity());
+  EXPECT_EQ(setting(t, "dt-stable").bound_by, "not measured on other");
+  EXPECT_NEAR(t.noise_floor, 0.01638, 1e-12);
+  // At 6 % soft-100 (32x) no longer fits: the scene's own setting (8x) is the fastest
+  // within it.
+  EXPECT_EQ(choose_setting(t, 0.06).setting.name, "scene");
+  // A transfer part without its reference is refused, naming it.
+  nlohmann::json broken = doc;
+  nlohmann::json no_reference = nlohmann::json::array();
+  for (const nlohmann::json& row : broken["transfers"][0]["cases"])
+    if (row["case"] != "reference") no_reference.push_back(row);
+  broken["transfers"][0]["cases"] = no_reference;
+  std::string what;
+  try {
+    table_of(broken, dir);
+  } catch (const UserError& e) {
+    what = e.what();
+  }
+  EXPECT_NE(what.find("transfers[0]: has no case \"reference\""), std::string::npos) << what;
+}
