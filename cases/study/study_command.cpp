@@ -58,11 +58,22 @@ int emit_slurm(const StudyPlan& plan) {
   return 0;
 }
 
+bool any_case_recorded(const StudyPlan& plan) {
+  for (const PlannedCase& c : plan.cases)
+    if (inspect_planned_case(plan, c).from_record) return true;
+  return false;
+}
+
 int collect(const StudyPlan& plan, const StudyOptions& o) {
-  if (check_study_directory(plan.out, plan.spec.name) != StudyDirectoryState::this_study)
+  const StudyDirectoryState state = check_study_directory(plan.out, plan.spec.name);
+  // A campaign on a fresh clone: the study's directory is gone with its runs, its records
+  // are committed (docs/study.md, "Campaign records"). The table is made from them.
+  if (state != StudyDirectoryState::this_study && any_case_recorded(plan))
+    claim_study_directory(plan.out, plan.spec.name);
+  else if (state != StudyDirectoryState::this_study)
     throw UserError(fmt::format(
-        "--collect: '{}' holds no study (no {} marker); run the study first, or give its "
-        "directory with --out",
+        "--collect: '{}' holds no study (no {} marker) and no case has a record; run the "
+        "study first, or give its directory with --out",
         plan.out.string(), kStudyMarker));
   return write_study_results(plan, {}, o.quiet, o.figures);
 }

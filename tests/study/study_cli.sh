@@ -211,6 +211,17 @@ EOF
   [ -s "$out/phi-0.1_e-0.5/summary.json" ] || fail "the case of other settings did not run"
   grep -q "output.series_interval=0.001" "$records/cases/phi-0.1_e-0.5/record.json" ||
     fail "its record was not replaced"
+  # A fresh clone: the study's directory gone altogether, its records kept elsewhere
+  # ([study] records): --collect makes the directory and the table from the records.
+  cp -r "$records" "$work/kept"
+  sed -e "s|^base = .*|base = \"$source/scenes/default.toml\"|" \
+    -e "s|^name = \"tiny\"|name = \"tiny\"\nrecords = \"$work/kept\"|" "$studies/tiny.toml" >"$work/kept.toml"
+  "$granshock" study "$work/kept.toml" --out "$work/fresh" --collect --no-figures 2>"$work/stderr" >/dev/null
+  [ $? -eq 1 ] || fail "--collect on a fresh clone: exit code (case 0's record is of other settings)"
+  [ "$(grep -c '"finished","record",' "$work/fresh/study.csv")" -eq 3 ] ||
+    fail "a fresh clone's --collect did not tabulate the records: $(cat "$work/stderr")"
+  grep -q "1 of 4 cases not finished: phi-0.1_e-0.5 (missing)" "$work/stderr" ||
+    fail "the case of other settings is not listed as missing: $(cat "$work/stderr")"
   ;;
 collect_lists_missing)
   "$granshock" study "$studies/tiny.toml" --out "$out" --collect 2>"$work/stderr"
