@@ -57,6 +57,19 @@ std::string rerun_command(const CaseRecordOrigin& o) {
                      o.case_index);
 }
 
+bool record_stands(const fs::path& record_dir, const std::string& summary_text,
+                   const std::string& scene, const std::vector<std::string>& overrides) {
+  std::error_code ec;
+  for (const char* name : {"summary.json", "scene.toml", "fields.h5", "record.json"})
+    if (!fs::is_regular_file(record_dir / name, ec)) return false;
+  if (file_text(record_dir / "summary.json") != summary_text ||
+      file_text(record_dir / "scene.toml") != scene)
+    return false;
+  const nlohmann::json origin = read_json_file(record_dir / "record.json", "record").value;
+  return origin.is_object() && origin.contains("overrides") &&
+         origin["overrides"] == nlohmann::json(overrides);
+}
+
 }  // namespace
 
 void write_case_record(const fs::path& run_dir, const fs::path& record_dir,
@@ -70,6 +83,12 @@ void write_case_record(const fs::path& run_dir, const fs::path& record_dir,
   if (scene.empty())
     throw UserError(fmt::format("cannot read the resolved scene of '{}' for its record",
                                 (run_dir / "run.h5").string()));
+  const std::string summary_text =
+      without_run_path(file_text(run_dir / "summary.json"), run_dir, origin.case_name);
+  // The same run analysed the same way again (--collect): the record stands. HDF5 files
+  // are not written byte for byte alike, and a committed record should change only when
+  // its numbers or its settings do.
+  if (record_stands(record_dir, summary_text, scene, origin.overrides)) return;
   std::error_code ec;
   fs::create_directories(record_dir, ec);
   if (ec)
@@ -93,9 +112,7 @@ void write_case_record(const fs::path& run_dir, const fs::path& record_dir,
   origin_json["wall_seconds"] = summary.value("wall_seconds", 0.0);
   origin_json["cpu_seconds"] = summary.value("cpu_seconds", 0.0);
   write_file_atomically(record_dir / "record.json", origin_json.dump(1) + "\n");
-  write_file_atomically(
-      record_dir / "summary.json",
-      without_run_path(file_text(run_dir / "summary.json"), run_dir, origin.case_name));
+  write_file_atomically(record_dir / "summary.json", summary_text);
 }
 
 ReadRecord read_case_record(const fs::path& record_dir, const std::vector<std::string>& overrides) {
