@@ -48,16 +48,25 @@ std::string stored_scene(const fs::path& dir) {
   }
 }
 
+namespace {
+
+// The steps and wall time a summary reports (0 where it has none).
+void take_summary(CaseDirectory& c, nlohmann::json summary) {
+  const nlohmann::json steps = summary_value(summary, "steps");
+  const nlohmann::json wall = summary_value(summary, "wall_seconds");
+  c.steps_done = steps.is_number() ? steps.get<long>() : 0;
+  c.wall_seconds = wall.is_number() ? wall.get<double>() : 0.0;
+  c.summary = std::move(summary);
+}
+
+}  // namespace
+
 CaseDirectory inspect_case_directory(const fs::path& dir) {
   CaseDirectory c;
   std::error_code ec;
   if (!fs::exists(dir / kRunMarker, ec)) return c;  // not (yet) a run directory
-  c.summary = read_summary(dir);
+  take_summary(c, read_summary(dir));
   if (c.summary.is_object()) {
-    const nlohmann::json steps = summary_value(c.summary, "steps");
-    const nlohmann::json wall = summary_value(c.summary, "wall_seconds");
-    c.steps_done = steps.is_number() ? steps.get<long>() : 0;
-    c.wall_seconds = wall.is_number() ? wall.get<double>() : 0.0;
     if (summary_value(c.summary, "completed") == true) {
       c.state =
           c.summary.contains(kFieldsSummaryKey) ? CaseState::finished : CaseState::needs_fields;
@@ -77,14 +86,9 @@ CaseDirectory inspect_case_directory(const fs::path& dir, const fs::path& record
   ReadRecord record = read_case_record(record_dir, overrides);
   c.record_refused = record.refused;
   if (record.summary.is_null()) return c;
-  nlohmann::json summary = std::move(record.summary);
   c.state = CaseState::finished;
   c.from_record = true;
-  const nlohmann::json steps = summary_value(summary, "steps");
-  const nlohmann::json wall = summary_value(summary, "wall_seconds");
-  c.steps_done = steps.is_number() ? steps.get<long>() : 0;
-  c.wall_seconds = wall.is_number() ? wall.get<double>() : 0.0;
-  c.summary = std::move(summary);
+  take_summary(c, std::move(record.summary));
   return c;
 }
 

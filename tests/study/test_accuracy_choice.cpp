@@ -34,6 +34,16 @@ const MeasuredSetting& setting(const AccuracyTable& t, const std::string& name) 
   throw std::runtime_error("no case " + name);
 }
 
+// The one line read_accuracy_table refuses `doc` with ("" when it reads it).
+std::string refusal_of(const nlohmann::json& doc, const TempDir& dir) {
+  try {
+    table_of(doc, dir);
+  } catch (const UserError& e) {
+    return e.what();
+  }
+  return "";
+}
+
 bool mentions(const std::vector<std::string>& lines, const std::string& text) {
   for (const std::string& l : lines)
     if (l.find(text) != std::string::npos) return true;
@@ -135,12 +145,7 @@ TEST(AccuracyTable, Version2NeedsItsCertificate) {
   TempDir dir;
   nlohmann::json doc = granshock::testing::fake_trade_table_v2();
   doc.erase("certificate");
-  std::string what;
-  try {
-    table_of(doc, dir);
-  } catch (const UserError& e) {
-    what = e.what();
-  }
+  const std::string what = refusal_of(doc, dir);
   EXPECT_NE(what.find("has no \"certificate\""), std::string::npos) << what;
 }
 
@@ -538,11 +543,6 @@ TEST(AccuracyTable, TransferChecksBoundEachSettingOnEveryScene) {
   for (const nlohmann::json& row : broken["transfers"][0]["cases"])
     if (row["case"] != "reference") no_reference.push_back(row);
   broken["transfers"][0]["cases"] = no_reference;
-  std::string what;
-  try {
-    table_of(broken, dir);
-  } catch (const UserError& e) {
-    what = e.what();
-  }
+  const std::string what = refusal_of(broken, dir);
   EXPECT_NE(what.find("transfers[0]: has no case \"reference\""), std::string::npos) << what;
 }
