@@ -1017,7 +1017,11 @@ class Probe:
                        OUTPUTS + [".granshock-run"] if deep else ["summary.json", "fields.h5"],
                        lambda run, out: self.granshock_cmd("fields", run)),
             "fields-out": (fields_out,
-                           [n for n in OUTPUTS if n.split(".")[0] not in ("run", "log", "checkpoint")]
+                           # What `fields --out` writes: not the run's own files (run.h5, the
+                           # appended log.txt and thermo.txt, checkpoint.h5), which it never
+                           # opens in OUT.
+                           [n for n in OUTPUTS
+                            if n.split(".")[0] not in ("run", "log", "thermo", "checkpoint")]
                            + [".granshock-fields"] if deep else ["summary.json"],
                            lambda run, out: self.granshock_cmd("fields", run, "--out", out)),
         }
