@@ -35,8 +35,9 @@
 //     template <class Real>
 //     static Coefficients<Real> coefficients(const PairProperties&, const ContactOptions&);
 //     // Device (KOKKOS_FORCEINLINE_FUNCTION, no host call): the normal force at overlap
-//     // dn (m) and normal speed vn (m/s). The force kernel calls it for every contact of
-//     // every step; ContactOptions::limit_force clamps the force at 0.
+//     // dn (m) and normal speed vn (m/s), unclamped. The force kernel calls it for every
+//     // contact of every step through clamped_normal (clamped_normal.hpp), which applies
+//     // ContactOptions::limit_force for every law.
 //     template <class Real>
 //     static Normal<Real> normal(const Coefficients<Real>&, Real dn, Real vn);
 //     // Device: the tangential spring at the contact normal() just evaluated.

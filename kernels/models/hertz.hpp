@@ -10,7 +10,6 @@
 
 #include <Kokkos_Core.hpp>
 #include <cmath>
-#include <limits>
 
 #include "contact_settings.hpp"
 #include "device/device_math.hpp"
@@ -27,7 +26,6 @@ struct HertzModel {
   struct Coefficients {
     Real kn_coef, gn_coef, kt_coef, gt_coef;
     Real friction;
-    Real normal_force_floor;  // 0 with limit_force (no attraction), -max otherwise
     Real energy_coef;
   };
   template <class Real>
@@ -41,7 +39,7 @@ struct HertzModel {
   };
 
   template <class Real>
-  static Coefficients<Real> coefficients(const PairProperties& p, const ContactOptions& o) {
+  static Coefficients<Real> coefficients(const PairProperties& p, const ContactOptions&) {
     const double sqrt_r = std::sqrt(p.radius_star);
     const double damping = -2.0 * std::sqrt(5.0 / 6.0) * p.beta;
     Coefficients<Real> c;
@@ -50,22 +48,22 @@ struct HertzModel {
     c.kt_coef = Real(8.0 * p.shear_star * sqrt_r);
     c.gt_coef = Real(damping * std::sqrt(8.0 * p.shear_star * sqrt_r * p.mass_star));
     c.friction = Real(p.friction);
-    c.normal_force_floor = o.limit_force ? Real(0) : -std::numeric_limits<Real>::max();
     c.energy_coef = Real(8.0 / 15.0 * p.youngs_star * sqrt_r);
     return c;
   }
 
   template <class Real>
-  KOKKOS_FORCEINLINE_FUNCTION static Normal<Real> normal(const Coefficients<Real>& c, Real dn, Real vn) {
+  KOKKOS_FORCEINLINE_FUNCTION static Normal<Real> normal(const Coefficients<Real>& c, Real dn,
+                                                         Real vn) {
     const Real sqrt_dn = dmath::sqrt(dn);
     const Real kn = c.kn_coef * sqrt_dn;
     const Real gn = c.gn_coef * dmath::sqrt(sqrt_dn);
-    return {dmath::max(kn * dn - gn * vn, c.normal_force_floor), sqrt_dn};
+    return {kn * dn - gn * vn, sqrt_dn};
   }
 
   template <class Real>
   KOKKOS_FORCEINLINE_FUNCTION static Spring<Real> tangential(const Coefficients<Real>& c,
-                                                        const Normal<Real>& normal) {
+                                                             const Normal<Real>& normal) {
     return {c.kt_coef * normal.sqrt_dn, c.gt_coef * dmath::sqrt(normal.sqrt_dn)};
   }
 

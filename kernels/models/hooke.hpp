@@ -15,7 +15,6 @@
 
 #include <Kokkos_Core.hpp>
 #include <cmath>
-#include <limits>
 
 #include "contact_settings.hpp"
 #include "device/device_math.hpp"
@@ -32,7 +31,6 @@ struct HookeModel {
   struct Coefficients {
     Real kn, gn, kt, gt;
     Real friction;
-    Real normal_force_floor;  // 0 with limit_force (no attraction), -max otherwise
   };
   template <class Real>
   struct Normal {
@@ -59,14 +57,13 @@ struct HookeModel {
     c.kn = c.kt = Real(stiffness(p, o));
     c.gn = c.gt = Real(damping(p, o));
     c.friction = Real(p.friction);
-    c.normal_force_floor = o.limit_force ? Real(0) : -std::numeric_limits<Real>::max();
     return c;
   }
 
   template <class Real>
   KOKKOS_FORCEINLINE_FUNCTION static Normal<Real> normal(const Coefficients<Real>& c, Real dn,
                                                          Real vn) {
-    return {dmath::max(c.kn * dn - c.gn * vn, c.normal_force_floor)};
+    return {c.kn * dn - c.gn * vn};
   }
 
   template <class Real>

@@ -59,12 +59,23 @@ decltype(auto) with_law_of_kind(ContactModelKind kind, F& f, TypeList<Law, Rest.
   }
 }
 
+template <class F, class... Laws>
+void each_law(F& f, TypeList<Laws...>) {
+  (f(Laws{}), ...);
+}
+
 }  // namespace models_detail
 
 static_assert(models_detail::every_law_checked(ContactLaws{}));
 static_assert(models_detail::every_name_has_one_law(),
               "every contact model of core/variant_names.hpp needs exactly one law in "
               "ContactLaws (kernels/models/models.hpp)");
+
+// Calls f(Law{}) for every law of ContactLaws, in order (the tests run over the list).
+template <class F>
+void for_each_contact_law(F&& f) {
+  models_detail::each_law(f, ContactLaws{});
+}
 
 // Calls f(Model{}) for the scene's contact law.
 template <class F>

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "models/clamped_normal.hpp"
 #include "models/models.hpp"
 #include "models/time_step_guard.hpp"
 #include "solver/kick.hpp"
@@ -26,6 +27,7 @@ template <class Model>
 double one_impact(const PairProperties& p, const ContactOptions& o, double dt, double speed,
                   double phase) {
   const auto c = Model::template coefficients<double>(p, o);
+  const double floor = normal_force_floor<double>(o);
   const double inv_m = 1.0 / p.mass_star, half = 0.5 * dt;
   // The drift that ends the first step overlaps by phase x speed x dt.
   double gap = (1.0 - phase) * speed * dt, rate = -speed, force = 0;
@@ -36,7 +38,7 @@ double one_impact(const PairProperties& p, const ContactOptions& o, double dt, d
   for (long step = 0; step < max_steps; ++step) {
     half_kick(rate, half, force, inv_m, 0.0);
     gap += dt * rate;
-    force = gap < 0 ? Model::normal(c, -gap, rate).force : 0.0;
+    force = gap < 0 ? clamped_normal<Model>(c, -gap, rate, floor).force : 0.0;
     half_kick(rate, half, force, inv_m, 0.0);
     if (gap < 0) touched = true;
     if (touched && gap >= 0) return rate / speed;

@@ -10,6 +10,7 @@
 #include <Kokkos_Core.hpp>
 
 #include "device/vec.hpp"
+#include "models/clamped_normal.hpp"
 #include "models/tangential_spring.hpp"
 #include "neighbours/pair_loop.hpp"
 #include "particles/particle_store.hpp"
@@ -105,7 +106,8 @@ struct ContactForceKernel {
           const Vec<Dim, Real> n = (Real(1) / r) * dx;
           const Vec<Dim, Real> vrel = vi - velocity(j);
           const auto& c = table.pair(si, sj);
-          const auto normal = Model::normal(c, rsum - r, dot(vrel, n));
+          const auto normal =
+              clamped_normal<Model>(c, rsum - r, dot(vrel, n), table.normal_force_floor);
           Vec<Dim, Real> pair_force = normal.force * n;
           if constexpr (V::friction) {
             const int slot = Mode != ForceMode::virial ? claim_slot(i, p.id(j), used_slots)
@@ -161,7 +163,7 @@ struct ContactForceKernel {
       return;
     }
     const auto& c = table.obstacle(si);
-    const auto normal = Model::normal(c, dn, dot(vi, n));
+    const auto normal = clamped_normal<Model>(c, dn, dot(vi, n), table.normal_force_floor);
     force += normal.force * n;
     if constexpr (V::friction) {
       const Vec<2, Real> vc = contact_point_velocity(vi, n, ri * p.omega(i));

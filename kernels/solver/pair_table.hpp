@@ -6,6 +6,7 @@
 #include <Kokkos_Core.hpp>
 
 #include "device/host_mirror.hpp"
+#include "models/clamped_normal.hpp"
 #include "solver_setup.hpp"
 
 namespace granshock {
@@ -19,6 +20,8 @@ struct PairTable {
   Kokkos::View<Real*, MemSpace> inv_inertia;
   Kokkos::View<Coefficients**, MemSpace> pair;     // [species_i][species_j]
   Kokkos::View<Coefficients*, MemSpace> obstacle;  // [species] against the obstacle
+  // The floor of every normal force (models/clamped_normal.hpp): contact.limit_force.
+  Real normal_force_floor = 0;
 
   // Paths: the caller's (device/host_mirror.hpp).
   template <class Paths>
@@ -36,6 +39,7 @@ struct PairTable {
     auto pair = host_mirror<Paths>(t.pair);
     auto obstacle = host_mirror<Paths>(t.obstacle);
     const ContactOptions& o = s.contacts.options;
+    t.normal_force_floor = granshock::normal_force_floor<Real>(o);
     for (int a = 0; a < n; ++a) {
       radius(a) = Real(s.species[a].radius_m());
       inv_mass(a) = Real(1.0 / s.species[a].mass_kg());

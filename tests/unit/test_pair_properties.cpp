@@ -6,7 +6,9 @@
 #include <cmath>
 
 #include "core/pair_properties.hpp"
+#include "models/clamped_normal.hpp"
 #include "models/hertz.hpp"
+#include "models/models.hpp"
 #include "models/time_step_guard.hpp"
 
 using namespace granshock;
@@ -56,12 +58,30 @@ TEST(PairProperties, RestitutionOneMeansNoDamping) {
   EXPECT_EQ(c.gt_coef, 0.0);
 }
 
-TEST(PairProperties, LimitForceSetsTheFloor) {
+// The clamp is the solver's, once for every law (models/clamped_normal.hpp): at the end of
+// a damped contact (overlap small, the pair parting fast) every law's own force pulls,
+// and limit_force clamps it at 0; without it the force stays as the law gives it.
+TEST(PairProperties, LimitForceClampsEveryLaw) {
   const PairProperties p = particle_pair(kSteel, kSteel, 0.5, 0.0);
   ContactOptions limited;
   limited.limit_force = true;
-  EXPECT_EQ(HertzModel::coefficients<double>(p, limited).normal_force_floor, 0.0);
-  EXPECT_LT(HertzModel::coefficients<double>(p, ContactOptions{}).normal_force_floor, -1e300);
+  EXPECT_EQ(normal_force_floor<double>(limited), 0.0);
+  EXPECT_LT(normal_force_floor<double>(ContactOptions{}), -1e300);
+  int laws = 0;
+  for_each_contact_law([&](auto law) {
+    using Law = decltype(law);
+    ++laws;
+    const auto c = Law::template coefficients<double>(p, ContactOptions{});
+    const double dn = 1e-9, vn = 5.0;  // barely touching, parting at 5 m/s
+    const double own = Law::normal(c, dn, vn).force;
+    EXPECT_LT(own, 0) << Law::name;
+    EXPECT_EQ(clamped_normal<Law>(c, dn, vn, normal_force_floor<double>(limited)).force, 0.0)
+        << Law::name;
+    EXPECT_EQ(clamped_normal<Law>(c, dn, vn, normal_force_floor<double>(ContactOptions{})).force,
+              own)
+        << Law::name;
+  });
+  EXPECT_EQ(laws, int(std::size(Choices<ContactModelKind>::table)));
 }
 
 TEST(CollisionTime, HertzFormula) {
