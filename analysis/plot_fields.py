@@ -51,6 +51,8 @@ class Run:
             self.back = float(attrs["obstacle_back"])
             shape = attrs.get("obstacle_shape", "cylinder")
             self.shape = shape.decode() if isinstance(shape, bytes) else str(shape)
+            # The shape's own outline (files before it have none: drawn from the sizes).
+            self.outline = f["obstacle/outline"][...] if "obstacle/outline" in f else None
             mass_definition = attrs["mass_definition"]
             self.mass_definition = (mass_definition.decode() if isinstance(mass_definition, bytes)
                                     else str(mass_definition))
@@ -107,7 +109,9 @@ class Run:
         style = dict(facecolor="0.75", edgecolor="k", linewidth=0.8, zorder=3)
         x, half = self.xc / self.d, self.diameter / (2 * self.d)
         face, back = self.face / self.d, self.back / self.d
-        if self.shape == "wedge":
+        if self.outline is not None:
+            ax.add_patch(Polygon(self.outline / self.d, closed=True, **style))
+        elif self.shape == "wedge":
             ax.add_patch(Polygon([(x, face), (x + half, back), (x - half, back)], **style))
         elif self.shape == "plate":
             ax.add_patch(Rectangle((x - half, face), 2 * half, back - face, **style))

@@ -30,7 +30,9 @@ struct Choices<ObstacleShape> {
   static constexpr ChoiceName<ObstacleShape> table[] = {
       {ObstacleShape::cylinder, "cylinder", "a cylinder with its axis along z"},
       {ObstacleShape::wedge, "wedge", "a symmetric wedge, its tip upstream (a triangular prism)"},
-      {ObstacleShape::plate, "plate", "a flat plate or square block facing the flow"},
+      {ObstacleShape::plate, "plate", "a flat plate or rectangular block facing the flow"},
+      {ObstacleShape::square, "square",
+       "a square block, a face or (rotated 45 degrees) a corner upstream"},
   };
 };
 

@@ -126,6 +126,17 @@ void write_content(hid_t file, const FieldsFileContent& c) {
     Handle group = h5::open_group(file, base);
     h5::write_attribute(group.get(), "description", set.description);
   }
+  if (!c.obstacle_outline.empty()) {
+    // What fields.xmf draws and the figures fill (analysis/plot_fields.py): the shape's own
+    // outline, so that no reader has to know how a shape is drawn.
+    std::vector<double> points;
+    for (const auto& p : c.obstacle_outline) points.insert(points.end(), {p[0], p[1]});
+    h5::write_dataset(file, "/obstacle/outline", points,
+                      {static_cast<hsize_t>(c.obstacle_outline.size()), 2});
+    describe(file, "/obstacle/outline", "m",
+             "the obstacle's cross-section as a closed polygon (x, y), counter-clockwise, "
+             "the first point not repeated; a cylinder as 72 points on its circle");
+  }
   for (const auto& s : c.series) {
     h5::write_dataset(file, s.path, s.values, {static_cast<hsize_t>(s.values.size())});
     describe(file, s.path, s.unit, s.description);

@@ -702,138 +702,149 @@ const Table kInflow = table("inflow", kInflowKeys);
 
 // ---- [obstacle] --------------------------------------------------------------------------
 
-// A size key of one shape (docs/scene_format.md, [obstacle]): read when the obstacle has
-// that shape, refused when given for another.
-bool shape_key(TableReader& r, const Reading& st, const std::string& k, ObstacleShape owner) {
-  if (st.obstacle.shape == owner) return true;
-  if (const toml::node* n = r.node(k))
-    fail(r.key(k), show(*n),
-         fmt::format("is a key of obstacle.shape = \"{}\", and the shape is \"{}\"",
-                     choice_name(owner), choice_name(st.obstacle.shape)));
-  return false;
-}
-
-// A side of a shape at least a particle wide: the contact law treats the obstacle as a
-// wall (core/pair_properties.hpp).
-double obstacle_side(TableReader& r, const Reading& st, const std::string& k) {
-  const double side = r.positive_length(k);
-  if (side < st.s.setup.max_diameter())
-    fail(r.key(k), fmt::format("{} m", side),
-         fmt::format("must be at least the largest particle diameter ({} m): the contact "
-                     "law treats the obstacle as a wall",
-                     st.s.setup.max_diameter()));
-  return side;
-}
-
-const Key kObstacleKeys[] = {
-    {"shape", "string",
-     [](TableReader& r, Reading& st, const std::string& k) {
-       st.obstacle.shape = read_choice(r, k, ObstacleShape::cylinder);
-     },
-     [](const Writing& w, toml::table& t, const std::string& k) {
-       t.insert(k, choice_name(w.s.setup.obstacle->shape));
-     }},
-    {"diameter", "length",
-     [](TableReader& r, Reading& st, const std::string& k) {
-       if (!shape_key(r, st, k, ObstacleShape::cylinder)) return;
-       st.obstacle.diameter_m = r.positive_length(k);
-       // The contact law treats the cylinder as a wall of infinite radius
-       // (core/pair_properties.hpp).
-       if (st.obstacle.diameter_m < st.s.setup.max_diameter())
-         fail(r.key(k), fmt::format("{} m", st.obstacle.diameter_m),
-              fmt::format("must be at least the largest particle diameter ({} m): the contact "
-                          "law treats the cylinder as a wall",
-                          st.s.setup.max_diameter()));
-     },
-     [](const Writing& w, toml::table& t, const std::string& k) {
-       if (w.s.setup.obstacle->shape == ObstacleShape::cylinder)
-         t.insert(k, w.s.setup.obstacle->diameter_m);
-     }},
-    {"half_angle", "number (degrees)",
-     [](TableReader& r, Reading& st, const std::string& k) {
-       if (shape_key(r, st, k, ObstacleShape::wedge))
-         st.obstacle.half_angle_deg = r.number_in(k, 0, 90, true, true);
-     },
-     [](const Writing& w, toml::table& t, const std::string& k) {
-       if (w.s.setup.obstacle->shape == ObstacleShape::wedge)
-         t.insert(k, w.s.setup.obstacle->half_angle_deg);
-     }},
-    {"length", "length",
-     [](TableReader& r, Reading& st, const std::string& k) {
-       if (shape_key(r, st, k, ObstacleShape::wedge))
-         st.obstacle.length_m = obstacle_side(r, st, k);
-     },
-     [](const Writing& w, toml::table& t, const std::string& k) {
-       if (w.s.setup.obstacle->shape == ObstacleShape::wedge)
-         t.insert(k, w.s.setup.obstacle->length_m);
-     }},
-    {"width", "length",
-     [](TableReader& r, Reading& st, const std::string& k) {
-       if (shape_key(r, st, k, ObstacleShape::plate)) st.obstacle.width_m = obstacle_side(r, st, k);
-     },
-     [](const Writing& w, toml::table& t, const std::string& k) {
-       if (w.s.setup.obstacle->shape == ObstacleShape::plate)
-         t.insert(k, w.s.setup.obstacle->width_m);
-     }},
-    {"thickness", "length",
-     [](TableReader& r, Reading& st, const std::string& k) {
-       if (shape_key(r, st, k, ObstacleShape::plate))
-         st.obstacle.thickness_m = obstacle_side(r, st, k);
-     },
-     [](const Writing& w, toml::table& t, const std::string& k) {
-       if (w.s.setup.obstacle->shape == ObstacleShape::plate)
-         t.insert(k, w.s.setup.obstacle->thickness_m);
-     }},
-    {"material", "string",
-     [](TableReader& r, Reading& st, const std::string& k) {
-       st.obstacle.material = material_named(st, r.key(k), r.string(k, "aluminium"));
-     },
-     [](const Writing& w, toml::table& t, const std::string& k) {
-       t.insert(k, w.s.setup.obstacle->material.name);
-     }},
-    {"centre", "[length, length]",
-     [](TableReader& r, Reading& st, const std::string& k) {
-       const Box& box = st.s.setup.box;
-       st.obstacle.centre = {0.5 * box.hi[0], 0.5 * box.hi[1], 0};
-       if (const toml::node* n = r.node(k)) {
-         const toml::array* a = n->as_array();
-         if (!a || a->size() != 2) fail(r.key(k), show(*n), "must be [x, y] (two lengths)");
-         st.obstacle.centre[0] = r.length_of(*a->get(0), r.key(k) + "[0]");
-         st.obstacle.centre[1] = r.length_of(*a->get(1), r.key(k) + "[1]");
-       }
-     },
-     [](const Writing& w, toml::table& t, const std::string& k) {
-       const auto& c = w.s.setup.obstacle->centre;
-       t.insert(k, toml::array{c[0], c[1]});
-     }},
+// The size keys of the shapes (docs/scene_format.md, [obstacle]), each declared once in its
+// shape's header (`keys`, kernels/models/shape_key.hpp) and found here by name: a key is
+// read into Obstacle::size when the obstacle has a shape that owns it, refused when it is
+// given for another shape, and written back for its own shape only.
+struct ShapeKeyOf {
+  ObstacleShape shape;
+  std::size_t index;
+  const ShapeKey* key;
 };
+
+// The shape's key named `name`, if it has one.
+std::optional<ShapeKeyOf> shape_key_named(ObstacleShape shape, const std::string& name) {
+  return with_obstacle_shape(shape, [&](auto s) -> std::optional<ShapeKeyOf> {
+    for (std::size_t i = 0; i < std::size(s.keys); ++i)
+      if (name == s.keys[i].name) return ShapeKeyOf{shape, i, &s.keys[i]};
+    return std::nullopt;
+  });
+}
+
+// The shapes that own the key `name`, as a refusal names them.
+std::string owners_of(const std::string& name) {
+  std::vector<std::string> owners;
+  for_each_obstacle_shape([&](auto s) {
+    if (shape_key_named(s.kind, name)) owners.push_back(fmt::format("\"{}\"", s.name));
+  });
+  return fmt::format("{}", fmt::join(owners, " or "));
+}
+
+void read_shape_key(TableReader& r, Reading& st, const std::string& k) {
+  const std::optional<ShapeKeyOf> own = shape_key_named(st.obstacle.shape, k);
+  if (!own) {
+    if (const toml::node* n = r.node(k))
+      fail(r.key(k), show(*n),
+           fmt::format("is a key of obstacle.shape = {}, and the shape is \"{}\"", owners_of(k),
+                       choice_name(st.obstacle.shape)));
+    return;
+  }
+  const ShapeKey& key = *own->key;
+  const std::optional<double> fallback =
+      key.required() ? std::nullopt : std::optional<double>(key.fallback);
+  double value = 0;
+  if (key.kind == ShapeKey::Kind::angle) {
+    value = r.number_in(k, key.lo, key.hi, !key.lo_closed, true, fallback);
+  } else {
+    value = r.positive_length(k, fallback);
+    if (value < st.s.setup.max_diameter())
+      fail(r.key(k), fmt::format("{} m", value),
+           fmt::format("must be at least the largest particle diameter ({} m): the contact "
+                       "law treats the {} as a wall",
+                       st.s.setup.max_diameter(), choice_name(st.obstacle.shape)));
+  }
+  st.obstacle.size[own->index] = value;
+}
+
+void write_shape_key(const Writing& w, toml::table& t, const std::string& k) {
+  const Obstacle& o = *w.s.setup.obstacle;
+  if (const std::optional<ShapeKeyOf> own = shape_key_named(o.shape, k))
+    t.insert(k, o.size[own->index]);
+}
+
+const char* shape_key_type(ShapeKey::Kind kind) {
+  return kind == ShapeKey::Kind::angle ? "number (degrees)" : "length";
+}
+
+// [obstacle]'s keys: the shape, every shape's size keys (each name once, in the order of
+// ObstacleShapes), the material and the centre.
+std::vector<Key> obstacle_keys() {
+  std::vector<Key> keys = {
+      {"shape", "string",
+       [](TableReader& r, Reading& st, const std::string& k) {
+         st.obstacle.shape = read_choice(r, k, ObstacleShape::cylinder);
+       },
+       [](const Writing& w, toml::table& t, const std::string& k) {
+         t.insert(k, choice_name(w.s.setup.obstacle->shape));
+       }},
+  };
+  for_each_obstacle_shape([&](auto s) {
+    for (const ShapeKey& key : s.keys) {
+      const auto known = std::find_if(
+          keys.begin(), keys.end(), [&](const Key& k) { return k.name == std::string(key.name); });
+      if (known != keys.end()) {
+        if (std::string(known->type) != shape_key_type(key.kind))
+          throw std::logic_error(std::string("two obstacle shapes give the key ") + key.name +
+                                 " different types");
+        continue;
+      }
+      keys.push_back({key.name, shape_key_type(key.kind), read_shape_key, write_shape_key});
+    }
+  });
+  keys.push_back({"material", "string",
+                  [](TableReader& r, Reading& st, const std::string& k) {
+                    st.obstacle.material = material_named(st, r.key(k), r.string(k, "aluminium"));
+                  },
+                  [](const Writing& w, toml::table& t, const std::string& k) {
+                    t.insert(k, w.s.setup.obstacle->material.name);
+                  }});
+  keys.push_back({"centre", "[length, length]",
+                  [](TableReader& r, Reading& st, const std::string& k) {
+                    const Box& box = st.s.setup.box;
+                    st.obstacle.centre = {0.5 * box.hi[0], 0.5 * box.hi[1], 0};
+                    if (const toml::node* n = r.node(k)) {
+                      const toml::array* a = n->as_array();
+                      if (!a || a->size() != 2)
+                        fail(r.key(k), show(*n), "must be [x, y] (two lengths)");
+                      st.obstacle.centre[0] = r.length_of(*a->get(0), r.key(k) + "[0]");
+                      st.obstacle.centre[1] = r.length_of(*a->get(1), r.key(k) + "[1]");
+                    }
+                  },
+                  [](const Writing& w, toml::table& t, const std::string& k) {
+                    const auto& c = w.s.setup.obstacle->centre;
+                    t.insert(k, toml::array{c[0], c[1]});
+                  }});
+  return keys;
+}
+const std::vector<Key> kObstacleKeys = obstacle_keys();
+
 // The least gap an obstacle leaves across the periodic channel, in particle diameters.
 constexpr double kMinObstacleGapDiameters = 3;
 
 // The shape's size keys with their values, as a refusal names them.
 std::string obstacle_sizes(const Obstacle& c) {
-  switch (c.shape) {
-    case ObstacleShape::cylinder:
-      return fmt::format("diameter {} m", c.diameter_m);
-    case ObstacleShape::wedge:
-      return fmt::format("half_angle {} deg, length {} m", c.half_angle_deg, c.length_m);
-    case ObstacleShape::plate:
-      return fmt::format("width {} m, thickness {} m", c.width_m, c.thickness_m);
-  }
-  return {};
+  return with_obstacle_shape(c, [&](auto s) {
+    std::vector<std::string> sizes;
+    for (std::size_t i = 0; i < std::size(s.keys); ++i)
+      sizes.push_back(fmt::format("{} {} {}", s.keys[i].name, c.size[i],
+                                  s.keys[i].kind == ShapeKey::Kind::angle ? "deg" : "m"));
+    return fmt::format("{}", fmt::join(sizes, ", "));
+  });
 }
 
-// The keys that set the shape's width across the flow (the D of delta/D).
+// The keys that set the shape's width across the flow (the D of delta/D): those of its
+// size keys whose change moves the width (a plate's width, not its thickness).
 std::string frontal_width_keys(const Obstacle& c) {
-  switch (c.shape) {
-    case ObstacleShape::cylinder:
-      return "obstacle.diameter";
-    case ObstacleShape::wedge:
-      return "obstacle.half_angle' and 'obstacle.length";
-    case ObstacleShape::plate:
-      return "obstacle.width";
-  }
-  return "obstacle";
+  return with_obstacle_shape(c, [&](auto s) {
+    std::vector<std::string> keys;
+    for (std::size_t k = 0; k < std::size(s.keys); ++k) {
+      Obstacle changed = c;
+      changed.size[k] = c.size[k] == 0 ? 1.0 : 1.01 * c.size[k];
+      if (obstacle_frontal_width(changed) != obstacle_frontal_width(c))
+        keys.push_back(std::string("obstacle.") + s.keys[k].name);
+    }
+    return fmt::format("{}", fmt::join(keys, "' and '"));
+  });
 }
 
 void after_obstacle(Reading& st) {
@@ -860,7 +871,7 @@ void after_obstacle(Reading& st) {
                     choice_name(c.shape), gap / d, kMinObstacleGapDiameters));
   st.s.setup.obstacle = c;
 }
-const Table kObstacle = table("obstacle", kObstacleKeys, after_obstacle);
+const Table kObstacle = {"obstacle", kObstacleKeys.data(), kObstacleKeys.size(), after_obstacle};
 
 // ---- [time] ------------------------------------------------------------------------------
 

@@ -9,6 +9,7 @@
 
 #include "core/solver.hpp"
 #include "core/user_error.hpp"
+#include "kernels/models/obstacle_shapes.hpp"
 
 namespace {
 constexpr double kDiameter = 1e-3;  // the paper's d
@@ -59,8 +60,8 @@ Geometry build(const SolverSetup& scene, int a, int b, double dt, const ImpactPl
   g.setup.box.lo = {place.centre[0] - half, place.centre[1] - half, 0};
   g.setup.box.hi = {place.centre[0] + half, place.centre[1] + half, dmax};
   if (g.on_obstacle)
-    g.setup.obstacle =
-        Obstacle{ObstacleShape::cylinder, g.at(0), 2 * g.cylinder_radius, scene.obstacle->material};
+    g.setup.obstacle = make_obstacle(ObstacleShape::cylinder, g.at(0), {2 * g.cylinder_radius},
+                                     scene.obstacle->material);
   return g;
 }
 
@@ -113,7 +114,7 @@ CollisionResult collide_species(const SolverSetup& given, int a, int b, double s
   // A scene without an obstacle collides with an aluminium cylinder: its pair properties
   // (softening, calibrated damping) then come from SolverSetup like any obstacle's.
   if (b < 0 && !scene.obstacle)
-    scene.obstacle = Obstacle{ObstacleShape::cylinder, {}, 0, aluminium()};
+    scene.obstacle = make_obstacle(ObstacleShape::cylinder, {}, {0}, aluminium());
   const PairProperties props = b >= 0 ? scene.pair(a, b) : scene.obstacle_pair(a);
   CollisionResult r;
   r.pair = props.name;
@@ -240,7 +241,7 @@ CollisionResult run_head_on_collision(const CollisionOptions& o) {
   paper.contacts.options.characteristic_velocity_m_per_s =
       o.characteristic_velocity.value_or(o.speed_m_per_s);
   paper.precision = o.precision;
-  paper.obstacle = Obstacle{ObstacleShape::cylinder, {0, 0, 0}, 10 * kDiameter, aluminium()};
+  paper.obstacle = make_obstacle(ObstacleShape::cylinder, {0, 0, 0}, {10 * kDiameter}, aluminium());
   const auto dash = o.pair.find('-');
   const std::string second = o.pair.substr(dash + 1);
   const int a = paper_species(o.pair.substr(0, dash));

@@ -1,9 +1,11 @@
 // The obstacle shapes granshock knows, and the host-side questions asked of a scene's
-// obstacle (docs/design.md, "Obstacles"): each answered by the shape's own header. Plain
-// C++ without Kokkos: the scene reader, the checkpoint checks, the inflow and the field
-// analysis ask here, and no file outside a shape's header knows how a shape is measured.
-// A new shape is one header, its enumerator and name (core/obstacle.hpp,
-// core/variant_names.hpp) and one entry in ObstacleShapes below.
+// obstacle (docs/design.md, "Obstacles"). A shape's header gives its size keys and its
+// outline; every measure below follows from the outline (kernels/models/shape_outline.hpp),
+// so no file outside a shape's header knows how a shape is measured. Plain C++ without
+// Kokkos: the scene reader, the checkpoint checks, the inflow and the field analysis ask
+// here. A new shape is one header, its enumerator and name (core/obstacle.hpp,
+// core/variant_names.hpp) and one entry in ObstacleShapes below (docs/design.md, "Adding
+// an obstacle shape").
 #pragma once
 
 #include <cmath>
@@ -13,7 +15,9 @@
 #include "core/variant_names.hpp"
 #include "kernels/models/cylinder.hpp"
 #include "kernels/models/plate.hpp"
+#include "kernels/models/shape_key.hpp"
 #include "kernels/models/shape_outline.hpp"
+#include "kernels/models/square.hpp"
 #include "kernels/models/wedge.hpp"
 
 namespace granshock {
@@ -21,7 +25,7 @@ namespace granshock {
 template <class... Shapes>
 struct ShapeList {};
 
-using ObstacleShapes = ShapeList<CylinderShape, WedgeShape, PlateShape>;
+using ObstacleShapes = ShapeList<CylinderShape, WedgeShape, PlateShape, SquareShape>;
 
 namespace shapes_detail {
 
@@ -36,6 +40,11 @@ constexpr bool every_name_has_one_shape() {
   return true;
 }
 
+template <class... Shapes>
+constexpr bool every_shape_fits_its_sizes(ShapeList<Shapes...>) {
+  return ((std::size(Shapes::keys) <= std::size_t(kMaxShapeSizes)) && ...);
+}
+
 template <class F, class Shape, class... Rest>
 decltype(auto) with_shape_of_kind(ObstacleShape kind, F& f, ShapeList<Shape, Rest...>) {
   if constexpr (sizeof...(Rest) == 0) {
@@ -47,16 +56,50 @@ decltype(auto) with_shape_of_kind(ObstacleShape kind, F& f, ShapeList<Shape, Res
   }
 }
 
+template <class F, class... Shapes>
+void each_shape(F& f, ShapeList<Shapes...>) {
+  (f(Shapes{}), ...);
+}
+
 }  // namespace shapes_detail
 
 static_assert(shapes_detail::every_name_has_one_shape(),
               "every obstacle shape of core/variant_names.hpp needs exactly one type in "
               "ObstacleShapes (kernels/models/obstacle_shapes.hpp)");
+static_assert(shapes_detail::every_shape_fits_its_sizes(ObstacleShapes{}),
+              "a shape has more size keys than Obstacle::size holds: raise kMaxShapeSizes "
+              "(core/obstacle.hpp)");
 
 // Calls f(Shape{}) for the obstacle's shape.
 template <class F>
+decltype(auto) with_obstacle_shape(ObstacleShape kind, F&& f) {
+  return shapes_detail::with_shape_of_kind(kind, f, ObstacleShapes{});
+}
+template <class F>
 decltype(auto) with_obstacle_shape(const Obstacle& o, F&& f) {
-  return shapes_detail::with_shape_of_kind(o.shape, f, ObstacleShapes{});
+  return with_obstacle_shape(o.shape, f);
+}
+// Calls f(Shape{}) for every shape, in the order of ObstacleShapes.
+template <class F>
+void for_each_obstacle_shape(F&& f) {
+  shapes_detail::each_shape(f, ObstacleShapes{});
+}
+
+// An obstacle of `shape` at `centre` with the sizes in the order of the shape's keys (the
+// keys' defaults where `sizes` stops short).
+inline Obstacle make_obstacle(ObstacleShape shape, std::array<double, 3> centre,
+                              std::initializer_list<double> sizes, Material material = {}) {
+  Obstacle o;
+  o.shape = shape;
+  o.centre = centre;
+  o.material = material;
+  with_obstacle_shape(shape, [&](auto s) {
+    if (sizes.size() > std::size(s.keys))
+      throw std::logic_error("make_obstacle: more sizes than the shape has keys");
+    for (std::size_t k = 0; k < std::size(s.keys); ++k)
+      o.size[k] = k < sizes.size() ? sizes.begin()[k] : s.keys[k].fallback;
+  });
+  return o;
 }
 
 // The cross-section the force kernel and insertion work with (shape_outline.hpp).
@@ -65,15 +108,15 @@ inline ShapeOutline obstacle_outline(const Obstacle& o) {
 }
 // Across the flow (x): the D of delta/D (docs/fields.md).
 inline double obstacle_frontal_width(const Obstacle& o) {
-  return with_obstacle_shape(o, [&](auto s) { return s.frontal_width(o); });
+  return outline_extent(obstacle_outline(o), 0);
 }
 // Along the flow (y): the shape spans centre +- half of it.
 inline double obstacle_streamwise_length(const Obstacle& o) {
-  return with_obstacle_shape(o, [&](auto s) { return s.streamwise_length(o); });
+  return outline_extent(obstacle_outline(o), 1);
 }
 // Its cross-section's area (m^2).
 inline double obstacle_area(const Obstacle& o) {
-  return with_obstacle_shape(o, [&](auto s) { return s.area(o); });
+  return outline_area(obstacle_outline(o));
 }
 // y of the upstream face on the stagnation line x = centre[0].
 inline double obstacle_upstream_face(const Obstacle& o) {
@@ -87,7 +130,9 @@ inline double obstacle_downstream_face(const Obstacle& o) {
 inline bool obstacle_upstream_surface(const Obstacle& o, double x, double& y) {
   const double dx = x - o.centre[0];
   if (!(std::abs(dx) < 0.5 * obstacle_frontal_width(o))) return false;
-  y = o.centre[1] + with_obstacle_shape(o, [&](auto s) { return s.upstream_surface(o, dx); });
+  double from_centre = 0;
+  if (!outline_upstream_surface(obstacle_outline(o), dx, from_centre)) return false;
+  y = o.centre[1] + from_centre;
   return true;
 }
 // The signed distance of (x, y) from the surface: negative inside.
@@ -98,7 +143,8 @@ inline double obstacle_distance(const Obstacle& o, double x, double y) {
 // insertion's keep-out zone takes from the inflow's free area.
 inline double obstacle_kept_out_area(const Obstacle& o, double clearance, double y_lo,
                                      double y_hi) {
-  return with_obstacle_shape(o, [&](auto s) { return s.kept_out_area(o, clearance, y_lo, y_hi); });
+  return outline_kept_out_area(obstacle_outline(o), clearance, y_lo - o.centre[1],
+                               y_hi - o.centre[1]);
 }
 
 }  // namespace granshock

@@ -95,6 +95,55 @@ inline double outline_distance(const ShapeOutline& s, double x, double y) {
   return deepest <= 0 ? deepest : outside;
 }
 
+// What the host asks of a shape, derived here from its outline and nowhere else, so that
+// the frontal width (the D of delta/D), the length along the flow, the area and the
+// upstream surface cannot disagree with the cross-section the kernels collide with
+// (tests/shapes/test_obstacle_geometry.cpp checks them against each shape's closed forms
+// and against outline_distance).
+
+// The extent along x (across the flow; `axis` 0) or y (along it; `axis` 1).
+inline double outline_extent(const ShapeOutline& s, int axis) {
+  if (s.kind == ShapeOutline::Kind::disk) return 2 * s.radius;
+  double lo = s.corner[0][axis], hi = lo;
+  for (int c = 1; c < s.corners; ++c) {
+    lo = std::min(lo, s.corner[c][axis]);
+    hi = std::max(hi, s.corner[c][axis]);
+  }
+  return hi - lo;
+}
+
+// The area of the cross-section: pi R^2, or the polygon's by the shoelace formula.
+inline double outline_area(const ShapeOutline& s) {
+  if (s.kind == ShapeOutline::Kind::disk) return M_PI * s.radius * s.radius;
+  double twice = 0;
+  for (int c = 0; c < s.corners; ++c) {
+    const auto& a = s.corner[c];
+    const auto& b = s.corner[(c + 1) % s.corners];
+    twice += outline_detail::cross(a[0], a[1], b[0], b[1]);
+  }
+  return 0.5 * twice;
+}
+
+// The upstream (lowest y) point of the outline at the lateral offset x from the centre,
+// relative to the centre; false where the line x = const misses the outline.
+inline bool outline_upstream_surface(const ShapeOutline& s, double x, double& y) {
+  if (s.kind == ShapeOutline::Kind::disk) {
+    if (!(std::abs(x) < s.radius)) return false;
+    y = -std::sqrt(s.radius * s.radius - x * x);
+    return true;
+  }
+  bool found = false;
+  for (int c = 0; c < s.corners; ++c) {
+    const auto& a = s.corner[c];
+    const auto& b = s.corner[(c + 1) % s.corners];
+    if ((a[0] - x) * (b[0] - x) > 0 || a[0] == b[0]) continue;
+    const double at = a[1] + (x - a[0]) / (b[0] - a[0]) * (b[1] - a[1]);
+    if (!found || at < y) y = at;
+    found = true;
+  }
+  return found;
+}
+
 // The area of the polygon grown by `clearance` (the points within `clearance` of it)
 // between the heights y_lo and y_hi, relative to the centre. The grown polygon is the
 // union of the polygon, a disk at each corner and a rectangle on each edge, so its chord
@@ -149,6 +198,21 @@ inline double polygon_kept_out_area(const ShapeOutline& s, double clearance, dou
     }
   }
   return area;
+}
+
+// The area of the slab y in [y_lo, y_hi] (relative to the centre) within `clearance` of
+// the outline: what insertion's keep-out zone takes from the inflow's free area. A disk
+// grown by the clearance is a disk of radius rho, whose area between two horizontal lines
+// is G(y_hi) - G(y_lo) with G(t) = t sqrt(rho^2 - t^2) + rho^2 asin(t/rho).
+inline double outline_kept_out_area(const ShapeOutline& s, double clearance, double y_lo,
+                                    double y_hi) {
+  if (s.kind == ShapeOutline::Kind::polygon) return polygon_kept_out_area(s, clearance, y_lo, y_hi);
+  const double rho = s.radius + clearance;
+  const auto G = [rho](double t) {
+    t = std::clamp(t, -rho, rho);
+    return t * std::sqrt(rho * rho - t * t) + rho * rho * std::asin(t / rho);
+  };
+  return G(y_hi) - G(y_lo);
 }
 
 }  // namespace granshock

@@ -1,26 +1,30 @@
 """The obstacle's cross-section in the x-y plane (docs/scene_format.md, "Obstacle shapes";
-kernels/models/cylinder.hpp, wedge.hpp, plate.hpp): a prism along z, symmetric about
-x = centre[0], spanning centre +- half its size along x and y. The flow runs along +y."""
+kernels/models/cylinder.hpp, wedge.hpp, plate.hpp, square.hpp): a prism along z, symmetric
+about x = centre[0], spanning centre +- half its size along x and y. The flow runs along
++y. A fields.h5 holds the outline granshock collided with (/obstacle/outline); where it
+is there, it is used as it is, so that only a scene without fields needs the shapes
+below."""
 import math
 from dataclasses import dataclass
 
 import numpy as np
 
-# Segments of a cylinder's outline: a multiple of 4, so that it holds the points at its
-# widest (x = xc +- R) and on the axis (y = yc +- R).
-CYLINDER_SEGMENTS = 256
+# Segments of a cylinder's outline: granshock's own (outline_points in
+# kernels/models/shape_outline.hpp, what fields.h5's /obstacle/outline holds), a multiple
+# of 4, so that it holds the points at its widest (x = xc +- R) and on the axis (y = yc +- R).
+CYLINDER_SEGMENTS = 72
 
 
 @dataclass(frozen=True)
 class Obstacle:
     """An obstacle, in m.
 
-    shape: "cylinder", "wedge" or "plate".
+    shape: "cylinder", "wedge", "plate" or "square".
     centre: (x, y), the middle of the shape's extent along x and y.
     frontal_width: D, the width across the flow (what delta/D divides by).
     length: the extent along the flow.
     sizes: the scene's size keys of the shape: {"diameter"}, {"half_angle" (degrees),
-        "length"} or {"width", "thickness"}.
+        "length"}, {"width", "thickness"} or {"side", "rotation" (degrees)}.
     outline: (N, 2) array of (x, y), counter-clockwise and closed (the last row repeats
         the first), ready for plotting.
     face, back: y of the upstream and downstream faces on the axis.
@@ -58,29 +62,34 @@ def corners(shape, sizes):
     if shape == "plate":
         w, t = 0.5 * sizes["width"], 0.5 * sizes["thickness"]
         return np.array([[-w, -t], [w, -t], [w, t], [-w, t]])
-    raise ValueError(f"unknown obstacle shape {shape!r} (cylinder, wedge or plate)")
+    if shape == "square":
+        # The square turned counter-clockwise by its rotation (kernels/models/square.hpp).
+        h, a = 0.5 * sizes["side"], math.radians(sizes.get("rotation", 0.0))
+        c, s = math.cos(a), math.sin(a)
+        return np.array([[c * x - s * y, s * x + c * y]
+                         for x, y in ((-h, -h), (h, -h), (h, h), (-h, h))])
+    raise ValueError(f"unknown obstacle shape {shape!r} (cylinder, wedge, plate or square)")
 
 
-def frontal_width_and_length(shape, sizes):
-    """(D, the width across the flow; the extent along it)."""
-    if shape == "cylinder":
-        return sizes["diameter"], sizes["diameter"]
-    if shape == "wedge":
-        return 2 * sizes["length"] * math.tan(math.radians(sizes["half_angle"])), sizes["length"]
-    return sizes["width"], sizes["thickness"]
-
-
-def make_obstacle(shape, centre, sizes):
-    """An Obstacle of `shape` at `centre` with the scene's size keys `sizes`."""
+def make_obstacle(shape, centre, sizes, outline=None):
+    """An Obstacle of `shape` at `centre` with the scene's size keys `sizes`; its outline
+    (N, 2, not closed, in m) the given one, or else the shape's. Its frontal width and
+    length are the outline's extents, as granshock derives them
+    (kernels/models/shape_outline.hpp)."""
     centre = (float(centre[0]), float(centre[1]))
-    outline = corners(shape, sizes) + np.array(centre)
-    width, length = frontal_width_and_length(shape, sizes)
+    if outline is None:
+        outline = corners(shape, sizes) + np.array(centre)
+    outline = np.asarray(outline, dtype=float)
+    width = float(outline[:, 0].max() - outline[:, 0].min())
+    length = float(outline[:, 1].max() - outline[:, 1].min())
+    if shape == "cylinder":  # the circle's own extent, not its polygon's
+        width = length = float(sizes["diameter"])
     return Obstacle(shape, centre, width, length, dict(sizes),
                     np.vstack([outline, outline[:1]]))
 
 
 SIZE_KEYS = {"cylinder": ["diameter"], "wedge": ["half_angle", "length"],
-             "plate": ["width", "thickness"]}
+             "plate": ["width", "thickness"], "square": ["side", "rotation"]}
 
 
 def obstacle_from_scene(scene):
@@ -90,20 +99,27 @@ def obstacle_from_scene(scene):
     if table is None:
         return None
     shape = table.get("shape", "cylinder")
-    return make_obstacle(shape, table["centre"], {k: float(table[k]) for k in SIZE_KEYS[shape]})
+    if shape not in SIZE_KEYS:
+        raise ValueError(f"unknown obstacle shape {shape!r} ({', '.join(SIZE_KEYS)})")
+    return make_obstacle(shape, table["centre"],
+                         {k: float(table[k]) for k in SIZE_KEYS[shape] if k in table})
 
 
-def obstacle_from_fields_attributes(attributes):
+def obstacle_from_fields_attributes(attributes, outline=None):
     """The obstacle described by fields.h5's root attributes (@obstacle_shape, _xc, _yc,
-    _width, _face, _back), or None when it has none: what a fields directory without the
-    scene knows of it."""
+    _width, _face, _back) and its /obstacle/outline (`outline`, None in files before it),
+    or None when it has none: what a fields directory without the scene knows of it."""
     shape = attributes.get("obstacle_shape", "cylinder")
     width = attributes.get("obstacle_width", math.nan)
     if shape == "none" or not width > 0:
         return None
     length = attributes["obstacle_back"] - attributes["obstacle_face"]
+    centre = (attributes["obstacle_xc"], attributes["obstacle_yc"])
+    if outline is not None:  # the outline granshock collided with; sizes as far as known
+        sizes = {"diameter": width} if shape == "cylinder" else {}
+        return make_obstacle(shape, centre, sizes, outline)
     sizes = {"cylinder": {"diameter": width},
              "wedge": {"half_angle": math.degrees(math.atan(0.5 * width / length)),
                        "length": length},
              "plate": {"width": width, "thickness": length}}[shape]
-    return make_obstacle(shape, (attributes["obstacle_xc"], attributes["obstacle_yc"]), sizes)
+    return make_obstacle(shape, centre, sizes)

@@ -151,4 +151,6 @@ class Run:
         a fields directory."""
         if self.kind == "run":
             return obstacle_from_scene(self.scene)
-        return obstacle_from_fields_attributes(self._fields_attributes)
+        with self._open("fields") as f:
+            outline = f["obstacle/outline"][...] if "obstacle/outline" in f else None
+        return obstacle_from_fields_attributes(self._fields_attributes, outline)

@@ -10,6 +10,7 @@
 
 #include "cases/bow_shock/sampling_plan.hpp"
 #include "io/scene_file.hpp"
+#include "kernels/models/obstacle_shapes.hpp"
 #include "sampling/bin_accumulator.hpp"
 
 using namespace granshock;
@@ -37,7 +38,7 @@ TEST_P(AlignedGrid, TilesTheDomainWithAColumnOnTheAxisAndARowEdgeOnTheFace) {
   const BinLayout& g = plan.layout().grid;
   const Box& box = s.setup.box;
   const Obstacle& c = *s.setup.obstacle;
-  const double width = box.length(0), face = c.centre[1] - 0.5 * c.diameter_m;
+  const double width = box.length(0), face = c.centre[1] - 0.5 * CylinderShape::diameter(c);
 
   // Every column whole, the columns together exactly the periodic width.
   EXPECT_NEAR(g.nx * g.dx, width, 1e-12 * width);

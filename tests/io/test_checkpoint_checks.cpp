@@ -226,7 +226,7 @@ TEST(CheckpointChecks, StateAgainstTheSolver) {
        [](Sample& x) {
          Obstacle o;
          o.centre = {0.030, 0.0405, 0};
-         o.diameter_m = 0.004;
+         o.size[0] = 0.004;
          x.fit.obstacle = o;
        },
        "particle 2 lies inside the obstacle"},

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/solver.hpp"
+#include "kernels/models/obstacle_shapes.hpp"
 #include "models/time_step_guard.hpp"
 
 namespace granshock::test {
@@ -25,7 +26,7 @@ inline SolverSetup wall_setup(ContactModelKind model, double dt) {
   s.contacts.options.limit_force = true;
   s.box.lo = {-0.11, -0.11, 0};
   s.box.hi = {0.11, 0.11, kD};
-  s.obstacle = Obstacle{ObstacleShape::cylinder, {0, 0, 0}, kCylinder, aluminium()};
+  s.obstacle = make_obstacle(ObstacleShape::cylinder, {0, 0, 0}, {kCylinder}, aluminium());
   s.dt = dt;
   return s;
 }

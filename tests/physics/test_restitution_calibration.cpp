@@ -14,6 +14,7 @@
 #include "cases/collision/head_on_collision.hpp"
 #include "core/pair_properties.hpp"
 #include "core/user_error.hpp"
+#include "kernels/models/obstacle_shapes.hpp"
 #include "models/restitution_calibration.hpp"
 #include "models/time_step_guard.hpp"
 
@@ -48,7 +49,7 @@ PairProperties paper_pair(const CollisionOptions& o) {
   SolverSetup paper;
   paper.species = {{"steel", steel(), 1e-3}, {"aluminium", aluminium(), 1e-3}};
   paper.contacts = ContactSettings::uniform(2, o.restitution, 0.0);
-  paper.obstacle = Obstacle{ObstacleShape::cylinder, {0, 0, 0}, 1e-2, aluminium()};
+  paper.obstacle = make_obstacle(ObstacleShape::cylinder, {0, 0, 0}, {1e-2}, aluminium());
   const auto dash = o.pair.find('-');
   const int i = o.pair.substr(0, dash) == "steel" ? 0 : 1;
   const std::string second = o.pair.substr(dash + 1);
@@ -154,7 +155,7 @@ TEST(DiscreteRestitution, ContinuousModeKeepsTheClosedFormDamping) {
   s.species = {{"steel", steel(), 1e-3}, {"aluminium", aluminium(), 1e-3}};
   s.contacts = ContactSettings::uniform(2, 0.5, 0.0);
   s.contacts.restitution[0][1] = s.contacts.restitution[1][0] = 0.7;
-  s.obstacle = Obstacle{ObstacleShape::cylinder, {0, 0, 0}, 1e-2, aluminium()};
+  s.obstacle = make_obstacle(ObstacleShape::cylinder, {0, 0, 0}, {1e-2}, aluminium());
   s.dt = 5e-7;
   s.contacts.calibration_speed_m_per_s = 1.0;
   const RestitutionCalibration c = apply_restitution_mode(s);

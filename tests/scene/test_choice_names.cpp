@@ -127,7 +127,8 @@ const std::map<std::string, ChoiceKey>& choice_keys() {
     k["obstacle.shape"].also_for = {
         {"cylinder", {"obstacle.diameter=\"10 d\""}},
         {"wedge", {"obstacle.half_angle=20", "obstacle.length=\"10 d\""}},
-        {"plate", {"obstacle.width=\"10 d\"", "obstacle.thickness=\"2 d\""}}};
+        {"plate", {"obstacle.width=\"10 d\"", "obstacle.thickness=\"2 d\""}},
+        {"square", {"obstacle.side=\"8 d\""}}};
     return k;
   }();
   return keys;

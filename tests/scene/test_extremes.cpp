@@ -17,6 +17,7 @@
 #include "core/user_error.hpp"
 #include "io/run_file.hpp"
 #include "io/scene_file.hpp"
+#include "kernels/models/obstacle_shapes.hpp"
 #include "run_helpers.hpp"
 #include "scene_fixtures.hpp"
 
@@ -243,7 +244,8 @@ TEST(ExtremesDiagnosis, ACentreInsideTheObstacleIsCountedAndStopsTheRun) {
     const Obstacle& o = *setup.obstacle;
     const double r = 0.5 * setup.species[0].diameter_m;
     HostParticles particles;
-    particles.add({o.centre[0], o.centre[1] - 0.5 * o.diameter_m - r, 0}, {0, 1, 0}, 0,
+    particles.add({o.centre[0], o.centre[1] - 0.5 * CylinderShape::diameter(o) - r, 0}, {0, 1, 0},
+                  0,
                   0);                                                        // touching
     particles.add({o.centre[0] + 4 * r, o.centre[1], 0}, {0, 0, 0}, 0, 1);   // 2 d from the axis
     particles.add({o.centre[0] - 30 * r, o.centre[1], 0}, {0, 0, 0}, 0, 2);  // free

@@ -4,6 +4,7 @@
 
 #include "core/user_error.hpp"
 #include "io/scene_file.hpp"
+#include "kernels/models/obstacle_shapes.hpp"
 #include "scene_fixtures.hpp"
 
 using namespace granshock;
@@ -31,7 +32,7 @@ TEST(SceneFile, ParsesTheSmallSceneWithUnitsOfD) {
   EXPECT_FALSE(s.setup.box.periodic[1]);
   EXPECT_TRUE(s.setup.delete_outside);
   ASSERT_TRUE(s.setup.obstacle.has_value());
-  EXPECT_DOUBLE_EQ(s.setup.obstacle->diameter_m, 0.010);
+  EXPECT_DOUBLE_EQ(CylinderShape::diameter(*s.setup.obstacle), 0.010);
   EXPECT_DOUBLE_EQ(s.setup.obstacle->centre[1], 0.035);
   EXPECT_DOUBLE_EQ(s.inflow.strip_m, 0.002);  // default 2 d
   EXPECT_DOUBLE_EQ(s.inflow.sigma, 0.1);
@@ -46,7 +47,7 @@ TEST(SceneFile, OverridesReplaceAndAddKeys) {
                                   "contact.limit_force=true", "species.1.diameter=\"1 d\""})
           .scene;
   EXPECT_DOUBLE_EQ(s.inflow.speed_m_per_s, 2.375);
-  EXPECT_DOUBLE_EQ(s.setup.obstacle->diameter_m, 0.012);
+  EXPECT_DOUBLE_EQ(CylinderShape::diameter(*s.setup.obstacle), 0.012);
   EXPECT_TRUE(s.setup.contacts.options.limit_force);
 }
 

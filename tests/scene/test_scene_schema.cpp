@@ -82,6 +82,11 @@ const std::map<std::string, NonDefault>& non_default_values() {
       {"obstacle.thickness",
        {{"obstacle.shape=\"plate\"", "obstacle.width=\"8 d\"", "obstacle.thickness=\"1 d\""},
         "diameter = \"10 d\"\n"}},
+      {"obstacle.side",
+       {{"obstacle.shape=\"square\"", "obstacle.side=\"9 d\""}, "diameter = \"10 d\"\n"}},
+      {"obstacle.rotation",
+       {{"obstacle.shape=\"square\"", "obstacle.side=\"6 d\"", "obstacle.rotation=30"},
+        "diameter = \"10 d\"\n"}},
       {"obstacle.centre", {{"obstacle.centre=[\"18 d\", \"30 d\"]"}}},
       {"obstacle.material", {{"obstacle.material=\"steel\""}}},
       {"inflow.area_fraction", {{"inflow.area_fraction=0.2"}}},
@@ -165,11 +170,9 @@ std::vector<std::string> differences(const Scene& a, const Scene& b) {
   if (sa.obstacle && sb.obstacle) {
     d("setup.obstacle.shape", sa.obstacle->shape, sb.obstacle->shape);
     d("setup.obstacle.centre", sa.obstacle->centre, sb.obstacle->centre);
-    d("setup.obstacle.diameter_m", sa.obstacle->diameter_m, sb.obstacle->diameter_m);
-    d("setup.obstacle.half_angle_deg", sa.obstacle->half_angle_deg, sb.obstacle->half_angle_deg);
-    d("setup.obstacle.length_m", sa.obstacle->length_m, sb.obstacle->length_m);
-    d("setup.obstacle.width_m", sa.obstacle->width_m, sb.obstacle->width_m);
-    d("setup.obstacle.thickness_m", sa.obstacle->thickness_m, sb.obstacle->thickness_m);
+    for (int k = 0; k < kMaxShapeSizes; ++k)
+      d("setup.obstacle.size[" + std::to_string(k) + "]", sa.obstacle->size[k],
+        sb.obstacle->size[k]);
     d.material("setup.obstacle.material", sa.obstacle->material, sb.obstacle->material);
   }
   d("setup.dt", sa.dt, sb.dt);

@@ -67,21 +67,11 @@ void expect_rebound(const Obstacle& o, double ax, double ay, double nx, double n
 }
 
 Obstacle wedge() {
-  Obstacle o;
-  o.shape = ObstacleShape::wedge;
-  o.centre = {0.02, 0.03, 0};
-  o.half_angle_deg = 20;
-  o.length_m = 10e-3;
-  return o;
+  return make_obstacle(ObstacleShape::wedge, {0.02, 0.03, 0}, {20, 10e-3});
 }
 
 Obstacle plate() {
-  Obstacle o;
-  o.shape = ObstacleShape::plate;
-  o.centre = {0.02, 0.03, 0};
-  o.width_m = 8e-3;
-  o.thickness_m = 2e-3;
-  return o;
+  return make_obstacle(ObstacleShape::plate, {0.02, 0.03, 0}, {8e-3, 2e-3});
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
-// Scenes with a wedge or a plate (docs/scene_format.md, [obstacle]): the keys read, written
-// back and read again; the user errors of the shape keys, each one line naming the key;
-// and a short run of each shape's scene: mass balance at every output, and run.h5 and
-// checkpoint.h5 recording the shape.
+// Scenes with a wedge, a plate or a square (docs/scene_format.md, [obstacle]): the keys read,
+// written back and read again; the user errors of the shape keys, each one line naming the key; and
+// a short run of each shape's scene: mass balance at every output, and run.h5 and checkpoint.h5
+// recording the shape.
 #include <gtest/gtest.h>
 
 #include "cases/bow_shock/run_command.hpp"
@@ -9,6 +9,7 @@
 #include "io/checkpoint_file.hpp"
 #include "io/run_file.hpp"
 #include "io/scene_file.hpp"
+#include "kernels/models/obstacle_shapes.hpp"
 #include "scene/run_helpers.hpp"
 #include "scene/scene_fixtures.hpp"
 
@@ -24,6 +25,9 @@ const std::string kWedge =
     "centre = [\"20 d\", \"35 d\"]\n";
 const std::string kPlate =
     "[obstacle]\nshape = \"plate\"\nwidth = \"10 d\"\nthickness = \"2 d\"\n"
+    "centre = [\"20 d\", \"35 d\"]\n";
+const std::string kSquare =
+    "[obstacle]\nshape = \"square\"\nside = \"7 d\"\nrotation = 45\n"
     "centre = [\"20 d\", \"35 d\"]\n";
 
 std::string scene_with(const std::string& obstacle) {
@@ -43,17 +47,13 @@ std::string refusal(const std::string& text, const std::vector<std::string>& set
 void expect_same_obstacle(const Obstacle& a, const Obstacle& b) {
   EXPECT_EQ(a.shape, b.shape);
   EXPECT_EQ(a.centre, b.centre);
-  EXPECT_EQ(a.diameter_m, b.diameter_m);
-  EXPECT_EQ(a.half_angle_deg, b.half_angle_deg);
-  EXPECT_EQ(a.length_m, b.length_m);
-  EXPECT_EQ(a.width_m, b.width_m);
-  EXPECT_EQ(a.thickness_m, b.thickness_m);
+  EXPECT_EQ(a.size, b.size);
 }
 
 }  // namespace
 
-TEST(ObstacleScene, WedgeAndPlateSurviveTheResolvedScene) {
-  for (const std::string& obstacle : {kWedge, kPlate}) {
+TEST(ObstacleScene, EveryShapeSurvivesTheResolvedScene) {
+  for (const std::string& obstacle : {kWedge, kPlate, kSquare}) {
     const LoadedScene a = parse_scene(scene_with(obstacle));
     ASSERT_TRUE(a.scene.setup.obstacle);
     const LoadedScene b = parse_scene(a.resolved);
@@ -63,12 +63,21 @@ TEST(ObstacleScene, WedgeAndPlateSurviveTheResolvedScene) {
   }
   const Obstacle w = *parse_scene(scene_with(kWedge)).scene.setup.obstacle;
   EXPECT_EQ(w.shape, ObstacleShape::wedge);
-  EXPECT_EQ(w.half_angle_deg, 25);
-  EXPECT_DOUBLE_EQ(w.length_m, 0.012);
+  EXPECT_EQ(WedgeShape::half_angle_deg(w), 25);
+  EXPECT_DOUBLE_EQ(WedgeShape::length(w), 0.012);
   const Obstacle p = *parse_scene(scene_with(kPlate)).scene.setup.obstacle;
   EXPECT_EQ(p.shape, ObstacleShape::plate);
-  EXPECT_DOUBLE_EQ(p.width_m, 0.010);
-  EXPECT_DOUBLE_EQ(p.thickness_m, 0.002);
+  EXPECT_DOUBLE_EQ(PlateShape::width(p), 0.010);
+  EXPECT_DOUBLE_EQ(PlateShape::thickness(p), 0.002);
+  const Obstacle q = *parse_scene(scene_with(kSquare)).scene.setup.obstacle;
+  EXPECT_EQ(q.shape, ObstacleShape::square);
+  EXPECT_DOUBLE_EQ(SquareShape::side(q), 0.007);
+  EXPECT_EQ(SquareShape::rotation_deg(q), 45);
+  // rotation has a default, written into the resolved scene.
+  const LoadedScene face_on =
+      parse_scene(scene_with("[obstacle]\nshape = \"square\"\nside = \"7 d\"\n"));
+  EXPECT_EQ(SquareShape::rotation_deg(*face_on.scene.setup.obstacle), 0);
+  EXPECT_NE(face_on.resolved.find("rotation = 0"), std::string::npos);
   // The cylinder stays the default, and its resolved scene names it.
   const LoadedScene c = parse_scene(small_scene(true));
   EXPECT_EQ(c.scene.setup.obstacle->shape, ObstacleShape::cylinder);
@@ -109,12 +118,25 @@ TEST(ObstacleScene, ShapeKeyErrorsNameTheKey) {
             std::string::npos);
   EXPECT_EQ(refusal(plate, {"obstacle.shape=\"sphere\""}).rfind("scene key 'obstacle.shape'", 0),
             0u);
+  const std::string square = scene_with(kSquare);
+  EXPECT_EQ(refusal(square, {"obstacle.rotation=90"}),
+            "scene key 'obstacle.rotation' = 90: must be in [0, 90)");
+  EXPECT_EQ(refusal(square, {"obstacle.width=\"4 d\""}),
+            "scene key 'obstacle.width' = \"4 d\": is a key of obstacle.shape = \"plate\", and "
+            "the shape is \"square\"");
+  EXPECT_EQ(refusal(plate, {"obstacle.side=\"4 d\""}),
+            "scene key 'obstacle.side' = \"4 d\": is a key of obstacle.shape = \"square\", and "
+            "the shape is \"plate\"");
+  // A diamond of side 27 d is 38.2 d across: the channel's gap names both of its keys.
+  EXPECT_NE(refusal(square, {"obstacle.side=\"27 d\""})
+                .find("scene key 'obstacle.side' and 'obstacle.rotation' = 0.03818"),
+            std::string::npos);
 }
 
 // The run refuses a particle inside the obstacle (cases/bow_shock/run_observables.cpp), so
 // a completed run also says insertion kept out of each shape.
 TEST(ObstacleScene, EachShapeRunsWithMassBalanceAndRecordsItsShape) {
-  for (const std::string& obstacle : {kWedge, kPlate}) {
+  for (const std::string& obstacle : {kWedge, kPlate, kSquare}) {
     TempDir tmp;
     const auto scene = tmp.write("shape.toml", scene_with(obstacle));
     ASSERT_EQ(run_scene(run_options(scene, tmp.path() / "run",

@@ -11,6 +11,7 @@
 
 #include "cases/gas/homogeneous_gas.hpp"
 #include "core/solver.hpp"
+#include "kernels/models/obstacle_shapes.hpp"
 #include "same_particles.hpp"
 #include "solver_on_paths.hpp"
 
@@ -38,7 +39,7 @@ HostParticles make_gas(SolverSetup& s) {
     for (std::size_t i = 0; i < gas.size(); ++i) {
       const double dx = gas.position[i][0] - s.obstacle->centre[0];
       const double dy = gas.position[i][1] - s.obstacle->centre[1];
-      if (std::hypot(dx, dy) > 0.5 * s.obstacle->diameter_m + 1e-3)
+      if (std::hypot(dx, dy) > 0.5 * CylinderShape::diameter(*s.obstacle) + 1e-3)
         kept.add(gas.position[i], gas.velocity[i], gas.species[i], gas.id[i]);
     }
     gas = kept;
@@ -97,7 +98,7 @@ SolverSetup frictionless() {
 SolverSetup friction_with_obstacle() {
   SolverSetup s = paper_mixture(0.5);
   s.contacts = ContactSettings::uniform(2, 0.5, 0.4);
-  s.obstacle = Obstacle{ObstacleShape::cylinder, {0, 0, 0}, 10e-3, aluminium()};
+  s.obstacle = make_obstacle(ObstacleShape::cylinder, {0, 0, 0}, {10e-3}, aluminium());
   s.dt = 3e-8;
   return s;
 }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/material.hpp"
+#include "kernels/models/obstacle_shapes.hpp"
 #include "models/obstacle_body.hpp"
 #include "solver/obstacle_runs.hpp"
 
@@ -46,7 +47,8 @@ std::vector<int> marked_runs(const Geometry& obstacle,
 }
 
 Geometry cylinder(double diameter) {
-  return Geometry::from(Obstacle{ObstacleShape::cylinder, {0.1, 0.2, 0}, diameter, aluminium()});
+  return Geometry::from(
+      make_obstacle(ObstacleShape::cylinder, {0.1, 0.2, 0}, {diameter}, aluminium()));
 }
 
 }  // namespace
@@ -78,9 +80,7 @@ TEST(ObstacleRuns, APolygonReachesAsFarAsItsFarthestCorner) {
   // sqrt(1 + 4) mm from the centre. A particle off a corner, along the diagonal, is marked;
   // one off the middle of a face at the same distance is marked too (the bound is the
   // circle about the centre), and one beyond the circle's reach is not.
-  Obstacle plate{ObstacleShape::plate, {0.1, 0.2, 0}, 0, aluminium()};
-  plate.width_m = 4e-3;
-  plate.thickness_m = 2e-3;
+  const Obstacle plate = make_obstacle(ObstacleShape::plate, {0.1, 0.2, 0}, {4e-3, 2e-3});
   const Geometry g = Geometry::from(plate);
   const double corner = std::sqrt(5.0) * 1e-3, reach = corner + kRadius + kSkin;
   EXPECT_NEAR(g.radius, corner, 1e-15);

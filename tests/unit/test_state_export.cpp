@@ -9,6 +9,7 @@
 #include "cases/gas/homogeneous_gas.hpp"
 #include "core/checkpoint_checks.hpp"
 #include "core/solver.hpp"
+#include "kernels/models/obstacle_shapes.hpp"
 #include "same_particles.hpp"
 
 using namespace granshock;
@@ -33,10 +34,9 @@ SolverSetup dense_frictional_gas(Precision precision, HostParticles& kept) {
   spec.area_fraction = 0.4;
   spec.sigma_m_per_s = 2.0;
   size_periodic_box(s, spec);
-  s.obstacle = Obstacle{ObstacleShape::cylinder,
-                        {0.5 * s.box.length(0), 0.5 * s.box.length(1), 0},
-                        16e-3,
-                        aluminium()};
+  s.obstacle =
+      make_obstacle(ObstacleShape::cylinder, {0.5 * s.box.length(0), 0.5 * s.box.length(1), 0},
+                    {16e-3}, aluminium());
   HostParticles gas = make_homogeneous_gas(s, spec);
   for (std::size_t i = 0; i < gas.size(); ++i)
     if (distance_from_obstacle(s, gas.position[i]) > 8.6e-3)
