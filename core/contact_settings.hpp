@@ -3,6 +3,7 @@
 // against the obstacle.
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -10,7 +11,7 @@ namespace granshock {
 
 // The contact laws granshock compiles; each is a type in kernels/models/ and an entry of
 // the variant table (kernels/solver/variant_table.hpp).
-enum class ContactModelKind { hertz, hooke };
+enum class ContactModelKind { hertz, hooke, linear };
 ContactModelKind parse_contact_model(const std::string& name);  // core/variant_names.hpp
 std::string to_string(ContactModelKind model);
 
@@ -21,14 +22,18 @@ std::string to_string(ContactModelKind model);
 inline constexpr double kOverlapWarn = 0.05;
 inline constexpr double kOverlapRefuse = 0.2;
 
+// The most parameter keys a contact law has (kernels/models/law_parameters.hpp).
+inline constexpr int kMaxLawParameters = 2;
+
 // What a contact law takes besides the pair's materials and restitution.
 struct ContactOptions {
   // Clamp Fn >= 0 (no attraction at the end of a contact). Off by default, as in
   // LIGGGHTS, because only then does the law restore exactly e.
   bool limit_force = false;
-  // The impact speed at which a `hooke` contact has the Hertz law's peak overlap
-  // (LIGGGHTS' characteristicVelocity); unused by `hertz`.
-  double characteristic_velocity_m_per_s = 1.0;
+  // The law's own parameters in the order of its keys (kernels/models/<law>_parameters.hpp:
+  // hooke's characteristic velocity, linear's stiffness), read through them
+  // (HookeParameters::characteristic_velocity(o), ...); unused by `hertz`.
+  std::array<double, kMaxLawParameters> law_parameters{};
 };
 
 // How the damping of every pair is chosen (docs/contact_model.md, "Restitution at the

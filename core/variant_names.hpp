@@ -21,6 +21,9 @@ struct Choices<ContactModelKind> {
       {ContactModelKind::hooke, "hooke",
        "linear spring-dashpot of LIGGGHTS, kn from contact.characteristic_velocity "
        "(kernels/models/hooke.hpp)"},
+      {ContactModelKind::linear, "linear",
+       "linear spring-dashpot with a given stiffness, kn = contact.stiffness "
+       "(kernels/models/linear.hpp)"},
   };
 };
 

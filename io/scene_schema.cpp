@@ -18,6 +18,7 @@
 #include "core/choice_names.hpp"
 #include "io/scene_file.hpp"
 #include "io/table_reader.hpp"
+#include "kernels/models/law_parameters.hpp"
 #include "kernels/models/obstacle_shapes.hpp"
 
 namespace granshock {
@@ -90,8 +91,10 @@ struct Reading {
   explicit Reading(Scene& scene) : s(scene) {}
   Scene& s;
   std::map<std::string, Material> materials = {{"steel", steel()}, {"aluminium", aluminium()}};
-  std::optional<double> characteristic_velocity;  // default: the inflow speed
-  std::optional<double> calibration_speed;        // default: the inflow speed
+  // The law's parameters as given (kernels/models/law_parameters.hpp); absent ones take
+  // their default once [inflow] is read (the inflow speed).
+  std::array<std::optional<double>, kMaxLawParameters> law_parameters;
+  std::optional<double> calibration_speed;  // default: the inflow speed
   Material material;
   Species species;
   std::map<std::string, int> species_by_name;  // pair names are looked up once per pair
@@ -532,18 +535,80 @@ const Key kContactKeys[] = {
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.s.setup.contacts.options.limit_force);
      }},
-    // Its default, the inflow speed, is known once [inflow] is read (read_scene).
-    {"characteristic_velocity", "number (m/s)",
-     [](TableReader& r, Reading& st, const std::string& k) {
-       if (r.has(k))
-         st.characteristic_velocity = r.number_within(k, kSpeed.lo, kSpeed.hi, {}, kSpeed.why);
-     },
-     [](const Writing& w, toml::table& t, const std::string& k) {
-       t.insert(k, w.s.setup.contacts.options.characteristic_velocity_m_per_s);
-     }},
-    {"pairs", nullptr, read_pairs, write_pairs},
 };
-const Table kContact = table("contact", kContactKeys);
+
+// The parameter keys of the contact laws, each declared once in its law's parameter
+// header (kernels/models/law_parameters.hpp) and found here by name: read when the scene's
+// contact.model owns it, refused when given for another law, written back for its own
+// law only (as the obstacle's size keys are).
+struct LawKeyOf {
+  std::size_t index;
+  const LawKey* key;
+};
+
+std::optional<LawKeyOf> law_key_named(ContactModelKind model, const std::string& name) {
+  std::optional<LawKeyOf> found;
+  with_law_parameters(model, [&](auto parameters) {
+    for (std::size_t i = 0; i < parameters.keys.size(); ++i)
+      if (name == parameters.keys[i].name) found = LawKeyOf{i, &parameters.keys[i]};
+  });
+  return found;
+}
+
+// The laws that own the key `name`, as a refusal names them.
+std::string laws_owning(const std::string& name) {
+  std::vector<std::string> owners;
+  for_each_law_parameters([&](auto parameters) {
+    if (law_key_named(parameters.kind, name))
+      owners.push_back(fmt::format("\"{}\"", choice_name(parameters.kind)));
+  });
+  return fmt::format("{}", fmt::join(owners, " or "));
+}
+
+void read_law_key(TableReader& r, Reading& st, const std::string& k) {
+  const ContactModelKind model = st.s.setup.contacts.model;
+  const std::optional<LawKeyOf> own = law_key_named(model, k);
+  if (!own) {
+    if (const toml::node* n = r.node(k))
+      fail(r.key(k), show(*n),
+           fmt::format("is a key of contact.model = {}, and the model is \"{}\"", laws_owning(k),
+                       choice_name(model)));
+    return;
+  }
+  const LawKey& key = *own->key;
+  if (r.has(k) || key.fallback == LawKey::Default::required)
+    st.law_parameters[own->index] = r.number_within(k, key.lo, key.hi, {}, key.why);
+}
+
+void write_law_key(const Writing& w, toml::table& t, const std::string& k) {
+  const ContactOptions& o = w.s.setup.contacts.options;
+  if (const std::optional<LawKeyOf> own = law_key_named(w.s.setup.contacts.model, k))
+    t.insert(k, o.law_parameters[own->index]);
+}
+
+// [contact]'s keys: the table above, then every law's parameter keys (each name once, in
+// the order of LawParameterSets; after contact.model, which says whose they are), then the
+// pair tables.
+std::vector<Key> contact_keys() {
+  std::vector<Key> keys(std::begin(kContactKeys), std::end(kContactKeys));
+  for_each_law_parameters([&](auto parameters) {
+    for (const LawKey& key : parameters.keys) {
+      const auto known = std::find_if(
+          keys.begin(), keys.end(), [&](const Key& k) { return k.name == std::string(key.name); });
+      if (known != keys.end()) {
+        if (std::string(known->type) != key.type)
+          throw std::logic_error(std::string("two contact laws give the key ") + key.name +
+                                 " different types");
+        continue;
+      }
+      keys.push_back({key.name, key.type, read_law_key, write_law_key});
+    }
+  });
+  keys.push_back({"pairs", nullptr, read_pairs, write_pairs});
+  return keys;
+}
+const std::vector<Key> kContactKeyList = contact_keys();
+const Table kContact = {"contact", kContactKeyList.data(), kContactKeyList.size(), nullptr};
 
 // ---- [numerics] --------------------------------------------------------------------------
 
@@ -980,8 +1045,11 @@ Scene read_scene(const toml::table& root) {
   read_table(top, st, kTime);
   read_table(top, st, kOutput);
   top.finish();
-  s.setup.contacts.options.characteristic_velocity_m_per_s =
-      st.characteristic_velocity.value_or(s.inflow.speed_m_per_s);
+  with_law_parameters(s.setup.contacts.model, [&](auto parameters) {
+    for (std::size_t i = 0; i < parameters.keys.size(); ++i)
+      s.setup.contacts.options.law_parameters[i] =
+          st.law_parameters[i].value_or(s.inflow.speed_m_per_s);  // Default::inflow_speed
+  });
   s.setup.contacts.calibration_speed_m_per_s =
       st.calibration_speed.value_or(s.inflow.speed_m_per_s);
   return s;

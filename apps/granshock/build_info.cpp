@@ -6,6 +6,8 @@
 #include "cases/build_info/build_description.hpp"
 #include "core/choice_names.hpp"
 #include "device/backends.hpp"
+#include "kernels/models/law_parameters.hpp"
+#include "kernels/models/obstacle_shapes.hpp"
 #include "parallel/mpi_runtime.hpp"
 
 namespace granshock {
@@ -35,6 +37,38 @@ std::string build_info_json(int processes) {
     choices[Choices<Enum>::what] = choice_names<Enum>();
   });
   j["choices"] = choices;
+  // The keys each contact law and obstacle shape takes (kernels/models/law_parameters.hpp,
+  // obstacle_shapes.hpp): name, type, meaning, range and default, as a scene gives them.
+  nlohmann::json laws;
+  for (const auto& c : Choices<ContactModelKind>::table) {
+    nlohmann::json keys = nlohmann::json::array();
+    with_law_parameters(c.value, [&](auto parameters) {
+      for (const LawKey& k : parameters.keys)
+        keys.push_back({{"key", std::string("contact.") + k.name},
+                        {"type", k.type},
+                        {"meaning", k.meaning},
+                        {"accepted", {k.lo, k.hi}},
+                        {"default", k.fallback == LawKey::Default::required ? "required"
+                                                                            : "inflow.velocity"}});
+    });
+    laws[c.name] = keys;
+  }
+  j["contact_law_keys"] = laws;
+  nlohmann::json shapes;
+  for_each_obstacle_shape([&](auto shape) {
+    nlohmann::json keys = nlohmann::json::array();
+    for (const ShapeKey& k : shape.keys) {
+      nlohmann::json key = {
+          {"key", std::string("obstacle.") + k.name},
+          {"type", k.kind == ShapeKey::Kind::angle ? "number (degrees)" : "length"},
+          {"meaning", k.meaning}};
+      if (k.kind == ShapeKey::Kind::angle) key["accepted"] = {k.lo, k.hi};
+      key["default"] = k.required() ? nlohmann::json("required") : nlohmann::json(k.fallback);
+      keys.push_back(key);
+    }
+    shapes[shape.name] = keys;
+  });
+  j["obstacle_shape_keys"] = shapes;
   return j.dump(2);
 }
 

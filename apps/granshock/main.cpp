@@ -35,6 +35,7 @@
 #include "core/user_error.hpp"
 #include "device/kokkos_runtime.hpp"
 #include "io/hdf5_runtime.hpp"
+#include "kernels/models/law_parameters.hpp"
 #include "parallel/mpi_communicator.hpp"
 #include "parallel/mpi_runtime.hpp"
 
@@ -77,9 +78,17 @@ void add_collide_command(CLI::App& app, granshock::CollisionOptions& o,
   cmd->add_option("--dt", o.dt, "time step (s); default t_c/100");
   cmd->add_option("--e", o.restitution, "coefficient of restitution, in [0.01, 1]; default 0.5");
   add_choice_option(*cmd, "--model", o.model, "contact law");
-  cmd->add_option("--characteristic-velocity", o.characteristic_velocity,
-                  "hooke: the impact speed (m/s) of equal peak overlap with Hertz; default "
-                  "--speed");
+  // One option per law parameter key (kernels/models/law_parameters.hpp), as in scenes.
+  granshock::for_each_law_parameters([&](auto parameters) {
+    for (const granshock::LawKey& k : parameters.keys) {
+      std::string option = std::string("--") + k.name;
+      std::replace(option.begin(), option.end(), '_', '-');
+      const bool speed = k.fallback == granshock::LawKey::Default::inflow_speed;
+      cmd->add_option(option, o.law_parameters[k.name],
+                      fmt::format("{}: {}, {}; {}", granshock::choice_name(parameters.kind),
+                                  k.meaning, k.type, speed ? "default --speed" : "required"));
+    }
+  });
   cmd->add_flag("--limit-force", o.limit_force,
                 "clamp the normal force at zero (no attraction at the end of contact)");
   add_choice_option(*cmd, "--precision", o.precision, "arithmetic of the contact");

@@ -1,6 +1,7 @@
 #include "cases/collision/head_on_collision.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cmath>
@@ -9,6 +10,7 @@
 
 #include "core/solver.hpp"
 #include "core/user_error.hpp"
+#include "kernels/models/law_parameters.hpp"
 #include "kernels/models/obstacle_shapes.hpp"
 
 namespace {
@@ -211,6 +213,57 @@ CollisionResult collide_species(const SolverSetup& given, int a, int b, double s
   return r;
 }
 
+// The option collide reads a law key from: --characteristic-velocity for
+// characteristic_velocity.
+std::string law_option(const char* key) {
+  std::string option = std::string("--") + key;
+  std::replace(option.begin(), option.end(), '_', '-');
+  return option;
+}
+
+// The chosen law's parameters from the options (kernels/models/law_parameters.hpp): each
+// in its key's range, the impact speed where the key defaults to the inflow speed, a
+// required one missing refused, and a key of another law refused.
+std::array<double, kMaxLawParameters> collision_law_parameters(const CollisionOptions& o) {
+  for (const auto& [name, value] : o.law_parameters) {
+    if (!value) continue;
+    bool own = false;
+    with_law_parameters(o.model, [&](auto parameters) {
+      for (const LawKey& k : parameters.keys) own = own || name == k.name;
+    });
+    std::vector<std::string> owners;
+    for_each_law_parameters([&](auto parameters) {
+      for (const LawKey& k : parameters.keys)
+        if (name == k.name)
+          owners.push_back(std::string("--model ") + choice_name(parameters.kind));
+    });
+    if (!own)
+      throw UserError(fmt::format("{} is a parameter of {}, and the model is {}",
+                                  law_option(name.c_str()), fmt::join(owners, " or "),
+                                  choice_name(o.model)));
+  }
+  std::array<double, kMaxLawParameters> values{};
+  with_law_parameters(o.model, [&](auto parameters) {
+    for (std::size_t i = 0; i < parameters.keys.size(); ++i) {
+      const LawKey& k = parameters.keys[i];
+      const auto given = o.law_parameters.find(k.name);
+      if (given == o.law_parameters.end() || !given->second) {
+        if (k.fallback == LawKey::Default::required)
+          throw UserError(fmt::format("--model {} needs {} ({}: {})", choice_name(o.model),
+                                      law_option(k.name), k.type, k.meaning));
+        values[i] = o.speed_m_per_s;  // Default::inflow_speed
+        continue;
+      }
+      const double v = *given->second;
+      if (!(v >= k.lo && v <= k.hi))
+        throw UserError(fmt::format("{} {:g} must be in [{:g}, {:g}] ({}): {}", law_option(k.name),
+                                    v, k.lo, k.hi, k.type, k.why));
+      values[i] = v;
+    }
+  });
+  return values;
+}
+
 CollisionResult run_head_on_collision(const CollisionOptions& o) {
   if (std::find(kPairs.begin(), kPairs.end(), o.pair) == kPairs.end())
     throw UserError(fmt::format("--pair '{}' is not one of {}", o.pair, fmt::join(kPairs, ", ")));
@@ -223,10 +276,6 @@ CollisionResult run_head_on_collision(const CollisionOptions& o) {
   // Below 0.01 the damped law's rebound is not resolved (docs/contact_model.md).
   if (!(o.restitution >= 0.01 && o.restitution <= 1))
     throw UserError(fmt::format("--e {} must be in [0.01, 1]", o.restitution));
-  if (o.characteristic_velocity &&
-      !(*o.characteristic_velocity > 0 && *o.characteristic_velocity <= kMaxCollisionSpeed))
-    throw UserError(fmt::format("--characteristic-velocity {:g} must be a speed in (0, {:g}] m/s",
-                                *o.characteristic_velocity, kMaxCollisionSpeed));
   if (o.dt && !(*o.dt > 0 && std::isfinite(*o.dt)))
     throw UserError(fmt::format("--dt {} must be a positive time step in s", *o.dt));
   if (!(o.phase > 0 && o.phase <= 1))
@@ -238,8 +287,7 @@ CollisionResult run_head_on_collision(const CollisionOptions& o) {
   paper.contacts = ContactSettings::uniform(2, o.restitution, 0.0);
   paper.contacts.model = o.model;
   paper.contacts.options.limit_force = o.limit_force;
-  paper.contacts.options.characteristic_velocity_m_per_s =
-      o.characteristic_velocity.value_or(o.speed_m_per_s);
+  paper.contacts.options.law_parameters = collision_law_parameters(o);
   paper.precision = o.precision;
   paper.obstacle = make_obstacle(ObstacleShape::cylinder, {0, 0, 0}, {10 * kDiameter}, aluminium());
   const auto dash = o.pair.find('-');

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -32,8 +33,10 @@ struct CollisionOptions {
   std::optional<double> dt;          // none: t_c / 100
   double restitution = 0.5;
   ContactModelKind model = ContactModelKind::hertz;
-  // hooke only: the speed of equal peak overlap with Hertz; none: the impact speed.
-  std::optional<double> characteristic_velocity;
+  // The law's parameters by key name (kernels/models/law_parameters.hpp), as the options
+  // --<key> gave them: hooke's characteristic_velocity (none: the impact speed), linear's
+  // stiffness (required). A key of another law is refused.
+  std::map<std::string, std::optional<double>> law_parameters;
   bool limit_force = false;
   Precision precision = Precision::double_precision;
   bool force = false;  // run even past the stable time step

@@ -1,5 +1,5 @@
-// The normal force of a contact as the solver applies it (docs/contact_model.md, "The
-// force limit"): the law's own force (kernels/models/contact_law.hpp), clamped at a floor
+// The normal force of a contact as the solver applies it (docs/contact_model.md,
+// "limit_force"): the law's own force (kernels/models/contact_law.hpp), clamped at a floor
 // of 0 with contact.limit_force (no attraction at the end of a contact) and left as it is
 // otherwise. Applied here, once for every law, by the force kernel
 // (kernels/solver/contact_forces.hpp) and the restitution calibration, so that a new law

@@ -13,6 +13,7 @@
 
 #include "contact_settings.hpp"
 #include "device/device_math.hpp"
+#include "models/law_key.hpp"
 #include "pair_properties.hpp"
 #include "variant_names.hpp"
 
@@ -21,6 +22,7 @@ namespace granshock {
 struct HertzModel {
   static constexpr const char* name = choice_name(ContactModelKind::hertz);
   static constexpr ContactModelKind kind = ContactModelKind::hertz;
+  using Parameters = NoLawParameters;  // everything from the materials
 
   template <class Real>
   struct Coefficients {

@@ -3,16 +3,20 @@
 // (obstacle_body.hpp; the shapes are listed in obstacle_shapes.hpp). The variant table
 // compiles each combination (kernels/solver/variant_table.hpp); host code that needs a
 // law's formulas without a kernel (the time-step guard) asks with_contact_model. A new
-// law is one header, its name in core/variant_names.hpp and one entry in ContactLaws here.
+// law is one header, its parameters (if any: <law>_parameters.hpp, listed in
+// law_parameters.hpp), its name in core/variant_names.hpp and one entry in ContactLaws here.
 #pragma once
 
 #include <optional>
 #include <stdexcept>
+#include <type_traits>
 
 #include "contact_law.hpp"
 #include "contact_settings.hpp"
 #include "models/hertz.hpp"
 #include "models/hooke.hpp"
+#include "models/law_parameters.hpp"
+#include "models/linear.hpp"
 #include "models/no_obstacle.hpp"
 #include "models/obstacle_body.hpp"
 #include "models/obstacle_shapes.hpp"
@@ -25,13 +29,20 @@ template <class... T>
 struct TypeList {};
 
 // Every contact law granshock compiles, each a type of the interface in contact_law.hpp.
-using ContactLaws = TypeList<HertzModel, HookeModel>;
+using ContactLaws = TypeList<HertzModel, HookeModel, LinearModel>;
 
 namespace models_detail {
 
 template <class... Laws>
 constexpr bool every_law_checked(TypeList<Laws...>) {
   return (check_contact_law<Laws>() && ...);
+}
+
+// Whether every law's Parameters are what LawParameterSets lists for its kind
+// (law_parameters.hpp): the host code reads a law's keys from that list.
+template <class... Laws>
+constexpr bool every_law_has_its_listed_parameters(TypeList<Laws...>) {
+  return (std::is_same_v<typename Laws::Parameters, parameters_of_kind<Laws::kind>> && ...);
 }
 
 // How many laws of the list have `kind`.
@@ -67,6 +78,9 @@ void each_law(F& f, TypeList<Laws...>) {
 }  // namespace models_detail
 
 static_assert(models_detail::every_law_checked(ContactLaws{}));
+static_assert(models_detail::every_law_has_its_listed_parameters(ContactLaws{}),
+              "a contact law's Parameters must be listed in LawParameterSets "
+              "(kernels/models/law_parameters.hpp), the keys the scene reader takes");
 static_assert(models_detail::every_name_has_one_law(),
               "every contact model of core/variant_names.hpp needs exactly one law in "
               "ContactLaws (kernels/models/models.hpp)");

@@ -21,6 +21,25 @@ names() {
   python3 -c 'import json, sys; print(" ".join(json.load(open(sys.argv[1]))["choices"][sys.argv[2]]))' \
     "$dir/info.json" "$1" 2>/dev/null || fail "no choice '$1' in granshock info"
 }
+# law_keys MODEL FORM: the law's required keys (granshock info's contact_law_keys), each
+# in the middle of its accepted range on a log scale, as collide options (FORM option:
+# --stiffness V) or scene keys (FORM set: --set contact.stiffness=V).
+law_keys() {
+  python3 -c '
+import json, math, sys
+keys = json.load(open(sys.argv[1]))["contact_law_keys"][sys.argv[2]]
+for k in keys:
+    if k["default"] != "required":
+        continue
+    lo, hi = k["accepted"]
+    value = "%g" % math.sqrt(lo * hi)
+    name = k["key"].split(".", 1)[1]
+    if sys.argv[3] == "option":
+        print("--" + name.replace("_", "-"), value)
+    else:
+        print("--set", k["key"] + "=" + value)
+' "$dir/info.json" "$1" "$2" 2>/dev/null || fail "no contact_law_keys for '$1' in granshock info"
+}
 models=($(names "contact model")) modes=($(names "restitution mode"))
 precisions=($(names precision)) scatters=($(names "field scatter"))
 masses=($(names "mass definition")) machs=($(names "mach reference"))
@@ -46,13 +65,14 @@ for ((k = 0; k < rounds; ++k)); do
   switch=$(nth $k "${switches[@]}")
   what="round $k ($model, $mode, $precision, $scatter, $mass, $mach, $axis, $balance, $output, $switch)"
 
-  out=$("$granshock" collide --pair steel-steel --speed 1 --model "$model" \
+  out=$("$granshock" collide --pair steel-steel --speed 1 --model "$model" $(law_keys "$model" option) \
     --restitution-mode "$mode" --precision "$precision" 2>&1) || fail "$what: collide: $out"
   grep -q "\"model\": \"$model\"" <<<"$out" || fail "$what: collide says $out"
   grep -q "\"restitution_mode\": \"$mode\"" <<<"$out" || fail "$what: collide says $out"
   grep -q "\"variant\": \"[^\"]*/$precision/$model/" <<<"$out" || fail "$what: collide ran $out"
 
-  scene_keys=(--set "contact.model=\"$model\"" --set "contact.restitution_mode=\"$mode\""
+  scene_keys=(--set "contact.model=\"$model\"" $(law_keys "$model" set)
+    --set "contact.restitution_mode=\"$mode\""
     --set "numerics.precision=\"$precision\"" --set "numerics.field_scatter=\"$scatter\"")
   out=$("$granshock" run "$scene" --dry-run --out "$dir/never" "${scene_keys[@]}" \
     --set "numerics.mass_definition=\"$mass\"" --set "inflow.mach_at=\"$mach\"" \

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/solver.hpp"
+#include "kernels/models/hooke_parameters.hpp"
 #include "kernels/models/obstacle_shapes.hpp"
 #include "models/time_step_guard.hpp"
 
@@ -24,6 +25,7 @@ inline SolverSetup wall_setup(ContactModelKind model, double dt) {
   s.contacts = ContactSettings::uniform(1, kE, kMu);
   s.contacts.model = model;
   s.contacts.options.limit_force = true;
+  HookeParameters::set_characteristic_velocity(s.contacts.options, 1.0);  // hooke's only key
   s.box.lo = {-0.11, -0.11, 0};
   s.box.hi = {0.11, 0.11, kD};
   s.obstacle = make_obstacle(ObstacleShape::cylinder, {0, 0, 0}, {kCylinder}, aluminium());
@@ -37,7 +39,7 @@ struct Impact {
 };
 
 // A steel sphere approaching the cylinder's -x face with velocity (vn, vt); for hooke the
-// characteristic velocity is ContactOptions' default, 1 m/s.
+// characteristic velocity is 1 m/s (wall_setup).
 inline Impact simulate_oblique_impact(ContactModelKind model, double vn, double vt) {
   SolverSetup s = wall_setup(model, 0);
   const PairProperties wall = s.obstacle_pair(0);

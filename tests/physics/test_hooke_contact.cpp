@@ -1,6 +1,8 @@
-// The LIGGGHTS `hooke` law (kernels/models/hooke.hpp, docs/contact_model.md) through the
-// solver's kernels (`granshock collide`, the same helpers as the Hertz tests), against
-// closed forms and an independent RK4 integration written here.
+// The linear spring-dashpot laws (kernels/models/spring_dashpot.hpp): LIGGGHTS' `hooke`
+// (kernels/models/hooke.hpp, kn from a characteristic velocity) and `linear`
+// (kernels/models/linear.hpp, kn given), docs/contact_model.md, through the solver's kernels
+// (`granshock collide`, the same helpers as the Hertz tests), against closed forms and an
+// independent RK4 integration written here.
 //
 // Theory. The law is a linear oscillator in the overlap, m* x'' = -(kn x + gn x'), with
 // omega0 = sqrt(kn / m*), damping ratio zeta = gn / (2 sqrt(m* kn)) = |beta| and
@@ -40,6 +42,7 @@
 #include <vector>
 
 #include "cases/collision/head_on_collision.hpp"
+#include "core/user_error.hpp"
 #include "models/hooke.hpp"
 #include "physics/contact_reference.hpp"
 #include "physics/oblique_impact.hpp"
@@ -58,12 +61,11 @@ struct Linear {
   double kn, gn, m, omega0, zeta, omega_d, t_c;
 };
 
-Linear linear_law(const PairReference& p, double e, double characteristic_velocity) {
-  const double v = characteristic_velocity, sqrt_r = std::sqrt(p.radius_star);
+// The oscillator of reduced mass m and stiffness kn that restores e.
+Linear oscillator(double m, double kn, double e) {
   Linear l;
-  l.m = p.mass_star;
-  l.kn = 16.0 / 15.0 * sqrt_r * p.youngs_star *
-         std::pow(15.0 * l.m * v * v / (16.0 * sqrt_r * p.youngs_star), 0.2);
+  l.m = m;
+  l.kn = kn;
   const double log_e = std::log(e);
   l.gn = e == 1.0 ? 0.0 : std::sqrt(4.0 * l.m * l.kn / (1.0 + std::pow(M_PI / log_e, 2)));
   l.omega0 = std::sqrt(l.kn / l.m);
@@ -71,6 +73,13 @@ Linear linear_law(const PairReference& p, double e, double characteristic_veloci
   l.omega_d = std::sqrt(l.kn / l.m - std::pow(l.gn / (2.0 * l.m), 2));
   l.t_c = M_PI / l.omega_d;
   return l;
+}
+
+Linear linear_law(const PairReference& p, double e, double characteristic_velocity) {
+  const double v = characteristic_velocity, sqrt_r = std::sqrt(p.radius_star);
+  const double kn = 16.0 / 15.0 * sqrt_r * p.youngs_star *
+                    std::pow(15.0 * p.mass_star * v * v / (16.0 * sqrt_r * p.youngs_star), 0.2);
+  return oscillator(p.mass_star, kn, e);
 }
 
 // The first-order bound on |e_eff / e - 1| derived in the header comment.
@@ -91,7 +100,7 @@ CollisionOptions hooke_options(const std::string& pair, double speed, double e, 
   o.speed_m_per_s = speed;
   o.restitution = e;
   o.model = ContactModelKind::hooke;
-  o.characteristic_velocity = v_char;
+  o.law_parameters["characteristic_velocity"] = v_char;
   return o;
 }
 
@@ -138,6 +147,65 @@ INSTANTIATE_TEST_SUITE_P(PaperPairs, HookeHeadOn,
                                             ::testing::Values(0.1, 1.0, 5.0),
                                             ::testing::Values(0.5, 0.9)),
                          case_name);
+
+// --- the linear law: the same oscillator with the scene's kn ------------------------------
+
+// contact.model = "linear" with contact.stiffness = kn: the oscillator of the pair's m*
+// and that kn whatever the materials and the impact speed, e and t_c as for hooke.
+using LinearCase = std::tuple<std::string, double, double>;  // pair, kn (N/m), e
+
+class LinearHeadOn : public ::testing::TestWithParam<LinearCase> {};
+
+TEST_P(LinearHeadOn, TheGivenStiffnessMakesTheLinearOscillator) {
+  const auto& [pair, kn, e] = GetParam();
+  CollisionOptions o;
+  o.pair = pair;
+  o.restitution = e;
+  o.model = ContactModelKind::linear;
+  o.law_parameters["stiffness"] = kn;
+  const Linear l = oscillator(reference_for(pair).mass_star, kn, e);
+  for (const double speed : {0.1, 5.0}) {
+    o.speed_m_per_s = speed;
+    const CollisionResult r = run_head_on_collision(o);
+    const double tol_e = restitution_tolerance(l, r.dt);
+    std::printf(
+        "[ measured ] linear %-20s kn=%.0e v=%3.1f e=%.1f  e_eff=%.5f (%+.3f %%, bound "
+        "%.3f %%)\n",
+        pair.c_str(), kn, speed, e, r.e_eff, 100 * (r.e_eff / e - 1), 100 * tol_e);
+    EXPECT_EQ(r.model, "linear");
+    EXPECT_NEAR(r.t_c, l.t_c, 1e-12 * l.t_c) << "collide's t_c is not pi / omega_d at " << speed;
+    EXPECT_NEAR(r.e_eff / e, 1.0, tol_e) << speed;
+    EXPECT_NEAR(r.t_contact / predicted_contact_time(l, r.dt), 1.0, 1e-4) << speed;
+  }
+}
+
+std::string linear_case_name(const ::testing::TestParamInfo<LinearCase>& info) {
+  return pair_name(std::get<0>(info.param)) + "_kn1e" +
+         std::to_string(int(std::lround(std::log10(std::get<1>(info.param))))) + "_e" +
+         std::to_string(int(std::lround(std::get<2>(info.param) * 100)));
+}
+
+INSTANTIATE_TEST_SUITE_P(PaperPairs, LinearHeadOn,
+                         ::testing::Combine(::testing::Values("steel-steel", "aluminium-obstacle"),
+                                            ::testing::Values(1e4, 1e6),
+                                            ::testing::Values(0.5, 0.9)),
+                         linear_case_name);
+
+// Each law takes only its own parameters, and a required one must be given.
+TEST(LinearHeadOn, ParametersBelongToTheirLaw) {
+  CollisionOptions o;
+  o.model = ContactModelKind::linear;
+  EXPECT_THROW(run_head_on_collision(o), UserError);  // no --stiffness
+  o.law_parameters["stiffness"] = 1e-4;               // below [1e-3, 1e12]
+  EXPECT_THROW(run_head_on_collision(o), UserError);
+  o.model = ContactModelKind::hertz;
+  o.law_parameters["stiffness"] = 1e5;
+  EXPECT_THROW(run_head_on_collision(o), UserError);  // hertz takes no stiffness
+  o.model = ContactModelKind::hooke;
+  EXPECT_THROW(run_head_on_collision(o), UserError);
+  o.law_parameters["stiffness"] = std::nullopt;
+  EXPECT_NO_THROW(run_head_on_collision(o));
+}
 
 // --- convergence order ------------------------------------------------------------------
 
@@ -215,7 +283,7 @@ TEST(HookeModelPeakOverlap, UndampedPredictionIsHertzsAtTheCharacteristicVelocit
        {particle_pair(steel_1mm, al_3mm, 0.5, 0.0), particle_obstacle(al_3mm, steel(), 0.9, 0.0)}) {
     for (const double v : {0.01, 1.0, 30.0}) {
       ContactOptions o;
-      o.characteristic_velocity_m_per_s = v;
+      HookeParameters::set_characteristic_velocity(o, v);
       const double hertz = hertz_peak_overlap({p.youngs_star, p.radius_star, p.mass_star}, v);
       EXPECT_NEAR(HookeModel::peak_overlap(p, o, v), hertz, 1e-12 * hertz) << p.name << " " << v;
       // Away from V the linear overlap scales as v: half the speed, half the overlap.

@@ -15,6 +15,7 @@
 #include "core/pair_properties.hpp"
 #include "core/user_error.hpp"
 #include "kernels/models/obstacle_shapes.hpp"
+#include "models/hooke_parameters.hpp"
 #include "models/restitution_calibration.hpp"
 #include "models/time_step_guard.hpp"
 
@@ -60,7 +61,7 @@ PairProperties paper_pair(const CollisionOptions& o) {
 PhaseAverage over_phases(CollisionOptions o) {
   PhaseAverage a;
   ContactOptions options;
-  options.characteristic_velocity_m_per_s = o.speed_m_per_s;
+  HookeParameters::set_characteristic_velocity(options, o.speed_m_per_s);
   PairProperties props = paper_pair(o);
   for (int k = 0; k < kCalibrationPhases; ++k) {
     o.phase = (k + 0.5) / kCalibrationPhases;

@@ -14,6 +14,7 @@
 
 #include "core/user_error.hpp"
 #include "io/scene_file.hpp"
+#include "kernels/models/law_parameters.hpp"
 #include "scene_fixtures.hpp"
 
 using namespace granshock;
@@ -55,7 +56,9 @@ const std::map<std::string, NonDefault>& non_default_values() {
       {"contact.friction", {{"contact.friction=0.3"}}},
       {"contact.model", {{"contact.model=\"hooke\""}}},
       {"contact.limit_force", {{"contact.limit_force=true"}}},
-      {"contact.characteristic_velocity", {{"contact.characteristic_velocity=3.5"}}},
+      {"contact.characteristic_velocity",
+       {{"contact.model=\"hooke\"", "contact.characteristic_velocity=3.5"}}},
+      {"contact.stiffness", {{"contact.model=\"linear\"", "contact.stiffness=2e5"}}},
       {"contact.restitution_mode", {{"contact.restitution_mode=\"discrete\""}}},
       {"contact.calibration_speed", {{"contact.calibration_speed=2.5"}}},
       {"contact.softening", {{"contact.softening=1000"}}},
@@ -156,8 +159,9 @@ std::vector<std::string> differences(const Scene& a, const Scene& b) {
   const ContactSettings &ca = sa.contacts, &cb = sb.contacts;
   d("setup.contacts.model", ca.model, cb.model);
   d("setup.contacts.options.limit_force", ca.options.limit_force, cb.options.limit_force);
-  d("setup.contacts.options.characteristic_velocity_m_per_s",
-    ca.options.characteristic_velocity_m_per_s, cb.options.characteristic_velocity_m_per_s);
+  for (int k = 0; k < kMaxLawParameters; ++k)
+    d("setup.contacts.options.law_parameters[" + std::to_string(k) + "]",
+      ca.options.law_parameters[k], cb.options.law_parameters[k]);
   d("setup.contacts.restitution_mode", ca.restitution_mode, cb.restitution_mode);
   d("setup.contacts.calibration_speed_m_per_s", ca.calibration_speed_m_per_s,
     cb.calibration_speed_m_per_s);
@@ -354,4 +358,40 @@ TEST(SceneSchema, PairsOfSpeciesWhoseNamesHoldADash) {
   } catch (const UserError& e) {
     EXPECT_STREQ(e.what(), "scene key 'contact.pairs.steel-copper' = \"copper\": unknown species");
   }
+}
+
+// Each contact law takes only its own parameter keys (kernels/models/law_parameters.hpp):
+// another law's key is refused naming the key and its law, a required one missing is
+// refused naming it, and the resolved scene holds the law's keys alone.
+TEST(SceneSchema, ALawTakesOnlyItsOwnKeys) {
+  const auto refusal = [](const std::vector<std::string>& sets) -> std::string {
+    try {
+      parse_scene(small_scene(), sets);
+    } catch (const UserError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  EXPECT_EQ(refusal({"contact.characteristic_velocity=2.0"}),
+            "scene key 'contact.characteristic_velocity' = 2.0: is a key of contact.model = "
+            "\"hooke\", and the model is \"hertz\"");
+  EXPECT_EQ(refusal({"contact.model=\"hooke\"", "contact.stiffness=1e5"}),
+            "scene key 'contact.stiffness' = 100000.0: is a key of contact.model = \"linear\", "
+            "and the model is \"hooke\"");
+  EXPECT_NE(refusal({"contact.model=\"linear\""}).find("contact.stiffness"), std::string::npos);
+  EXPECT_NE(refusal({"contact.model=\"linear\"", "contact.stiffness=1e13"})
+                .find("scene key 'contact.stiffness' = 10000000000000: must be in [0.001, 1e+12]"),
+            std::string::npos);
+  const LoadedScene linear =
+      parse_scene(small_scene(), {"contact.model=\"linear\"", "contact.stiffness=1e5"});
+  EXPECT_EQ(LinearParameters::stiffness(linear.scene.setup.contacts.options), 1e5);
+  EXPECT_NE(linear.resolved.find("stiffness = 1e+05"), std::string::npos);
+  EXPECT_EQ(linear.resolved.find("characteristic_velocity"), std::string::npos);
+  const LoadedScene hooke = parse_scene(small_scene(), {"contact.model=\"hooke\""});
+  EXPECT_EQ(HookeParameters::characteristic_velocity(hooke.scene.setup.contacts.options),
+            hooke.scene.inflow.speed_m_per_s);  // the default: the inflow speed
+  EXPECT_NE(hooke.resolved.find("characteristic_velocity"), std::string::npos);
+  const LoadedScene hertz = parse_scene(small_scene());
+  EXPECT_EQ(hertz.resolved.find("characteristic_velocity"), std::string::npos);
+  EXPECT_EQ(hertz.resolved.find("stiffness"), std::string::npos);
 }

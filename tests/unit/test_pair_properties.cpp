@@ -71,7 +71,13 @@ TEST(PairProperties, LimitForceClampsEveryLaw) {
   for_each_contact_law([&](auto law) {
     using Law = decltype(law);
     ++laws;
-    const auto c = Law::template coefficients<double>(p, ContactOptions{});
+    ContactOptions o;  // each law's keys: a speed of 1 m/s, a stiffness of 1e6 N/m
+    with_law_parameters(Law::kind, [&](auto parameters) {
+      for (std::size_t k = 0; k < parameters.keys.size(); ++k)
+        o.law_parameters[k] =
+            parameters.keys[k].fallback == LawKey::Default::inflow_speed ? 1.0 : 1e6;
+    });
+    const auto c = Law::template coefficients<double>(p, o);
     const double dn = 1e-9, vn = 5.0;  // barely touching, parting at 5 m/s
     const double own = Law::normal(c, dn, vn).force;
     EXPECT_LT(own, 0) << Law::name;

@@ -74,7 +74,7 @@ TEST(TimeStepGuard, HookeLimitDependsOnTheCharacteristicVelocityOnly) {
   // kn is fixed by V, so neither t_c nor the stable step depends on the impact speed, and
   // omega0 dt_stable = sqrt(2 + beta^2) - |beta| (zeta = |beta| for hooke).
   ContactOptions o;
-  o.characteristic_velocity_m_per_s = 2.0;
+  HookeParameters::set_characteristic_velocity(o, 2.0);
   const PairProperties p = steel_pair();
   const double dt = stable_time_step(ContactModelKind::hooke, p, o, 1.0, false);
   EXPECT_DOUBLE_EQ(dt, stable_time_step(ContactModelKind::hooke, p, o, 30.0, false));
@@ -85,7 +85,7 @@ TEST(TimeStepGuard, HookeLimitDependsOnTheCharacteristicVelocityOnly) {
   EXPECT_NEAR(omega0 * dt, std::sqrt(2.0 + b * b) - b, 1e-12);
   // A stiffer law at a larger V: kn ~ V^(2/5), so dt_stable ~ V^(-1/5).
   ContactOptions fast = o;
-  fast.characteristic_velocity_m_per_s = 64.0;
+  HookeParameters::set_characteristic_velocity(fast, 64.0);
   EXPECT_NEAR(stable_time_step(ContactModelKind::hooke, p, fast, 1.0, false), dt / 2.0, 1e-12 * dt);
 }
 
