@@ -26,9 +26,8 @@ endif()
 # With nvcc the same holds for device code: --fmad=false (nvcc contracts by default),
 # which also keeps GPU arithmetic bitwise comparable with the host backends
 # (tests/unit/test_backend_agreement.cpp compares the default space with Serial).
-# Two flags for the force kernel's code, measured in the fused step (gas, phi 0.1,
-# N 32k, 1 thread, docs/benchmarks.md): 5.9e7 particle-steps/s with neither, 1.84e8
-# with both.
+# Two flags for the force kernel's code, each worth a measured factor in the fused step
+# (docs/benchmarks.md, "What changed, and what each change bought").
 # -fno-math-errno: sqrt compiles to one instruction instead of a branch to a library
 #   call that sets errno for negative arguments; the call clobbers every vector register,
 #   so a particle's force stayed in memory around its contact loop. Results are the same:

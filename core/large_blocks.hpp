@@ -1,9 +1,9 @@
 // Large blocks of memory kept for reuse (docs/benchmarks.md, "Fresh pages"). glibc's
 // malloc maps every block above 32 MB afresh and unmaps it on free, so each such
-// allocation pays one page fault per 4 kB page on first touch: about 11 us a page on a
-// virtual machine (a 42 MB copy of a paper case's field sums took 120 ms instead of 3 ms).
-// A checkpoint, the end of a run and each move between threads and one thread copy those
-// sums, so a 0.01-s paper case spent 0.4 s per checkpoint. Taking large blocks from the
+// allocation pays one page fault per 4 kB page on first touch, which on a virtual machine
+// made a copy of a paper case's field sums 40 times slower than a copy into pages already
+// held (measured in docs/benchmarks.md, "Fresh pages"). A checkpoint, the end of a run and
+// each move between threads and one thread copy those sums. Taking large blocks from the
 // heap and keeping freed memory there makes the second and later copies reuse pages the
 // process already has.
 #pragma once

@@ -6,8 +6,7 @@
 // (/proc/PID/task/TID/stat) against the CPUs this process may run on (sched_getaffinity).
 // Tasks at a low priority count too: a build at nice 15 beside an otherwise idle 2-core
 // machine still took time slices long enough for the threads' barriers to wait on, and
-// the default scene on 2 threads ran at 2.6e7-1.4e8 particle-steps/s against 1.1-1.3e8
-// on one thread (docs/benchmarks.md, "A busy machine").
+// two threads ran slower than one (measured in docs/benchmarks.md, "A busy machine").
 #pragma once
 
 #include <optional>

@@ -19,10 +19,9 @@ double expected_particles(const Scene& scene);
 double expected_particle_steps(const Scene& scene, long steps_done = 0);
 
 // The whole-run rate assumed before a study has measured one: expected particle-steps per
-// wall second on 2 cores, the setup, outputs and field analysis of a run included.
-// Measured: scenes/default.toml, 3,780 expected particles x 1.5e6 steps in 30 s on the idle
-// 2-core development machine (1.9e8/s); 1.5e8 leaves room for denser scenes and a machine
-// shared with other work (docs/study.md, "Cost and ETA").
+// wall second on 2 cores, the setup, outputs and field analysis of a run included; a little
+// below the default scene's measured rate, for denser scenes and a machine shared with
+// other work (the measurement: docs/study.md, "Cost and ETA").
 inline constexpr double kReferenceRate = 1.5e8;
 
 // Wall seconds as "H:MM:SS" (hours past 99 as "D d HH:MM:SS").

@@ -1,7 +1,7 @@
 // Many fused steps in one parallel region, for host backends (docs/design.md, "The
-// solver"). One region per step costs a fork, a join and the host's turn between them
-// (about 1 microsecond on 2 cores, more when the host deschedules a thread), which is a
-// tenth of a small scene's step. Here one team of all threads runs the fused pass
+// solver"). One region per step costs a fork, a join and the host's turn between them,
+// more when the host deschedules a thread: a tenth of a small scene's step (measured in
+// docs/benchmarks.md, "Design choices, measured"). Here one team of all threads runs the fused pass
 // (fused_step.hpp) step after step; the team's reduction of each step's top speed is the
 // barrier between steps, and every thread advances the same copy of the speed bound
 // (neighbours/rebuild_watch.hpp) with it, so all decide alike to go on: while the next
