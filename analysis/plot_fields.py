@@ -51,7 +51,7 @@ class Run:
             self.back = float(attrs["obstacle_back"])
             shape = attrs.get("obstacle_shape", "cylinder")
             self.shape = shape.decode() if isinstance(shape, bytes) else str(shape)
-            # The shape's own outline (files before it have none: drawn from the sizes).
+            # The shape's own outline (format 1 files have none: drawn from the sizes).
             self.outline = f["obstacle/outline"][...] if "obstacle/outline" in f else None
             mass_definition = attrs["mass_definition"]
             self.mass_definition = (mass_definition.decode() if isinstance(mass_definition, bytes)

@@ -13,7 +13,9 @@ using h5::Handle;
 
 namespace {
 
-constexpr int kFormatVersion = 1;
+// 2: /obstacle/outline (format 1 files have none; the figures then draw the shape from
+// its sizes, analysis/plot_fields.py).
+constexpr int kFormatVersion = 2;
 
 void check_content(const FieldsFileContent& c) {
   if (c.nx < 1 || c.ny < 1 || !(c.dx > 0) || !(c.dy > 0))

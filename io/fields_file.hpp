@@ -67,7 +67,7 @@ std::vector<CellVector> cell_vectors(const FieldsFileContent& content);
 // Writes `path` atomically. Besides the content it writes /grid: x [nx] and y [ny] (cell
 // centres), x_nodes [nx + 1], y_nodes [ny + 1], nodes [ny + 1, nx + 1, 2] (the corner
 // coordinates the XDMF geometry refers to) and @nx, @ny, @x0, @y0, @dx, @dy; and on the
-// root @granshock_file = "fields", @granshock_format_version = 1; and cell_vectors().
+// root @granshock_file = "fields", @granshock_format_version = 2; and cell_vectors().
 // Throws std::invalid_argument when an array does not match the grid, UserError naming the
 // file when it cannot be written.
 void write_fields_file(const std::filesystem::path& path, const FieldsFileContent& content);

@@ -107,7 +107,7 @@ def obstacle_from_scene(scene):
 
 def obstacle_from_fields_attributes(attributes, outline=None):
     """The obstacle described by fields.h5's root attributes (@obstacle_shape, _xc, _yc,
-    _width, _face, _back) and its /obstacle/outline (`outline`, None in files before it),
+    _width, _face, _back) and its /obstacle/outline (`outline`, None in format 1 files),
     or None when it has none: what a fields directory without the scene knows of it."""
     shape = attributes.get("obstacle_shape", "cylinder")
     width = attributes.get("obstacle_width", math.nan)
@@ -115,7 +115,7 @@ def obstacle_from_fields_attributes(attributes, outline=None):
         return None
     length = attributes["obstacle_back"] - attributes["obstacle_face"]
     centre = (attributes["obstacle_xc"], attributes["obstacle_yc"])
-    if outline is not None:  # the outline granshock collided with; sizes as far as known
+    if outline is not None:  # format 2: the outline granshock collided with; sizes as known
         sizes = {"diameter": width} if shape == "cylinder" else {}
         return make_obstacle(shape, centre, sizes, outline)
     sizes = {"cylinder": {"diameter": width},

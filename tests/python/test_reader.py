@@ -44,6 +44,9 @@ CYLINDER = CHANNEL + ["obstacle.diameter=10 d", "time.duration=0.008",
 WEDGE = CHANNEL + ["obstacle.length=12 d", "obstacle.half_angle=25", "contact.friction=0.3",
                    "time.duration=0.004", "time.production_start=0.002"]
 PLATE = CHANNEL + ["obstacle.width=10 d", "time.duration=0.004", "time.production_start=0.002"]
+# A square turned by 30 degrees: its outline in fields.h5 (format 2) is what granshock met.
+SQUARE = CHANNEL + ["obstacle.side=8 d", "obstacle.rotation=30", "time.duration=0.004",
+                    "time.production_start=0.002"]
 TINY_CASES = ["phi-0.1_e-0.5", "phi-0.1_e-0.8", "phi-0.12_e-0.5", "phi-0.12_e-0.8"]
 
 
@@ -69,6 +72,7 @@ def make_outputs():
     granshock_command("fields", "runs/default", "--out", "runs/default_fields", "--no-figures")
     run_scene("wedge.toml", "runs/wedge", WEDGE)
     run_scene("plate.toml", "runs/plate", PLATE)
+    run_scene("square.toml", "runs/square", SQUARE)
     study = str(SOURCE / "tests" / "study" / "tiny.toml")  # writes runs/tiny
     granshock_command("study", study, "--case", "0", "--quiet", "--no-figures")
     # --collect ends with 1 while cases are missing; the table is written all the same.
@@ -284,6 +288,21 @@ class Obstacles(unittest.TestCase):
         self.assertAlmostEqual(x.max() - x.min(), scene["width"], places=12)
         self.assertAlmostEqual(y.max() - y.min(), scene["thickness"], places=12)
         self.assertEqual(len(obstacle.outline), 5)
+
+    def test_square_outline_is_the_one_granshock_met(self):
+        run = granshock.open_run(runs("square"))
+        obstacle = self.check_against_fields("square")
+        scene = run.scene["obstacle"]
+        with h5py.File(runs("square") / "fields.h5", "r") as f:
+            self.assertEqual(int(f.attrs["granshock_format_version"]), 2)
+            stored = f["obstacle/outline"][...]
+        # The scene's corners (python/granshock/obstacle.py) are the file's, in order.
+        self.assertTrue(np.allclose(obstacle.outline[:4], stored, rtol=1e-12, atol=0))
+        side, turn = scene["side"], math.radians(scene["rotation"])
+        x, y = stored.T
+        across = side * (math.cos(turn) + math.sin(turn))
+        self.assertAlmostEqual(x.max() - x.min(), across, places=12)
+        self.assertAlmostEqual(obstacle.frontal_width, across, places=12)
 
 
 class FieldsDirectory(unittest.TestCase):
