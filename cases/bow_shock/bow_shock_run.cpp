@@ -10,6 +10,7 @@
 
 #include "analysis/fields_command.hpp"
 #include "analysis/json_file.hpp"
+#include "cases/accuracy/accuracy_choice.hpp"
 #include "cases/bow_shock/interrupt.hpp"
 #include "cases/bow_shock/machine_load.hpp"
 #include "cases/bow_shock/run_checks.hpp"
@@ -17,7 +18,6 @@
 #include "cases/bow_shock/run_state.hpp"
 #include "cases/bow_shock/run_summary.hpp"
 #include "cases/build_info/build_description.hpp"
-#include "cases/tradeoff/accuracy_choice.hpp"
 #include "core/checkpoint_checks.hpp"
 #include "core/choice_names.hpp"
 #include "core/failure_agreement.hpp"

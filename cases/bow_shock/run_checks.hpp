@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "cases/accuracy/certified_step.hpp"
 #include "core/scene.hpp"
 #include "models/time_step_guard.hpp"
 
@@ -22,13 +23,6 @@ struct RunLimits {
   static constexpr double max_particles = 1 << 28;          // int32 list offsets (~8 partners each)
   static constexpr double max_cells = 1 << 28;              // int32 cell indices
   static constexpr double max_particle_ids = 2147483647.0;  // int32 global ids
-};
-
-// A time step that `granshock run --accuracy` chose and a measured trade table certified
-// within the budget (docs/accuracy.md, "Choosing settings for an error budget").
-struct CertifiedStep {
-  double dt = 0;    // s: the step chosen; a step up to it is certified
-  std::string why;  // the measurement, one clause
 };
 
 // Throws UserError for a scene that must not run; returns the warnings to print. `force`

@@ -7,9 +7,9 @@
 #include <iostream>
 #include <optional>
 
+#include "cases/accuracy/accuracy_choice.hpp"
 #include "cases/bow_shock/bow_shock_run.hpp"
 #include "cases/bow_shock/run_checks.hpp"
-#include "cases/tradeoff/accuracy_choice.hpp"
 #include "core/failure_agreement.hpp"
 #include "core/shell_text.hpp"
 #include "core/user_error.hpp"
@@ -19,10 +19,6 @@
 #include "models/restitution_calibration.hpp"
 
 namespace granshock {
-
-std::filesystem::path run_directory_of(const RunOptions& o, const Scene& scene) {
-  return o.out_dir.empty() ? std::filesystem::path("runs") / scene.name : o.out_dir;
-}
 
 RunOptions with_run_overrides(const RunOptions& given, bool speaks) {
   if (!given.resume) return given;

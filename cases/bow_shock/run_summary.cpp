@@ -3,10 +3,10 @@
 #include <Kokkos_Core.hpp>
 #include <utility>
 
-#include "cases/bow_shock/run_checks.hpp"
 #include "cases/build_info/build_description.hpp"
 #include "cases/collision/head_on_collision.hpp"
 #include "core/cpu_model.hpp"
+#include "kernels/models/time_step_guard.hpp"
 #include "models/restitution_calibration.hpp"
 
 namespace granshock {
@@ -88,7 +88,7 @@ nlohmann::json run_summary(const Scene& s, const Solver& solver, const InflowCon
                            const RunTimes& times) {
   const long steps = solver.steps_done();
   const RemovalCounts removed = solver.removed();
-  const TimeStepAssessment guard = assess_time_step(s);
+  const TimeStepAssessment guard = assess_time_step(s.setup, s.fastest_impact_speed());
   nlohmann::json j;
   j["scene"] = s.name;
   j["completed"] = completed;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "cases/study/safe_name.hpp"
 #include "core/user_error.hpp"
 
 namespace granshock {

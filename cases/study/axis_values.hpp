@@ -7,7 +7,7 @@
 
 #include <string>
 
-#include "cases/study/study_file.hpp"
+#include "cases/study/axis_value.hpp"
 
 namespace granshock {
 

@@ -8,6 +8,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "cases/study/case_files.hpp"  // read_summary, summary_value, stored_scene
+
 namespace granshock {
 
 enum class CaseState {
@@ -31,9 +33,6 @@ struct CaseDirectory {
   std::string record_refused;  // why a record that is there was not used
 };
 
-// The summary key the field analysis always writes (docs/fields.md, "summary.json").
-inline constexpr const char* kFieldsSummaryKey = "fields_bins";
-
 CaseDirectory inspect_case_directory(const std::filesystem::path& dir);
 // The same for a study's case run with `overrides`: a case with no run directory whose
 // record is whole and of those overrides is finished, from its record (a run directory, even an
@@ -41,15 +40,5 @@ CaseDirectory inspect_case_directory(const std::filesystem::path& dir);
 CaseDirectory inspect_case_directory(const std::filesystem::path& dir,
                                      const std::filesystem::path& record_dir,
                                      const std::vector<std::string>& overrides);
-
-// summary.json of `dir`, or null when it is missing or not a JSON object.
-nlohmann::json read_summary(const std::filesystem::path& dir);
-
-// summary[key], or null when it has none.
-nlohmann::json summary_value(const nlohmann::json& summary, const std::string& key);
-
-// The resolved scene stored in dir/run.h5, or "" when it cannot be read (no file, or a run
-// that holds it open).
-std::string stored_scene(const std::filesystem::path& dir);
 
 }  // namespace granshock

@@ -7,7 +7,7 @@
 
 #include "analysis/json_file.hpp"
 #include "cases/build_info/build_description.hpp"
-#include "cases/study/case_directory.hpp"
+#include "cases/study/case_files.hpp"
 #include "core/cpu_model.hpp"
 #include "core/shell_text.hpp"
 #include "core/user_error.hpp"

@@ -9,20 +9,15 @@
 #include <string>
 #include <vector>
 
+#include "cases/study/axis_value.hpp"
+#include "cases/study/safe_name.hpp"
+
 namespace granshock {
 
 // How the axes make cases: every combination (product), the k-th value of every axis
 // together (list, also called zip), or each axis on its own around the base scene (sweep).
 enum class StudyMode { product, list, sweep };
 std::string to_string(StudyMode mode);
-
-// One value of an axis: the overrides it applies and how it is named and tabulated.
-struct AxisValue {
-  std::string label;                   // part of the case name, filesystem-safe
-  std::vector<std::string> overrides;  // "key=value", as `granshock run --set` takes them
-  std::optional<double> number;        // the value in the table and figures, when a number
-  std::string text;                    // the value in the table otherwise
-};
 
 struct StudyAxis {
   std::string name;  // a column of the study table and the name of its figure
@@ -74,12 +69,5 @@ inline constexpr std::size_t kMaxStudyFileBytes = std::size_t(1) << 20;
 StudySpec load_study_file(const std::filesystem::path& path);
 // The same from text; `path` names the file in messages and anchors a relative `base`.
 StudySpec parse_study(const std::string& text, const std::filesystem::path& path);
-
-// Whether `name` can name a study, an axis or a case: 1-64 of A-Z a-z 0-9 . _ -, not
-// starting with '.' or '-' (the rule of scene.name, docs/scene_format.md).
-bool is_safe_name(const std::string& name);
-// `text` made safe for a name: every run of other characters becomes '-', and leading
-// '.' and '-' are dropped.
-std::string safe_name(const std::string& text);
 
 }  // namespace granshock

@@ -2,10 +2,10 @@
 
 #include <fmt/format.h>
 
+#include "cases/accuracy/accuracy_choice.hpp"
 #include "cases/study/case_directory.hpp"
 #include "cases/study/study_cost.hpp"
 #include "cases/study/study_rate.hpp"
-#include "cases/tradeoff/accuracy_choice.hpp"
 
 namespace granshock {
 

@@ -4,8 +4,8 @@
 
 #include <map>
 
+#include "cases/accuracy/accuracy_choice.hpp"
 #include "cases/bow_shock/run_checks.hpp"
-#include "cases/tradeoff/accuracy_choice.hpp"
 #include "core/user_error.hpp"
 #include "io/scene_file.hpp"
 

@@ -33,7 +33,7 @@ import tomllib
 import h5py
 import numpy as np
 
-# The layout of trade.json (cases/tradeoff/accuracy_table.hpp, kTradeTableVersion).
+# The layout of trade.json (cases/accuracy/accuracy_table.hpp, kTradeTableVersion).
 TABLE_VERSION = "granshock trade table 2"
 DEFINITIONS = ["temperature_jump", "sonic_line", "density_threshold"]
 FIELDS = ["phi", "T", "Ma"]
@@ -258,7 +258,7 @@ def own_range(records, title):
     """Where the table holds before any transfer check: its reference's D/d and Ma_inf, from
     the study table beside the records (its columns scene.D_over_d, the obstacle's frontal
     width over units.d, and scene.mach); None without them. `granshock tradeoff` writes
-    its scene's point itself (cases/tradeoff/accuracy_range.hpp), by the mean diameter."""
+    its scene's point itself (cases/accuracy/accuracy_range.hpp), by the mean diameter."""
     table = os.path.join(records, "study.csv")
     if not os.path.isfile(table):
         return None
@@ -274,7 +274,7 @@ BUDGET_ANSWERS = ["delta_over_D." + d for d in DEFINITIONS] + ["phi_peak", "ma_i
 
 def certificate_bound(row, reference_row, noise, k):
     """The bound `granshock run --accuracy` gives the case (docs/accuracy.md, "The
-    certificate"; computed again there, cases/tradeoff/accuracy_table.cpp): the largest of
+    certificate"; computed again there, cases/accuracy/accuracy_table.cpp): the largest of
     its phase-averaged e_eff error and (|difference| + k x noise) / |reference| over the
     answers the reference has; None (unbounded) where the case lost one of them."""
     bound, by = row["e_eff_error_phase_averaged"], "e_eff (phase-averaged)"

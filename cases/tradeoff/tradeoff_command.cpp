@@ -7,8 +7,8 @@
 
 #include "analysis/figures.hpp"
 #include "analysis/json_file.hpp"
+#include "cases/accuracy/accuracy_range.hpp"
 #include "cases/study/study_command.hpp"
-#include "cases/tradeoff/accuracy_range.hpp"
 #include "cases/tradeoff/tradeoff_plan.hpp"
 #include "core/user_error.hpp"
 #include "io/scene_file.hpp"

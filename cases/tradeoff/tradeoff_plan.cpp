@@ -19,12 +19,6 @@ std::vector<std::string> with(std::vector<std::string> a, const std::string& b) 
 
 }  // namespace
 
-std::vector<std::string> overrides_at_dt(const Scene& s, double dt) {
-  const double interval = double(s.run.sample_every) * s.setup.dt;
-  const long every = std::max(1L, std::lround(interval / dt));
-  return {fmt::format("time.dt={:.9g}", dt), fmt::format("output.sample_every={}", every)};
-}
-
 std::vector<TradeCase> tradeoff_cases(const Scene& s) {
   const TimeStepAssessment guard = assess_time_step(s);
   const double tc = guard.t_c, dt = s.setup.dt, d = s.setup.max_diameter();

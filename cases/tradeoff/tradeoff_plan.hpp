@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "cases/accuracy/dt_overrides.hpp"  // overrides_at_dt
 #include "core/scene.hpp"
 
 namespace granshock {
@@ -21,10 +22,6 @@ struct TradeCase {
   std::string name;
   std::vector<std::string> overrides;  // "key=value", after the scene's own
 };
-
-// time.dt = dt and the sample interval (in steps) that keeps the scene's sampling interval
-// in simulated time, at least one step.
-std::vector<std::string> overrides_at_dt(const Scene& scene, double dt);
 
 // From the scene's collision time t_c and stable limit at its fastest impact (the guard):
 //   reference    dt = t_c/100, double, the materials as given

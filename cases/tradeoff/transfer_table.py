@@ -13,7 +13,7 @@ own reference plus k times its own noise), and its bound is the largest of them:
 setting a transfer scene did not run is unbounded. The certified range spans every
 scene's D/d and Ma_inf. Writes OUT_DIR/trade.json (the base table's cases with those
 bounds, each scene's bound in `bound_on`, and the transfer tables under "transfers",
-which `granshock run --accuracy` bounds again the same way: cases/tradeoff/accuracy_table.cpp),
+which `granshock run --accuracy` bounds again the same way: cases/accuracy/accuracy_table.cpp),
 trade.csv, trade.md and pareto.png.
 """
 import os

@@ -445,7 +445,7 @@ assert a == b, "the table from the records differs from the one from the runs"
     grep -Eq '^dt = 2(\.0*)?e-0?7' "$work/choice" ||
     fail "the scene's own dt is not the resolved one: $(grep '^dt' "$work/choice")"
   # The certified bound trade_table.py writes for each case is the one --accuracy computes
-  # (cases/tradeoff/accuracy_table.cpp): a budget every case meets chooses the fastest, and
+  # (cases/accuracy/accuracy_table.cpp): a budget every case meets chooses the fastest, and
   # names its bound.
   "$granshock" run "$source/scenes/default.toml" "${tiny[@]}" --accuracy 100000% \
     --accuracy-table "$out/trade.json" --dry-run --out "$work/never" >"$work/choice" 2>&1 ||

@@ -1,4 +1,4 @@
-// `granshock run --accuracy` (cases/tradeoff/accuracy_choice.hpp): the error bound of every
+// `granshock run --accuracy` (cases/accuracy/accuracy_choice.hpp): the error bound of every
 // measured case, the fastest case within a budget among those that change only dt and
 // softening, single precision only where measured faster, the budget below the table's
 // noise, the choice carried over to another scene through dt / t_c, and certified only
@@ -10,9 +10,9 @@
 #include <functional>
 #include <limits>
 
+#include "cases/accuracy/accuracy_choice.hpp"
+#include "cases/accuracy/accuracy_range.hpp"
 #include "cases/bow_shock/run_checks.hpp"
-#include "cases/tradeoff/accuracy_choice.hpp"
-#include "cases/tradeoff/accuracy_range.hpp"
 #include "core/user_error.hpp"
 #include "io/scene_file.hpp"
 #include "scene_fixtures.hpp"

@@ -10,8 +10,8 @@
 
 #include "analysis/json_file.hpp"
 #include "analysis/summary_json.hpp"
+#include "cases/accuracy/accuracy_table.hpp"
 #include "cases/study/case_directory.hpp"
-#include "cases/tradeoff/accuracy_table.hpp"
 #include "core/user_error.hpp"
 #include "io/run_directory.hpp"
 #include "scene_fixtures.hpp"

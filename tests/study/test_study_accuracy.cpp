@@ -7,12 +7,12 @@
 #include <string>
 #include <vector>
 
+#include "cases/accuracy/accuracy_choice.hpp"
 #include "cases/study/slurm_script.hpp"
 #include "cases/study/study_cost.hpp"
 #include "cases/study/study_file.hpp"
 #include "cases/study/study_plan.hpp"
 #include "cases/study/study_table.hpp"
-#include "cases/tradeoff/accuracy_choice.hpp"
 #include "core/shell_text.hpp"
 #include "io/scene_file.hpp"
 #include "scene_fixtures.hpp"

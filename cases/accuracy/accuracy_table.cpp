@@ -1,4 +1,4 @@
-#include "cases/tradeoff/accuracy_table.hpp"
+#include "cases/accuracy/accuracy_table.hpp"
 
 #include <fmt/format.h>
 

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "cases/bow_shock/run_checks.hpp"
-#include "cases/tradeoff/accuracy_table.hpp"
+#include "cases/accuracy/accuracy_table.hpp"
+#include "cases/accuracy/certified_step.hpp"
 
 namespace granshock {
 

@@ -1,4 +1,4 @@
-#include "cases/tradeoff/accuracy_range.hpp"
+#include "cases/accuracy/accuracy_range.hpp"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "cases/tradeoff/accuracy_range.hpp"
+#include "cases/accuracy/accuracy_range.hpp"
 
 namespace granshock {
 

@@ -1,4 +1,4 @@
-#include "cases/tradeoff/accuracy_choice.hpp"
+#include "cases/accuracy/accuracy_choice.hpp"
 
 #include <fmt/format.h>
 
@@ -7,14 +7,14 @@
 #include <cstdlib>
 #include <set>
 
+#include "accuracy_paths.hpp"
 #include "analysis/figures.hpp"
-#include "cases/bow_shock/run_checks.hpp"
-#include "cases/tradeoff/tradeoff_plan.hpp"
+#include "cases/accuracy/dt_overrides.hpp"
 #include "core/choice_names.hpp"
 #include "core/quoted_input.hpp"
 #include "core/user_error.hpp"
 #include "io/scene_file.hpp"
-#include "tradeoff_paths.hpp"
+#include "kernels/models/time_step_guard.hpp"
 
 namespace granshock {
 
@@ -249,7 +249,8 @@ AccuracyChoice choose_accuracy(const fs::path& scene_file,
   const AccuracyTable table = read_accuracy_table(table_path);
   // What the user would run without --accuracy: the speed is claimed against it.
   const LoadedScene given = load_scene_file(scene_file, overrides);
-  const TimeStepAssessment given_guard = assess_time_step(given.scene);
+  const TimeStepAssessment given_guard =
+      assess_time_step(given.scene.setup, given.scene.fastest_impact_speed());
   const SceneCorner corner = scene_corner(given.scene);
   const SettingChoice sc = table.range && holds_at(*table.range, corner)
                                ? choose_setting(table, budget)
@@ -271,7 +272,8 @@ AccuracyChoice choose_accuracy(const fs::path& scene_file,
   all.insert(all.end(), chosen.begin(), chosen.end());
   // t_c of this scene at the chosen softening: the case's dt/t_c carries over.
   const LoadedScene loaded = load_scene_file(scene_file, all);
-  const TimeStepAssessment guard = assess_time_step(loaded.scene);
+  const TimeStepAssessment guard =
+      assess_time_step(loaded.scene.setup, loaded.scene.fastest_impact_speed());
   double dt = s.dt_over_tc * guard.t_c;
   out.report.push_back(fmt::format("budget {} on e_eff, delta/D, phi_peak and Ma_inf, from {}",
                                    percent(budget), table_path.string()));
