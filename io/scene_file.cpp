@@ -13,6 +13,7 @@
 #include "io/scene_schema.hpp"
 #include "io/shortest_floats.hpp"
 #include "io/table_reader.hpp"
+#include "kernels/models/law_parameters.hpp"
 
 namespace granshock {
 
@@ -117,6 +118,41 @@ std::vector<std::string> differing_keys(const std::string& toml_a, const std::st
   std::set<std::string> keys;
   collect_differences(&a, &b, "", keys);
   return {keys.begin(), keys.end()};
+}
+
+std::string without_other_laws_keys(const std::string& resolved) {
+  toml::table root;
+  try {
+    root = toml::parse(resolved);
+  } catch (const toml::parse_error&) {
+    return resolved;
+  }
+  toml::table* contact = root["contact"].as_table();
+  if (!contact) return resolved;
+  ContactModelKind model = ContactModelKind::hertz;
+  if (const std::optional<std::string> name = (*contact)["model"].value<std::string>()) {
+    try {
+      model = parse_contact_model(*name);
+    } catch (const std::exception&) {
+      return resolved;  // the scene's reader names the model
+    }
+  }
+  std::set<std::string> own;
+  with_law_parameters(model, [&](auto parameters) {
+    for (const LawKey& k : parameters.keys) own.insert(k.name);
+  });
+  bool removed = false;
+  for_each_law_parameters([&](auto parameters) {
+    for (const LawKey& k : parameters.keys)
+      if (!own.count(k.name) && contact->contains(k.name)) {
+        contact->erase(std::string_view(k.name));
+        removed = true;
+      }
+  });
+  if (!removed) return resolved;
+  std::ostringstream os;
+  os << root << "\n";
+  return with_shortest_floats(os.str());
 }
 
 LoadedScene load_scene_file(const std::filesystem::path& path,

@@ -30,6 +30,13 @@ LoadedScene parse_scene(const std::string& text, const std::vector<std::string>&
 // only counts), in sorted order; for naming what changed between a run and its resume.
 std::vector<std::string> differing_keys(const std::string& toml_a, const std::string& toml_b);
 
+// A resolved scene as a checkpoint of an older granshock stored it, read as today's: the
+// parameter keys of contact laws other than its contact.model removed (a hertz scene's
+// contact.characteristic_velocity, written for every law before each law owned its keys:
+// kernels/models/law_parameters.hpp). Text that holds none, or is not TOML, comes back
+// as it is.
+std::string without_other_laws_keys(const std::string& resolved);
+
 // The canonical TOML of a scene (SI units); parse_scene of it gives the same scene.
 std::string scene_to_toml(const Scene& scene);
 

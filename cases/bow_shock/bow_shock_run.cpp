@@ -450,10 +450,11 @@ void BowShockRun::read_checkpoint_and_check() {
   const CheckpointExtras& extras = checkpoint_extras_;
   // The same values written in other digits (a checkpoint of a granshock that wrote every
   // number with 17: io/shortest_floats.hpp) are the same scene.
-  const std::vector<std::string> keys =
-      extras.scene_resolved == loaded_.resolved
-          ? std::vector<std::string>()
-          : differing_keys(extras.scene_resolved, loaded_.resolved);
+  // A checkpoint of an older granshock may hold another law's keys (io/scene_file.hpp).
+  const std::string stored = without_other_laws_keys(extras.scene_resolved);
+  const std::vector<std::string> keys = stored == loaded_.resolved
+                                            ? std::vector<std::string>()
+                                            : differing_keys(stored, loaded_.resolved);
   const std::vector<std::string> fixed = keys_fixed_on_resume(keys);
   if (!fixed.empty()) {
     throw UserError(fmt::format(
@@ -466,9 +467,7 @@ void BowShockRun::read_checkpoint_and_check() {
   // The checkpoint is checked against its own scene's schedule, then the change of its
   // time keys against what it holds (run_extension.hpp).
   const Scene before =
-      keys.empty()
-          ? scene_
-          : parse_scene(extras.scene_resolved, {}, path.string() + ":/scene/resolved").scene;
+      keys.empty() ? scene_ : parse_scene(stored, {}, path.string() + ":/scene/resolved").scene;
   try {
     check_run(checkpoint_state_, extras,
               run_fit(before, inflow_, SamplingPlan(before), checkpoint_state_.step));

@@ -395,3 +395,23 @@ TEST(SceneSchema, ALawTakesOnlyItsOwnKeys) {
   EXPECT_EQ(hertz.resolved.find("characteristic_velocity"), std::string::npos);
   EXPECT_EQ(hertz.resolved.find("stiffness"), std::string::npos);
 }
+
+// A checkpoint of a granshock from before each law owned its keys stored a hertz scene
+// with contact.characteristic_velocity, which today's reader refuses: a resume reads it
+// without that key (io/scene_file.hpp, without_other_laws_keys), and finds no difference
+// from the same scene resolved today. A law's own key stays.
+TEST(SceneSchema, AnOlderResolvedSceneLosesOnlyAnotherLawsKeys) {
+  const LoadedScene today = parse_scene(small_scene());
+  std::string older = today.resolved;
+  const std::size_t contact = older.find("[contact]\n");
+  ASSERT_NE(contact, std::string::npos);
+  older.insert(contact + 10, "characteristic_velocity = 1.0\n");
+  EXPECT_THROW(parse_scene(older), UserError);
+  const std::string read = without_other_laws_keys(older);
+  EXPECT_EQ(read.find("characteristic_velocity"), std::string::npos);
+  EXPECT_NO_THROW(parse_scene(read));
+  EXPECT_TRUE(differing_keys(read, today.resolved).empty());
+  EXPECT_EQ(without_other_laws_keys(today.resolved), today.resolved);  // nothing to remove
+  const LoadedScene hooke = parse_scene(small_scene(), {"contact.model=\"hooke\""});
+  EXPECT_EQ(without_other_laws_keys(hooke.resolved), hooke.resolved);
+}
