@@ -537,53 +537,53 @@ const Key kContactKeys[] = {
      }},
 };
 
+// Adds a key that several owners (laws, shapes) may declare to a table's keys, once: the
+// first owner to declare it places it, a later one must give it the same type.
+void add_owned_key(std::vector<Key>& keys, const char* name, const char* type, Read read,
+                   Write write) {
+  const auto known = std::find_if(keys.begin(), keys.end(),
+                                  [&](const Key& k) { return k.name == std::string(name); });
+  if (known == keys.end()) {
+    keys.push_back({name, type, read, write});
+    return;
+  }
+  if (std::string(known->type) != type)
+    throw std::logic_error(std::string("two owners give the scene key ") + name +
+                           " different types");
+}
+
+// The owners of a key, as a refusal names them: "hooke" or "linear".
+template <class Kind>
+std::string quoted_names(const std::vector<Kind>& owners) {
+  std::vector<std::string> names;
+  for (Kind k : owners) names.push_back(fmt::format("\"{}\"", choice_name(k)));
+  return fmt::format("{}", fmt::join(names, " or "));
+}
+
 // The parameter keys of the contact laws, each declared once in its law's parameter
-// header (kernels/models/law_parameters.hpp) and found here by name: read when the scene's
-// contact.model owns it, refused when given for another law, written back for its own
-// law only (as the obstacle's size keys are).
-struct LawKeyOf {
-  std::size_t index;
-  const LawKey* key;
-};
-
-std::optional<LawKeyOf> law_key_named(ContactModelKind model, const std::string& name) {
-  std::optional<LawKeyOf> found;
-  with_law_parameters(model, [&](auto parameters) {
-    for (std::size_t i = 0; i < parameters.keys.size(); ++i)
-      if (name == parameters.keys[i].name) found = LawKeyOf{i, &parameters.keys[i]};
-  });
-  return found;
-}
-
-// The laws that own the key `name`, as a refusal names them.
-std::string laws_owning(const std::string& name) {
-  std::vector<std::string> owners;
-  for_each_law_parameters([&](auto parameters) {
-    if (law_key_named(parameters.kind, name))
-      owners.push_back(fmt::format("\"{}\"", choice_name(parameters.kind)));
-  });
-  return fmt::format("{}", fmt::join(owners, " or "));
-}
-
+// header (kernels/models/law_parameters.hpp) and found there by name: read when the
+// scene's contact.model owns it, refused when given for another law, written back for its
+// own law only (as the obstacle's size keys are).
 void read_law_key(TableReader& r, Reading& st, const std::string& k) {
   const ContactModelKind model = st.s.setup.contacts.model;
-  const std::optional<LawKeyOf> own = law_key_named(model, k);
+  const std::optional<std::size_t> own = law_key_index(model, k);
   if (!own) {
     if (const toml::node* n = r.node(k))
       fail(r.key(k), show(*n),
-           fmt::format("is a key of contact.model = {}, and the model is \"{}\"", laws_owning(k),
-                       choice_name(model)));
+           fmt::format("is a key of contact.model = {}, and the model is \"{}\"",
+                       quoted_names(laws_with_key(k)), choice_name(model)));
     return;
   }
-  const LawKey& key = *own->key;
-  if (r.has(k) || key.fallback == LawKey::Default::required)
-    st.law_parameters[own->index] = r.number_within(k, key.lo, key.hi, {}, key.why);
+  with_law_parameters(model, [&](auto parameters) {
+    const LawKey& key = parameters.keys[*own];
+    if (r.has(k) || key.fallback == LawKey::Default::required)
+      st.law_parameters[*own] = r.number_within(k, key.lo, key.hi, {}, key.why);
+  });
 }
 
 void write_law_key(const Writing& w, toml::table& t, const std::string& k) {
-  const ContactOptions& o = w.s.setup.contacts.options;
-  if (const std::optional<LawKeyOf> own = law_key_named(w.s.setup.contacts.model, k))
-    t.insert(k, o.law_parameters[own->index]);
+  if (const std::optional<std::size_t> own = law_key_index(w.s.setup.contacts.model, k))
+    t.insert(k, w.s.setup.contacts.options.law_parameters[*own]);
 }
 
 // [contact]'s keys: the table above, then every law's parameter keys (each name once, in
@@ -592,17 +592,8 @@ void write_law_key(const Writing& w, toml::table& t, const std::string& k) {
 std::vector<Key> contact_keys() {
   std::vector<Key> keys(std::begin(kContactKeys), std::end(kContactKeys));
   for_each_law_parameters([&](auto parameters) {
-    for (const LawKey& key : parameters.keys) {
-      const auto known = std::find_if(
-          keys.begin(), keys.end(), [&](const Key& k) { return k.name == std::string(key.name); });
-      if (known != keys.end()) {
-        if (std::string(known->type) != key.type)
-          throw std::logic_error(std::string("two contact laws give the key ") + key.name +
-                                 " different types");
-        continue;
-      }
-      keys.push_back({key.name, key.type, read_law_key, write_law_key});
-    }
+    for (const LawKey& key : parameters.keys)
+      add_owned_key(keys, key.name, key.type, read_law_key, write_law_key);
   });
   keys.push_back({"pairs", nullptr, read_pairs, write_pairs});
   return keys;
@@ -771,40 +762,17 @@ const Table kInflow = table("inflow", kInflowKeys);
 // shape's header (`keys`, kernels/models/shape_key.hpp) and found here by name: a key is
 // read into Obstacle::size when the obstacle has a shape that owns it, refused when it is
 // given for another shape, and written back for its own shape only.
-struct ShapeKeyOf {
-  ObstacleShape shape;
-  std::size_t index;
-  const ShapeKey* key;
-};
-
-// The shape's key named `name`, if it has one.
-std::optional<ShapeKeyOf> shape_key_named(ObstacleShape shape, const std::string& name) {
-  return with_obstacle_shape(shape, [&](auto s) -> std::optional<ShapeKeyOf> {
-    for (std::size_t i = 0; i < std::size(s.keys); ++i)
-      if (name == s.keys[i].name) return ShapeKeyOf{shape, i, &s.keys[i]};
-    return std::nullopt;
-  });
-}
-
-// The shapes that own the key `name`, as a refusal names them.
-std::string owners_of(const std::string& name) {
-  std::vector<std::string> owners;
-  for_each_obstacle_shape([&](auto s) {
-    if (shape_key_named(s.kind, name)) owners.push_back(fmt::format("\"{}\"", s.name));
-  });
-  return fmt::format("{}", fmt::join(owners, " or "));
-}
-
 void read_shape_key(TableReader& r, Reading& st, const std::string& k) {
-  const std::optional<ShapeKeyOf> own = shape_key_named(st.obstacle.shape, k);
+  const ObstacleShape shape = st.obstacle.shape;
+  const std::optional<std::size_t> own = shape_key_index(shape, k);
   if (!own) {
     if (const toml::node* n = r.node(k))
       fail(r.key(k), show(*n),
-           fmt::format("is a key of obstacle.shape = {}, and the shape is \"{}\"", owners_of(k),
-                       choice_name(st.obstacle.shape)));
+           fmt::format("is a key of obstacle.shape = {}, and the shape is \"{}\"",
+                       quoted_names(shapes_with_key(k)), choice_name(shape)));
     return;
   }
-  const ShapeKey& key = *own->key;
+  const ShapeKey key = with_obstacle_shape(shape, [&](auto s) { return s.keys[*own]; });
   const std::optional<double> fallback =
       key.required() ? std::nullopt : std::optional<double>(key.fallback);
   double value = 0;
@@ -816,19 +784,14 @@ void read_shape_key(TableReader& r, Reading& st, const std::string& k) {
       fail(r.key(k), fmt::format("{} m", value),
            fmt::format("must be at least the largest particle diameter ({} m): the contact "
                        "law treats the {} as a wall",
-                       st.s.setup.max_diameter(), choice_name(st.obstacle.shape)));
+                       st.s.setup.max_diameter(), choice_name(shape)));
   }
-  st.obstacle.size[own->index] = value;
+  st.obstacle.size[*own] = value;
 }
 
 void write_shape_key(const Writing& w, toml::table& t, const std::string& k) {
   const Obstacle& o = *w.s.setup.obstacle;
-  if (const std::optional<ShapeKeyOf> own = shape_key_named(o.shape, k))
-    t.insert(k, o.size[own->index]);
-}
-
-const char* shape_key_type(ShapeKey::Kind kind) {
-  return kind == ShapeKey::Kind::angle ? "number (degrees)" : "length";
+  if (const std::optional<std::size_t> own = shape_key_index(o.shape, k)) t.insert(k, o.size[*own]);
 }
 
 // [obstacle]'s keys: the shape, every shape's size keys (each name once, in the order of
@@ -844,17 +807,8 @@ std::vector<Key> obstacle_keys() {
        }},
   };
   for_each_obstacle_shape([&](auto s) {
-    for (const ShapeKey& key : s.keys) {
-      const auto known = std::find_if(
-          keys.begin(), keys.end(), [&](const Key& k) { return k.name == std::string(key.name); });
-      if (known != keys.end()) {
-        if (std::string(known->type) != shape_key_type(key.kind))
-          throw std::logic_error(std::string("two obstacle shapes give the key ") + key.name +
-                                 " different types");
-        continue;
-      }
-      keys.push_back({key.name, shape_key_type(key.kind), read_shape_key, write_shape_key});
-    }
+    for (const ShapeKey& key : s.keys)
+      add_owned_key(keys, key.name, key.type(), read_shape_key, write_shape_key);
   });
   keys.push_back({"material", "string",
                   [](TableReader& r, Reading& st, const std::string& k) {

@@ -59,9 +59,7 @@ std::string build_info_json(int processes) {
     nlohmann::json keys = nlohmann::json::array();
     for (const ShapeKey& k : shape.keys) {
       nlohmann::json key = {
-          {"key", std::string("obstacle.") + k.name},
-          {"type", k.kind == ShapeKey::Kind::angle ? "number (degrees)" : "length"},
-          {"meaning", k.meaning}};
+          {"key", std::string("obstacle.") + k.name}, {"type", k.type()}, {"meaning", k.meaning}};
       if (k.kind == ShapeKey::Kind::angle) key["accepted"] = {k.lo, k.hi};
       key["default"] = k.required() ? nlohmann::json("required") : nlohmann::json(k.fallback);
       keys.push_back(key);

@@ -227,20 +227,13 @@ std::string law_option(const char* key) {
 std::array<double, kMaxLawParameters> collision_law_parameters(const CollisionOptions& o) {
   for (const auto& [name, value] : o.law_parameters) {
     if (!value) continue;
-    bool own = false;
-    with_law_parameters(o.model, [&](auto parameters) {
-      for (const LawKey& k : parameters.keys) own = own || name == k.name;
-    });
+    if (law_key_index(o.model, name)) continue;
     std::vector<std::string> owners;
-    for_each_law_parameters([&](auto parameters) {
-      for (const LawKey& k : parameters.keys)
-        if (name == k.name)
-          owners.push_back(std::string("--model ") + choice_name(parameters.kind));
-    });
-    if (!own)
-      throw UserError(fmt::format("{} is a parameter of {}, and the model is {}",
-                                  law_option(name.c_str()), fmt::join(owners, " or "),
-                                  choice_name(o.model)));
+    for (ContactModelKind law : laws_with_key(name))
+      owners.push_back(std::string("--model ") + choice_name(law));
+    throw UserError(fmt::format("{} is a parameter of {}, and the model is {}",
+                                law_option(name.c_str()), fmt::join(owners, " or "),
+                                choice_name(o.model)));
   }
   std::array<double, kMaxLawParameters> values{};
   with_law_parameters(o.model, [&](auto parameters) {

@@ -5,7 +5,11 @@
 // parameters listed for its kind.
 #pragma once
 
+#include <cstddef>
+#include <optional>
+#include <string>
 #include <type_traits>
+#include <vector>
 
 #include "core/contact_settings.hpp"
 #include "kernels/models/hooke_parameters.hpp"
@@ -73,6 +77,26 @@ void with_law_parameters(ContactModelKind kind, F&& f) {
 template <class F>
 void for_each_law_parameters(F&& f) {
   law_parameters_detail::each(f, LawParameterSets{});
+}
+
+// The index of the key `name` among the keys of the law `kind`; nullopt where it has none
+// so named.
+inline std::optional<std::size_t> law_key_index(ContactModelKind kind, const std::string& name) {
+  std::optional<std::size_t> index;
+  with_law_parameters(kind, [&](auto parameters) {
+    for (std::size_t i = 0; i < parameters.keys.size(); ++i)
+      if (name == parameters.keys[i].name) index = i;
+  });
+  return index;
+}
+
+// The laws with a key `name`, in the order of LawParameterSets (as refusals name them).
+inline std::vector<ContactModelKind> laws_with_key(const std::string& name) {
+  std::vector<ContactModelKind> laws;
+  for_each_law_parameters([&](auto parameters) {
+    if (law_key_index(parameters.kind, name)) laws.push_back(parameters.kind);
+  });
+  return laws;
 }
 
 }  // namespace granshock

@@ -9,7 +9,11 @@
 #pragma once
 
 #include <cmath>
+#include <cstddef>
+#include <optional>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "core/obstacle.hpp"
 #include "core/variant_names.hpp"
@@ -83,6 +87,25 @@ decltype(auto) with_obstacle_shape(const Obstacle& o, F&& f) {
 template <class F>
 void for_each_obstacle_shape(F&& f) {
   shapes_detail::each_shape(f, ObstacleShapes{});
+}
+
+// The index of the key `name` among the size keys of `shape`; nullopt where it has none so
+// named.
+inline std::optional<std::size_t> shape_key_index(ObstacleShape shape, const std::string& name) {
+  return with_obstacle_shape(shape, [&](auto s) -> std::optional<std::size_t> {
+    for (std::size_t i = 0; i < std::size(s.keys); ++i)
+      if (name == s.keys[i].name) return i;
+    return std::nullopt;
+  });
+}
+
+// The shapes with a size key `name`, in the order of ObstacleShapes (as refusals name them).
+inline std::vector<ObstacleShape> shapes_with_key(const std::string& name) {
+  std::vector<ObstacleShape> shapes;
+  for_each_obstacle_shape([&](auto s) {
+    if (shape_key_index(s.kind, name)) shapes.push_back(s.kind);
+  });
+  return shapes;
 }
 
 // An obstacle of `shape` at `centre` with the sizes in the order of the shape's keys (the

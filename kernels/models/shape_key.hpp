@@ -25,6 +25,8 @@ struct ShapeKey {
   double fallback = std::numeric_limits<double>::quiet_NaN();
 
   bool required() const { return std::isnan(fallback); }
+  // The type column of docs/scene_keys.md.
+  const char* type() const { return kind == Kind::angle ? "number (degrees)" : "length"; }
 };
 
 }  // namespace granshock
