@@ -40,15 +40,28 @@ std::string without_other_laws_keys(const std::string& resolved);
 // The canonical TOML of a scene (SI units); parse_scene of it gives the same scene.
 std::string scene_to_toml(const Scene& scene);
 
+// What docs/scene_keys.md says of a key besides its name and type, in Markdown: its unit,
+// what is accepted, its default ("required", a literal, another key) and what it does.
+// Declared beside the key's reader (io/scene_schema.cpp), or by the law or shape that
+// owns the key (kernels/models/law_key.hpp, shape_key.hpp).
+struct KeyDoc {
+  std::string unit, accepted, fallback, meaning;
+};
+
 // A key a scene file accepts, named as docs/scene_keys.md names it
 // ("inflow.mach", "materials.NAME.density", "[[species]] diameter"), with the type that
-// table gives it ("length", "number (m/s)").
+// table gives it ("length", "number (m/s)") and the rest of its row.
 struct SceneKey {
   std::string name;
   std::string type;
+  KeyDoc doc;
 };
-// Every key of the scene schema, in the order of docs/scene_format.md (defined with the
+// Every key of the scene schema, in the order of docs/scene_keys.md (defined with the
 // schema's tables in scene_schema.cpp).
 std::vector<SceneKey> scene_keys();
+
+// The table of docs/scene_keys.md's "Keys" section, made from scene_keys(): a header row
+// and one row per key. `granshock keys` prints it; a test compares it with the docs.
+std::string scene_keys_table();
 
 }  // namespace granshock

@@ -66,6 +66,30 @@ constexpr double kMinAreaFraction = 1e-6;
 constexpr double kMaxDomainLength = 1e4;
 constexpr Range kProgressInterval = {0.01, 1e9, "wall-clock seconds"};
 
+// A number as docs/scene_keys.md writes it, the shorter of plain and exponent form (plain
+// on a tie): 1e-6, 1e4, 0.5, 90 (not 1e-06, 10000).
+std::string short_number(double value) {
+  const std::string plain = fmt::format("{:g}", value);
+  std::string text = fmt::format("{:e}", value);
+  const std::size_t e = text.find('e');
+  std::string mantissa = text.substr(0, e), exponent = text.substr(e + 1);
+  if (mantissa.find('.') != std::string::npos) {
+    mantissa.erase(mantissa.find_last_not_of('0') + 1);
+    if (mantissa.back() == '.') mantissa.pop_back();
+  }
+  const bool negative = exponent[0] == '-';
+  exponent.erase(0, exponent.find_first_not_of("+-0"));
+  const std::string short_form =
+      exponent.empty() ? mantissa : mantissa + "e" + (negative ? "-" : "") + exponent;
+  return short_form.size() < plain.size() ? short_form : plain;
+}
+
+// The unit a key's type names: "N/m" of "number (N/m)"; none for a plain "number".
+std::string unit_of_type(const std::string& type) {
+  const std::size_t open = type.find('('), close = type.rfind(')');
+  return open == std::string::npos || close < open ? "" : type.substr(open + 1, close - open - 1);
+}
+
 // A pair key's name for the obstacle ("a-obstacle"); no species may take it.
 const char* const kObstacleName = "obstacle";
 
@@ -117,7 +141,8 @@ using Write = void (*)(const Writing& w, toml::table& t, const std::string& k);
 
 struct Key {
   const char* name;
-  const char* type;  // the type column of docs/scene_format.md; null: a table of item tables
+  const char* type;  // the type column of docs/scene_keys.md; null: a table of item tables
+  KeyDoc doc;        // the other columns of docs/scene_keys.md (granshock keys)
   Read read;
   Write write;
 };
@@ -183,7 +208,9 @@ int species_index(const Reading& st, const std::string& key, const std::string& 
 // ---- [units] -----------------------------------------------------------------------------
 
 const Key kUnitsKeys[] = {
-    {"d", "number (m)",
+    {"d",
+     "number (m)",
+     {"m", "`[1e-6, 1]`", "`0.001`", "the length unit `d` of `\"N d\"`"},
      [](TableReader& r, Reading& st, const std::string& k) {
        st.s.d_m = r.number_within(k, kDiameter.lo, kDiameter.hi, 1e-3, kDiameter.why);
      },
@@ -194,7 +221,10 @@ const Table kUnits = table("units", kUnitsKeys);
 // ---- [scene] -----------------------------------------------------------------------------
 
 const Key kSceneKeys[] = {
-    {"name", "string",
+    {"name",
+     "string",
+     {"", "1-64 of `A-Z a-z 0-9 . _ -`, not starting with `.` or `-`", "`\"unnamed\"`",
+      "names the run directory `runs/<name>`"},
      [](TableReader& r, Reading& st, const std::string& k) {
        st.s.name = r.string(k, "unnamed");
        if (!is_safe_name(st.s.name))
@@ -203,7 +233,9 @@ const Key kSceneKeys[] = {
               "(it names the run directory runs/<name>)");
      },
      [](const Writing& w, toml::table& t, const std::string& k) { t.insert(k, w.s.name); }},
-    {"dim", "integer",
+    {"dim",
+     "integer",
+     {"", "2 only", "`2`", "quasi-2-D (centres in the x-y plane)"},
      [](TableReader& r, Reading& st, const std::string& k) {
        const long dim = r.integer_at_least(k, 2, 2);
        if (dim != 2)
@@ -211,7 +243,9 @@ const Key kSceneKeys[] = {
        st.s.setup.dim = 2;
      },
      [](const Writing& w, toml::table& t, const std::string& k) { t.insert(k, w.s.setup.dim); }},
-    {"seed", "integer",
+    {"seed",
+     "integer",
+     {"", "`>= 0`", "`1`", "seed of the counter-based RNG (inflow positions, velocities)"},
      [](TableReader& r, Reading& st, const std::string& k) {
        st.s.run.seed = std::uint64_t(r.integer_at_least(k, 0, 1));
      },
@@ -224,7 +258,11 @@ const Table kScene = table("scene", kSceneKeys);
 // ---- [materials.NAME] --------------------------------------------------------------------
 
 const Key kMaterialKeys[] = {
-    {"youngs_modulus", "number (Pa)",
+    {"youngs_modulus",
+     "number (Pa)",
+     {"Pa", "`[1e3, 1e13]`", "required",
+      "defines material NAME (`steel` and `aluminium` are built in, the paper's values; a "
+      "`[materials.steel]` table replaces the built-in one)"},
      [](TableReader& r, Reading& st, const std::string& k) {
        st.material.youngs_modulus_pa =
            r.number_within(k, kYoungsModulus.lo, kYoungsModulus.hi, {}, kYoungsModulus.why);
@@ -232,14 +270,18 @@ const Key kMaterialKeys[] = {
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.material->youngs_modulus_pa);
      }},
-    {"poisson_ratio", "number",
+    {"poisson_ratio",
+     "number",
+     {"", "`(-1, 0.5)`", "required", "nu: each body adds (1 - nu^2) / E to the Hertz law's 1 / E*"},
      [](TableReader& r, Reading& st, const std::string& k) {
        st.material.poisson_ratio = r.number_in(k, -1.0, 0.5, true, true);
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.material->poisson_ratio);
      }},
-    {"density", "number (kg/m3)",
+    {"density",
+     "number (kg/m3)",
+     {"kg/m3", "`[1, 1e5]`", "required", "rho: a sphere of diameter d weighs rho pi d^3 / 6"},
      [](TableReader& r, Reading& st, const std::string& k) {
        st.material.density_kg_m3 = r.number_within(k, kDensity.lo, kDensity.hi, {}, kDensity.why);
      },
@@ -294,7 +336,12 @@ void read_materials(TableReader& top, Reading& st) {
 // ---- [[species]] -------------------------------------------------------------------------
 
 const Key kSpeciesKeys[] = {
-    {"name", "string",
+    {"name",
+     "string",
+     {"",
+      "1-64 characters, no control characters; unique; not `obstacle`; a dash only where every "
+      "pair key still names one pair (`a`, `b-c`, `a-b`, `c` would make `a-b-c` name two)",
+      "required", "one table per species, at most 64 (scene_format.md, \"Limits\")"},
      [](TableReader& r, Reading& st, const std::string& k) {
        st.species.name = r.string(k);
        check_name(r.key(k), st.species.name);
@@ -308,21 +355,29 @@ const Key kSpeciesKeys[] = {
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.s.setup.species[w.species].name);
      }},
-    {"material", "string",
+    {"material",
+     "string",
+     {"", "a material (built in or `materials.NAME`)", "required",
+      "the species' modulus, Poisson ratio and density"},
      [](TableReader& r, Reading& st, const std::string& k) {
        st.species.material = material_named(st, r.key(k), r.string(k));
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.s.setup.species[w.species].material.name);
      }},
-    {"diameter", "length",
+    {"diameter",
+     "length",
+     {"m, `\"N d\"`", "`[1e-6, 1]` m", "required", "spheres: m = rho pi d^3 / 6"},
      [](TableReader& r, Reading& st, const std::string& k) {
        st.species.diameter_m = r.length_within(k, kDiameter.lo, kDiameter.hi, {}, kDiameter.why);
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.s.setup.species[w.species].diameter_m);
      }},
-    {"number_fraction", "number",
+    {"number_fraction",
+     "number",
+     {"", "`[1e-6, 1]`; the species' fractions sum to 1 (within 1e-9)", "required",
+      "of the inflow"},
      [](TableReader& r, Reading& st, const std::string& k) {
        st.number_fraction =
            r.number_within(k, kNumberFraction.lo, kNumberFraction.hi, {}, kNumberFraction.why);
@@ -389,7 +444,10 @@ void read_species(TableReader& top, Reading& st) {
 // ---- [contact.pairs."a-b"] ---------------------------------------------------------------
 
 const Key kPairKeys[] = {
-    {"restitution", "number",
+    {"restitution",
+     "number",
+     {"", "`[0.01, 1]`", "`contact.restitution`",
+      "per pair of species a, b; `\"a-obstacle\"` for the obstacle"},
      [](TableReader& r, Reading& st, const std::string& k) {
        ContactSettings& c = st.s.setup.contacts;
        const int a = st.pair_a, b = st.pair_b;
@@ -407,7 +465,9 @@ const Key kPairKeys[] = {
        t.insert(
            k, w.pair_b < 0 ? c.obstacle_restitution[w.pair_a] : c.restitution[w.pair_a][w.pair_b]);
      }},
-    {"friction", "number",
+    {"friction",
+     "number",
+     {"", "`[0, 10]`", "`contact.friction`", "per pair, as restitution"},
      [](TableReader& r, Reading& st, const std::string& k) {
        ContactSettings& c = st.s.setup.contacts;
        const int a = st.pair_a, b = st.pair_b;
@@ -479,7 +539,10 @@ void write_pairs(const Writing& w, toml::table& t, const std::string& k) {
 // ---- [contact] ---------------------------------------------------------------------------
 
 const Key kContactKeys[] = {
-    {"restitution", "number",
+    {"restitution",
+     "number",
+     {"", "`[0.01, 1]` (contact_model.md, \"Restitution range\")", "required",
+      "every pair and the obstacle"},
      [](TableReader& r, Reading& st, const std::string& k) {
        const double e = r.number_within(k, kRestitution.lo, kRestitution.hi, {}, kRestitution.why);
        st.s.setup.contacts = ContactSettings::uniform(int(st.s.setup.species.size()), e, 0.0);
@@ -487,7 +550,9 @@ const Key kContactKeys[] = {
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.s.setup.contacts.restitution[0][0]);
      }},
-    {"friction", "number",
+    {"friction",
+     "number",
+     {"", "`[0, 10]`", "`0`", "Coulomb mu; 0 compiles no tangential force"},
      [](TableReader& r, Reading& st, const std::string& k) {
        const double mu = r.number_within(k, kFriction.lo, kFriction.hi, 0.0, kFriction.why);
        ContactSettings& c = st.s.setup.contacts;
@@ -497,7 +562,12 @@ const Key kContactKeys[] = {
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.s.setup.contacts.friction[0][0]);
      }},
-    {"restitution_mode", "string",
+    {"restitution_mode",
+     "string",
+     {"", "continuous, discrete", "`\"continuous\"`",
+      "`discrete`: every pair's damping is calibrated at start-up so that the solver at this dt "
+      "returns e, averaged over the phase of the first contact step (contact_model.md, "
+      "\"Restitution at the chosen time step\")"},
      [](TableReader& r, Reading& st, const std::string& k) {
        st.s.setup.contacts.restitution_mode = read_choice(r, k, RestitutionMode::continuous);
      },
@@ -505,7 +575,10 @@ const Key kContactKeys[] = {
        t.insert(k, to_string(w.s.setup.contacts.restitution_mode));
      }},
     // Its default, the inflow speed, is known once [inflow] is read (read_scene).
-    {"calibration_speed", "number (m/s)",
+    {"calibration_speed",
+     "number (m/s)",
+     {"m/s", "`[1e-6, 1e4]`", "`inflow.velocity`",
+      "`discrete` only: the impact speed of the calibration"},
      [](TableReader& r, Reading& st, const std::string& k) {
        if (r.has(k))
          st.calibration_speed = r.number_within(k, kSpeed.lo, kSpeed.hi, {}, kSpeed.why);
@@ -513,7 +586,12 @@ const Key kContactKeys[] = {
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.s.setup.contacts.calibration_speed_m_per_s);
      }},
-    {"softening", "number",
+    {"softening",
+     "number",
+     {"", "`[1, 1e9]`", "`1`",
+      "every Young's modulus (particles and obstacle) divided by this for the contacts: t_c and "
+      "the peak overlap grow as softening^(2/5) (Hertz), so dt may grow with it; restitution, "
+      "masses and sizes are kept (contact_model.md, \"Softening\")"},
      [](TableReader& r, Reading& st, const std::string& k) {
        st.s.setup.contacts.softening =
            r.number_within(k, kSoftening.lo, kSoftening.hi, 1.0, kSoftening.why);
@@ -521,14 +599,22 @@ const Key kContactKeys[] = {
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.s.setup.contacts.softening);
      }},
-    {"model", "string",
+    {"model",
+     "string",
+     {"", "hertz, hooke, linear", "`\"hertz\"`",
+      "the contact law: `hertz` (contact_model.md), `hooke`, LIGGGHTS' linear spring-dashpot with "
+      "a constant kn from a characteristic velocity (`kernels/models/hooke.hpp`), or `linear`, the "
+      "same spring-dashpot with the kn the scene gives (`kernels/models/linear.hpp`); each law "
+      "takes only its own parameter keys"},
      [](TableReader& r, Reading& st, const std::string& k) {
        st.s.setup.contacts.model = read_choice(r, k, ContactModelKind::hertz);
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, to_string(w.s.setup.contacts.model));
      }},
-    {"limit_force", "bool",
+    {"limit_force",
+     "bool",
+     {"", "", "`false`", "clamp Fn >= 0 (contact_model.md, \"limit_force\")"},
      [](TableReader& r, Reading& st, const std::string& k) {
        st.s.setup.contacts.options.limit_force = r.boolean(k, false);
      },
@@ -539,12 +625,12 @@ const Key kContactKeys[] = {
 
 // Adds a key that several owners (laws, shapes) may declare to a table's keys, once: the
 // first owner to declare it places it, a later one must give it the same type.
-void add_owned_key(std::vector<Key>& keys, const char* name, const char* type, Read read,
-                   Write write) {
+void add_owned_key(std::vector<Key>& keys, const char* name, const char* type, KeyDoc doc,
+                   Read read, Write write) {
   const auto known = std::find_if(keys.begin(), keys.end(),
                                   [&](const Key& k) { return k.name == std::string(name); });
   if (known == keys.end()) {
-    keys.push_back({name, type, read, write});
+    keys.push_back({name, type, std::move(doc), read, write});
     return;
   }
   if (std::string(known->type) != type)
@@ -586,6 +672,20 @@ void write_law_key(const Writing& w, toml::table& t, const std::string& k) {
     t.insert(k, w.s.setup.contacts.options.law_parameters[*own]);
 }
 
+// A law key's row of docs/scene_keys.md, from its law's declaration: owned by every law
+// that declares the name ("`hooke`'s"), the range and meaning of the first.
+KeyDoc law_key_doc(const LawKey& key) {
+  std::vector<std::string> owners;
+  for (ContactModelKind law : laws_with_key(key.name))
+    owners.push_back(fmt::format("`{}`", choice_name(law)));
+  const std::string laws = fmt::format("{}", fmt::join(owners, " or "));
+  return {unit_of_type(key.type),
+          fmt::format("`[{}, {}]`", short_number(key.lo), short_number(key.hi)),
+          key.fallback == LawKey::Default::required ? "required for " + laws
+                                                    : std::string("`inflow.velocity`"),
+          fmt::format("{}'s: {}; refused for another law", laws, key.meaning)};
+}
+
 // [contact]'s keys: the table above, then every law's parameter keys (each name once, in
 // the order of LawParameterSets; after contact.model, which says whose they are), then the
 // pair tables.
@@ -593,9 +693,9 @@ std::vector<Key> contact_keys() {
   std::vector<Key> keys(std::begin(kContactKeys), std::end(kContactKeys));
   for_each_law_parameters([&](auto parameters) {
     for (const LawKey& key : parameters.keys)
-      add_owned_key(keys, key.name, key.type, read_law_key, write_law_key);
+      add_owned_key(keys, key.name, key.type, law_key_doc(key), read_law_key, write_law_key);
   });
-  keys.push_back({"pairs", nullptr, read_pairs, write_pairs});
+  keys.push_back({"pairs", nullptr, {}, read_pairs, write_pairs});
   return keys;
 }
 const std::vector<Key> kContactKeyList = contact_keys();
@@ -604,40 +704,69 @@ const Table kContact = {"contact", kContactKeyList.data(), kContactKeyList.size(
 // ---- [numerics] --------------------------------------------------------------------------
 
 const Key kNumericsKeys[] = {
-    {"precision", "string",
+    {"precision",
+     "string",
+     {"", "double, single", "`\"double\"`",
+      "arithmetic of velocities, forces, spins, springs and the contact law; positions are double "
+      "in both, and separations are formed in double before rounding, so single is as accurate at "
+      "the far edge of a large box as at the origin (design.md, \"Particles\")"},
      [](TableReader& r, Reading& st, const std::string& k) {
        st.s.setup.precision = read_choice(r, k, Precision::double_precision);
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, choice_name(w.s.setup.precision));
      }},
-    {"skin", "length",
+    {"skin",
+     "length",
+     {"m, `\"N d\"`", "`> 0`", "`0.3 d_max`",
+      "Verlet skin; lists rebuilt after skin/2 of motion; with `adaptive_skin` the largest skin "
+      "(the cells are sized for it)"},
      [](TableReader& r, Reading& st, const std::string& k) {
        st.s.setup.skin_m = r.length(k, 0.3 * st.s.setup.max_diameter());
        if (!(st.s.setup.skin_m > 0))
          fail(r.key(k), fmt::format("{} m", st.s.setup.skin_m), "must be > 0");
      },
      [](const Writing& w, toml::table& t, const std::string& k) { t.insert(k, w.s.setup.skin_m); }},
-    {"adaptive_skin", "bool",
+    {"adaptive_skin",
+     "bool",
+     {"", "", "`false`",
+      "re-choose the skin at each list build that motion forced, between 0.05 d_max and `skin`, by "
+      "a cost model of counted list lengths and rebuild intervals (design.md, \"Adaptive skin\"); "
+      "dense scenes run faster (+30 % in the gas at phi = 0.5, benchmarks.md), trajectories differ "
+      "from a fixed skin's at round-off"},
      [](TableReader& r, Reading& st, const std::string& k) {
        st.s.setup.adaptive_skin = r.boolean(k, false);
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.s.setup.adaptive_skin);
      }},
-    {"mass_definition", "string",
+    {"mass_definition",
+     "string",
+     {"", "mixture_mean, paper_sum", "`\"mixture_mean\"`",
+      "m in the sound speed (fields.md, \"The mass m in the sound speed, and the default\")"},
      [](TableReader& r, Reading& st, const std::string& k) {
        st.s.mass_definition = read_choice(r, k, MassDefinition::mixture_mean);
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, to_string(w.s.mass_definition));
      }},
-    {"bin_size", "length",
+    {"bin_size",
+     "length",
+     {"m, `\"N d\"`", "`> 0`, at least d_max; enough bins (scene_format.md, \"Field sampling\")",
+      "`\"3 d\"`",
+      "field bins: the grid's bins are adjusted to within half a bin over the length they tile, so "
+      "that they tile the width with a column centred on the obstacle's axis and put a row edge on "
+      "its upstream face (fields.md, section 1)"},
      [](TableReader& r, Reading& st, const std::string& k) {
        st.s.bin_size_m = r.positive_length(k, 3 * st.s.d_m);
      },
      [](const Writing& w, toml::table& t, const std::string& k) { t.insert(k, w.s.bin_size_m); }},
-    {"field_scatter", "string",
+    {"field_scatter",
+     "string",
+     {"", "auto, atomic, scatter_view, rows", "`\"auto\"`",
+      "how samples are scattered into bins: auto takes rows on host backends (bitwise reproducible "
+      "sums) and atomic on GPUs (fields.md, \"Cost of sampling: row owners, atomics, "
+      "ScatterView\")"},
      [](TableReader& r, Reading& st, const std::string& k) {
        st.s.field_scatter = read_choice(r, k, ScatterStrategy::automatic);
      },
@@ -650,7 +779,10 @@ const Table kNumerics = table("numerics", kNumericsKeys);
 // ---- [domain] ----------------------------------------------------------------------------
 
 const Key kDomainKeys[] = {
-    {"width", "length",
+    {"width",
+     "length",
+     {"m, `\"N d\"`", "`> 0`, at least 3 (d_max + `numerics.skin`), at most 1e4 m", "required",
+      "crosswise x, periodic"},
      [](TableReader& r, Reading& st, const std::string& k) {
        st.s.setup.box.hi[0] = r.positive_length(k);
        if (st.s.setup.box.hi[0] > kMaxDomainLength)
@@ -660,7 +792,10 @@ const Key kDomainKeys[] = {
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.s.setup.box.hi[0]);
      }},
-    {"length", "length",
+    {"length",
+     "length",
+     {"m, `\"N d\"`", "`> 0`, longer than `inflow.strip`, at most 1e4 m", "required",
+      "streamwise y: inflow at 0, outflow at length"},
      [](TableReader& r, Reading& st, const std::string& k) {
        st.s.setup.box.hi[1] = r.positive_length(k);
        if (st.s.setup.box.hi[1] > kMaxDomainLength)
@@ -690,7 +825,10 @@ const Table kDomain = table("domain", kDomainKeys, after_domain);
 // ---- [inflow] ----------------------------------------------------------------------------
 
 const Key kInflowKeys[] = {
-    {"area_fraction", "number",
+    {"area_fraction",
+     "number",
+     {"", "`[1e-6, 0.4]`", "required",
+      "phi_inf; the limit is what the inflow can insert (scene_format.md, \"The inflow\")"},
      [](TableReader& r, Reading& st, const std::string& k) {
        const double phi = st.s.inflow.area_fraction = r.positive(k);
        if (phi < kMinAreaFraction)
@@ -708,7 +846,9 @@ const Key kInflowKeys[] = {
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.s.inflow.area_fraction);
      }},
-    {"velocity", "number (m/s)",
+    {"velocity",
+     "number (m/s)",
+     {"m/s", "`[1e-6, 1e4]`", "required", "U along +y"},
      [](TableReader& r, Reading& st, const std::string& k) {
        st.s.inflow.speed_m_per_s = r.number_within(k, kSpeed.lo, kSpeed.hi, {}, kSpeed.why);
      },
@@ -716,7 +856,10 @@ const Key kInflowKeys[] = {
        t.insert(k, w.s.inflow.speed_m_per_s);
      }},
     // Written back as the sigma used, also when the scene gave a Mach number.
-    {"sigma", "number (m/s)",
+    {"sigma",
+     "number (m/s)",
+     {"m/s", "`[0, 1e4]`", "one of `inflow.sigma`, `inflow.mach`",
+      "Gaussian fluctuation per component"},
      [](TableReader& r, Reading& st, const std::string& k) {
        if (r.has(k) == r.has("mach"))
          fail("inflow.sigma / inflow.mach", "(both or neither)",
@@ -726,7 +869,11 @@ const Key kInflowKeys[] = {
      },
      [](const Writing& w, toml::table& t, const std::string& k) { t.insert(k, w.s.inflow.sigma); }},
     // Resolved into inflow.sigma (resolve_inflow), which carries it into the resolved scene.
-    {"mach", "number",
+    {"mach",
+     "number",
+     {"", "`[0.1, 1e4]`", "one of `inflow.sigma`, `inflow.mach`",
+      "target Ma_inf; sigma follows from it (scene_format.md, \"The inflow\"); the resolved scene "
+      "holds the sigma"},
      [](TableReader& r, Reading& st, const std::string& k) {
        if (r.has(k))
          st.s.inflow.target_mach = r.number_within(k, kMach.lo, kMach.hi, {}, kMach.why);
@@ -734,7 +881,12 @@ const Key kInflowKeys[] = {
      [](const Writing&, toml::table&, const std::string&) {}},
     // Where the Mach number is meant (docs/fields.md, "Three upstream Mach numbers"). Like
     // mach, it says how sigma is found; the resolved scene carries the sigma found.
-    {"mach_at", "string",
+    {"mach_at",
+     "string",
+     {"", "inserted, inlet_bins", "`\"inserted\"`",
+      "where mach is meant (`inlet_bins` needs `inflow.mach`): the inserted state, or measured "
+      "over the two inlet bin rows as the paper does, sigma calibrated before the run (fields.md, "
+      "\"Three upstream Mach numbers\")"},
      [](TableReader& r, Reading& st, const std::string& k) {
        st.s.inflow.mach_at = read_choice(r, k, MachReference::inserted);
        if (st.s.inflow.mach_at == MachReference::inlet_bins && !st.s.inflow.target_mach)
@@ -742,7 +894,10 @@ const Key kInflowKeys[] = {
               "needs inflow.mach, the Mach number to calibrate sigma for");
      },
      [](const Writing&, toml::table&, const std::string&) {}},
-    {"strip", "length",
+    {"strip",
+     "length",
+     {"m, `\"N d\"`", "at least d_max, shorter than `domain.length`", "`\"2 d\"`",
+      "insertion strip y in [0, strip]"},
      [](TableReader& r, Reading& st, const std::string& k) {
        const double strip = st.s.inflow.strip_m = r.length(k, 2 * st.s.d_m);
        if (strip < st.s.setup.max_diameter() || strip >= st.s.setup.box.hi[1])
@@ -794,11 +949,33 @@ void write_shape_key(const Writing& w, toml::table& t, const std::string& k) {
   if (const std::optional<std::size_t> own = shape_key_index(o.shape, k)) t.insert(k, o.size[*own]);
 }
 
+// A shape key's row of docs/scene_keys.md, from its shape's declaration (every shape that
+// declares the name owns it; the range, default and meaning are the first's).
+KeyDoc shape_key_doc(const ShapeKey& key) {
+  std::vector<std::string> owners, meanings;
+  for (ObstacleShape shape : shapes_with_key(key.name))
+    owners.push_back(fmt::format("a {}", choice_name(shape)));
+  const std::string shapes = fmt::format("{}", fmt::join(owners, " or "));
+  const bool length = key.kind == ShapeKey::Kind::length;
+  return {
+      length ? "m, `\"N d\"`" : "degrees",
+      length ? std::string("at least d_max (the contact law treats the obstacle as a wall)")
+             : fmt::format("`{}{}, {})`", key.lo_closed ? "[" : "(", short_number(key.lo),
+                           short_number(key.hi)),
+      key.required() ? "required for " + shapes : fmt::format("`{}`", short_number(key.fallback)),
+      key.required() ? key.meaning : fmt::format("{} only: {}", shapes, key.meaning)};
+}
+
 // [obstacle]'s keys: the shape, every shape's size keys (each name once, in the order of
 // ObstacleShapes), the material and the centre.
 std::vector<Key> obstacle_keys() {
   std::vector<Key> keys = {
-      {"shape", "string",
+      {"shape",
+       "string",
+       {"", "cylinder, wedge, plate, square", "`\"cylinder\"`",
+        "a fixed prism along z: its cross-section (scene_format.md, \"Obstacle shapes\"); a "
+        "`[obstacle]` table makes the obstacle (no table: no obstacle), and each shape takes only "
+        "its own size keys"},
        [](TableReader& r, Reading& st, const std::string& k) {
          st.obstacle.shape = read_choice(r, k, ObstacleShape::cylinder);
        },
@@ -808,16 +985,27 @@ std::vector<Key> obstacle_keys() {
   };
   for_each_obstacle_shape([&](auto s) {
     for (const ShapeKey& key : s.keys)
-      add_owned_key(keys, key.name, key.type(), read_shape_key, write_shape_key);
+      add_owned_key(keys, key.name, key.type(), shape_key_doc(key), read_shape_key,
+                    write_shape_key);
   });
-  keys.push_back({"material", "string",
+  keys.push_back({"material",
+                  "string",
+                  {"", "a material", "`\"aluminium\"`",
+                   "the obstacle's modulus and Poisson ratio in its contacts (it does not move)"},
                   [](TableReader& r, Reading& st, const std::string& k) {
                     st.obstacle.material = material_named(st, r.key(k), r.string(k, "aluminium"));
                   },
                   [](const Writing& w, toml::table& t, const std::string& k) {
                     t.insert(k, w.s.setup.obstacle->material.name);
                   }});
-  keys.push_back({"centre", "[length, length]",
+  keys.push_back({"centre",
+                  "[length, length]",
+                  {"m, `\"N d\"`",
+                   "the shape inside the domain, its upstream end at least d_max past "
+                   "`inflow.strip`, and a gap of at least 3 d_max beside it across the channel",
+                   "`[domain.width / 2, domain.length / 2]`",
+                   "the middle of the shape's extent along x and y (a cylinder's axis; half-way "
+                   "from a wedge's tip to its base)"},
                   [](TableReader& r, Reading& st, const std::string& k) {
                     const Box& box = st.s.setup.box;
                     st.obstacle.centre = {0.5 * box.hi[0], 0.5 * box.hi[1], 0};
@@ -895,15 +1083,24 @@ const Table kObstacle = {"obstacle", kObstacleKeys.data(), kObstacleKeys.size(),
 // ---- [time] ------------------------------------------------------------------------------
 
 const Key kTimeKeys[] = {
-    {"dt", "number (s)",
+    {"dt",
+     "number (s)",
+     {"s",
+      "`> 0`; at most the stable limit (unless `--force`); `time.duration` / dt from 1 to 1e12 "
+      "steps",
+      "required", "the time step (scene_format.md, \"The time-step guard for scenes\")"},
      [](TableReader& r, Reading& st, const std::string& k) { st.s.setup.dt = r.positive(k); },
      [](const Writing& w, toml::table& t, const std::string& k) { t.insert(k, w.s.setup.dt); }},
-    {"duration", "number (s)",
+    {"duration",
+     "number (s)",
+     {"s", "`> 0`; at least one step", "required", "simulated time"},
      [](TableReader& r, Reading& st, const std::string& k) { st.s.run.duration_s = r.positive(k); },
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.s.run.duration_s);
      }},
-    {"production_start", "number (s)",
+    {"production_start",
+     "number (s)",
+     {"s", "`[0, time.duration)`", "`time.duration / 2`", "fields average over [start, duration]"},
      [](TableReader& r, Reading& st, const std::string& k) {
        const double duration = st.s.run.duration_s;
        const double start = st.s.run.production_start_s = r.number(k, 0.5 * duration);
@@ -924,28 +1121,37 @@ const Table kTime = table("time", kTimeKeys);
 // ---- [output] ----------------------------------------------------------------------------
 
 const Key kOutputKeys[] = {
-    {"snapshot_interval", "number (s)",
+    {"snapshot_interval",
+     "number (s)",
+     {"s", "`> 0`; at most 1e5 snapshots", "`time.duration / 10`", "particle snapshots in run.h5"},
      [](TableReader& r, Reading& st, const std::string& k) {
        st.s.run.snapshot_interval_s = r.positive(k, st.s.run.duration_s / 10);
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.s.run.snapshot_interval_s);
      }},
-    {"series_interval", "number (s)",
+    {"series_interval",
+     "number (s)",
+     {"s", "`> 0`; at most 1e7 rows", "`time.duration / 200`", "time-series rows"},
      [](TableReader& r, Reading& st, const std::string& k) {
        st.s.run.series_interval_s = r.positive(k, st.s.run.duration_s / 200);
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.s.run.series_interval_s);
      }},
-    {"checkpoint_interval", "number (s)",
+    {"checkpoint_interval",
+     "number (s)",
+     {"s", "`> 0`; at most 1e5 checkpoints", "`time.duration / 5`",
+      "checkpoint.h5 (also at the end and on SIGINT/SIGTERM)"},
      [](TableReader& r, Reading& st, const std::string& k) {
        st.s.run.checkpoint_interval_s = r.positive(k, st.s.run.duration_s / 5);
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.s.run.checkpoint_interval_s);
      }},
-    {"progress_interval", "number (s)",
+    {"progress_interval",
+     "number (s)",
+     {"s (wall clock)", "`[0.01, 1e9]`", "`2`", "wall-clock seconds between progress lines"},
      [](TableReader& r, Reading& st, const std::string& k) {
        st.s.run.progress_interval_s = r.number_within(k, kProgressInterval.lo, kProgressInterval.hi,
                                                       2.0, kProgressInterval.why);
@@ -953,14 +1159,20 @@ const Key kOutputKeys[] = {
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.s.run.progress_interval_s);
      }},
-    {"sample_every", "integer",
+    {"sample_every",
+     "integer",
+     {"steps", "`>= 1`; enough samples (scene_format.md, \"Field sampling\")", "`100`",
+      "steps between field samples"},
      [](TableReader& r, Reading& st, const std::string& k) {
        st.s.run.sample_every = r.integer_at_least(k, 1, 100);
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, std::int64_t(w.s.run.sample_every));
      }},
-    {"blocks", "integer",
+    {"blocks",
+     "integer",
+     {"", "`[2, 10000]`; enough samples (scene_format.md, \"Field sampling\")", "`10`",
+      "the production window is cut into this many blocks for error bars"},
      [](TableReader& r, Reading& st, const std::string& k) {
        const long blocks = r.integer_at_least(k, 2, 10);
        if (blocks > kMaxBlocks)
@@ -1042,7 +1254,7 @@ std::vector<SceneKey> scene_keys() {
   for (const scene_toml::Table* t : scene_toml::kTables) {
     const std::string prefix = std::string(t->name) + (t->name[0] == '[' ? " " : ".");
     for (const scene_toml::Key& k : *t)
-      if (k.type) keys.push_back({prefix + k.name, k.type});
+      if (k.type) keys.push_back({prefix + k.name, k.type, k.doc});
   }
   return keys;
 }

@@ -35,6 +35,7 @@
 #include "core/user_error.hpp"
 #include "device/kokkos_runtime.hpp"
 #include "io/hdf5_runtime.hpp"
+#include "io/scene_file.hpp"
 #include "kernels/models/law_parameters.hpp"
 #include "parallel/mpi_communicator.hpp"
 #include "parallel/mpi_runtime.hpp"
@@ -392,6 +393,10 @@ int main(int argc, char** argv) {
   granshock::TradeoffOptions tradeoff;
   add_tradeoff_command(app, tradeoff);
   auto* info = app.add_subcommand("info", "version, Kokkos backends and threads, build options");
+  auto* keys = app.add_subcommand(
+      "keys",
+      "every scene-file key with its type, unit, accepted values, default and meaning, as "
+      "the Markdown table of docs/scene_keys.md");
 
   // Writes past a file-size limit fail with EFBIG, reported like a full disk, instead of
   // killing the process (SIGXFSZ).
@@ -449,7 +454,7 @@ int main(int argc, char** argv) {
   // job N times into the same place. Every rank decides alike and returns, so none waits
   // for another; rank 0 alone says why.
   const bool several = mpi->size() > 1;
-  if (several && !info->parsed() && !app.got_subcommand("run")) {
+  if (several && !info->parsed() && !keys->parsed() && !app.got_subcommand("run")) {
     if (mpi->rank() == 0)
       std::cerr << "granshock: error: started as " << mpi->size()
                 << " MPI processes, but `granshock " << app.get_subcommands()[0]->get_name()
@@ -487,6 +492,8 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("tradeoff")) return granshock::tradeoff_command(tradeoff);
     if (info->parsed()) {
       if (mpi->rank() == 0) std::cout << granshock::build_info_json(mpi->size()) << "\n";
+    } else if (keys->parsed()) {
+      if (mpi->rank() == 0) std::cout << granshock::scene_keys_table();
     } else if (app.got_subcommand("collide")) {
       collide.place.axis = int(along);
       const auto result = granshock::run_head_on_collision(collide);

@@ -23,7 +23,8 @@ struct WedgeShape {
       "frontal width 2 obstacle.length tan(obstacle.half_angle)";
   static constexpr ShapeKey keys[] = {
       {"half_angle", ShapeKey::Kind::angle, "the half-angle theta at the upstream tip", 0, 90},
-      {"length", ShapeKey::Kind::length, "tip to base, along the flow"},
+      {"length", ShapeKey::Kind::length,
+       "tip to base, along the flow; the base is 2 length tan(theta) wide"},
   };
 
   static double half_angle_deg(const Obstacle& o) { return o.size[0]; }
