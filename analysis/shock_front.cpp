@@ -88,10 +88,13 @@ ShockFront find_shock_front(const BinFields& f, const BinSums& grid, const Field
       temperature[static_cast<std::size_t>(iy)] = f.masked[k] ? kNaN : f.temperature[k];
     }
     const int end = search_end(grid, phys, s.x[i]);
-    const FrontCrossing hot = find_largest_rise(temperature, y, row_begin, end, rule);
-    if (hot.found && hot.y_threshold >= y_upstream_end) s.y_temperature[i] = hot.y_threshold;
     const FrontCrossing c = find_front_crossing(column, y, row_begin, end, phi_up, rule);
     if (!c.found || c.y_threshold < y_upstream_end) continue;
+    // A shock compresses: a column whose phi does not rise has no T front either, though
+    // its T may rise 1.5-2-fold where the inflow, cooled by its own collisions, meets
+    // warmer gas (free-stream columns of a short run; docs/fields.md, section 5).
+    const FrontCrossing hot = find_largest_rise(temperature, y, row_begin, end, rule);
+    if (hot.found && hot.y_threshold >= y_upstream_end) s.y_temperature[i] = hot.y_threshold;
     s.y_threshold[i] = c.y_threshold;
     s.y_max_gradient[i] = c.y_max_gradient;
     s.phi_peak[i] = c.phi_peak;

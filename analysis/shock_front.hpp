@@ -33,7 +33,8 @@ struct ShockFront {
   std::vector<double> y_threshold, y_max_gradient, phi_peak, threshold;  // NaN where no front [nx]
   std::vector<Polyline> threshold_lines, gradient_lines;  // consecutive columns with a front
   // The primary definition's front (T half-rise of the largest rise, docs/fields.md section
-  // 6) per column: what the figures draw beside delta/D. NaN where no front [nx].
+  // 6) per column: what the figures draw beside delta/D. NaN where no front, and in a
+  // column without a phi front (y_threshold NaN): a T rise without compression is no shock.
   std::vector<double> y_temperature;
   std::vector<Polyline> temperature_lines;
   FlankFit left, right;      // x < xc and x > xc

@@ -9,6 +9,7 @@
 
 #include "analysis/bin_fields.hpp"
 #include "analysis/detachment.hpp"
+#include "analysis/front_crossing.hpp"
 #include "analysis/shock_front.hpp"
 #include "synthetic_run.hpp"
 
@@ -75,6 +76,13 @@ TEST(ShockFront, StepFieldFoundWithinOneBinAndFarFieldAngle) {
         << "column " << ix;
     EXPECT_NEAR(front.y_max_gradient[static_cast<std::size_t>(ix)], expected, grid.dy)
         << "column " << ix;
+    // The T front of the same step (the primary definition's, which the figures draw). The
+    // bin the step crosses holds both flows, and their different mean speeds make its T
+    // the column's largest, so the half-rise lies between that bin's centre (within half a
+    // bin of the step) and the centre before it: 1.5 bins upstream of the step at most.
+    const double y_hot = front.y_temperature[static_cast<std::size_t>(ix)];
+    EXPECT_GE(y_hot, expected - 1.5 * grid.dy) << "column " << ix;
+    EXPECT_LE(y_hot, expected + grid.dy) << "column " << ix;
     // Beside the cylinder the peak is the post-shock phi; in front of it, the last bins
     // searched are cut by the cylinder's surface and hold less.
     if (std::abs(x - kXc) > 6 * kD) {
@@ -89,6 +97,40 @@ TEST(ShockFront, StepFieldFoundWithinOneBinAndFarFieldAngle) {
   EXPECT_NEAR(front.left.angle_deg, 50.0, 2.0);
   EXPECT_NEAR(front.right.angle_deg, 50.0, 2.0);
   EXPECT_NEAR(front.angle_deg, 50.0, 2.0);
+}
+
+// A free stream whose T doubles at y = 45 d without any compression (phi stays 0.1), as the
+// inflow of a short run, cooled by its own collisions, meets warmer gas: the largest rise
+// of T alone would call it a front (2 >= 1.5-fold); without a rise of phi no column has a
+// front of either kind, and nothing is drawn.
+TEST(ShockFront, TemperatureRiseWithoutCompressionIsNoFront) {
+  const FieldPhysics& phys = physics();
+  test::BinState warm = pre();
+  for (double& t : warm.temperature) t *= 2;
+  BinSums grid = test::empty_sums(20, 30, 1, 0, 0, 3 * kD, 3 * kD);
+  test::fill_with_front(
+      grid, phys, pre(), warm, [](double, double y, int) { return y > 45 * kD; }, 300);
+  const BinFields f = compute_bin_fields(grid, phys);
+  const ShockFront front = find_shock_front(f, grid, phys, 0.1, 2);
+  int warm_columns = 0;
+  for (int ix = 0; ix < grid.nx; ++ix) {
+    const std::size_t i = static_cast<std::size_t>(ix);
+    EXPECT_TRUE(std::isnan(front.y_threshold[i])) << "column " << ix;
+    EXPECT_TRUE(std::isnan(front.y_temperature[i])) << "column " << ix;
+    // The negative control: the temperature alone has a rise the rule would take.
+    std::vector<double> t(static_cast<std::size_t>(grid.ny)), y(t.size());
+    for (int iy = 0; iy < grid.ny; ++iy) {
+      const std::size_t k = f.index(iy, ix);
+      t[static_cast<std::size_t>(iy)] = f.masked[k] ? NAN : f.temperature[k];
+      y[static_cast<std::size_t>(iy)] = grid.y_centre(iy);
+    }
+    const int end = grid.ny;  // columns beside the cylinder search every row
+    if (std::abs(grid.x_centre(ix) - kXc) > 9 * kD &&
+        find_largest_rise(t, y, 2, end, ThresholdRule{}).found)
+      ++warm_columns;
+  }
+  EXPECT_GE(warm_columns, 10);
+  EXPECT_TRUE(front.temperature_lines.empty());
 }
 
 TEST(Detachment, StepProfileFoundWithinOneBin) {
