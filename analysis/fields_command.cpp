@@ -15,6 +15,7 @@
 #include "analysis/json_file.hpp"
 #include "analysis/summary_json.hpp"
 #include "core/bin_sums.hpp"
+#include "core/choice_names.hpp"
 #include "core/user_error.hpp"
 #include "io/field_sums_file.hpp"
 #include "io/fields_directory.hpp"
@@ -39,7 +40,8 @@ RunTarget target_mach(const fs::path& summary, double nominal) {
   const nlohmann::json j = read_json_file(summary, "summary").value;
   if (!j.is_object() || !j.contains("ma_inf_target") || !j["ma_inf_target"].is_number())
     return {nominal, false};
-  const bool at_inlet = j.contains("inflow_mach_at") && j["inflow_mach_at"] == "inlet_bins";
+  const bool at_inlet =
+      j.contains("inflow_mach_at") && j["inflow_mach_at"] == choice_name(MachReference::inlet_bins);
   return {j["ma_inf_target"].get<double>(), at_inlet};
 }
 
