@@ -1,8 +1,8 @@
 // GoogleTest entry point: Kokkos is initialised once for the whole test program.
 #include <gtest/gtest.h>
 
-#include "device/kokkos_runtime.hpp"
 #include "io/hdf5_runtime.hpp"
+#include "kernels/device/kokkos_runtime.hpp"
 
 int main(int argc, char** argv) {
   // As granshock's main(): a test of a full disk leaves a file whose close failed, which

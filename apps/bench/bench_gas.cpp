@@ -28,8 +28,8 @@
 #include "core/process_clock.hpp"
 #include "core/solver.hpp"
 #include "core/user_error.hpp"
-#include "device/kokkos_runtime.hpp"
 #include "io/atomic_file.hpp"
+#include "kernels/device/kokkos_runtime.hpp"
 
 namespace {
 

@@ -5,7 +5,7 @@
 
 #include "cases/build_info/build_description.hpp"
 #include "core/choice_names.hpp"
-#include "device/backends.hpp"
+#include "kernels/device/backends.hpp"
 #include "kernels/models/law_parameters.hpp"
 #include "kernels/models/obstacle_shapes.hpp"
 #include "parallel/mpi_runtime.hpp"

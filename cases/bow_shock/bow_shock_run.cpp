@@ -24,13 +24,13 @@
 #include "core/process_clock.hpp"
 #include "core/shell_text.hpp"
 #include "core/user_error.hpp"
-#include "device/launch_counter.hpp"
 #include "io/atomic_file.hpp"
 #include "io/checkpoint_file.hpp"
 #include "io/field_sums_file.hpp"
 #include "io/xdmf_writer.hpp"
+#include "kernels/device/launch_counter.hpp"
 #include "kernels/models/obstacle_shapes.hpp"
-#include "models/restitution_calibration.hpp"
+#include "kernels/models/restitution_calibration.hpp"
 #include "parallel/mpi_communicator.hpp"
 
 namespace granshock {

@@ -26,10 +26,10 @@
 #include "core/checkpoint_extras.hpp"
 #include "core/communicator.hpp"
 #include "core/solver.hpp"
-#include "device/launch_counter.hpp"
 #include "io/run_directory.hpp"
 #include "io/run_file.hpp"
 #include "io/scene_file.hpp"
+#include "kernels/device/launch_counter.hpp"
 
 namespace granshock {
 

@@ -11,7 +11,7 @@
 
 #include "cases/accuracy/certified_step.hpp"
 #include "core/scene.hpp"
-#include "models/time_step_guard.hpp"
+#include "kernels/models/time_step_guard.hpp"
 
 namespace granshock {
 

@@ -16,7 +16,7 @@
 #include "io/checkpoint_file.hpp"
 #include "io/run_directory.hpp"
 #include "io/scene_file.hpp"
-#include "models/restitution_calibration.hpp"
+#include "kernels/models/restitution_calibration.hpp"
 
 namespace granshock {
 

@@ -11,7 +11,7 @@
 
 #include "cases/bow_shock/sampling_plan.hpp"
 #include "core/user_error.hpp"
-#include "device/backends.hpp"
+#include "kernels/device/backends.hpp"
 
 namespace granshock {
 

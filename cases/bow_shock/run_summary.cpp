@@ -6,8 +6,8 @@
 #include "cases/build_info/build_description.hpp"
 #include "cases/collision/head_on_collision.hpp"
 #include "core/cpu_model.hpp"
+#include "kernels/models/restitution_calibration.hpp"
 #include "kernels/models/time_step_guard.hpp"
-#include "models/restitution_calibration.hpp"
 
 namespace granshock {
 

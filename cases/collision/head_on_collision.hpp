@@ -13,8 +13,8 @@
 
 #include "core/solver.hpp"
 #include "core/solver_setup.hpp"
-#include "models/restitution_calibration.hpp"
-#include "models/time_step_guard.hpp"
+#include "kernels/models/restitution_calibration.hpp"
+#include "kernels/models/time_step_guard.hpp"
 
 namespace granshock {
 

@@ -9,7 +9,7 @@
 #include "cases/bow_shock/sampling_plan.hpp"
 #include "core/available_memory.hpp"
 #include "core/user_error.hpp"
-#include "sampling/bin_accumulator.hpp"
+#include "kernels/sampling/bin_accumulator.hpp"
 
 namespace granshock {
 

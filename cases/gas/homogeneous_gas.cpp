@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "core/user_error.hpp"
-#include "device/counter_rng.hpp"
+#include "kernels/device/counter_rng.hpp"
 
 namespace granshock {
 

@@ -6,9 +6,9 @@
 #include <Kokkos_Core.hpp>
 #include <limits>
 
-#include "device/device_math.hpp"
-#include "device/vec.hpp"
-#include "domain.hpp"
+#include "core/domain.hpp"
+#include "kernels/device/device_math.hpp"
+#include "kernels/device/vec.hpp"
 
 namespace granshock {
 

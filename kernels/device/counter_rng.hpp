@@ -7,7 +7,7 @@
 #include <Kokkos_Core.hpp>
 #include <cstdint>
 
-#include "device/device_math.hpp"
+#include "kernels/device/device_math.hpp"
 
 namespace granshock {
 

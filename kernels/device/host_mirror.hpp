@@ -9,7 +9,7 @@
 
 #include <Kokkos_Core.hpp>
 
-#include "device/backends.hpp"
+#include "kernels/device/backends.hpp"
 
 namespace granshock {
 

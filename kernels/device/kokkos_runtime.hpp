@@ -12,7 +12,7 @@
 #include <cstdlib>
 #include <string_view>
 
-#include "device/thread_cap.hpp"
+#include "kernels/device/thread_cap.hpp"
 
 namespace granshock {
 

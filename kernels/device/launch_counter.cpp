@@ -1,4 +1,4 @@
-#include "device/launch_counter.hpp"
+#include "kernels/device/launch_counter.hpp"
 
 #include <Kokkos_Core.hpp>
 #include <atomic>

@@ -12,7 +12,7 @@
 
 #include <Kokkos_Core.hpp>
 
-#include "device/vec.hpp"
+#include "kernels/device/vec.hpp"
 
 namespace granshock {
 

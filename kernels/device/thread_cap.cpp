@@ -1,4 +1,4 @@
-#include "device/thread_cap.hpp"
+#include "kernels/device/thread_cap.hpp"
 
 #include <sched.h>
 

@@ -5,7 +5,7 @@
 
 #include <Kokkos_Core.hpp>
 
-#include "device/device_math.hpp"
+#include "kernels/device/device_math.hpp"
 
 namespace granshock {
 

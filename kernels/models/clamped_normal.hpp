@@ -9,8 +9,8 @@
 #include <Kokkos_Core.hpp>
 #include <limits>
 
-#include "contact_settings.hpp"
-#include "device/device_math.hpp"
+#include "core/contact_settings.hpp"
+#include "kernels/device/device_math.hpp"
 
 namespace granshock {
 

@@ -74,9 +74,9 @@
 #include <type_traits>
 #include <utility>
 
-#include "contact_settings.hpp"
-#include "pair_properties.hpp"
-#include "variant_names.hpp"
+#include "core/contact_settings.hpp"
+#include "core/pair_properties.hpp"
+#include "core/variant_names.hpp"
 
 namespace granshock {
 namespace contact_law_detail {

@@ -11,11 +11,11 @@
 #include <Kokkos_Core.hpp>
 #include <cmath>
 
-#include "contact_settings.hpp"
-#include "device/device_math.hpp"
-#include "models/law_key.hpp"
-#include "pair_properties.hpp"
-#include "variant_names.hpp"
+#include "core/contact_settings.hpp"
+#include "core/pair_properties.hpp"
+#include "core/variant_names.hpp"
+#include "kernels/device/device_math.hpp"
+#include "kernels/models/law_key.hpp"
 
 namespace granshock {
 

@@ -8,11 +8,11 @@
 
 #include <cmath>
 
-#include "contact_settings.hpp"
-#include "models/hooke_parameters.hpp"
-#include "models/spring_dashpot.hpp"
-#include "pair_properties.hpp"
-#include "variant_names.hpp"
+#include "core/contact_settings.hpp"
+#include "core/pair_properties.hpp"
+#include "core/variant_names.hpp"
+#include "kernels/models/hooke_parameters.hpp"
+#include "kernels/models/spring_dashpot.hpp"
 
 namespace granshock {
 

@@ -7,11 +7,11 @@
 // and its parameters (docs/design.md, "Adding a contact law").
 #pragma once
 
-#include "contact_settings.hpp"
-#include "models/linear_parameters.hpp"
-#include "models/spring_dashpot.hpp"
-#include "pair_properties.hpp"
-#include "variant_names.hpp"
+#include "core/contact_settings.hpp"
+#include "core/pair_properties.hpp"
+#include "core/variant_names.hpp"
+#include "kernels/models/linear_parameters.hpp"
+#include "kernels/models/spring_dashpot.hpp"
 
 namespace granshock {
 

@@ -11,17 +11,17 @@
 #include <stdexcept>
 #include <type_traits>
 
-#include "contact_law.hpp"
-#include "contact_settings.hpp"
-#include "models/hertz.hpp"
-#include "models/hooke.hpp"
-#include "models/law_parameters.hpp"
-#include "models/linear.hpp"
-#include "models/no_obstacle.hpp"
-#include "models/obstacle_body.hpp"
-#include "models/obstacle_shapes.hpp"
-#include "obstacle.hpp"
-#include "variant_names.hpp"
+#include "core/contact_settings.hpp"
+#include "core/obstacle.hpp"
+#include "core/variant_names.hpp"
+#include "kernels/models/contact_law.hpp"
+#include "kernels/models/hertz.hpp"
+#include "kernels/models/hooke.hpp"
+#include "kernels/models/law_parameters.hpp"
+#include "kernels/models/linear.hpp"
+#include "kernels/models/no_obstacle.hpp"
+#include "kernels/models/obstacle_body.hpp"
+#include "kernels/models/obstacle_shapes.hpp"
 
 namespace granshock {
 

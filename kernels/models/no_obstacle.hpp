@@ -4,9 +4,9 @@
 #include <Kokkos_Core.hpp>
 #include <optional>
 
-#include "device/position.hpp"
-#include "device/vec.hpp"
-#include "obstacle.hpp"
+#include "core/obstacle.hpp"
+#include "kernels/device/position.hpp"
+#include "kernels/device/vec.hpp"
 
 namespace granshock {
 

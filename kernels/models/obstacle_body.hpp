@@ -11,11 +11,11 @@
 #include <Kokkos_Core.hpp>
 #include <optional>
 
-#include "device/device_math.hpp"
-#include "device/position.hpp"
-#include "device/vec.hpp"
-#include "models/obstacle_shapes.hpp"
-#include "obstacle.hpp"
+#include "core/obstacle.hpp"
+#include "kernels/device/device_math.hpp"
+#include "kernels/device/position.hpp"
+#include "kernels/device/vec.hpp"
+#include "kernels/models/obstacle_shapes.hpp"
 
 namespace granshock {
 

@@ -1,15 +1,15 @@
-#include "models/restitution_calibration.hpp"
+#include "kernels/models/restitution_calibration.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 
-#include "models/clamped_normal.hpp"
-#include "models/models.hpp"
-#include "models/time_step_guard.hpp"
-#include "solver/kick.hpp"
-#include "user_error.hpp"
+#include "core/user_error.hpp"
+#include "kernels/models/clamped_normal.hpp"
+#include "kernels/models/models.hpp"
+#include "kernels/models/time_step_guard.hpp"
+#include "kernels/solver/kick.hpp"
 
 namespace granshock {
 

@@ -18,9 +18,9 @@
 #include <string>
 #include <vector>
 
-#include "contact_settings.hpp"
-#include "pair_properties.hpp"
-#include "solver_setup.hpp"
+#include "core/contact_settings.hpp"
+#include "core/pair_properties.hpp"
+#include "core/solver_setup.hpp"
 
 namespace granshock {
 

@@ -16,9 +16,9 @@
 #include <Kokkos_Core.hpp>
 #include <cmath>
 
-#include "contact_settings.hpp"
-#include "device/device_math.hpp"
-#include "pair_properties.hpp"
+#include "core/contact_settings.hpp"
+#include "core/pair_properties.hpp"
+#include "kernels/device/device_math.hpp"
 
 namespace granshock {
 

@@ -13,8 +13,8 @@
 
 #include <Kokkos_Core.hpp>
 
-#include "device/device_math.hpp"
-#include "device/vec.hpp"
+#include "kernels/device/device_math.hpp"
+#include "kernels/device/vec.hpp"
 
 namespace granshock {
 
@@ -22,9 +22,9 @@ namespace granshock {
 // particle, `normal_force` the signed normal force; returns Ft and updates xi.
 template <class Real>
 KOKKOS_FORCEINLINE_FUNCTION Vec<2, Real> tangential_force(Real kt, Real gt, Real friction,
-                                                     Real normal_force, const Vec<2, Real>& n,
-                                                     const Vec<2, Real>& vc, Real dt,
-                                                     Vec<2, Real>& xi) {
+                                                          Real normal_force, const Vec<2, Real>& n,
+                                                          const Vec<2, Real>& vc, Real dt,
+                                                          Vec<2, Real>& xi) {
   const Vec<2, Real> vt = vc - dot(vc, n) * n;
   // Rotate the stored spring into the tangent plane, preserving its magnitude.
   const Real old_len2 = dot(xi, xi);
@@ -47,7 +47,8 @@ KOKKOS_FORCEINLINE_FUNCTION Vec<2, Real> tangential_force(Real kt, Real gt, Real
 // spins about z: v_rel - (r_i w_i + r_j w_j) (z x n), with z x n = (-n_y, n_x).
 template <class Real>
 KOKKOS_FORCEINLINE_FUNCTION Vec<2, Real> contact_point_velocity(const Vec<2, Real>& vrel,
-                                                           const Vec<2, Real>& n, Real spin_sum) {
+                                                                const Vec<2, Real>& n,
+                                                                Real spin_sum) {
   Vec<2, Real> vc;
   vc[0] = vrel[0] + spin_sum * n[1];
   vc[1] = vrel[1] - spin_sum * n[0];
@@ -57,7 +58,7 @@ KOKKOS_FORCEINLINE_FUNCTION Vec<2, Real> contact_point_velocity(const Vec<2, Rea
 // z-torque on this particle from a force ft applied at its contact point -r_i n.
 template <class Real>
 KOKKOS_FORCEINLINE_FUNCTION Real contact_torque(Real radius, const Vec<2, Real>& n,
-                                           const Vec<2, Real>& ft) {
+                                                const Vec<2, Real>& ft) {
   return -radius * (n[0] * ft[1] - n[1] * ft[0]);
 }
 

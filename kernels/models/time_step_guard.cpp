@@ -1,4 +1,4 @@
-#include "models/time_step_guard.hpp"
+#include "kernels/models/time_step_guard.hpp"
 
 #include <fmt/format.h>
 
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "models/models.hpp"
+#include "kernels/models/models.hpp"
 
 namespace granshock {
 

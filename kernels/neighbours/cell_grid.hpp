@@ -7,10 +7,10 @@
 #include <Kokkos_Core.hpp>
 #include <cmath>
 
-#include "device/box_geometry.hpp"
-#include "device/device_math.hpp"
-#include "device/vec.hpp"
-#include "user_error.hpp"
+#include "core/user_error.hpp"
+#include "kernels/device/box_geometry.hpp"
+#include "kernels/device/device_math.hpp"
+#include "kernels/device/vec.hpp"
 
 namespace granshock {
 

@@ -7,8 +7,8 @@
 
 #include <Kokkos_Core.hpp>
 
-#include "device/space_alloc.hpp"
-#include "neighbours/cell_grid.hpp"
+#include "kernels/device/space_alloc.hpp"
+#include "kernels/neighbours/cell_grid.hpp"
 
 namespace granshock {
 

@@ -9,9 +9,9 @@
 
 #include <Kokkos_Core.hpp>
 
-#include "device/box_geometry.hpp"
-#include "device/position.hpp"
-#include "device/vec.hpp"
+#include "kernels/device/box_geometry.hpp"
+#include "kernels/device/position.hpp"
+#include "kernels/device/vec.hpp"
 
 namespace granshock {
 

@@ -11,14 +11,14 @@
 #include <type_traits>
 #include <vector>
 
-#include "device/backends.hpp"
-#include "device/box_geometry.hpp"
-#include "device/host_mirror.hpp"
-#include "device/position.hpp"
-#include "device/share.hpp"
-#include "device/space_alloc.hpp"
-#include "device/vec.hpp"
-#include "neighbours/cell_grid.hpp"
+#include "kernels/device/backends.hpp"
+#include "kernels/device/box_geometry.hpp"
+#include "kernels/device/host_mirror.hpp"
+#include "kernels/device/position.hpp"
+#include "kernels/device/share.hpp"
+#include "kernels/device/space_alloc.hpp"
+#include "kernels/device/vec.hpp"
+#include "kernels/neighbours/cell_grid.hpp"
 
 namespace granshock {
 

@@ -22,10 +22,10 @@
 #include <utility>
 #include <vector>
 
-#include "device/device_lambda.hpp"
-#include "device/position.hpp"
-#include "particles/reorder.hpp"
-#include "solver_state.hpp"
+#include "core/solver_state.hpp"
+#include "kernels/device/device_lambda.hpp"
+#include "kernels/device/position.hpp"
+#include "kernels/particles/reorder.hpp"
 
 namespace granshock {
 

@@ -9,15 +9,15 @@
 #include <stdexcept>
 #include <vector>
 
-#include "communicator.hpp"
-#include "device/backends.hpp"
-#include "device/box_geometry.hpp"
-#include "device/counter_rng.hpp"
-#include "device/device_lambda.hpp"
-#include "device/host_mirror.hpp"
-#include "particles/particle_store.hpp"
-#include "particles/population_kernels.hpp"
-#include "solver.hpp"
+#include "core/communicator.hpp"
+#include "core/solver.hpp"
+#include "kernels/device/backends.hpp"
+#include "kernels/device/box_geometry.hpp"
+#include "kernels/device/counter_rng.hpp"
+#include "kernels/device/device_lambda.hpp"
+#include "kernels/device/host_mirror.hpp"
+#include "kernels/particles/particle_store.hpp"
+#include "kernels/particles/population_kernels.hpp"
 
 namespace granshock {
 

@@ -5,9 +5,9 @@
 
 #include <Kokkos_Core.hpp>
 
-#include "device/box_geometry.hpp"
-#include "device/counter_rng.hpp"
-#include "device/vec.hpp"
+#include "kernels/device/box_geometry.hpp"
+#include "kernels/device/counter_rng.hpp"
+#include "kernels/device/vec.hpp"
 
 namespace granshock {
 

@@ -6,8 +6,8 @@
 #include <Kokkos_Core.hpp>
 #include <utility>
 
-#include "device/device_lambda.hpp"
-#include "device/space_alloc.hpp"
+#include "kernels/device/device_lambda.hpp"
+#include "kernels/device/space_alloc.hpp"
 
 namespace granshock {
 

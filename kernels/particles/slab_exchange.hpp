@@ -33,13 +33,13 @@
 #include <type_traits>
 #include <vector>
 
-#include "communicator.hpp"
-#include "device/backends.hpp"
-#include "device/host_mirror.hpp"
-#include "domain.hpp"
-#include "neighbours/cell_grid.hpp"
-#include "slab_decomposition.hpp"
-#include "solver.hpp"  // HaloStats
+#include "core/communicator.hpp"
+#include "core/domain.hpp"
+#include "core/solver.hpp"  // HaloStats
+#include "kernels/device/backends.hpp"
+#include "kernels/device/host_mirror.hpp"
+#include "kernels/neighbours/cell_grid.hpp"
+#include "parallel/slab_decomposition.hpp"
 
 namespace granshock {
 

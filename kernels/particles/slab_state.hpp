@@ -13,12 +13,12 @@
 #include <utility>
 #include <vector>
 
-#include "communicator.hpp"
-#include "device/host_mirror.hpp"
-#include "particle_bytes.hpp"
-#include "snapshot_part.hpp"
-#include "solver.hpp"
-#include "solver/state_io.hpp"
+#include "core/communicator.hpp"
+#include "core/particle_bytes.hpp"
+#include "core/snapshot_part.hpp"
+#include "core/solver.hpp"
+#include "kernels/device/host_mirror.hpp"
+#include "kernels/solver/state_io.hpp"
 
 namespace granshock::slab_state {
 

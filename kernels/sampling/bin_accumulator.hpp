@@ -14,11 +14,11 @@
 #include <type_traits>
 #include <vector>
 
-#include "bin_layout.hpp"
-#include "device/backends.hpp"
-#include "device/device_math.hpp"
-#include "device/host_mirror.hpp"
-#include "device/prefetch.hpp"
+#include "core/bin_layout.hpp"
+#include "kernels/device/backends.hpp"
+#include "kernels/device/device_math.hpp"
+#include "kernels/device/host_mirror.hpp"
+#include "kernels/device/prefetch.hpp"
 
 namespace granshock {
 

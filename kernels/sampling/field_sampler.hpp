@@ -10,11 +10,11 @@
 #include <Kokkos_Core.hpp>
 #include <vector>
 
-#include "device/space_alloc.hpp"
-#include "particles/particle_store.hpp"
-#include "sampling/bin_accumulator.hpp"
-#include "sampling/row_owner_sampling.hpp"
-#include "solver/contact_forces.hpp"
+#include "kernels/device/space_alloc.hpp"
+#include "kernels/particles/particle_store.hpp"
+#include "kernels/sampling/bin_accumulator.hpp"
+#include "kernels/sampling/row_owner_sampling.hpp"
+#include "kernels/solver/contact_forces.hpp"
 
 namespace granshock {
 

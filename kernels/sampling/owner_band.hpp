@@ -4,7 +4,7 @@
 
 #include <Kokkos_Core.hpp>
 
-#include "device/share.hpp"
+#include "kernels/device/share.hpp"
 
 namespace granshock {
 

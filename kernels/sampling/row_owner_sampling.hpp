@@ -13,8 +13,8 @@
 
 #include <Kokkos_Core.hpp>
 
-#include "sampling/bin_accumulator.hpp"
-#include "sampling/owner_band.hpp"
+#include "kernels/sampling/bin_accumulator.hpp"
+#include "kernels/sampling/owner_band.hpp"
 
 namespace granshock {
 

@@ -9,12 +9,12 @@
 
 #include <Kokkos_Core.hpp>
 
-#include "device/vec.hpp"
-#include "models/clamped_normal.hpp"
-#include "models/tangential_spring.hpp"
-#include "neighbours/pair_loop.hpp"
-#include "particles/particle_store.hpp"
-#include "solver/pair_table.hpp"
+#include "kernels/device/vec.hpp"
+#include "kernels/models/clamped_normal.hpp"
+#include "kernels/models/tangential_spring.hpp"
+#include "kernels/neighbours/pair_loop.hpp"
+#include "kernels/particles/particle_store.hpp"
+#include "kernels/solver/pair_table.hpp"
 
 namespace granshock {
 

@@ -10,14 +10,14 @@
 #include <utility>
 #include <vector>
 
-#include "communicator.hpp"
-#include "device/backends.hpp"
-#include "device/device_lambda.hpp"
-#include "device/host_mirror.hpp"
-#include "neighbours/pair_loop.hpp"
-#include "particles/particle_store.hpp"
-#include "solver.hpp"
-#include "solver/pair_table.hpp"
+#include "core/communicator.hpp"
+#include "core/solver.hpp"
+#include "kernels/device/backends.hpp"
+#include "kernels/device/device_lambda.hpp"
+#include "kernels/device/host_mirror.hpp"
+#include "kernels/neighbours/pair_loop.hpp"
+#include "kernels/particles/particle_store.hpp"
+#include "kernels/solver/pair_table.hpp"
 
 namespace granshock {
 

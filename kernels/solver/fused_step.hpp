@@ -19,9 +19,9 @@
 #include <Kokkos_Core.hpp>
 #include <cstdint>
 
-#include "device/backends.hpp"
-#include "solver/contact_forces.hpp"
-#include "solver/kick.hpp"
+#include "kernels/device/backends.hpp"
+#include "kernels/solver/contact_forces.hpp"
+#include "kernels/solver/kick.hpp"
 
 namespace granshock {
 

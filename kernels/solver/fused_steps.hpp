@@ -13,9 +13,9 @@
 
 #include <Kokkos_Core.hpp>
 
-#include "device/share.hpp"
-#include "neighbours/rebuild_watch.hpp"
-#include "solver/fused_step.hpp"
+#include "kernels/device/share.hpp"
+#include "kernels/neighbours/rebuild_watch.hpp"
+#include "kernels/solver/fused_step.hpp"
 
 namespace granshock {
 

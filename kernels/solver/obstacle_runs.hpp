@@ -20,8 +20,8 @@
 #include <Kokkos_Core.hpp>
 #include <cstdint>
 
-#include "device/position.hpp"
-#include "device/vec.hpp"
+#include "kernels/device/position.hpp"
+#include "kernels/device/vec.hpp"
 
 namespace granshock {
 

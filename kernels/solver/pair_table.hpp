@@ -5,9 +5,9 @@
 
 #include <Kokkos_Core.hpp>
 
-#include "device/host_mirror.hpp"
-#include "models/clamped_normal.hpp"
-#include "solver_setup.hpp"
+#include "core/solver_setup.hpp"
+#include "kernels/device/host_mirror.hpp"
+#include "kernels/models/clamped_normal.hpp"
 
 namespace granshock {
 

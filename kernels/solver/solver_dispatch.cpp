@@ -4,9 +4,9 @@
 // once, at start-up; nothing is re-decided per pair.
 #include <type_traits>
 
-#include "device/backends.hpp"
-#include "solver.hpp"
-#include "solver/variant_table.hpp"
+#include "core/solver.hpp"
+#include "kernels/device/backends.hpp"
+#include "kernels/solver/variant_table.hpp"
 
 namespace granshock {
 

@@ -16,17 +16,17 @@
 #include <type_traits>
 #include <vector>
 
-#include "checkpoint_checks.hpp"
-#include "device/box_geometry.hpp"
-#include "device/host_mirror.hpp"
-#include "host_particles.hpp"
-#include "neighbours/cell_grid.hpp"
-#include "neighbours/cell_sort.hpp"
-#include "neighbours/verlet_list.hpp"
-#include "particles/particle_store.hpp"
-#include "particles/population_kernels.hpp"
-#include "solver_setup.hpp"
-#include "solver_state.hpp"
+#include "core/checkpoint_checks.hpp"
+#include "core/host_particles.hpp"
+#include "core/solver_setup.hpp"
+#include "core/solver_state.hpp"
+#include "kernels/device/box_geometry.hpp"
+#include "kernels/device/host_mirror.hpp"
+#include "kernels/neighbours/cell_grid.hpp"
+#include "kernels/neighbours/cell_sort.hpp"
+#include "kernels/neighbours/verlet_list.hpp"
+#include "kernels/particles/particle_store.hpp"
+#include "kernels/particles/population_kernels.hpp"
 
 namespace granshock {
 

@@ -8,9 +8,9 @@
 #include <optional>
 #include <string>
 
-#include "obstacle.hpp"
-#include "solver_setup.hpp"
-#include "variant_names.hpp"
+#include "core/obstacle.hpp"
+#include "core/solver_setup.hpp"
+#include "core/variant_names.hpp"
 
 namespace granshock {
 

@@ -10,11 +10,11 @@
 
 #include <memory>
 
-#include "communicator.hpp"
-#include "device/backends.hpp"
-#include "models/models.hpp"
-#include "solver.hpp"
-#include "solver/variant.hpp"
+#include "core/communicator.hpp"
+#include "core/solver.hpp"
+#include "kernels/device/backends.hpp"
+#include "kernels/models/models.hpp"
+#include "kernels/solver/variant.hpp"
 
 namespace granshock {
 

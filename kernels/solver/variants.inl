@@ -1,8 +1,8 @@
 // The definition of make_solver_variant; included by the variants_*.cpp files (and by a
 // test that builds the other paths, tests/unit/solver_on_paths.cpp).
-#include "solver/dem_solver.hpp"
-#include "solver/variant_table.hpp"
-#include "user_error.hpp"
+#include "core/user_error.hpp"
+#include "kernels/solver/dem_solver.hpp"
+#include "kernels/solver/variant_table.hpp"
 
 namespace granshock {
 

@@ -1,4 +1,4 @@
-#include "solver/variants.inl"
+#include "kernels/solver/variants.inl"
 
 namespace granshock {
 template std::unique_ptr<Solver> make_solver_variant<double, Kokkos::DefaultExecutionSpace>(

@@ -1,6 +1,6 @@
-#include "device/backends.hpp"
+#include "kernels/device/backends.hpp"
 #if GRANSHOCK_SEPARATE_SERIAL
-#include "solver/variants.inl"
+#include "kernels/solver/variants.inl"
 
 namespace granshock {
 template std::unique_ptr<Solver> make_solver_variant<float, Kokkos::Serial>(const SolverSetup&,

@@ -8,11 +8,11 @@
 
 #include <Kokkos_Core.hpp>
 
-#include "device/device_lambda.hpp"
-#include "device/vec.hpp"
-#include "particles/particle_store.hpp"
-#include "solver/kick.hpp"
-#include "solver/pair_table.hpp"
+#include "kernels/device/device_lambda.hpp"
+#include "kernels/device/vec.hpp"
+#include "kernels/particles/particle_store.hpp"
+#include "kernels/solver/kick.hpp"
+#include "kernels/solver/pair_table.hpp"
 
 namespace granshock {
 

@@ -1,11 +1,13 @@
 #!/usr/bin/env python3
-"""Includes outside kernels/ show the layer of the header: "core/scene.hpp", not "scene.hpp".
+"""Every include of a granshock header is spelled from the repository's root, in every layer:
+"core/scene.hpp", "kernels/solver/dem_solver.hpp", never "scene.hpp" or "solver/dem_solver.hpp".
 
-A reader sees at the include which layer a file depends on (docs/design.md, "Layers").
-Flagged, in every C++ file under core/, io/, analysis/, cases/, apps/, parallel/ and
-tests/: an #include "NAME" whose NAME, without a directory, is a header of one of those
-layers. Headers under kernels/ are included as "solver/dem_solver.hpp" (from kernels/);
-generated headers (not in the tree) and the tests' own helpers are left alone.
+A reader sees at the include which layer a file depends on (docs/design.md, "Layers"), and
+one header has one spelling. Flagged, in every C++ file under core/, io/, analysis/,
+cases/, apps/, parallel/, kernels/ and tests/: an #include "NAME" that names a header of
+one of those layers other than as LAYER/PATH from the root (a bare name, or a path from
+inside a layer such as "models/hertz.hpp"). Generated headers (not in the tree) and the
+tests' own helpers are left alone.
 Usage: includes_show_layer.py REPOSITORY_ROOT
 """
 import pathlib
@@ -14,22 +16,34 @@ import sys
 
 from source_lines import report, source_lines
 
-LAYERS = ["core", "io", "analysis", "cases", "apps", "parallel"]
+LAYERS = ["core", "io", "analysis", "cases", "apps", "parallel", "kernels"]
 SOURCES = {".cpp", ".hpp", ".h", ".inl", ".in"}
-INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"/]+)"')
+INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"')
 
 
 def main():
     root = pathlib.Path(sys.argv[1]).resolve()
-    layer_headers = {p.name for layer in LAYERS for p in (root / layer).rglob("*")
-                     if p.suffix in {".hpp", ".h", ".inl"} and p.is_file()}
+    headers = [p.relative_to(root) for layer in LAYERS for p in (root / layer).rglob("*")
+               if p.suffix in {".hpp", ".h", ".inl"} and p.is_file()]
+    # Every path by which a layer's header could be named other than from the root: its
+    # name alone and each tail of its path ("models/hertz.hpp" of kernels/models/hertz.hpp).
+    other_spellings = {}
+    for h in headers:
+        parts = h.parts
+        for k in range(1, len(parts)):
+            other_spellings.setdefault("/".join(parts[k:]), str(h))
     found = []
     for path, number, line in source_lines(root, LAYERS + ["tests"], SOURCES):
         m = INCLUDE.match(line)
-        if m and m.group(1) in layer_headers:
-            found.append(f"{path}:{number}: {line.strip()}")
-    return report(found, 'include(s) without their layer; write "core/x.hpp", "io/x.hpp", ...',
-                  "every include outside kernels/ shows its layer")
+        if not m:
+            continue
+        name = m.group(1)
+        if name.split("/")[0] in LAYERS and (root / name).is_file():
+            continue
+        if name in other_spellings:
+            found.append(f"{path}:{number}: {line.strip()} (write \"{other_spellings[name]}\")")
+    return report(found, "include(s) not spelled from the repository's root",
+                  "every include of a granshock header is spelled from the root")
 
 
 if __name__ == "__main__":

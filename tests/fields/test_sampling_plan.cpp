@@ -11,7 +11,7 @@
 #include "cases/bow_shock/sampling_plan.hpp"
 #include "io/scene_file.hpp"
 #include "kernels/models/obstacle_shapes.hpp"
-#include "sampling/bin_accumulator.hpp"
+#include "kernels/sampling/bin_accumulator.hpp"
 
 using namespace granshock;
 namespace fs = std::filesystem;

@@ -4,7 +4,7 @@
 
 #include <cstdio>
 
-#include "device/kokkos_runtime.hpp"
+#include "kernels/device/kokkos_runtime.hpp"
 #include "parallel/mpi_runtime.hpp"
 
 namespace {

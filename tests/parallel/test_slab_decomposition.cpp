@@ -7,7 +7,7 @@
 #include <numeric>
 
 #include "core/user_error.hpp"
-#include "neighbours/cell_grid.hpp"
+#include "kernels/neighbours/cell_grid.hpp"
 #include "parallel/slab_decomposition.hpp"
 
 using namespace granshock;

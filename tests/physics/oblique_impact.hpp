@@ -13,7 +13,7 @@
 #include "core/solver.hpp"
 #include "kernels/models/hooke_parameters.hpp"
 #include "kernels/models/obstacle_shapes.hpp"
-#include "models/time_step_guard.hpp"
+#include "kernels/models/time_step_guard.hpp"
 
 namespace granshock::test {
 

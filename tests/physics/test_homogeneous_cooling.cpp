@@ -60,8 +60,8 @@
 
 #include "cases/gas/homogeneous_gas.hpp"
 #include "core/solver.hpp"
-#include "models/hertz.hpp"
-#include "models/time_step_guard.hpp"
+#include "kernels/models/hertz.hpp"
+#include "kernels/models/time_step_guard.hpp"
 
 namespace granshock {
 namespace {

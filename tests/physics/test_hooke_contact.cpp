@@ -43,7 +43,7 @@
 
 #include "cases/collision/head_on_collision.hpp"
 #include "core/user_error.hpp"
-#include "models/hooke.hpp"
+#include "kernels/models/hooke.hpp"
 #include "physics/contact_reference.hpp"
 #include "physics/oblique_impact.hpp"
 

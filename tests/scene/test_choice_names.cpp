@@ -17,7 +17,7 @@
 #include "core/choice_names.hpp"
 #include "core/user_error.hpp"
 #include "io/scene_file.hpp"
-#include "models/models.hpp"
+#include "kernels/models/models.hpp"
 #include "scene_fixtures.hpp"
 
 using namespace granshock;

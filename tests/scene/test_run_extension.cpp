@@ -17,8 +17,8 @@
 #include "io/checkpoint_file.hpp"
 #include "io/marked_directory.hpp"
 #include "io/run_file.hpp"
+#include "kernels/sampling/bin_accumulator.hpp"
 #include "run_helpers.hpp"
-#include "sampling/bin_accumulator.hpp"
 #include "scene_fixtures.hpp"
 #include "stopped_run.hpp"
 

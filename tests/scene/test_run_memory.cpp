@@ -12,8 +12,8 @@
 #include "cases/bow_shock/run_command.hpp"
 #include "cases/bow_shock/run_memory.hpp"
 #include "core/user_error.hpp"
-#include "device/backends.hpp"
 #include "io/scene_file.hpp"
+#include "kernels/device/backends.hpp"
 #include "run_helpers.hpp"
 #include "scene_fixtures.hpp"
 

@@ -9,8 +9,8 @@
 
 #include <cmath>
 
-#include "models/obstacle_body.hpp"
-#include "models/obstacle_shapes.hpp"
+#include "kernels/models/obstacle_body.hpp"
+#include "kernels/models/obstacle_shapes.hpp"
 
 using namespace granshock;
 

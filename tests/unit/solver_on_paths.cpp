@@ -6,9 +6,9 @@
 
 #include <stdexcept>
 
-#include "device/backends.hpp"
-#include "solver/dem_solver.hpp"
-#include "solver/variant_table.hpp"
+#include "kernels/device/backends.hpp"
+#include "kernels/solver/dem_solver.hpp"
+#include "kernels/solver/variant_table.hpp"
 
 namespace granshock::test {
 

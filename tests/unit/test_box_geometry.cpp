@@ -10,7 +10,7 @@
 #include <limits>
 #include <random>
 
-#include "device/box_geometry.hpp"
+#include "kernels/device/box_geometry.hpp"
 
 using namespace granshock;
 

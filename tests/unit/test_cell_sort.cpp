@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "core/domain.hpp"
-#include "device/counter_rng.hpp"
-#include "device/position.hpp"
-#include "neighbours/cell_sort.hpp"
+#include "kernels/device/counter_rng.hpp"
+#include "kernels/device/position.hpp"
+#include "kernels/neighbours/cell_sort.hpp"
 
 using namespace granshock;
 

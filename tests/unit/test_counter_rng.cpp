@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "device/counter_rng.hpp"
+#include "kernels/device/counter_rng.hpp"
 
 using granshock::CounterRng;
 

@@ -7,7 +7,7 @@
 #include <Kokkos_Core.hpp>
 #include <type_traits>
 
-#include "device/launch_counter.hpp"
+#include "kernels/device/launch_counter.hpp"
 
 using namespace granshock;
 

@@ -10,7 +10,7 @@
 #include "brute_force_contacts.hpp"
 #include "cases/gas/homogeneous_gas.hpp"
 #include "core/solver.hpp"
-#include "device/counter_rng.hpp"
+#include "kernels/device/counter_rng.hpp"
 #include "solver_on_paths.hpp"
 
 using namespace granshock;

@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "core/material.hpp"
+#include "kernels/models/obstacle_body.hpp"
 #include "kernels/models/obstacle_shapes.hpp"
-#include "models/obstacle_body.hpp"
-#include "solver/obstacle_runs.hpp"
+#include "kernels/solver/obstacle_runs.hpp"
 
 using namespace granshock;
 

@@ -13,7 +13,7 @@
 
 #include "cases/gas/homogeneous_gas.hpp"
 #include "core/solver.hpp"
-#include "device/backends.hpp"
+#include "kernels/device/backends.hpp"
 
 using namespace granshock;
 

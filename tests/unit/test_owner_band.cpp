@@ -8,7 +8,7 @@
 #include <random>
 #include <vector>
 
-#include "sampling/owner_band.hpp"
+#include "kernels/sampling/owner_band.hpp"
 
 using namespace granshock;
 

@@ -6,10 +6,10 @@
 #include <cmath>
 
 #include "core/pair_properties.hpp"
-#include "models/clamped_normal.hpp"
-#include "models/hertz.hpp"
-#include "models/models.hpp"
-#include "models/time_step_guard.hpp"
+#include "kernels/models/clamped_normal.hpp"
+#include "kernels/models/hertz.hpp"
+#include "kernels/models/models.hpp"
+#include "kernels/models/time_step_guard.hpp"
 
 using namespace granshock;
 

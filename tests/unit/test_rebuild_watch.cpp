@@ -11,7 +11,7 @@
 
 #include "cases/gas/homogeneous_gas.hpp"
 #include "core/solver.hpp"
-#include "neighbours/rebuild_watch.hpp"
+#include "kernels/neighbours/rebuild_watch.hpp"
 #include "same_particles.hpp"
 
 using namespace granshock;

@@ -3,7 +3,7 @@
 // lowered before Kokkos starts.
 #include <gtest/gtest.h>
 
-#include "device/thread_cap.hpp"
+#include "kernels/device/thread_cap.hpp"
 
 using namespace granshock;
 

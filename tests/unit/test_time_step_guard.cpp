@@ -6,9 +6,9 @@
 
 #include "cases/collision/head_on_collision.hpp"
 #include "core/user_error.hpp"
-#include "models/hertz.hpp"
-#include "models/hooke.hpp"
-#include "models/time_step_guard.hpp"
+#include "kernels/models/hertz.hpp"
+#include "kernels/models/hooke.hpp"
+#include "kernels/models/time_step_guard.hpp"
 
 using namespace granshock;
 
