@@ -84,8 +84,12 @@ void for_each_law_parameters(F&& f) {
 inline std::optional<std::size_t> law_key_index(ContactModelKind kind, const std::string& name) {
   std::optional<std::size_t> index;
   with_law_parameters(kind, [&](auto parameters) {
-    for (std::size_t i = 0; i < parameters.keys.size(); ++i)
-      if (name == parameters.keys[i].name) index = i;
+    // A range-for: an index loop compares i < 0 for a law without keys, which nvcc warns of.
+    std::size_t i = 0;
+    for (const LawKey& key : parameters.keys) {
+      if (name == key.name) index = i;
+      ++i;
+    }
   });
   return index;
 }
