@@ -952,7 +952,7 @@ void write_shape_key(const Writing& w, toml::table& t, const std::string& k) {
 // A shape key's row of docs/scene_keys.md, from its shape's declaration (every shape that
 // declares the name owns it; the range, default and meaning are the first's).
 KeyDoc shape_key_doc(const ShapeKey& key) {
-  std::vector<std::string> owners, meanings;
+  std::vector<std::string> owners;
   for (ObstacleShape shape : shapes_with_key(key.name))
     owners.push_back(fmt::format("a {}", choice_name(shape)));
   const std::string shapes = fmt::format("{}", fmt::join(owners, " or "));
