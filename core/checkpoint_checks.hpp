@@ -6,7 +6,7 @@
 //
 // Three levels, by what they need to know:
 //   check_state, check_extras  the file alone (io, right after reading);
-//   check_fit, check_contacts  the solver the scene builds (DemSolver::import_state);
+//   check_fit, check_contacts  the solver the scene builds (StateTransfer::import_state);
 //   check_run                  the run loop's schedule and physics (BowShockRun::resume).
 #pragma once
 

@@ -26,8 +26,8 @@ bool InflowController::falls_short() const {
   return missing > 2.0 && missing > kShortfallWarning * requested();
 }
 
-int InflowController::insert_batch(Solver& solver, double y_lo, double y_hi, double expected,
-                                   bool rebuild_lists) {
+int InflowController::insert_batch(SolverStepping& solver, double y_lo, double y_hi,
+                                   double expected, bool rebuild_lists) {
   const double wanted = expected + carry_;
   InsertionRequest rq;
   rq.x_range = {scene_.setup.box.lo[0], scene_.setup.box.hi[0]};
@@ -75,7 +75,7 @@ void InflowController::count_prefill() {
   });
 }
 
-void InflowController::prefill(Solver& solver,
+void InflowController::prefill(SolverStepping& solver,
                                const std::function<void(long done, long slabs)>& progress) {
   count_prefill();
   long done = 0;
@@ -96,7 +96,7 @@ std::uint64_t InflowController::events_by(long step) const {
   return prefill + std::uint64_t(step / period_steps_) + 1;
 }
 
-void InflowController::insert_if_due(Solver& solver, long step) {
+void InflowController::insert_if_due(SolverStepping& solver, long step) {
   if (step % period_steps_ != 0) return;
   insert_batch(solver, 0.0, scene_.inflow.strip_m, per_batch_);
 }

@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "core/scene.hpp"
-#include "core/solver.hpp"
+#include "core/solver_stepping.hpp"
 
 namespace granshock {
 
@@ -32,9 +32,10 @@ class InflowController {
   // given, is called after each batch with the slabs filled and their number, on every
   // process (a prefill of 3e7 particles takes minutes: a run reports progress and checks
   // for signals there).
-  void prefill(Solver& solver, const std::function<void(long done, long slabs)>& progress = {});
+  void prefill(SolverStepping& solver,
+               const std::function<void(long done, long slabs)>& progress = {});
   // Inserts a batch when `step` is an insertion step.
-  void insert_if_due(Solver& solver, long step);
+  void insert_if_due(SolverStepping& solver, long step);
 
   // Particles the prefill and every inflow batch so far asked for (a pure function of
   // the scene and events(), so resumed runs need not store it), and the shortfall.
@@ -55,7 +56,7 @@ class InflowController {
   void restore(std::uint64_t events, long inserted, double carry);
 
  private:
-  int insert_batch(Solver& solver, double y_lo, double y_hi, double expected,
+  int insert_batch(SolverStepping& solver, double y_lo, double y_hi, double expected,
                    bool rebuild_lists = true);
   // Area of the slab y in [y_lo, y_hi] where insertion may place particles: the slab
   // minus the disk around the obstacle that insertion keeps clear.

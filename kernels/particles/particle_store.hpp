@@ -36,7 +36,7 @@ enum ArrayRole : unsigned { kept_at_home = 0, read_by_partners = 1, moves = 2 };
 
 // A per-particle array's name, where a checkpoint keeps it, its roles (ArrayRole bits) and
 // the value a particle holds before anything is known of it (a fresh store, particles
-// given by position and velocity: DemSolver::set_particles).
+// given by position and velocity: StateTransfer::set_particles).
 // (The member pointer has a type alias: nvcc rewrote the plain declarator with
 // parentheses, and g++ warned about them in the CUDA build.)
 template <class Host>
@@ -47,7 +47,7 @@ struct StateArray {
   unsigned roles = kept_at_home;
   Host rest = 0;
   // A state may lack it (a checkpoint from before it existed): the array then holds `rest`
-  // and the solver knows it was not given (DemSolver::import_state).
+  // and the solver knows it was not given (StateTransfer::import_state).
   bool may_be_absent = false;
 };
 
@@ -79,7 +79,7 @@ struct ParticleStore {
   SpringView history_spring;    // spring xi per slot
   VectorView obstacle_spring;   // spring xi against the obstacle
   // The contact virial W_i = sum_j 1/2 r_ij (x) F_ij of the last force pass that recorded
-  // it (the step's last, DemSolver::compute_forces), for field sampling (docs/fields.md,
+  // it (the step's last, StepLoop::compute_forces), for field sampling (docs/fields.md,
   // "The contact virial"); 0 for a particle inserted since, which touched nothing.
   VirialView virial;
   int n = 0;  // owned particles

@@ -18,21 +18,23 @@
 #include "kernels/device/host_mirror.hpp"
 #include "kernels/particles/particle_store.hpp"
 #include "kernels/particles/population_kernels.hpp"
+#include "kernels/particles/variant_types.hpp"
 
 namespace granshock {
 
 template <class V, class ExecSpace, class Paths = DefaultPaths<ExecSpace>>
 class ParticlePopulation {
  public:
-  static constexpr int Dim = V::dim;
-  using Real = typename V::real;
-  using Mem = typename ExecSpace::memory_space;
-  using Policy = Kokkos::RangePolicy<ExecSpace>;
-  using Store = ParticleStore<Dim, Real, Mem, V::friction>;
-  using Obstacle = typename V::obstacle::template Geometry<Dim, Real>;
+  using Types = VariantTypes<V, ExecSpace>;
+  static constexpr int Dim = Types::Dim;
+  using Real = typename Types::Real;
+  using Mem = typename Types::Mem;
+  using Policy = typename Types::Policy;
+  using Store = typename Types::Store;
+  using Obstacle = typename Types::Obstacle;
   // Candidates, the overlap test and the escape test are in Position (double) in every
   // variant (device/position.hpp).
-  using Position = typename Store::Position;
+  using Position = typename Types::Position;
   static constexpr int kInsertionRounds = 16;
 
   ParticlePopulation() = default;

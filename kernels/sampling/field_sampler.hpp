@@ -12,6 +12,7 @@
 
 #include "kernels/device/space_alloc.hpp"
 #include "kernels/particles/particle_store.hpp"
+#include "kernels/particles/variant_types.hpp"
 #include "kernels/sampling/bin_accumulator.hpp"
 #include "kernels/sampling/row_owner_sampling.hpp"
 #include "kernels/solver/contact_forces.hpp"
@@ -21,10 +22,11 @@ namespace granshock {
 template <class V, class ExecSpace, class Paths>
 class FieldSampler {
  public:
-  static constexpr int Dim = V::dim;
-  using Real = typename V::real;
-  using Mem = typename ExecSpace::memory_space;
-  using Store = ParticleStore<Dim, Real, Mem, V::friction>;
+  using Types = VariantTypes<V, ExecSpace>;
+  static constexpr int Dim = Types::Dim;
+  using Real = typename Types::Real;
+  using Mem = typename Types::Mem;
+  using Store = typename Types::Store;
   using Accumulator = BinAccumulator<ExecSpace, Paths>;
   using VirialKernel = ContactForceKernel<V, ExecSpace, ForceMode::virial>;
   using VirialView = typename Store::VirialView;

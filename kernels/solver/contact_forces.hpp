@@ -14,6 +14,7 @@
 #include "kernels/models/tangential_spring.hpp"
 #include "kernels/neighbours/pair_loop.hpp"
 #include "kernels/particles/particle_store.hpp"
+#include "kernels/particles/variant_types.hpp"
 #include "kernels/solver/pair_table.hpp"
 
 namespace granshock {
@@ -27,13 +28,14 @@ enum class ForceMode { forces, forces_and_virial, virial };
 
 template <class V, class ExecSpace, ForceMode Mode = ForceMode::forces>
 struct ContactForceKernel {
-  static constexpr int Dim = V::dim;
-  using Real = typename V::real;
-  using Model = typename V::model;
-  using Mem = typename ExecSpace::memory_space;
-  using Store = ParticleStore<Dim, Real, Mem, V::friction>;
-  using Obstacle = typename V::obstacle::template Geometry<Dim, Real>;
-  using Position = typename Store::Position;  // of x: double (device/position.hpp)
+  using Types = VariantTypes<V, ExecSpace>;
+  static constexpr int Dim = Types::Dim;
+  using Real = typename Types::Real;
+  using Model = typename Types::Model;
+  using Mem = typename Types::Mem;
+  using Store = typename Types::Store;
+  using Obstacle = typename Types::Obstacle;
+  using Position = typename Types::Position;  // of x: double (device/position.hpp)
 
   Store p;
   PairLoop<Dim, Real, Mem> pairs;

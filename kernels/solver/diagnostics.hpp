@@ -17,21 +17,23 @@
 #include "kernels/device/host_mirror.hpp"
 #include "kernels/neighbours/pair_loop.hpp"
 #include "kernels/particles/particle_store.hpp"
+#include "kernels/particles/variant_types.hpp"
 #include "kernels/solver/pair_table.hpp"
 
 namespace granshock {
 
 template <class V, class ExecSpace, class Paths = DefaultPaths<ExecSpace>>
 struct SolverDiagnostics {
-  static constexpr int Dim = V::dim;
-  using Real = typename V::real;
-  using Model = typename V::model;
-  using Mem = typename ExecSpace::memory_space;
-  using Policy = Kokkos::RangePolicy<ExecSpace>;
-  using Store = ParticleStore<Dim, Real, Mem, V::friction>;
+  using Types = VariantTypes<V, ExecSpace>;
+  static constexpr int Dim = Types::Dim;
+  using Real = typename Types::Real;
+  using Model = typename Types::Model;
+  using Mem = typename Types::Mem;
+  using Policy = typename Types::Policy;
+  using Store = typename Types::Store;
   using Table = PairTable<Model, Real, Mem>;
-  using Obstacle = typename V::obstacle::template Geometry<Dim, Real>;
-  using Position = typename Store::Position;  // of x: double (device/position.hpp)
+  using Obstacle = typename Types::Obstacle;
+  using Position = typename Types::Position;  // of x: double (device/position.hpp)
 
   Store p;
   PairLoop<Dim, Real, Mem> pairs;

@@ -20,6 +20,7 @@
 #include <cstdint>
 
 #include "kernels/device/backends.hpp"
+#include "kernels/particles/variant_types.hpp"
 #include "kernels/solver/contact_forces.hpp"
 #include "kernels/solver/kick.hpp"
 
@@ -27,11 +28,12 @@ namespace granshock {
 
 template <class V, class ExecSpace, class Paths = DefaultPaths<ExecSpace>>
 struct FusedStepKernel {
-  static constexpr int Dim = V::dim;
-  using Real = typename V::real;
-  using Mem = typename ExecSpace::memory_space;
-  using Store = typename ContactForceKernel<V, ExecSpace>::Store;
-  using Position = typename Store::Position;
+  using Types = VariantTypes<V, ExecSpace>;
+  static constexpr int Dim = Types::Dim;
+  using Real = typename Types::Real;
+  using Mem = typename Types::Mem;
+  using Store = typename Types::Store;
+  using Position = typename Types::Position;
   using VectorView = typename Store::VectorView;
   using ScalarView = typename Store::ScalarView;
 

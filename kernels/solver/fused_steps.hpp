@@ -15,6 +15,7 @@
 
 #include "kernels/device/share.hpp"
 #include "kernels/neighbours/rebuild_watch.hpp"
+#include "kernels/particles/variant_types.hpp"
 #include "kernels/solver/fused_step.hpp"
 
 namespace granshock {
@@ -26,10 +27,10 @@ constexpr int step_regions_particles_per_thread = 8192;
 
 template <class V, class ExecSpace, class Paths = DefaultPaths<ExecSpace>>
 struct FusedStepsPass {
-  using Real = typename V::real;
+  using Real = typename VariantTypes<V, ExecSpace>::Real;
+  using Mem = typename VariantTypes<V, ExecSpace>::Mem;
   using Kernel = FusedStepKernel<V, ExecSpace, Paths>;
   using Member = typename Kokkos::TeamPolicy<ExecSpace>::member_type;
-  using Mem = typename ExecSpace::memory_space;
 
   // The pass that reads the current buffers and writes the second ones, and the pass back.
   Kernel forth, back;

@@ -117,7 +117,7 @@ void import_given(Store& p, const HostParticles& given) {
 
 // The cell order and Verlet list that sorting and building from a state's reference
 // positions give (as a rebuild does): what a state must hold (check_lists), and what a
-// state gathered from several processes gets (DemSolver::export_state).
+// state gathered from several processes gets (StateTransfer::export_state).
 struct ReferenceLists {
   std::vector<int> order;  // order[k]: the state row that comes k-th in cell order
   std::vector<int> offsets;
@@ -173,7 +173,7 @@ void check_lists(const SolverState& s, const CellGrid<Dim, Position>& grid,
         if (double(Real(v)) != v)
           fail(fmt::format("/state: {} is not a value of this single-precision solver", v));
   }
-  const Real rebuild_d2 = Real(0.25) * skin * skin;  // as in DemSolver::advance
+  const Real rebuild_d2 = Real(0.25) * skin * skin;  // as in ListKeeping::expired
   for (int i = 0; i < n; ++i) {
     Real d2 = 0;
     for (int d = 0; d < Dim; ++d) {

@@ -11,6 +11,7 @@
 #include "kernels/device/device_lambda.hpp"
 #include "kernels/device/vec.hpp"
 #include "kernels/particles/particle_store.hpp"
+#include "kernels/particles/variant_types.hpp"
 #include "kernels/solver/kick.hpp"
 #include "kernels/solver/pair_table.hpp"
 
@@ -18,12 +19,13 @@ namespace granshock {
 
 template <class V, class ExecSpace>
 struct VelocityVerlet {
-  static constexpr int Dim = V::dim;
-  using Real = typename V::real;
-  using Mem = typename ExecSpace::memory_space;
-  using Policy = Kokkos::RangePolicy<ExecSpace>;
-  using Store = ParticleStore<Dim, Real, Mem, V::friction>;
-  using Table = PairTable<typename V::model, Real, Mem>;
+  using Types = VariantTypes<V, ExecSpace>;
+  static constexpr int Dim = Types::Dim;
+  using Real = typename Types::Real;
+  using Mem = typename Types::Mem;
+  using Policy = typename Types::Policy;
+  using Store = typename Types::Store;
+  using Table = PairTable<typename Types::Model, Real, Mem>;
 
   Real dt;
   Vec<Dim, Real> gravity;

@@ -13,6 +13,7 @@
 #include <cmath>
 
 #include "cases/bow_shock/inflow.hpp"
+#include "core/solver.hpp"
 #include "io/scene_file.hpp"
 #include "scene_fixtures.hpp"
 

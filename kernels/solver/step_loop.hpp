@@ -1,0 +1,229 @@
+// The time loop of a DemSolver (docs/design.md, "The solver"): velocity Verlet with the
+// second half of one step, the forces and the first half of the next fused into one pass
+// (fused_step.hpp), several such steps in one parallel region where the host may
+// (fused_steps.hpp), and the lists rebuilt when list_keeping.hpp says they expired.
+#pragma once
+
+#include <Kokkos_Core.hpp>
+#include <algorithm>
+#include <chrono>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "kernels/device/host_mirror.hpp"
+#include "kernels/device/space_alloc.hpp"
+#include "kernels/solver/contact_forces.hpp"
+#include "kernels/solver/fused_step.hpp"
+#include "kernels/solver/fused_steps.hpp"
+#include "kernels/solver/list_keeping.hpp"
+#include "kernels/solver/solver_parts.hpp"
+
+namespace granshock {
+
+template <class V, class ExecSpace, class Paths>
+class StepLoop {
+ public:
+  using Parts = SolverParts<V, ExecSpace, Paths>;
+  using Real = typename Parts::Real;
+  using Mem = typename Parts::Mem;
+  using Store = typename Parts::Store;
+  using Policy = typename Parts::Types::Policy;
+  static constexpr int Dim = Parts::Dim;
+
+  StepLoop(Parts& parts, ListKeeping<V, ExecSpace, Paths>& lists) : s_(parts), lists_(lists) {}
+
+  // Velocity Verlet, steps times. Inside the loop the second half of step n, the first
+  // half of n+1 and the forces between them are one fused pass (fused_step.hpp); the
+  // first step starts with the first half and the last ends with forces and the second
+  // half, so between calls x, v and f belong to the same step, as with separate halves.
+  // That last force pass also records each particle's contact virial, which a field
+  // sample at this step reads (compute_forces).
+  void advance(long steps) {
+    if (steps <= 0) return;
+    const WorkClock work = start_work_clock();
+    s_.watch.measured(s_.global_max(s_.integrator.first_half(s_.p, s_.table)));
+    for (long k = 0; k < steps; ++k) {
+      if (lists_.expired()) {
+        if (s_.setup.adaptive_skin) lists_.choose_skin();
+        lists_.rebuild();
+      } else if (s_.slabs) {
+        s_.slabs->update_ghosts(s_.p);
+      }
+      if (k + 1 < steps) {
+        const bool by_speed = !s_.setup.exact_list_check && s_.watch.next_drift_by_speed();
+        if (by_speed && steps_in_one_region()) {
+          const long done = fused_steps(std::min(steps - 1 - k, s_.setup.steps_per_region));
+          k += done - 1;  // the loop counts the last
+          s_.steps += done - 1;
+        } else {
+          const double reported = s_.global_max(fused_step(by_speed));
+          if (by_speed) {
+            s_.watch.drifted(reported);
+          } else {
+            s_.watch.measured(reported);
+          }
+        }
+      } else {
+        compute_forces();
+        s_.integrator.second_half(s_.p, s_.table);
+      }
+      ++s_.steps;
+    }
+    // Ghosts as their owners end the call (diagnostics, and a sample that computes its own
+    // virial, read their velocities).
+    if (s_.slabs) s_.slabs->update_ghosts(s_.p);
+    stop_work_clock(work, steps);
+    if constexpr (V::friction) {
+      int overflow = 0;
+      Kokkos::deep_copy(overflow, s_.history_overflow);
+      if (s_.comm.any(overflow != 0))
+        throw std::runtime_error("a particle had more than " +
+                                 std::to_string(Store::history_slots) +
+                                 " simultaneous contacts: the packing is unphysically dense "
+                                 "(huge overlaps?); reduce dt or check the scene");
+    }
+  }
+
+  // The forces at the current state, and each particle's contact virial of these very
+  // pair forces, for a field sample before the next step (docs/fields.md, "The contact
+  // virial": damping at the velocities the forces see, v^(n+1/2) at the end of a step).
+  void compute_forces() {
+    Kokkos::parallel_for(
+        "contact_forces_and_virial", Policy(0, s_.p.n),
+        force_kernel<ForceMode::forces_and_virial>(s_.p, s_.pair_loop(), s_.p.virial));
+    s_.virial_recorded = true;
+  }
+
+  // The force kernel over `from`'s particles and `pairs`' list: the one place its
+  // arguments are listed (the virial view not in ForceMode::forces).
+  template <ForceMode Mode = ForceMode::forces>
+  ContactForceKernel<V, ExecSpace, Mode> force_kernel(
+      const Store& from, const PairLoop<Dim, Real, Mem>& pairs,
+      const Kokkos::View<Real * [Dim * Dim], Mem>& virial = {}) const {
+    return {from, pairs, s_.table, s_.obstacle, Real(s_.setup.dt), s_.history_overflow, virial};
+  }
+
+  // Forces at the current positions, then the end of this step and the start of the next
+  // in one pass; returns the largest squared speed of the drift (by_speed) or the largest
+  // squared displacement since the last list build.
+  Real fused_step(bool by_speed) {
+    const FusedStepKernel<V, ExecSpace, Paths> kernel = fused_kernel(by_speed, false);
+    Real moved2 = 0;
+    Kokkos::parallel_reduce("fused_step", Policy(0, kernel.work_items(s_.p.n)), kernel,
+                            Kokkos::Max<Real>(moved2));
+    ++s_.step_regions;
+    swap_step_buffers();
+    return moved2;
+  }
+
+  // Up to max_steps fused steps, each reported by speed, in one parallel region
+  // (fused_steps.hpp): as many as the host's loop would take in a row without an exact
+  // check. Returns how many; the watch has seen each one's top speed.
+  long fused_steps(long max_steps) {
+    if constexpr (!Paths::host) {
+      return 0;  // never called: steps_in_one_region() is false
+    } else {
+      const FusedStepsPass<V, ExecSpace, Paths> pass{
+          fused_kernel(true, false),      fused_kernel(true, true),
+          s_.watch.speed_bound(),         max_steps,
+          top_speed2_of_steps(max_steps), s_.steps_done_in_region};
+      Kokkos::parallel_for("fused_steps", Kokkos::TeamPolicy<ExecSpace>(1, region_team_size()),
+                           pass);
+      ++s_.step_regions;
+      long done = 0;
+      Kokkos::deep_copy(done, s_.steps_done_in_region);
+      const auto speeds =
+          host_copy<Paths>(Kokkos::subview(s_.top_speed2, Kokkos::make_pair(0L, done)));
+      for (long k = 0; k < done; ++k) s_.watch.drifted(speeds(k));
+      if (done % 2 == 1) swap_step_buffers();
+      return done;
+    }
+  }
+
+  // The fused pass from the current buffers into the second ones, or (back) the reverse.
+  FusedStepKernel<V, ExecSpace, Paths> fused_kernel(bool by_speed, bool back) {
+    auto& p = s_.p;
+    if (int(s_.x_next.extent(0)) < p.capacity()) {
+      s_.x_next = decltype(s_.x_next)(alloc_on<ExecSpace>("x_next"), p.capacity());
+      s_.v_next = decltype(s_.v_next)(alloc_on<ExecSpace>("v_next"), p.capacity());
+      if constexpr (V::friction)
+        s_.omega_next = decltype(s_.omega_next)(alloc_on<ExecSpace>("omega_next"), p.capacity());
+    }
+    Store from = p;
+    PairLoop<Dim, Real, Mem> pairs = s_.pair_loop();
+    if (back) {
+      from.x = pairs.x = s_.x_next;
+      from.v = s_.v_next;
+      from.omega = s_.omega_next;
+    }
+    return {force_kernel(from, pairs),
+            back ? p.x : s_.x_next,
+            back ? p.v : s_.v_next,
+            back ? p.omega : s_.omega_next,
+            s_.integrator.gravity,
+            by_speed,
+            p.n,
+            s_.near_obstacle_runs,
+            s_.near_obstacle_runs_known};
+  }
+
+ private:
+  void swap_step_buffers() {
+    std::swap(s_.p.x, s_.x_next);
+    std::swap(s_.p.v, s_.v_next);
+    if constexpr (V::friction) std::swap(s_.p.omega, s_.omega_next);
+  }
+
+  // Whether fused steps may share one region: on host paths whose team can hold all the
+  // backend's threads, on one process (ghosts are exchanged between steps), for small
+  // enough scenes (fused_steps.hpp), unless the setup asks to measure every step exactly.
+  bool steps_in_one_region() {
+    if constexpr (!Paths::host) {
+      return false;
+    } else {
+      return s_.setup.steps_per_region > 1 && !s_.slabs && !s_.setup.exact_list_check &&
+             s_.p.n <= step_regions_particles_per_thread * ExecSpace().concurrency() &&
+             region_team_size() == ExecSpace().concurrency();
+    }
+  }
+  int region_team_size() {
+    if (s_.region_team_size == 0) {
+      const FusedStepsPass<V, ExecSpace, Paths> probe{};
+      s_.region_team_size = std::min(
+          ExecSpace().concurrency(),
+          Kokkos::TeamPolicy<ExecSpace>(1, 1).team_size_max(probe, Kokkos::ParallelForTag()));
+    }
+    return s_.region_team_size;
+  }
+  Kokkos::View<double*, Mem> top_speed2_of_steps(long steps) {
+    if (long(s_.top_speed2.extent(0)) < steps)
+      s_.top_speed2 = decltype(s_.top_speed2)(alloc_on<ExecSpace>("top_speed2"), steps);
+    return s_.top_speed2;
+  }
+
+  // Several processes: this rank's compute time in advance() (halo and waits excluded),
+  // for the balance by work.
+  struct WorkClock {
+    std::chrono::steady_clock::time_point start;
+    double halo = 0, sync = 0;
+  };
+  WorkClock start_work_clock() const {
+    if (!s_.slabs) return {};
+    return {std::chrono::steady_clock::now(), s_.slabs->stats().exchange_seconds(),
+            s_.sync_seconds};
+  }
+  void stop_work_clock(const WorkClock& c, long steps) {
+    if (!s_.slabs) return;
+    const double wall =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - c.start).count();
+    const double waits =
+        (s_.slabs->stats().exchange_seconds() - c.halo) + (s_.sync_seconds - c.sync);
+    s_.slabs->account_work(std::max(0.0, wall - waits), double(s_.p.n) * double(steps));
+  }
+
+  Parts& s_;
+  ListKeeping<V, ExecSpace, Paths>& lists_;
+};
+
+}  // namespace granshock
