@@ -12,13 +12,14 @@
 #include "analysis/field_analysis.hpp"
 #include "analysis/fields_output.hpp"
 #include "analysis/figures.hpp"
-#include "analysis/json_file.hpp"
+#include "analysis/run_analysis.hpp"
 #include "analysis/summary_json.hpp"
 #include "core/bin_sums.hpp"
 #include "core/choice_names.hpp"
 #include "core/user_error.hpp"
 #include "io/field_sums_file.hpp"
 #include "io/fields_directory.hpp"
+#include "io/run_directory.hpp"
 #include "io/run_file.hpp"
 
 namespace granshock {
@@ -26,66 +27,6 @@ namespace granshock {
 namespace fs = std::filesystem;
 
 namespace {
-
-struct RunTarget {
-  double mach;
-  bool at_inlet;  // inflow.mach_at = "inlet_bins"
-};
-
-// The run's own target Mach number and where it is meant (summary.json of `granshock run`),
-// else the inflow's nominal one, meant for the inserted state.
-RunTarget target_mach(const fs::path& summary, double nominal) {
-  std::error_code ec;
-  if (!fs::exists(summary, ec)) return {nominal, false};
-  const nlohmann::json j = read_json_file(summary, "summary").value;
-  if (!j.is_object() || !j.contains("ma_inf_target") || !j["ma_inf_target"].is_number())
-    return {nominal, false};
-  const bool at_inlet =
-      j.contains("inflow_mach_at") && j["inflow_mach_at"] == choice_name(MachReference::inlet_bins);
-  return {j["ma_inf_target"].get<double>(), at_inlet};
-}
-
-std::string number(double v, int digits) {
-  if (!std::isfinite(v)) return "n/a";
-  std::ostringstream s;
-  s.precision(digits);
-  s << v;
-  return s.str();
-}
-
-struct Done {
-  fs::path run_dir, dest;
-  DetachmentRow row;
-  std::string steady_warning;  // empty when the window is steady (docs/fields.md, section 12)
-};
-
-// The warnings about a run's data (a short inflow, an unsteady window), each naming the run.
-std::vector<std::string> data_warnings(const Done& d) {
-  std::vector<std::string> out;
-  for (const std::string* warning : {&d.row.inflow_warning, &d.steady_warning})
-    if (!warning->empty()) out.push_back(d.run_dir.string() + ": " + *warning);
-  return out;
-}
-
-// One line per run; an undeterminable number is "n/a", and delta/D and the shock angle say
-// why in brackets.
-std::string result_line(const Done& d) {
-  const DetachmentRow& r = d.row;
-  std::string line = "granshock fields: " + d.run_dir.string() + ": Ma_inf " +
-                     number(r.ma_inf_target, 3) + " (target), " + number(r.ma_inf_measured, 3) +
-                     " (measured at the inlet), " + number(r.ma_inf_measured_downstream, 3) +
-                     " (beyond the strip); delta/D = " + number(r.delta_over_D, 3);
-  if (std::isfinite(r.delta_over_D)) {
-    line += " +- " + number(r.delta_over_D_err, 2);
-    if (r.consistent == 0)
-      line += " (analysis choices move it by up to " + number(r.spread, 2) + ": " + r.verdict + ")";
-  } else
-    line += " (" + r.delta_over_D_reason + ")";
-  line += "; shock angle " + number(r.shock_angle_deg, 3) + " deg";
-  if (!std::isfinite(r.shock_angle_deg)) line += " (" + r.shock_angle_deg_reason + ")";
-  if (!d.steady_warning.empty()) line += "; NOT YET STEADY (see the warning)";
-  return line + "; results in " + d.dest.string();
-}
 
 bool same_directory(const fs::path& a, const fs::path& b) {
   std::error_code ec;
@@ -110,23 +51,7 @@ void check_run_directories(const std::vector<fs::path>& run_dirs) {
   }
 }
 
-bool held_by_caller(const FieldsCommandOptions& o, const fs::path& dir) {
-  return o.held != nullptr && same_directory(o.held->path(), dir);
-}
-
 }  // namespace
-
-bool run_has_field_sums(const fs::path& run_dir) {
-  std::error_code ec;
-  if (!fs::exists(run_dir / "run.h5", ec)) return false;
-  try {
-    const RunFile run = RunFile::open_read_only(run_dir / "run.h5");
-    static_cast<void>(read_grid_sums(run));
-    return true;
-  } catch (const UserError&) {
-    return false;
-  }
-}
 
 int fields_command(const std::vector<fs::path>& run_dirs, const fs::path& out) {
   return fields_command(run_dirs, out, FieldsCommandOptions{});
@@ -158,7 +83,7 @@ int fields_command(const std::vector<fs::path>& run_dirs, const fs::path& out,
     if (!in_place) {
       if (std::optional<DirectoryLock> lock = hold_for_reading(dir))
         read_locks.push_back(std::move(*lock));
-    } else if (!held_by_caller(o, dir)) {
+    } else {
       claimed.push_back(RunDirectory::hold(dir, DirectoryMode::fields));
     }
   }
@@ -176,39 +101,20 @@ int fields_command(const std::vector<fs::path>& run_dirs, const fs::path& out,
   std::optional<FieldsDirectory> out_dir;
   if (writes_out) out_dir.emplace(FieldsDirectory::claim(out, out_kind));
 
-  std::vector<Done> done;
-  for (std::size_t i = 0; i < run_dirs.size(); ++i) {
-    const fs::path& dir = run_dirs[i];
-    const fs::path dest = in_place ? dir : out;
-    const RunTarget target = target_mach(dir / "summary.json", analyses[i].ma_target);
-    set_target_mach(analyses[i], target.mach, target.at_inlet);
-    write_fields_outputs(analyses[i], dest);
-    Done d{dir, dest, detachment_row(dir, analyses[i], target.mach),
-           analyses[i].steadiness.warning};
-    nlohmann::json keys = summary_keys(analyses[i]);
-    // summary.json keeps every warning printed about its run (docs/output_format.md): the
-    // run's own, then these about its data.
-    nlohmann::json warnings = summaries[i].value("warnings", nlohmann::json::array());
-    if (!warnings.is_array()) warnings = nlohmann::json::array();
-    for (const std::string& w : data_warnings(d))
-      if (std::find(warnings.begin(), warnings.end(), w) == warnings.end()) warnings.push_back(w);
-    keys["warnings"] = warnings;
-    if (in_place)
-      merge_summary_json(dest / "summary.json", keys);  // read again, under the lock
-    else
-      write_summary_json(dest / "summary.json", summaries[i], keys);
-    done.push_back(d);
-  }
+  std::vector<AnalysedRun> done;
+  for (std::size_t i = 0; i < run_dirs.size(); ++i)
+    done.push_back(write_run_analysis(run_dirs[i], in_place ? run_dirs[i] : out, analyses[i],
+                                      summaries[i], in_place));
   if (several) {
     std::vector<DetachmentRow> rows;
-    for (const Done& d : done) rows.push_back(d.row);
+    for (const AnalysedRun& d : done) rows.push_back(d.row);
     write_detachment_table(out, rows);
   }
 
   if (o.figures) {
     require_plotting_python();
     std::vector<std::pair<fs::path, fs::path>> runs;
-    for (const Done& d : done) runs.emplace_back(d.dest / "fields.h5", d.dest / "figures");
+    for (const AnalysedRun& d : done) runs.emplace_back(d.dest / "fields.h5", d.dest / "figures");
     plot_run_figures(runs);
     if (several)
       plot_detachment_figure(out / "detachment.json", out / "figures" / "detachment_length.png");
@@ -216,16 +122,10 @@ int fields_command(const std::vector<fs::path>& run_dirs, const fs::path& out,
 
   // A short inflow and an unsteady window are warnings about the data, printed even when
   // the result line is not.
-  for (const Done& d : done)
-    for (const std::string& w : data_warnings(d)) {
-      const std::string line = "granshock: warning: " + w;
-      if (o.say)
-        o.say(line);
-      else
-        std::cerr << line << "\n";
-    }
+  for (const AnalysedRun& d : done)
+    for (const std::string& w : d.data_warnings()) std::cerr << "granshock: warning: " << w << "\n";
   if (!o.quiet) {
-    for (const Done& d : done) std::cout << result_line(d) << "\n";
+    for (const AnalysedRun& d : done) std::cout << d.result_line() << "\n";
     if (several) std::cout << "granshock fields: comparison in " << out.string() << "\n";
   }
   return 0;

@@ -8,7 +8,6 @@
 #include <vector>
 
 #include "analysis/figure_switch.hpp"
-#include "io/run_directory.hpp"
 
 namespace granshock {
 
@@ -16,12 +15,6 @@ struct FieldsCommandOptions {
   // Draw the PNG figures (needs Python with matplotlib; figure_switch.hpp).
   bool figures = figures_by_default();
   bool quiet = false;  // no result line on stdout
-  // The run directory the caller has claimed already (`granshock run` analysing its own
-  // run at its end): written under the caller's lock instead of taking it again.
-  const RunDirectory* held = nullptr;
-  // Where the warning lines go (`granshock run`: its log, stderr and log.txt); stderr when
-  // empty.
-  std::function<void(const std::string&)> say = nullptr;
   // Called just before each DIR/run.h5 is read, with DIR: what another process could do
   // meanwhile, for the tests of the directory's lock (tests/fields/test_fields_command.cpp).
   std::function<void(const std::filesystem::path&)> before_read = nullptr;
@@ -47,9 +40,5 @@ int fields_command(const std::vector<std::filesystem::path>& run_dirs,
 // The same, without figures or without the result line on stdout.
 int fields_command(const std::vector<std::filesystem::path>& run_dirs,
                    const std::filesystem::path& out, const FieldsCommandOptions& options);
-
-// Whether run_dir/run.h5 exists and holds field sums (/fields/grid): a run stopped before
-// its production window has none, and `granshock run` can skip the fields then.
-bool run_has_field_sums(const std::filesystem::path& run_dir);
 
 }  // namespace granshock

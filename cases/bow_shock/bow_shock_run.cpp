@@ -8,11 +8,11 @@
 #include <csignal>
 #include <iostream>
 
-#include "analysis/fields_command.hpp"
+#include "analysis/figure_switch.hpp"
 #include "analysis/json_file.hpp"
+#include "analysis/run_analysis.hpp"
 #include "cases/accuracy/accuracy_choice.hpp"
 #include "cases/bow_shock/interrupt.hpp"
-#include "cases/bow_shock/machine_load.hpp"
 #include "cases/bow_shock/run_checks.hpp"
 #include "cases/bow_shock/run_observables.hpp"
 #include "cases/bow_shock/run_state.hpp"
@@ -99,7 +99,8 @@ BowShockRun::BowShockRun(const RunOptions& o, LoadedScene loaded, const Communic
       loaded_(std::move(loaded)),
       scene_(loaded_.scene),
       inflow_(scene_),
-      sampling_(scene_) {}
+      sampling_(scene_),
+      backends_(o.backend_switch, o.quiet, log_) {}
 
 int BowShockRun::execute() {
   // Held since the program started (apps/granshock/main.cpp); in-process callers start here.
@@ -248,7 +249,7 @@ void BowShockRun::prepare() {
                                : DirectoryMode::create;
   // Rank 0's alone: probing the lock from several ranks at once would see each other.
   if (root_) RunDirectory::check(dir_, mode_);
-  choose_start_backend();
+  backends_.choose_start(comm_.size());
   // Again with a calibrated damping or sigma: the time-step guard depends on the damping
   // ratio and on the fastest impact.
   const bool damping_calibrated = calibrate_restitution();
@@ -266,41 +267,10 @@ void BowShockRun::prepare() {
       every_seconds(scene_.run.snapshot_interval_s, scene_.run.duration_s, scene_.setup.dt);
   checkpoints_.every =
       every_seconds(scene_.run.checkpoint_interval_s, scene_.run.duration_s, scene_.setup.dt);
-  solver_ = make_solver(scene_.setup, scene_.capacity_estimate(), backend_, &comm_);
-  solver_->configure_sampling(sampling_.layout());
   decomposition_.axis = options_.slabs;
   decomposition_.balance = options_.balance;
-  solver_->decompose(decomposition_);
+  solver_ = make_run_solver(backends_.backend(), scene_.capacity_estimate());
   samples_.assign(std::size_t(sampling_.blocks()), 0);
-}
-
-// The switch between threads and one thread, for one process on the host's threads, and
-// the backend the run starts on: one thread where other processes already keep the CPUs
-// busy (machine_load.hpp), so that neither the calibrations nor the run's first
-// half-second wait at the threads' barriers; the switch tries the threads later.
-void BowShockRun::choose_start_backend() {
-  const int threads = switchable_host_threads();
-  if (options_.backend_switch == BackendSwitchMode::off || comm_.size() != 1 || threads <= 1)
-    return;
-  backend_switch_.emplace();
-  if (options_.backend_switch != BackendSwitchMode::automatic) return;
-  // The threads are tried again only once the others leave them room (or /proc cannot
-  // tell): a try beside the same load would only cost.
-  backend_switch_->set_threads_free([threads] { return !load_leaving_no_room(threads); });
-  const std::optional<MachineLoad> load = load_leaving_no_room(threads);
-  if (!load) return;
-  backend_switch_->start_on_one_thread();
-  backend_ = Backend::serial;
-  const std::string note = fmt::format(
-      "granshock: note: starting on one thread: {} other task{} running on the {} CPU{} this "
-      "process may use, beside which {} threads would wait for each other; trying the threads "
-      "again later (--backend-switch off keeps the threads)",
-      load->others_running, load->others_running == 1 ? " is" : "s are", load->cpus,
-      load->cpus == 1 ? "" : "s", threads);
-  if (options_.quiet)
-    log_.record(note);
-  else
-    log_.say(note);
 }
 
 // Rank 0's run.h5: a new one, or the one a checkpoint continues.
@@ -348,7 +318,7 @@ bool BowShockRun::calibrate_inflow() {
         fmt::format("granshock: calibrating sigma so that Ma over the two inlet bin rows is {:g} "
                     "(inflow.mach_at = \"inlet_bins\")",
                     *scene_.inflow.target_mach));
-  calibration_ = calibrate_inlet_mach(scene_, 6, backend_);
+  calibration_ = calibrate_inlet_mach(scene_, 6, backends_.backend());
   loaded_.scene.inflow.sigma = calibration_->sigma;
   loaded_.resolved = scene_to_toml(loaded_.scene);
   const InletMach& last = calibration_->chosen();
@@ -374,7 +344,7 @@ int BowShockRun::advance_to_end() {
   while (step < total_steps_) {
     // Advance to the next event (insertion, output) or a slice of about 0.25 s of wall
     // time, so that progress and signals are answered promptly.
-    const double slice_s = backend_switch_ ? backend_switch_->slice_seconds() : 0.25;
+    const double slice_s = backends_.slice_seconds();
     long next = std::min(total_steps_, step + meter_->steps_per(slice_s, 50));
     next = std::min(next, (step / inflow_.period_steps() + 1) * inflow_.period_steps());
     for (const Schedule* s : {&series_, &snapshots_, &checkpoints_})
@@ -404,7 +374,9 @@ int BowShockRun::advance_to_end() {
                       step, resume_command()));
       return 128 + signal;
     }
-    if (backend_switch_ && next_backend() != backend_) move_solver_to(next_backend());
+    backends_.move_if_due(
+        solver_, scene_.capacity_estimate(),
+        [this](Backend b, std::size_t capacity) { return make_run_solver(b, capacity); });
     if (options_.stop_after_steps > 0 && step >= first_step_ + options_.stop_after_steps &&
         step < total_steps_) {
       write_checkpoint_now();
@@ -661,7 +633,8 @@ void BowShockRun::finish(bool completed) {
                   {wall, cpu_seconds_so_far(), meter_->elapsed_s(), particle_steps_});
   // Several processes: how the work was shared (one process: nothing to say).
   if (comm_.size() > 1) j["processes"] = processes_summary();
-  if (backend_switch_) j["backend_switch"] = backend_summary();
+  if (const nlohmann::json moves = backends_.summary(); !moves.is_null())
+    j["backend_switch"] = moves;
   // Per step of this leg's time loop, this process' (docs/cuda.md, "Launches per step");
   // null where a profiling tool held Kokkos' hooks or no step ran, and fences where this
   // Kokkos does not report them (3.4).
@@ -716,9 +689,10 @@ void BowShockRun::analyse() {
       dir_.string());
   const ExitAtInterrupt at_signal("granshock: interrupted during the field analysis; " + complete);
   try {
-    fields_command({dir_}, {},
-                   FieldsCommandOptions{options_.figures, options_.quiet, &*run_directory_,
-                                        [this](const std::string& line) { log_.say(line); }});
+    // In the run's directory, under the lock this run holds (run_directory_).
+    const AnalysedRun done = analyse_finished_run(
+        dir_, options_.figures, [this](const std::string& line) { log_.say(line); });
+    if (!options_.quiet) std::cout << done.result_line() << "\n";
   } catch (const UserError& e) {
     throw UserError(fmt::format("{}; {}", e.what(), complete));
   }
@@ -730,71 +704,15 @@ void BowShockRun::analyse() {
 void BowShockRun::advance_slice(long steps) {
   const double particle_steps = double(solver_->global_size()) * double(steps);
   particle_steps_ += particle_steps;
-  const auto start = std::chrono::steady_clock::now();
-  solver_->advance(steps);
-  if (!backend_switch_) return;
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const long switches = backend_switch_->switches();
-  backend_switch_->observe(particle_steps, seconds);
-  // One note when the run settles on the other backend (a try alone says nothing); with
-  // --quiet, in the log alone.
-  if (backend_switch_->switches() == switches ||
-      options_.backend_switch != BackendSwitchMode::automatic)
-    return;
-  const bool one_thread = backend_switch_->current() == Backend::serial;
-  const std::string note = fmt::format(
-      "granshock: note: {} ({:.3g} particle-steps/s on {} threads, {:.3g} on one); trying "
-      "the other again later (--backend-switch off keeps the threads)",
-      one_thread ? "continuing on one thread: the threads run slower than one would (another "
-                   "process is busy on this machine)"
-                 : "back to the threads: they run faster again",
-      backend_switch_->threads_rate(), switchable_host_threads(),
-      backend_switch_->one_thread_rate());
-  if (options_.quiet)
-    log_.record(note);
-  else
-    log_.say(note);
+  backends_.advance(*solver_, steps, particle_steps);
 }
 
-// The backend the next slice runs on: the switch's choice, or with --backend-switch
-// alternate (a check that both give the same run, not a speed-up) the other one each time.
-Backend BowShockRun::next_backend() const {
-  if (options_.backend_switch != BackendSwitchMode::alternate) return backend_switch_->current();
-  return backend_ == Backend::serial ? Backend::default_space : Backend::serial;
-}
-
-// The solver's whole state moves to a solver on `backend`, as a resume would move it from
-// a checkpoint: the trajectory goes on bitwise the same (docs/benchmarks.md, "A busy
-// machine"). The old solver is released first, so that the two never hold memory at once.
-void BowShockRun::move_solver_to(Backend backend) {
-  const SolverState state = solver_->export_state();
-  const std::vector<double> grid = solver_->field_sums(false);
-  const std::vector<double> profile = solver_->field_sums(true);
-  const std::size_t capacity = std::max<std::size_t>(scene_.capacity_estimate(), state.size());
-  solver_.reset();
-  solver_ = make_solver(scene_.setup, capacity, backend, &comm_);
-  solver_->configure_sampling(sampling_.layout());
-  solver_->decompose(decomposition_);
-  solver_->import_state(state);
-  solver_->restore_field_sums(grid, profile);
-  backend_ = backend;
-  ++backend_moves_;
-}
-
-// summary.json "backend_switch": the moves between threads and one thread, for runs that
-// can move (this leg of the run).
-nlohmann::json BowShockRun::backend_summary() const {
-  return {{"mode", choice_name(options_.backend_switch)},
-          {"started_on", backend_switch_->started_on_one_thread() ? "one thread" : "threads"},
-          {"ended_on", backend_ == Backend::serial ? "one thread" : "threads"},
-          {"moves", backend_moves_},
-          {"tries", backend_switch_->tries()},
-          {"tries_skipped_busy", backend_switch_->skipped_tries()},
-          {"seconds_on_one_thread", backend_switch_->seconds_on_one_thread()},
-          {"seconds_timed", backend_switch_->seconds_total()},
-          {"last_threads_rate", backend_switch_->threads_rate()},
-          {"last_one_thread_rate", backend_switch_->one_thread_rate()}};
+// A new solver on `backend`, set up as this run's, without particles.
+std::unique_ptr<Solver> BowShockRun::make_run_solver(Backend backend, std::size_t capacity) const {
+  std::unique_ptr<Solver> solver = make_solver(scene_.setup, capacity, backend, &comm_);
+  solver->configure_sampling(sampling_.layout());
+  solver->decompose(decomposition_);
+  return solver;
 }
 
 // summary.json "processes": how many, and the particles each rank owns at the end (the

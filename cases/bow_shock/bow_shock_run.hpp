@@ -14,7 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "cases/bow_shock/backend_switch.hpp"
+#include "cases/bow_shock/backend_mover.hpp"
 #include "cases/bow_shock/inflow.hpp"
 #include "cases/bow_shock/inlet_calibration.hpp"
 #include "cases/bow_shock/progress_meter.hpp"
@@ -56,8 +56,7 @@ class BowShockRun {
   std::string interrupted_message(int signal) const;
   std::string resume_command() const;
   long agreed_next_step(long step);
-  bool calibrate_inflow();  // true when it changed sigma (inflow.mach_at = "inlet_bins")
-  void choose_start_backend();
+  bool calibrate_inflow();       // true when it changed sigma (inflow.mach_at = "inlet_bins")
   bool calibrate_restitution();  // true when it set the damping (restitution_mode = "discrete")
   void start_fresh();
   void read_checkpoint_and_check();
@@ -76,9 +75,7 @@ class BowShockRun {
   void warn_if_inflow_falls_short();
   std::string inflow_note() const;
   void advance_slice(long steps);
-  Backend next_backend() const;
-  void move_solver_to(Backend backend);
-  nlohmann::json backend_summary() const;
+  std::unique_ptr<Solver> make_run_solver(Backend backend, std::size_t capacity) const;
 
   const RunOptions& options_;
   const Communicator& comm_;
@@ -97,11 +94,7 @@ class BowShockRun {
   SamplingPlan sampling_;
   std::unique_ptr<Solver> solver_;
   Decomposition decomposition_;
-  // Threads or one thread, from measured rates (backend_switch.hpp); none where the run
-  // cannot move (several processes, one thread, a GPU, --backend-switch off).
-  std::optional<BackendSwitch> backend_switch_;
-  Backend backend_ = Backend::default_space;
-  long backend_moves_ = 0;
+  BackendMover backends_;  // threads or one thread (backend_mover.hpp)
   std::optional<RunFile> run_file_;
   Schedule series_{1}, snapshots_{1}, checkpoints_{1};
   long total_steps_ = 0, first_step_ = 0;

@@ -17,6 +17,7 @@
 
 #include "analysis/fields_command.hpp"
 #include "analysis/figures.hpp"
+#include "analysis/run_analysis.hpp"
 #include "core/user_error.hpp"
 #include "io/fields_directory.hpp"
 #include "synthetic_run.hpp"
@@ -125,6 +126,34 @@ class ScopedEnv {
 };
 
 }  // namespace
+
+// `granshock run` ends with the analysis library's analyse_finished_run, not the fields
+// command: both write the same summary keys (and the same warnings) for the same run.
+TEST(FieldsCommand, FinishedRunAnalysisWritesWhatTheCommandWrites) {
+  test::ScratchDir tmp;
+  const fs::path by_command = tmp.path() / "command", by_library = tmp.path() / "library";
+  make_run(by_command, 12);
+  make_run(by_library, 12);
+  ASSERT_EQ(fields_command({by_command}, {}, FieldsCommandOptions{false, true}), 0);
+  std::vector<std::string> said;
+  const AnalysedRun done = analyse_finished_run(
+      by_library, false, [&](const std::string& line) { said.push_back(line); });
+
+  EXPECT_EQ(done.dest, by_library);
+  EXPECT_TRUE(fs::exists(by_library / "fields.h5"));
+  EXPECT_TRUE(fs::exists(by_library / "fields.xmf"));
+  EXPECT_FALSE(fs::exists(by_library / "figures" / "mach.png"));  // figures not asked for
+  nlohmann::json command = nlohmann::json::parse(read_text(by_command / "summary.json"));
+  nlohmann::json library = nlohmann::json::parse(read_text(by_library / "summary.json"));
+  ASSERT_TRUE(library.contains("delta_over_D"));
+  // The warnings name their run's directory; the rest is the same, key for key.
+  EXPECT_EQ(command["warnings"].size(), library["warnings"].size());
+  EXPECT_EQ(said.size(), done.data_warnings().size());
+  command.erase("warnings");
+  library.erase("warnings");
+  EXPECT_EQ(command, library);
+  EXPECT_NE(done.result_line().find("delta/D = "), std::string::npos);
+}
 
 TEST(FieldsCommand, OneRunWritesFieldsXdmfFiguresAndSummary) {
   test::ScratchDir tmp;
@@ -462,10 +491,10 @@ TEST(FieldsCommandRefuses, ADirectoryAnotherGranshockHolds) {
     expected.erase(kRunMarker);
     EXPECT_EQ(after, expected);
     EXPECT_EQ(tree(out), out_before);
-    // The run itself analyses its own directory under its own lock.
-    FieldsCommandOptions own = kNoFigures;
-    own.held = &running;
-    EXPECT_EQ(refusal([&] { fields_command({run}, {}, own); }), "(accepted)");
+    // The run itself analyses its own directory under its own lock (analyse_finished_run,
+    // which takes no lock: the caller holds it).
+    EXPECT_EQ(refusal([&] { analyse_finished_run(run, false, [](const std::string&) {}); }),
+              "(accepted)");
     EXPECT_TRUE(fs::exists(run / "fields.h5"));
   }
   {
