@@ -11,6 +11,7 @@
 
 #include "cases/gas/homogeneous_gas.hpp"
 #include "core/solver.hpp"
+#include "kernels/device/backends.hpp"
 #include "kernels/models/obstacle_shapes.hpp"
 #include "same_particles.hpp"
 #include "solver_on_paths.hpp"
@@ -50,6 +51,10 @@ HostParticles make_gas(SolverSetup& s) {
 // The default backend against Serial: a GPU (Cuda in a CUDA build), or a host backend of
 // several threads. Either way the solvers hand their particles over as host copies.
 void compare_backends(SolverSetup s, int steps) {
+  // A Kokkos without Serial beside its default backend (or a build with
+  // GRANSHOCK_SERIAL_VARIANTS=OFF) has nothing to compare: Backend::serial is the default.
+  if constexpr (!GRANSHOCK_SEPARATE_SERIAL)
+    GTEST_SKIP() << "needs Serial beside the default backend (this Kokkos or build has none)";
   if (Kokkos::DefaultExecutionSpace().concurrency() < 2)
     GTEST_SKIP() << "needs a default backend other than Serial: a GPU, or OpenMP with 2 or "
                     "more threads (OMP_NUM_THREADS=2)";
