@@ -222,6 +222,10 @@ def build_table(records):
                "cpu_seconds": s.get("cpu_seconds"),
                "cost_from": cost_key,
                "speedup": cost_ref / s[cost_key],
+               # A cost measured on another CPU than the reference's compares machines, not
+               # settings: the table says so beside its speed-up.
+               "cpu_model": s.get("cpu_model"),
+               "cost_on_reference_cpu": s.get("cpu_model") == ref[0].get("cpu_model"),
                "particle_steps_per_second": s["particle_steps_per_second"],
                "e_eff_error": e_eff_error(s),
                "e_eff_error_phase_averaged": e_eff_error(s, "e_eff_phase_averaged")}
@@ -333,6 +337,11 @@ def write_tables(rows, noise, out_dir, noise_from, extra=None, version=TABLE_VER
     def num(v, spec):
         return "n/a" if v is None else f"{v:{spec}}"
 
+    def other_cpu(r):
+        if r.get("cost_on_reference_cpu", True):
+            return ""
+        return f" (on another CPU: {r.get('cpu_model') or 'unknown'})"
+
     cost_key = rows[0]["cost_from"]
     cost_label = "CPU (s)" if cost_key == "cpu_seconds" else "wall (s)"
     bounds = "bound" in rows[0]
@@ -344,7 +353,7 @@ def write_tables(rows, noise, out_dir, noise_from, extra=None, version=TABLE_VER
     for r in rows:
         lines.append(
             f"| {r['case']} | {r['dt_over_tc']:.3f} | {r[cost_key]:.1f} | "
-            f"{r['speedup']:.2f} | {100 * r['e_eff_error_phase_averaged']:.2f} % | "
+            f"{r['speedup']:.2f}{other_cpu(r)} | {100 * r['e_eff_error_phase_averaged']:.2f} % | "
             f"{100 * r['e_eff_error']:.2f} % | "
             f"{num(r['delta_over_D.temperature_jump'], '.3f')} | "
             f"{cell(r, 'delta_over_D.temperature_jump', '.3f')} | {cell(r, 'L2.phi', '.3f')} | "
