@@ -9,7 +9,7 @@
 // GRANSHOCK_NO_SERIAL_VARIANTS (the CMake option GRANSHOCK_SERIAL_VARIANTS=OFF) builds as
 // if Kokkos had no Serial.
 #if defined(KOKKOS_ENABLE_SERIAL) && !defined(GRANSHOCK_NO_SERIAL_VARIANTS) && \
-    (defined(KOKKOS_ENABLE_OPENMP) || defined(KOKKOS_ENABLE_CUDA) ||          \
+    (defined(KOKKOS_ENABLE_OPENMP) || defined(KOKKOS_ENABLE_CUDA) ||           \
      defined(KOKKOS_ENABLE_THREADS) || defined(KOKKOS_ENABLE_HIP))
 #define GRANSHOCK_SEPARATE_SERIAL 1
 #else
