@@ -9,6 +9,7 @@
 #include "core/user_error.hpp"
 #include "io/checkpoint_seal.hpp"
 #include "io/hdf5_helpers.hpp"
+#include "io/hdf5_open.hpp"
 #include "version.hpp"
 
 namespace granshock {
@@ -302,29 +303,20 @@ std::optional<std::vector<std::string>> read_checkpoint_overrides(const fs::path
 }
 
 SolverState read_checkpoint(const fs::path& path, CheckpointExtras& extras) {
-  h5::silence_error_printing();
-  std::error_code ec;
-  if (!fs::exists(path, ec)) {
-    throw UserError("cannot read checkpoint '" + path.string() + "': no such file");
-  }
+  const char* doing = "read checkpoint";
+  h5::require_existing(path, doing);
   // Before HDF5 parses anything: damaged metadata must never reach the library.
   seal::verify_file(path, kFormatVersion);
-  const hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  if (id < 0) {
-    throw UserError("cannot read checkpoint '" + path.string() + "': " + h5::take_error_message());
-  }
-  Handle file(id, H5Fclose);
+  Handle file = h5::open_existing_file(path, H5F_ACC_RDONLY, doing);
   return h5::naming_file_in_errors(path, "reading checkpoint", [&] {
     const hid_t f = file.get();
-    if (!h5::has_attribute(f, "granshock_file") ||
-        h5::read_string_attribute(f, "granshock_file") != kFileKind) {
-      throw UserError("cannot read checkpoint '" + path.string() + "': not a granshock checkpoint");
-    }
+    if (!h5::is_granshock_file(f, kFileKind))
+      throw h5::cannot_open(doing, path, "not a granshock checkpoint");
     const int version = h5::read_attribute<int>(f, "granshock_format_version");
     if (version != kFormatVersion) {
-      throw UserError("cannot read checkpoint '" + path.string() + "': @granshock_format_version " +
-                      std::to_string(version) + " disagrees with its header's " +
-                      std::to_string(kFormatVersion));
+      throw h5::cannot_open(doing, path,
+                            "@granshock_format_version " + std::to_string(version) +
+                                " disagrees with its header's " + std::to_string(kFormatVersion));
     }
 
     const Reader in(f, fs::file_size(path));

@@ -42,7 +42,7 @@ std::string scene_to_toml(const Scene& scene);
 
 // What docs/scene_keys.md says of a key besides its name and type, in Markdown: its unit,
 // what is accepted, its default ("required", a literal, another key) and what it does.
-// Declared beside the key's reader (io/scene_schema.cpp), or by the law or shape that
+// Declared beside the key's reader (io/scene_schema_*.cpp), or by the law or shape that
 // owns the key (kernels/models/law_key.hpp, shape_key.hpp).
 struct KeyDoc {
   std::string unit, accepted, fallback, meaning;
@@ -56,8 +56,8 @@ struct SceneKey {
   std::string type;
   KeyDoc doc;
 };
-// Every key of the scene schema, in the order of docs/scene_keys.md (defined with the
-// schema's tables in scene_schema.cpp).
+// Every key of the scene schema, in the order of docs/scene_keys.md (defined in
+// scene_schema.cpp, from the tables of the schema's sections).
 std::vector<SceneKey> scene_keys();
 
 // The table of docs/scene_keys.md's "Keys" section, made from scene_keys(): a header row

@@ -19,8 +19,8 @@ std::string scene_keys_table() {
   std::string table = row({"key", "type", "unit", "accepted", "default", "meaning"}) +
                       "|---|---|---|---|---|---|\n";
   for (const SceneKey& k : scene_keys())
-    table += row({"`" + k.name + "`", k.type, k.doc.unit, k.doc.accepted, k.doc.fallback,
-                  k.doc.meaning});
+    table += row(
+        {"`" + k.name + "`", k.type, k.doc.unit, k.doc.accepted, k.doc.fallback, k.doc.meaning});
   return table;
 }
 

@@ -1,4 +1,4 @@
-// The keys of a scene file, each declared once (io/scene_schema.cpp): its name, its type as
+// The keys of a scene file, each declared once (io/scene_schema_*.cpp): its name, its type as
 // docs/scene_keys.md gives it, how it is read and checked into a Scene and how
 // it is written back from one. Reading and writing walk the same tables, so every key that
 // is read is written back. Host code only: toml++ does not compile as CUDA
