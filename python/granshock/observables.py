@@ -7,7 +7,7 @@ from ._h5 import in_order, text
 from .errors import GranshockError
 
 OBSERVABLES = "observables"
-# Its step marks a row as complete: written last of a row (io/run_file.cpp).
+# Its step marks a row as complete: written last of a row (io/run_file_series.cpp).
 ROW_MARKER = "particles"
 # The columns in the order docs/output_format.md lists them.
 COLUMN_ORDER = ["particles", "kinetic_energy", "temperature", "contacts", "inserted",

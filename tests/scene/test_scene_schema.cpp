@@ -1,4 +1,4 @@
-// The scene schema (io/scene_schema.cpp) declares each key once, for reading and for
+// The scene schema (io/scene_schema_*.cpp) declares each key once, for reading and for
 // writing the resolved scene. For every key of the schema: a scene given a non-default
 // value of it, written back and read again, is the same Scene field by field, and the
 // written scene holds the value under the key's own name. And docs/scene_keys.md
