@@ -5,7 +5,7 @@
 
 #include "core/scene.hpp"
 #include "core/user_error.hpp"
-#include "kernels/models/obstacle_shapes.hpp"
+#include "models/obstacle_shapes.hpp"
 
 namespace granshock {
 

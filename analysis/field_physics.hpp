@@ -32,7 +32,7 @@ struct FieldPhysics {
 
   double box_x_lo = 0, box_x_hi = 0, box_y_lo = 0, box_y_hi = 0;  // m; x periodic
 
-  // What the analysis asks of the obstacle, from its shape (kernels/models/obstacle_shapes.hpp).
+  // What the analysis asks of the obstacle, from its shape (models/obstacle_shapes.hpp).
   struct Obstacle {
     double xc = 0, yc = 0;
     double width = 0;  // across the flow: the D of delta/D (docs/fields.md)

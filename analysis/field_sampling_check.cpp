@@ -8,7 +8,7 @@
 #include "core/bin_layout.hpp"
 #include "core/scene.hpp"
 #include "core/user_error.hpp"
-#include "kernels/models/obstacle_shapes.hpp"
+#include "models/obstacle_shapes.hpp"
 
 namespace granshock {
 

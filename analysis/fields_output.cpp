@@ -9,7 +9,7 @@
 #include "core/variant_names.hpp"
 #include "io/atomic_file.hpp"
 #include "io/fields_xdmf.hpp"
-#include "kernels/models/obstacle_shapes.hpp"
+#include "models/obstacle_shapes.hpp"
 
 namespace granshock {
 

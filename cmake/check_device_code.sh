@@ -7,7 +7,7 @@
 set -euo pipefail
 cd "${1:-$(dirname "$0")/..}"
 if grep -rlE "KOKKOS_LAMBDA|KOKKOS_INLINE_FUNCTION|KOKKOS_FUNCTION|\bparallel_(for|reduce|scan)\b" \
-  core io analysis cases apps parallel tests; then
+  core models io analysis cases apps parallel tests; then
   echo "check_device_code.sh: the sources above hold device code outside kernels/; move it to" \
     "kernels/ or build their targets for CUDA in .ci/run too" >&2
   exit 1

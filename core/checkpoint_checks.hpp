@@ -12,13 +12,13 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "core/checkpoint_extras.hpp"
 #include "core/domain.hpp"
-#include "core/obstacle.hpp"
 #include "core/solver_state.hpp"
 #include "core/user_error.hpp"
 
@@ -45,7 +45,10 @@ struct SolverFit {
   bool delete_outside = false;
   std::vector<double> radius;  // per species
   double max_friction = 0;     // largest Coulomb coefficient of any pair
-  std::optional<Obstacle> obstacle;
+  // The signed distance of a point (x, y) from the obstacle's surface, negative inside;
+  // empty without an obstacle. Given by the solver, which knows the shapes
+  // (models/obstacle_shapes.hpp): core does not.
+  std::function<double(double, double)> obstacle_distance;
   // Distances within this of a contact distance are not judged: the solver rounds
   // positions to its precision (a few ulps of the box's extent).
   double distance_tolerance = 0;

@@ -4,7 +4,6 @@
 
 #include "core/checkpoint_check_support.hpp"
 #include "core/contact_settings.hpp"
-#include "kernels/models/obstacle_shapes.hpp"
 
 namespace granshock {
 
@@ -85,9 +84,8 @@ void check_contact_range(const SolverState& s, const SolverFit& fit, std::size_t
                       "law's range ({}): the state was not made by the solver",
                       s.id[i], s.id[j], overlap, kOverlapRefuse));
   }
-  if (!fit.obstacle) return;
-  const double depth =
-      -obstacle_distance(*fit.obstacle, s.position[i * dim], s.position[i * dim + 1]);
+  if (!fit.obstacle_distance) return;
+  const double depth = -fit.obstacle_distance(s.position[i * dim], s.position[i * dim + 1]);
   if (depth > 0)
     fail(
         fmt::format("particle {} lies inside the obstacle (its centre {:.3g} m inside the "
@@ -152,9 +150,8 @@ void check_contacts(const SolverState& s, const SolverFit& fit) {
                          at("/state/history_partner", i * slots + a), partner, s.id[i]));
     }
     bool on_obstacle = false;
-    if (fit.obstacle) {
-      on_obstacle =
-          obstacle_distance(*fit.obstacle, s.position[i * dim], s.position[i * dim + 1]) < ri + tol;
+    if (fit.obstacle_distance) {
+      on_obstacle = fit.obstacle_distance(s.position[i * dim], s.position[i * dim + 1]) < ri + tol;
     }
     if (!on_obstacle && !s.history_obstacle_spring.empty() &&
         norm(s.history_obstacle_spring, i * dim, dim) != 0)

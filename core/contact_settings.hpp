@@ -22,7 +22,7 @@ std::string to_string(ContactModelKind model);
 inline constexpr double kOverlapWarn = 0.05;
 inline constexpr double kOverlapRefuse = 0.2;
 
-// The most parameter keys a contact law has (kernels/models/law_parameters.hpp).
+// The most parameter keys a contact law has (models/law_parameters.hpp).
 inline constexpr int kMaxLawParameters = 2;
 
 // What a contact law takes besides the pair's materials and restitution.
@@ -30,7 +30,7 @@ struct ContactOptions {
   // Clamp Fn >= 0 (no attraction at the end of a contact). Off by default, as in
   // LIGGGHTS, because only then does the law restore exactly e.
   bool limit_force = false;
-  // The law's own parameters in the order of its keys (kernels/models/<law>_parameters.hpp:
+  // The law's own parameters in the order of its keys (models/<law>_parameters.hpp:
   // hooke's characteristic velocity, linear's stiffness), read through them
   // (HookeParameters::characteristic_velocity(o), ...); unused by `hertz`.
   std::array<double, kMaxLawParameters> law_parameters{};

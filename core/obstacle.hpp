@@ -3,8 +3,8 @@
 // mass and radius in the contact law (R* = r_i, m* = m_i). What depends on the shape (the
 // contact geometry, the keep-out zone of insertion, the free area of the inflow, the
 // frontal width and upstream face the analysis asks for) follows from the shape's header
-// in kernels/models/ (cylinder.hpp, wedge.hpp, plate.hpp, square.hpp: its size keys and its
-// outline; kernels/models/obstacle_shapes.hpp asks the right one).
+// in models/ (cylinder.hpp, wedge.hpp, plate.hpp, square.hpp: its size keys and its
+// outline; models/obstacle_shapes.hpp asks the right one).
 #pragma once
 
 #include <array>

@@ -13,7 +13,7 @@
 #include "io/scene_schema.hpp"
 #include "io/shortest_floats.hpp"
 #include "io/table_reader.hpp"
-#include "kernels/models/law_parameters.hpp"
+#include "models/law_parameters.hpp"
 
 namespace granshock {
 

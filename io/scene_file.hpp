@@ -30,10 +30,10 @@ LoadedScene parse_scene(const std::string& text, const std::vector<std::string>&
 // only counts), in sorted order; for naming what changed between a run and its resume.
 std::vector<std::string> differing_keys(const std::string& toml_a, const std::string& toml_b);
 
-// A resolved scene as a checkpoint of an older granshock stored it, read as today's: the
+// A resolved scene as a format-3 checkpoint may have stored it, read as today's: the
 // parameter keys of contact laws other than its contact.model removed (a hertz scene's
 // contact.characteristic_velocity, written for every law before each law owned its keys:
-// kernels/models/law_parameters.hpp). Text that holds none, or is not TOML, comes back
+// models/law_parameters.hpp). Text that holds none, or is not TOML, comes back
 // as it is.
 std::string without_other_laws_keys(const std::string& resolved);
 
@@ -43,7 +43,7 @@ std::string scene_to_toml(const Scene& scene);
 // What docs/scene_keys.md says of a key besides its name and type, in Markdown: its unit,
 // what is accepted, its default ("required", a literal, another key) and what it does.
 // Declared beside the key's reader (io/scene_schema_*.cpp), or by the law or shape that
-// owns the key (kernels/models/law_key.hpp, shape_key.hpp).
+// owns the key (models/law_key.hpp, shape_key.hpp).
 struct KeyDoc {
   std::string unit, accepted, fallback, meaning;
 };

@@ -17,7 +17,7 @@
 #include "io/scene_file.hpp"
 #include "io/scene_schema_parts.hpp"
 #include "io/table_reader.hpp"
-#include "kernels/models/law_parameters.hpp"
+#include "models/law_parameters.hpp"
 
 namespace granshock {
 namespace scene_toml {

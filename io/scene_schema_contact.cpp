@@ -12,7 +12,7 @@
 
 #include "io/scene_schema_parts.hpp"
 #include "io/table_reader.hpp"
-#include "kernels/models/law_parameters.hpp"
+#include "models/law_parameters.hpp"
 
 namespace granshock::scene_toml::schema_detail {
 
@@ -200,7 +200,7 @@ const Key kContactKeys[] = {
 };
 
 // The parameter keys of the contact laws, each declared once in its law's parameter
-// header (kernels/models/law_parameters.hpp) and found there by name: read when the
+// header (models/law_parameters.hpp) and found there by name: read when the
 // scene's contact.model owns it, refused when given for another law, written back for its
 // own law only (as the obstacle's size keys are).
 void read_law_key(TableReader& r, Reading& st, const std::string& k) {

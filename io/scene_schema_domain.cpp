@@ -9,7 +9,7 @@
 
 #include "io/scene_schema_parts.hpp"
 #include "io/table_reader.hpp"
-#include "kernels/models/obstacle_shapes.hpp"
+#include "models/obstacle_shapes.hpp"
 
 namespace granshock::scene_toml::schema_detail {
 
@@ -151,7 +151,7 @@ const Key kInflowKeys[] = {
 // ---- [obstacle] --------------------------------------------------------------------------
 
 // The size keys of the shapes (docs/scene_format.md, [obstacle]), each declared once in its
-// shape's header (`keys`, kernels/models/shape_key.hpp) and found here by name: a key is
+// shape's header (`keys`, models/shape_key.hpp) and found here by name: a key is
 // read into Obstacle::size when the obstacle has a shape that owns it, refused when it is
 // given for another shape, and written back for its own shape only.
 void read_shape_key(TableReader& r, Reading& st, const std::string& k) {

@@ -17,7 +17,7 @@
 #include "io/scene_file.hpp"
 #include "io/scene_schema.hpp"
 #include "io/table_reader.hpp"
-#include "kernels/models/law_parameters.hpp"
+#include "models/law_parameters.hpp"
 
 namespace granshock::scene_toml::schema_detail {
 
@@ -71,7 +71,7 @@ struct Reading {
   explicit Reading(Scene& scene) : s(scene) {}
   Scene& s;
   std::map<std::string, Material> materials = {{"steel", steel()}, {"aluminium", aluminium()}};
-  // The law's parameters as given (kernels/models/law_parameters.hpp); absent ones take
+  // The law's parameters as given (models/law_parameters.hpp); absent ones take
   // their default once [inflow] is read (the inflow speed).
   std::array<std::optional<double>, kMaxLawParameters> law_parameters;
   std::optional<double> calibration_speed;  // default: the inflow speed

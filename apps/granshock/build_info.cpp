@@ -6,8 +6,8 @@
 #include "cases/build_info/build_description.hpp"
 #include "core/choice_names.hpp"
 #include "kernels/device/backends.hpp"
-#include "kernels/models/law_parameters.hpp"
-#include "kernels/models/obstacle_shapes.hpp"
+#include "models/law_parameters.hpp"
+#include "models/obstacle_shapes.hpp"
 #include "parallel/mpi_runtime.hpp"
 
 namespace granshock {
@@ -37,7 +37,7 @@ std::string build_info_json(int processes) {
     choices[Choices<Enum>::what] = choice_names<Enum>();
   });
   j["choices"] = choices;
-  // The keys each contact law and obstacle shape takes (kernels/models/law_parameters.hpp,
+  // The keys each contact law and obstacle shape takes (models/law_parameters.hpp,
   // obstacle_shapes.hpp): name, type, meaning, range and default, as a scene gives them.
   nlohmann::json laws;
   for (const auto& c : Choices<ContactModelKind>::table) {

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "kernels/models/obstacle_shapes.hpp"
+#include "models/obstacle_shapes.hpp"
 
 namespace granshock {
 

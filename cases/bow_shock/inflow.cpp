@@ -1,6 +1,6 @@
 #include "cases/bow_shock/inflow.hpp"
 
-#include "kernels/models/obstacle_shapes.hpp"
+#include "models/obstacle_shapes.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "kernels/models/obstacle_shapes.hpp"
+#include "models/obstacle_shapes.hpp"
 
 namespace granshock {
 

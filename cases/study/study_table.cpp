@@ -7,7 +7,7 @@
 #include "analysis/csv_cells.hpp"
 #include "cases/study/case_directory.hpp"
 #include "io/atomic_file.hpp"
-#include "kernels/models/obstacle_shapes.hpp"
+#include "models/obstacle_shapes.hpp"
 
 namespace granshock {
 

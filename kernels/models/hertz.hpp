@@ -15,7 +15,7 @@
 #include "core/pair_properties.hpp"
 #include "core/variant_names.hpp"
 #include "kernels/device/device_math.hpp"
-#include "kernels/models/law_key.hpp"
+#include "models/law_key.hpp"
 
 namespace granshock {
 

@@ -11,8 +11,8 @@
 #include "core/contact_settings.hpp"
 #include "core/pair_properties.hpp"
 #include "core/variant_names.hpp"
-#include "kernels/models/hooke_parameters.hpp"
 #include "kernels/models/spring_dashpot.hpp"
+#include "models/hooke_parameters.hpp"
 
 namespace granshock {
 

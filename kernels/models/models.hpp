@@ -17,11 +17,11 @@
 #include "kernels/models/contact_law.hpp"
 #include "kernels/models/hertz.hpp"
 #include "kernels/models/hooke.hpp"
-#include "kernels/models/law_parameters.hpp"
 #include "kernels/models/linear.hpp"
 #include "kernels/models/no_obstacle.hpp"
 #include "kernels/models/obstacle_body.hpp"
-#include "kernels/models/obstacle_shapes.hpp"
+#include "models/law_parameters.hpp"
+#include "models/obstacle_shapes.hpp"
 
 namespace granshock {
 
@@ -80,7 +80,7 @@ void each_law(F& f, TypeList<Laws...>) {
 static_assert(models_detail::every_law_checked(ContactLaws{}));
 static_assert(models_detail::every_law_has_its_listed_parameters(ContactLaws{}),
               "a contact law's Parameters must be listed in LawParameterSets "
-              "(kernels/models/law_parameters.hpp), the keys the scene reader takes");
+              "(models/law_parameters.hpp), the keys the scene reader takes");
 static_assert(models_detail::every_name_has_one_law(),
               "every contact model of core/variant_names.hpp needs exactly one law in "
               "ContactLaws (kernels/models/models.hpp)");

@@ -1,6 +1,6 @@
 // The obstacle as the kernels see it (docs/design.md, "Obstacles"): one compiled type for
 // every shape, so that shapes do not multiply the variant table. Its geometry is the
-// shape's outline (kernels/models/shape_outline.hpp), a disk or a convex polygon, copied
+// shape's outline (models/shape_outline.hpp), a disk or a convex polygon, copied
 // to the device at start-up; which of the two is a value read once per particle-obstacle
 // check, not per pair. The disk is the cylinder's own arithmetic, unchanged; a polygon
 // gives the closest point on its boundary, so a particle at a face is pushed along the
@@ -15,7 +15,7 @@
 #include "kernels/device/device_math.hpp"
 #include "kernels/device/position.hpp"
 #include "kernels/device/vec.hpp"
-#include "kernels/models/obstacle_shapes.hpp"
+#include "models/obstacle_shapes.hpp"
 
 namespace granshock {
 

@@ -27,6 +27,7 @@
 #include "kernels/neighbours/verlet_list.hpp"
 #include "kernels/particles/particle_store.hpp"
 #include "kernels/particles/population_kernels.hpp"
+#include "models/obstacle_shapes.hpp"
 
 namespace granshock {
 
@@ -230,7 +231,10 @@ SolverFit solver_fit(const SolverSetup& setup, bool friction) {
   for (const auto& row : setup.contacts.friction)
     for (double mu : row) f.max_friction = std::max(f.max_friction, mu);
   for (double mu : setup.contacts.obstacle_friction) f.max_friction = std::max(f.max_friction, mu);
-  f.obstacle = setup.obstacle;
+  if (setup.obstacle)
+    f.obstacle_distance = [o = *setup.obstacle](double x, double y) {
+      return obstacle_distance(o, x, y);
+    };
   double extent = 0;
   for (int d = 0; d < Dim; ++d)
     extent = std::max({extent, std::abs(setup.box.lo[d]), std::abs(setup.box.hi[d])});

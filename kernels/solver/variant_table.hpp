@@ -4,7 +4,7 @@
 // skips the combinations a Variant does not compile (Variant::compiled), and builds the
 // DemSolver whose Variant matches the scene. Adding a contact law is one entry in
 // ContactLaws (kernels/models/models.hpp), an obstacle shape one entry in ObstacleShapes
-// (kernels/models/obstacle_shapes.hpp), which adds no variant; adding a backend is one file
+// (models/obstacle_shapes.hpp), which adds no variant; adding a backend is one file
 // variants_<backend>_<precision>.cpp and a line in solver_dispatch.cpp.
 #pragma once
 

@@ -1,5 +1,5 @@
 """The obstacle's cross-section in the x-y plane (docs/scene_format.md, "Obstacle shapes";
-kernels/models/cylinder.hpp, wedge.hpp, plate.hpp, square.hpp): a prism along z, symmetric
+models/cylinder.hpp, wedge.hpp, plate.hpp, square.hpp): a prism along z, symmetric
 about x = centre[0], spanning centre +- half its size along x and y. The flow runs along
 +y. A fields.h5 holds the outline granshock collided with (/obstacle/outline); where it
 is there, it is used as it is, so that only a scene without fields needs the shapes
@@ -10,7 +10,7 @@ from dataclasses import dataclass
 import numpy as np
 
 # Segments of a cylinder's outline: granshock's own (outline_points in
-# kernels/models/shape_outline.hpp, what fields.h5's /obstacle/outline holds), a multiple
+# models/shape_outline.hpp, what fields.h5's /obstacle/outline holds), a multiple
 # of 4, so that it holds the points at its widest (x = xc +- R) and on the axis (y = yc +- R).
 CYLINDER_SEGMENTS = 72
 
@@ -54,7 +54,7 @@ def corners(shape, sizes):
         radius = 0.5 * sizes["diameter"]
         return np.column_stack([radius * np.cos(angle), radius * np.sin(angle)])
     if shape == "wedge":
-        # The tip upstream on the axis, the base closing it (kernels/models/wedge.hpp).
+        # The tip upstream on the axis, the base closing it (models/wedge.hpp).
         half_length = 0.5 * sizes["length"]
         half_base = sizes["length"] * math.tan(math.radians(sizes["half_angle"]))
         return np.array([[0.0, -half_length], [half_base, half_length],
@@ -63,7 +63,7 @@ def corners(shape, sizes):
         w, t = 0.5 * sizes["width"], 0.5 * sizes["thickness"]
         return np.array([[-w, -t], [w, -t], [w, t], [-w, t]])
     if shape == "square":
-        # The square turned counter-clockwise by its rotation (kernels/models/square.hpp).
+        # The square turned counter-clockwise by its rotation (models/square.hpp).
         h, a = 0.5 * sizes["side"], math.radians(sizes.get("rotation", 0.0))
         c, s = math.cos(a), math.sin(a)
         return np.array([[c * x - s * y, s * x + c * y]
@@ -75,7 +75,7 @@ def make_obstacle(shape, centre, sizes, outline=None):
     """An Obstacle of `shape` at `centre` with the scene's size keys `sizes`; its outline
     (N, 2, not closed, in m) the given one, or else the shape's. Its frontal width and
     length are the outline's extents, as granshock derives them
-    (kernels/models/shape_outline.hpp)."""
+    (models/shape_outline.hpp)."""
     centre = (float(centre[0]), float(centre[1]))
     if outline is None:
         outline = corners(shape, sizes) + np.array(centre)

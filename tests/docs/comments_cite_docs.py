@@ -14,7 +14,7 @@ import sys
 
 from source_lines import report, source_lines
 
-LAYERS = ["core", "kernels", "io", "analysis", "cases", "apps", "tests", "cmake"]
+LAYERS = ["core", "models", "kernels", "io", "analysis", "cases", "apps", "tests", "cmake"]
 SUFFIXES = {".cpp", ".hpp", ".h", ".in", ".txt", ".cmake", ".sh", ".py"}
 CITES_AN_ISSUE = re.compile(
     r"\b[Ii]ssue\s*#?\d+|\bIssue\d+\b|\bof the [\w\s-]{0,30}\bissue\b|\([\w\s-]*\bissue[,)]"

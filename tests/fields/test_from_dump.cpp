@@ -22,7 +22,7 @@
 #include "core/solver.hpp"
 #include "core/user_error.hpp"
 #include "io/dump_map.hpp"
-#include "kernels/models/obstacle_shapes.hpp"
+#include "models/obstacle_shapes.hpp"
 #include "scene/scene_fixtures.hpp"
 
 using namespace granshock;

@@ -10,8 +10,8 @@
 
 #include "cases/bow_shock/sampling_plan.hpp"
 #include "io/scene_file.hpp"
-#include "kernels/models/obstacle_shapes.hpp"
 #include "kernels/sampling/bin_accumulator.hpp"
+#include "models/obstacle_shapes.hpp"
 
 using namespace granshock;
 namespace fs = std::filesystem;

@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "core/checkpoint_checks.hpp"
+#include "core/obstacle.hpp"
+#include "models/obstacle_shapes.hpp"
 
 namespace granshock {
 namespace {
@@ -227,7 +229,9 @@ TEST(CheckpointChecks, StateAgainstTheSolver) {
          Obstacle o;
          o.centre = {0.030, 0.0405, 0};
          o.size[0] = 0.004;
-         x.fit.obstacle = o;
+         x.fit.obstacle_distance = [o](double px, double py) {
+           return obstacle_distance(o, px, py);
+         };
        },
        "particle 2 lies inside the obstacle"},
   });

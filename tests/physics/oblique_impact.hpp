@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "core/solver.hpp"
-#include "kernels/models/hooke_parameters.hpp"
-#include "kernels/models/obstacle_shapes.hpp"
 #include "kernels/models/time_step_guard.hpp"
+#include "models/hooke_parameters.hpp"
+#include "models/obstacle_shapes.hpp"
 
 namespace granshock::test {
 

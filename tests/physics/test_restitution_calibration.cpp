@@ -14,10 +14,10 @@
 #include "cases/collision/head_on_collision.hpp"
 #include "core/pair_properties.hpp"
 #include "core/user_error.hpp"
-#include "kernels/models/hooke_parameters.hpp"
-#include "kernels/models/obstacle_shapes.hpp"
 #include "kernels/models/restitution_calibration.hpp"
 #include "kernels/models/time_step_guard.hpp"
+#include "models/hooke_parameters.hpp"
+#include "models/obstacle_shapes.hpp"
 
 using namespace granshock;
 

@@ -25,7 +25,7 @@
 #include "cases/collision/head_on_collision.hpp"
 #include "core/user_error.hpp"
 #include "core/variant_names.hpp"
-#include "kernels/models/law_parameters.hpp"
+#include "models/law_parameters.hpp"
 #include "physics/contact_reference.hpp"
 
 using namespace granshock;

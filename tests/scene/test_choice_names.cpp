@@ -107,7 +107,7 @@ const std::map<std::string, ChoiceKey>& choice_keys() {
     std::map<std::string, ChoiceKey> k;
     k["contact.model"] =
         choice_key<ContactModelKind>([](const Scene& s) { return s.setup.contacts.model; });
-    // Each law has its own parameter keys (kernels/models/law_parameters.hpp).
+    // Each law has its own parameter keys (models/law_parameters.hpp).
     k["contact.model"].also_for = {{"linear", {"contact.stiffness=1e5"}}};
     k["contact.restitution_mode"] = choice_key<RestitutionMode>(
         [](const Scene& s) { return s.setup.contacts.restitution_mode; });

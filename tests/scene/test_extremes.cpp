@@ -17,7 +17,7 @@
 #include "core/user_error.hpp"
 #include "io/run_file.hpp"
 #include "io/scene_file.hpp"
-#include "kernels/models/obstacle_shapes.hpp"
+#include "models/obstacle_shapes.hpp"
 #include "run_helpers.hpp"
 #include "scene_fixtures.hpp"
 

@@ -4,7 +4,7 @@
 
 #include "core/user_error.hpp"
 #include "io/scene_file.hpp"
-#include "kernels/models/obstacle_shapes.hpp"
+#include "models/obstacle_shapes.hpp"
 #include "scene_fixtures.hpp"
 
 using namespace granshock;

@@ -14,7 +14,7 @@
 
 #include "core/user_error.hpp"
 #include "io/scene_file.hpp"
-#include "kernels/models/law_parameters.hpp"
+#include "models/law_parameters.hpp"
 #include "scene_fixtures.hpp"
 
 using namespace granshock;
@@ -361,7 +361,7 @@ TEST(SceneSchema, PairsOfSpeciesWhoseNamesHoldADash) {
   }
 }
 
-// Each contact law takes only its own parameter keys (kernels/models/law_parameters.hpp):
+// Each contact law takes only its own parameter keys (models/law_parameters.hpp):
 // another law's key is refused naming the key and its law, a required one missing is
 // refused naming it, and the resolved scene holds the law's keys alone.
 TEST(SceneSchema, ALawTakesOnlyItsOwnKeys) {

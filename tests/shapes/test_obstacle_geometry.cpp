@@ -1,7 +1,7 @@
 // The contact geometry of each obstacle shape (docs/design.md, "Obstacles") against hand
 // geometry: the overlap and normal of a particle at a wedge face, the wedge tip, a plate
 // face and a plate corner as the force kernel finds them (kernels/models/obstacle_body.hpp),
-// and the free area the keep-out zone leaves (kernels/models/shape_outline.hpp) against
+// and the free area the keep-out zone leaves (models/shape_outline.hpp) against
 // Steiner's formula for a convex shape grown by a clearance; and, for every shape of
 // ObstacleShapes, the measures the host derives from the outline (frontal width, length,
 // area, upstream surface) against the signed distance the contact geometry uses.
@@ -10,7 +10,7 @@
 #include <cmath>
 
 #include "kernels/models/obstacle_body.hpp"
-#include "kernels/models/obstacle_shapes.hpp"
+#include "models/obstacle_shapes.hpp"
 
 using namespace granshock;
 
@@ -169,7 +169,7 @@ TEST(ObstacleGeometry, HostQuestionsByHand) {
 }
 
 // Every shape's frontal width, length, area and upstream surface, derived from its outline
-// (kernels/models/shape_outline.hpp), against what the signed distance of the contact
+// (models/shape_outline.hpp), against what the signed distance of the contact
 // geometry says: the four lines the width and length put at the shape's sides touch it
 // (the least distance along each is 0) and leave it on one side; the area is that of the
 // points inside on a fine grid; the upstream surface is where the distance is 0 and the

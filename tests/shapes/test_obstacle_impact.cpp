@@ -9,8 +9,8 @@
 #include <cmath>
 
 #include "core/solver.hpp"
-#include "kernels/models/obstacle_shapes.hpp"
 #include "kernels/models/time_step_guard.hpp"
+#include "models/obstacle_shapes.hpp"
 
 using namespace granshock;
 

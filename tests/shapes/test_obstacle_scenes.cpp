@@ -9,7 +9,7 @@
 #include "io/checkpoint_file.hpp"
 #include "io/run_file.hpp"
 #include "io/scene_file.hpp"
-#include "kernels/models/obstacle_shapes.hpp"
+#include "models/obstacle_shapes.hpp"
 #include "scene/run_helpers.hpp"
 #include "scene/scene_fixtures.hpp"
 

@@ -12,7 +12,7 @@
 #include "cases/gas/homogeneous_gas.hpp"
 #include "core/solver.hpp"
 #include "kernels/device/backends.hpp"
-#include "kernels/models/obstacle_shapes.hpp"
+#include "models/obstacle_shapes.hpp"
 #include "same_particles.hpp"
 #include "solver_on_paths.hpp"
 

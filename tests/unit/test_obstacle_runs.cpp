@@ -12,8 +12,8 @@
 
 #include "core/material.hpp"
 #include "kernels/models/obstacle_body.hpp"
-#include "kernels/models/obstacle_shapes.hpp"
 #include "kernels/solver/obstacle_runs.hpp"
+#include "models/obstacle_shapes.hpp"
 
 using namespace granshock;
 

@@ -9,7 +9,7 @@
 #include "cases/gas/homogeneous_gas.hpp"
 #include "core/checkpoint_checks.hpp"
 #include "core/solver.hpp"
-#include "kernels/models/obstacle_shapes.hpp"
+#include "models/obstacle_shapes.hpp"
 #include "same_particles.hpp"
 
 using namespace granshock;

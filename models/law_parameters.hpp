@@ -12,9 +12,9 @@
 #include <vector>
 
 #include "core/contact_settings.hpp"
-#include "kernels/models/hooke_parameters.hpp"
-#include "kernels/models/law_key.hpp"
-#include "kernels/models/linear_parameters.hpp"
+#include "models/hooke_parameters.hpp"
+#include "models/law_key.hpp"
+#include "models/linear_parameters.hpp"
 
 namespace granshock {
 

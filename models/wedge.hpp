@@ -4,15 +4,15 @@
 // middle of that length. Its outline is the triangle tip (0, -L/2), base corners
 // (+-L tan theta, L/2); the force kernel finds the closest point on it
 // (kernels/models/obstacle_body.hpp), and every measure follows from the triangle
-// (kernels/models/shape_outline.hpp).
+// (models/shape_outline.hpp).
 #pragma once
 
 #include <cmath>
 
 #include "core/obstacle.hpp"
 #include "core/variant_names.hpp"
-#include "kernels/models/shape_key.hpp"
-#include "kernels/models/shape_outline.hpp"
+#include "models/shape_key.hpp"
+#include "models/shape_outline.hpp"
 
 namespace granshock {
 

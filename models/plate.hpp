@@ -7,8 +7,8 @@
 
 #include "core/obstacle.hpp"
 #include "core/variant_names.hpp"
-#include "kernels/models/shape_key.hpp"
-#include "kernels/models/shape_outline.hpp"
+#include "models/shape_key.hpp"
+#include "models/shape_outline.hpp"
 
 namespace granshock {
 

@@ -3,7 +3,7 @@
 // face meets the flow (a plate of equal width and thickness), at 45 a corner does (a
 // diamond, whose frontal width is side sqrt(2)). Its outline is the turned square; the
 // force kernel finds the closest point on it (kernels/models/obstacle_body.hpp), and every
-// measure follows from the outline (kernels/models/shape_outline.hpp). Added as the
+// measure follows from the outline (models/shape_outline.hpp). Added as the
 // proof that a shape is one header (docs/design.md, "Adding an obstacle shape").
 #pragma once
 
@@ -11,8 +11,8 @@
 
 #include "core/obstacle.hpp"
 #include "core/variant_names.hpp"
-#include "kernels/models/shape_key.hpp"
-#include "kernels/models/shape_outline.hpp"
+#include "models/shape_key.hpp"
+#include "models/shape_outline.hpp"
 
 namespace granshock {
 

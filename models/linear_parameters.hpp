@@ -1,13 +1,13 @@
 // The parameters of the `linear` law (kernels/models/linear.hpp; docs/contact_model.md,
 // "Linear spring-dashpot"): its normal stiffness kn, given (LAMMPS' `pair granular hooke
 // kn`), the same for every pair. Plain C++: the scene reader reads the keys from here
-// (kernels/models/law_key.hpp).
+// (models/law_key.hpp).
 #pragma once
 
 #include <array>
 
 #include "core/contact_settings.hpp"
-#include "kernels/models/law_key.hpp"
+#include "models/law_key.hpp"
 
 namespace granshock {
 

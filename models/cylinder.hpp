@@ -2,13 +2,13 @@
 // circular cylinder with its axis along z, of diameter `diameter`. Its outline is the disk;
 // the force kernel keeps the cylinder's own arithmetic for it
 // (kernels/models/obstacle_body.hpp), and every measure follows from the disk
-// (kernels/models/shape_outline.hpp).
+// (models/shape_outline.hpp).
 #pragma once
 
 #include "core/obstacle.hpp"
 #include "core/variant_names.hpp"
-#include "kernels/models/shape_key.hpp"
-#include "kernels/models/shape_outline.hpp"
+#include "models/shape_key.hpp"
+#include "models/shape_outline.hpp"
 
 namespace granshock {
 

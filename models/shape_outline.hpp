@@ -1,7 +1,7 @@
 // An obstacle's cross-section in the x-y plane, as the kernels and the host see it
 // (docs/design.md, "Obstacles"): a disk, or a convex polygon given by its corners
 // counter-clockwise, both about the obstacle's centre. Every shape header
-// (kernels/models/cylinder.hpp, wedge.hpp, plate.hpp) describes itself by one; the force
+// (models/cylinder.hpp, wedge.hpp, plate.hpp) describes itself by one; the force
 // kernel (kernels/models/obstacle_body.hpp) finds a particle's overlap and normal from it,
 // and the host functions below give the keep-out distance and the free area of a slab.
 // Plain C++ without Kokkos, so that core/, io/ and analysis/ can ask it too.

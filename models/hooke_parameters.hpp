@@ -1,13 +1,13 @@
 // The parameters of the `hooke` law (kernels/models/hooke.hpp; docs/contact_model.md,
 // "Linear spring-dashpot"): the impact speed at which its constant stiffness gives the
 // Hertz law's peak overlap (LIGGGHTS' characteristicVelocity). Plain C++: the scene reader
-// reads the keys from here (kernels/models/law_key.hpp).
+// reads the keys from here (models/law_key.hpp).
 #pragma once
 
 #include <array>
 
 #include "core/contact_settings.hpp"
-#include "kernels/models/law_key.hpp"
+#include "models/law_key.hpp"
 
 namespace granshock {
 

@@ -1,6 +1,6 @@
 // The obstacle shapes granshock knows, and the host-side questions asked of a scene's
 // obstacle (docs/design.md, "Obstacles"). A shape's header gives its size keys and its
-// outline; every measure below follows from the outline (kernels/models/shape_outline.hpp),
+// outline; every measure below follows from the outline (models/shape_outline.hpp),
 // so no file outside a shape's header knows how a shape is measured. Plain C++ without
 // Kokkos: the scene reader, the checkpoint checks, the inflow and the field analysis ask
 // here. A new shape is one header, its enumerator and name (core/obstacle.hpp,
@@ -17,12 +17,12 @@
 
 #include "core/obstacle.hpp"
 #include "core/variant_names.hpp"
-#include "kernels/models/cylinder.hpp"
-#include "kernels/models/plate.hpp"
-#include "kernels/models/shape_key.hpp"
-#include "kernels/models/shape_outline.hpp"
-#include "kernels/models/square.hpp"
-#include "kernels/models/wedge.hpp"
+#include "models/cylinder.hpp"
+#include "models/plate.hpp"
+#include "models/shape_key.hpp"
+#include "models/shape_outline.hpp"
+#include "models/square.hpp"
+#include "models/wedge.hpp"
 
 namespace granshock {
 
@@ -69,7 +69,7 @@ void each_shape(F& f, ShapeList<Shapes...>) {
 
 static_assert(shapes_detail::every_name_has_one_shape(),
               "every obstacle shape of core/variant_names.hpp needs exactly one type in "
-              "ObstacleShapes (kernels/models/obstacle_shapes.hpp)");
+              "ObstacleShapes (models/obstacle_shapes.hpp)");
 static_assert(shapes_detail::every_shape_fits_its_sizes(ObstacleShapes{}),
               "a shape has more size keys than Obstacle::size holds: raise kMaxShapeSizes "
               "(core/obstacle.hpp)");
