@@ -36,7 +36,8 @@
 #include "io/hdf5_runtime.hpp"
 #include "io/scene_file.hpp"
 #include "kernels/device/kokkos_runtime.hpp"
-#include "kernels/models/law_parameters.hpp"
+#include "models/law_parameters.hpp"
+#include "models/obstacle_shapes.hpp"
 #include "parallel/mpi_communicator.hpp"
 #include "parallel/mpi_runtime.hpp"
 
@@ -66,11 +67,23 @@ CLI::Option* add_choice_option(CLI::App& cmd, const std::string& flag, Enum& val
       ->check(CLI::IsMember(granshock::choice_names<Enum>()));
 }
 
+// The same for a choice whose default depends on other options: `value` stays empty unless
+// the option is given, and the help says the default as `default_is` does.
+template <class Enum>
+CLI::Option* add_choice_option(CLI::App& cmd, const std::string& flag, std::optional<Enum>& value,
+                               const std::string& what, const std::string& default_is) {
+  return cmd
+      .add_option_function<std::string>(
+          flag, [&value](const std::string& name) { value = granshock::parse_choice<Enum>(name); },
+          what + " (" + granshock::choice_help<Enum>() + "; default " + default_is + ")")
+      ->check(CLI::IsMember(granshock::choice_names<Enum>()));
+}
+
 void add_collide_command(CLI::App& app, granshock::CollisionOptions& o,
-                         granshock::ImpactLine& along) {
+                         std::optional<granshock::ImpactLine>& along) {
   auto* cmd = app.add_subcommand("collide",
                                  "head-on collision of two particles or a particle and "
-                                 "the fixed cylinder; prints JSON");
+                                 "the fixed obstacle (a cylinder unless --shape); prints JSON");
   cmd->add_option("--pair", o.pair,
                   "steel-steel | steel-aluminium | aluminium-aluminium | steel-obstacle | "
                   "aluminium-obstacle")
@@ -79,15 +92,31 @@ void add_collide_command(CLI::App& app, granshock::CollisionOptions& o,
   cmd->add_option("--dt", o.dt, "time step (s); default t_c/100");
   cmd->add_option("--e", o.restitution, "coefficient of restitution, in [0.01, 1]; default 0.5");
   add_choice_option(*cmd, "--model", o.model, "contact law");
-  // One option per law parameter key (kernels/models/law_parameters.hpp), as in scenes.
+  // One option per law parameter key (models/law_parameters.hpp), as in scenes.
   granshock::for_each_law_parameters([&](auto parameters) {
     for (const granshock::LawKey& k : parameters.keys) {
-      std::string option = std::string("--") + k.name;
-      std::replace(option.begin(), option.end(), '_', '-');
       const bool speed = k.fallback == granshock::LawKey::Default::inflow_speed;
-      cmd->add_option(option, o.law_parameters[k.name],
+      cmd->add_option(granshock::key_option(k.name), o.law_parameters[k.name],
                       fmt::format("{}: {}, {}; {}", granshock::choice_name(parameters.kind),
                                   k.meaning, k.type, speed ? "default --speed" : "required"));
+    }
+  });
+  add_choice_option(*cmd, "--shape", o.shape,
+                    "the obstacle's shape, for an -obstacle pair (docs/scene_format.md, "
+                    "\"Obstacle shapes\")",
+                    "cylinder");
+  // One option per size key of the shapes (models/obstacle_shapes.hpp), as in scenes; a key
+  // that several shapes share is one option.
+  granshock::for_each_obstacle_shape([&](auto shape) {
+    for (const granshock::ShapeKey& k : shape.keys) {
+      if (o.shape_sizes.count(k.name)) continue;
+      std::vector<std::string> owners;
+      for (const granshock::ObstacleShape owner : granshock::shapes_with_key(k.name))
+        owners.push_back(granshock::choice_name(owner));
+      cmd->add_option(
+          granshock::key_option(k.name), o.shape_sizes[k.name],
+          fmt::format("--shape {}: {}, in {}; default {:g}", fmt::join(owners, " or "), k.meaning,
+                      granshock::collision_shape_range(k), granshock::collision_shape_size(k)));
     }
   });
   cmd->add_flag("--limit-force", o.limit_force,
@@ -99,10 +128,12 @@ void add_collide_command(CLI::App& app, granshock::CollisionOptions& o,
   cmd->add_option("--phase", o.phase,
                   "the first contact step overlaps by phase x speed x dt, in (0, 1]; default 1");
   cmd->add_option("--at", o.place.centre,
-                  "X,Y: where the impact happens (m), e.g. 0.5,0 at the far edge of the "
-                  "paper's 500 d box; default 0,0")
+                  "X,Y: where the impact happens (m; for the obstacle its centre), e.g. 0.5,0 "
+                  "at the far edge of the paper's 500 d box; default 0,0")
       ->delimiter(',');
-  add_choice_option(*cmd, "--along", along, "the line of impact");
+  add_choice_option(*cmd, "--along", along, "the line of impact",
+                    "x for two particles, y (the flow's, onto the upstream surface) for the "
+                    "obstacle");
 }
 
 // --no-figures of run, fields, study and tradeoff (analysis/figure_switch.hpp).
@@ -377,7 +408,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.allow_extras(false);
   granshock::CollisionOptions collide;
-  granshock::ImpactLine along = granshock::ImpactLine::x;
+  std::optional<granshock::ImpactLine> along;
   add_collide_command(app, collide, along);
   granshock::RunOptions run;
   add_run_command(app, run);
@@ -495,7 +526,7 @@ int main(int argc, char** argv) {
     } else if (keys->parsed()) {
       if (mpi->rank() == 0) std::cout << granshock::scene_keys_table();
     } else if (app.got_subcommand("collide")) {
-      collide.place.axis = int(along);
+      if (along) collide.place.axis = int(*along);
       const auto result = granshock::run_head_on_collision(collide);
       if (result.time_step.verdict != granshock::TimeStepAssessment::Verdict::ok)
         std::cerr << "granshock: warning: " << result.time_step.message << "\n";

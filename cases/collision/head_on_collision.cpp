@@ -10,8 +10,8 @@
 
 #include "core/solver.hpp"
 #include "core/user_error.hpp"
-#include "kernels/models/law_parameters.hpp"
-#include "kernels/models/obstacle_shapes.hpp"
+#include "models/law_parameters.hpp"
+#include "models/obstacle_shapes.hpp"
 
 namespace {
 constexpr double kDiameter = 1e-3;  // the paper's d
@@ -25,11 +25,13 @@ const std::vector<std::string> kPairs = {"steel-steel", "steel-aluminium", "alum
                                          "steel-obstacle", "aluminium-obstacle"};
 
 // The collision's own small world: the scene's species, contacts and precision, an open
-// box around the impact's place, and (for impacts on the obstacle) a cylinder of the
-// scene's obstacle material centred there.
+// box around the impact's place, and (for impacts on the obstacle) the obstacle's shape
+// of the scene's obstacle material centred there.
 struct Geometry {
   SolverSetup setup;
-  double radius_a = 0, radius_b = 0, cylinder_radius = 0;
+  double radius_a = 0, radius_b = 0;
+  // The obstacle: from its centre to the surface the particle strikes, along the line.
+  double surface = 0;
   bool on_obstacle = false;
   ImpactPlace place;
   // A coordinate along the line of impact, relative to the impact's place.
@@ -44,10 +46,10 @@ struct Geometry {
   }
 };
 
-// `dmax`: the largest diameter of the whole scene, which sizes the box and the cylinder
-// alike for every pair.
+// `dmax`: the largest diameter of the whole scene, which sizes the box alike for every
+// pair. `body`: the obstacle's shape and sizes, for an impact on it.
 Geometry build(const SolverSetup& scene, int a, int b, double dt, const ImpactPlace& place,
-               double dmax) {
+               double dmax, const Obstacle& body, double surface) {
   Geometry g;
   g.on_obstacle = b < 0;
   g.place = place;
@@ -57,50 +59,124 @@ Geometry build(const SolverSetup& scene, int a, int b, double dt, const ImpactPl
   g.setup.dt = dt;
   g.radius_a = scene.species[a].radius_m();
   g.radius_b = g.on_obstacle ? 0 : scene.species[b].radius_m();
-  g.cylinder_radius = 5 * dmax;
   const double half = 20 * dmax;
   g.setup.box.lo = {place.centre[0] - half, place.centre[1] - half, 0};
   g.setup.box.hi = {place.centre[0] + half, place.centre[1] + half, dmax};
-  if (g.on_obstacle)
-    g.setup.obstacle = make_obstacle(ObstacleShape::cylinder, g.at(0), {2 * g.cylinder_radius},
-                                     scene.obstacle->material);
+  if (g.on_obstacle) {
+    Obstacle o = body;
+    o.centre = g.at(0);
+    o.material = scene.obstacle->material;
+    g.setup.obstacle = o;
+    g.surface = surface;
+    // The box reaches at least 15 d_max upstream of the surface, as it did from the
+    // default cylinder's (radius 5 d_max); the obstacle may reach past the box.
+    const std::size_t k = std::size_t(place.axis);
+    g.setup.box.lo[k] = place.centre[k] - std::max(half, surface + 15 * dmax);
+  }
   return g;
 }
 
-// Surface-to-surface distance along the line of impact between the colliding bodies
-// (negative = overlap).
+// Surface-to-surface distance between the colliding bodies (negative = overlap): along the
+// line of impact for two particles, from the obstacle's outline for the obstacle (what
+// its contacts see: models/shape_outline.hpp).
 double gap(const Geometry& g, const HostParticles& p) {
-  if (g.on_obstacle) return std::abs(g.along(p.position[0])) - g.radius_a - g.cylinder_radius;
+  if (g.on_obstacle)
+    return obstacle_distance(*g.setup.obstacle, p.position[0][0], p.position[0][1]) - g.radius_a;
   return std::abs(g.along(p.position[1]) - g.along(p.position[0])) - g.radius_a - g.radius_b;
 }
 
 // Relative normal velocity, positive when separating.
 double separation_speed(const Geometry& g, const HostParticles& p) {
   const std::size_t k = std::size_t(g.place.axis);
-  if (g.on_obstacle) return -p.velocity[0][k];  // particle on the low side of the cylinder
+  if (g.on_obstacle) return -p.velocity[0][k];  // particle on the low side of the obstacle
   return p.velocity[1][k] - p.velocity[0][k];
 }
 
-// Whether the bodies have swapped sides: a particle beyond the cylinder's axis, or the
-// two particles in the wrong order along the line of impact.
+// Whether the bodies have swapped sides: a particle past the surface it struck (through
+// the obstacle, or around it), or the two particles in the wrong order along the line.
 bool passed_through(const Geometry& g, const HostParticles& p) {
-  if (g.on_obstacle) return g.along(p.position[0]) > 0;
+  if (g.on_obstacle) return g.along(p.position[0]) > -g.surface;
   return g.along(p.position[1]) < g.along(p.position[0]);
+}
+
+// The obstacle's sizes as a refusal names them: "diameter 0.01 m".
+std::string shape_sizes(const Obstacle& o) {
+  return with_obstacle_shape(o, [&](auto s) {
+    std::vector<std::string> sizes;
+    for (std::size_t i = 0; i < std::size(s.keys); ++i)
+      sizes.push_back(fmt::format("{} {:g} {}", s.keys[i].name, o.size[i],
+                                  s.keys[i].kind == ShapeKey::Kind::angle ? "deg" : "m"));
+    return fmt::format("{}", fmt::join(sizes, ", "));
+  });
+}
+
+// From the obstacle's centre to its upstream surface on the flow's line (the axis x =
+// centre): what the flow of a scene strikes first (models/obstacle_shapes.hpp).
+double upstream_surface_distance(const Obstacle& body) {
+  Obstacle at_origin = body;
+  at_origin.centre = {0, 0, 0};
+  double y = 0;
+  if (!obstacle_upstream_surface(at_origin, 0, y))
+    throw UserError(fmt::format("the {} ({}) has no surface on the flow's line: it is {:g} m wide",
+                                choice_name(body.shape), shape_sizes(body),
+                                obstacle_frontal_width(at_origin)));
+  return -y;
+}
+
+// The particle strikes the obstacle `surface` before its centre on the line of impact
+// (`axis`), and the impact must be head-on there: the point on the surface, and the
+// surface's normal along the line (its sine within kHeadOnNormal), as the contacts see it
+// (the outline's signed distance, whose gradient outside is the normal from the closest
+// point). A wedge's apex and a square's corner at 45 degrees pass (a corner symmetric
+// about the line); a slanted face does not. Returns what is struck: "flat face", "corner"
+// or "curved surface".
+std::string check_head_on(const Obstacle& body, int axis, double surface, double radius) {
+  Obstacle o = body;
+  o.centre = {0, 0, 0};
+  const auto distance = [&](double before, double aside) {
+    std::array<double, 2> x = {0, 0};
+    x[std::size_t(axis)] = -before;
+    x[std::size_t(1 - axis)] = aside;
+    return obstacle_distance(o, x[0], x[1]);
+  };
+  const char* line = axis == 0 ? "x" : "y";
+  const std::string shape = choice_name(o.shape);
+  const double scale = surface + radius;
+  if (std::abs(distance(surface, 0)) > 1e-9 * scale)
+    throw UserError(fmt::format(
+        "--along {}: the {} ({}) is struck on its upstream surface, {:.3g} m before its "
+        "centre on the flow's line y, and the line along {} meets its surface elsewhere: "
+        "strike it along y (the default for the obstacle)",
+        line, shape, shape_sizes(o), surface, line));
+  const double h = 1e-4 * radius;
+  const double aside = (distance(surface + radius, h) - distance(surface + radius, -h)) / (2 * h);
+  if (!(std::abs(aside) <= kHeadOnNormal))
+    throw UserError(fmt::format(
+        "the {} ({}) is not struck head-on: its surface where the line of impact along {} "
+        "meets it is slanted, its normal {:.3g} degrees off the line; a head-on impact needs "
+        "a face across the line or a corner symmetric about it there{}",
+        shape, shape_sizes(o), line, std::asin(std::min(1.0, std::abs(aside))) * 180 / M_PI,
+        axis == 1 ? "" : ": strike it along y, the flow's line (the default for the obstacle)"));
+  const ShapeOutline outline = obstacle_outline(o);
+  if (outline.kind == ShapeOutline::Kind::disk) return "curved surface";
+  for (int c = 0; c < outline.corners; ++c) {
+    std::array<double, 2> at = {0, 0};
+    at[std::size_t(axis)] = -surface;
+    if (std::hypot(outline.corner[c][0] - at[0], outline.corner[c][1] - at[1]) <= 1e-9 * scale)
+      return "corner";
+  }
+  return "flat face";
 }
 
 int paper_species(const std::string& name) {
   return name == "steel" ? 0 : 1;
 }
 
-}  // namespace
-
-std::vector<std::string> collision_pair_names() {
-  return kPairs;
-}
-
-CollisionResult collide_species(const SolverSetup& given, int a, int b, double speed, double dt,
-                                bool force, double phase, const ImpactPlace& place,
-                                Backend backend) {
+// collide_species against `body` (its shape and sizes; the setup's obstacle gives only
+// the material).
+CollisionResult collide(const SolverSetup& given, int a, int b, double speed, double dt, bool force,
+                        double phase, const ImpactPlace& place, Backend backend,
+                        const Obstacle& body) {
   // The pair's own species alone (a -> 0, b -> 1 or 0): summary.json collides every pair
   // of a scene, and a copy of every pair's tables per collision made that O(species^4).
   SolverSetup scene;
@@ -149,19 +225,35 @@ CollisionResult collide_species(const SolverSetup& given, int a, int b, double s
     throw UserError(fmt::format("the line of impact must be along x or y (axis {})", place.axis));
   for (const double c : place.centre)
     if (!std::isfinite(c)) throw UserError("the impact's place must be finite");
+  // On the obstacle: where the particle strikes it, and that it strikes it head-on there.
+  double surface = 0;
+  std::array<double, 2> struck_at = place.centre;
+  if (b < 0) {
+    surface = upstream_surface_distance(body);
+    r.struck = check_head_on(body, place.axis, surface, scene.species[a].radius_m());
+    struck_at[std::size_t(place.axis)] -= surface;
+  }
   const double drift = speed * r.dt;  // the relative drift of one step
   const double farthest = kPlaceResolution * drift / std::numeric_limits<double>::epsilon();
-  for (const double c : place.centre)
-    if (std::abs(c) > farthest)
+  // The place, and the point where the particle strikes the obstacle (the particle's
+  // position is rounded there).
+  const std::pair<const char*, std::array<double, 2>> points[] = {
+      {"the impact's place", place.centre},
+      {"the obstacle's surface where the particle strikes it", struck_at}};
+  for (const auto& [what, at] : points)
+    if (std::max(std::abs(at[0]), std::abs(at[1])) > farthest)
       throw UserError(fmt::format(
-          "the impact's place ({:g}, {:g}) m is too far from the origin: positions there are "
-          "rounded to {:.3g} m, more than {:g} of the {:.3g} m the bodies approach per step at "
-          "this speed and dt; place the impact within {:.3g} m of the origin",
-          place.centre[0], place.centre[1],
-          std::max(std::abs(place.centre[0]), std::abs(place.centre[1])) *
-              std::numeric_limits<double>::epsilon(),
+          "{} ({:g}, {:g}) m is too far from the origin: positions there are rounded to {:.3g} "
+          "m, more than {:g} of the {:.3g} m the bodies approach per step at this speed and "
+          "dt; place the impact within {:.3g} m of the origin",
+          what, at[0], at[1],
+          std::max(std::abs(at[0]), std::abs(at[1])) * std::numeric_limits<double>::epsilon(),
           kPlaceResolution, drift, farthest));
-  Geometry g = build(scene, a, b, r.dt, place, dmax);
+  Geometry g = build(scene, a, b, r.dt, place, dmax, body, surface);
+  if (g.on_obstacle) {
+    r.obstacle = g.setup.obstacle;
+    r.struck_at = struck_at;
+  }
 
   // Start a few steps before contact, in the zero-momentum frame for two particles; the
   // sixth drift overlaps them by phase x speed x dt.
@@ -173,7 +265,7 @@ CollisionResult collide_species(const SolverSetup& given, int a, int b, double s
     return v;
   };
   if (g.on_obstacle) {
-    start.add(g.at(-(g.cylinder_radius + g.radius_a + gap0)), velocity(speed), a, 0);
+    start.add(g.at(-(g.surface + g.radius_a + gap0)), velocity(speed), a, 0);
   } else {
     const double ma = scene.species[a].mass_kg(), mb = scene.species[b].mass_kg();
     start.add(g.at(-(g.radius_a + 0.5 * gap0)), velocity(speed * mb / (ma + mb)), a, 0);
@@ -213,15 +305,94 @@ CollisionResult collide_species(const SolverSetup& given, int a, int b, double s
   return r;
 }
 
-// The option collide reads a law key from: --characteristic-velocity for
-// characteristic_velocity.
-std::string law_option(const char* key) {
+}  // namespace
+
+std::vector<std::string> collision_pair_names() {
+  return kPairs;
+}
+
+CollisionResult collide_species(const SolverSetup& given, int a, int b, double speed, double dt,
+                                bool force, double phase, const ImpactPlace& place,
+                                Backend backend) {
+  return collide(given, a, b, speed, dt, force, phase, place, backend,
+                 make_obstacle(ObstacleShape::cylinder, {}, {10 * given.max_diameter()}));
+}
+
+std::string key_option(const char* key) {
   std::string option = std::string("--") + key;
   std::replace(option.begin(), option.end(), '_', '-');
   return option;
 }
 
-// The chosen law's parameters from the options (kernels/models/law_parameters.hpp): each
+double collision_shape_size(const ShapeKey& key) {
+  if (!key.required()) return key.fallback;
+  if (key.kind == ShapeKey::Kind::length) return 10 * kDiameter;
+  return 0.5 * (key.lo + key.hi);
+}
+
+std::string collision_shape_range(const ShapeKey& key) {
+  if (key.kind == ShapeKey::Kind::length)
+    return fmt::format("[{:g}, {:g}] m", kDiameter, kMaxCollisionObstacleSize);
+  return fmt::format("{}{:g}, {:g}) degrees", key.lo_closed ? "[" : "(", key.lo, key.hi);
+}
+
+namespace {
+
+// The obstacle an -obstacle pair strikes (its shape and sizes) from the options: each size
+// given or collision_shape_size's, in its range; a size of another shape refused, and the
+// shape or a size given with two particles.
+Obstacle collision_obstacle(const CollisionOptions& o, bool on_obstacle) {
+  const auto given = std::find_if(o.shape_sizes.begin(), o.shape_sizes.end(),
+                                  [](const auto& size) { return size.second.has_value(); });
+  if (!on_obstacle) {
+    if (o.shape || given != o.shape_sizes.end())
+      throw UserError(fmt::format(
+          "{} is the obstacle's, and --pair {} is two particles: strike the obstacle with an "
+          "-obstacle pair (steel-obstacle, aluminium-obstacle)",
+          o.shape ? "--shape" : key_option(given->first.c_str()), o.pair));
+    return make_obstacle(ObstacleShape::cylinder, {}, {});
+  }
+  const ObstacleShape shape = o.shape.value_or(ObstacleShape::cylinder);
+  for (const auto& [name, value] : o.shape_sizes) {
+    if (!value || shape_key_index(shape, name)) continue;
+    std::vector<std::string> owners;
+    for (const ObstacleShape owner : shapes_with_key(name))
+      owners.push_back(std::string("--shape ") + choice_name(owner));
+    throw UserError(fmt::format(
+        "{} is a size of {}, and the shape is {}", key_option(name.c_str()),
+        owners.empty() ? std::string("no shape") : fmt::format("{}", fmt::join(owners, " or ")),
+        choice_name(shape)));
+  }
+  Obstacle body = make_obstacle(shape, {}, {});
+  with_obstacle_shape(shape, [&](auto s) {
+    for (std::size_t i = 0; i < std::size(s.keys); ++i) {
+      const ShapeKey& k = s.keys[i];
+      const auto size = o.shape_sizes.find(k.name);
+      if (size == o.shape_sizes.end() || !size->second) {
+        body.size[i] = collision_shape_size(k);
+        continue;
+      }
+      const double v = *size->second;
+      const bool in_range = k.kind == ShapeKey::Kind::length
+                                ? v >= kDiameter && v <= kMaxCollisionObstacleSize
+                                : (k.lo_closed ? v >= k.lo : v > k.lo) && v < k.hi;
+      if (!in_range)
+        throw UserError(fmt::format(
+            "{} {:g} must be in {} ({}){}", key_option(k.name), v, collision_shape_range(k),
+            k.meaning,
+            k.kind == ShapeKey::Kind::length
+                ? ": at least the particle diameter, as the contact law treats the obstacle "
+                  "as a wall, and at most 1 m, as the collision's box grows with it"
+                : ""));
+      body.size[i] = v;
+    }
+  });
+  return body;
+}
+
+}  // namespace
+
+// The chosen law's parameters from the options (models/law_parameters.hpp): each
 // in its key's range, the impact speed where the key defaults to the inflow speed, a
 // required one missing refused, and a key of another law refused.
 std::array<double, kMaxLawParameters> collision_law_parameters(const CollisionOptions& o) {
@@ -232,7 +403,7 @@ std::array<double, kMaxLawParameters> collision_law_parameters(const CollisionOp
     for (ContactModelKind law : laws_with_key(name))
       owners.push_back(std::string("--model ") + choice_name(law));
     throw UserError(fmt::format("{} is a parameter of {}, and the model is {}",
-                                law_option(name.c_str()), fmt::join(owners, " or "),
+                                key_option(name.c_str()), fmt::join(owners, " or "),
                                 choice_name(o.model)));
   }
   std::array<double, kMaxLawParameters> values{};
@@ -243,13 +414,13 @@ std::array<double, kMaxLawParameters> collision_law_parameters(const CollisionOp
       if (given == o.law_parameters.end() || !given->second) {
         if (k.fallback == LawKey::Default::required)
           throw UserError(fmt::format("--model {} needs {} ({}: {})", choice_name(o.model),
-                                      law_option(k.name), k.type, k.meaning));
+                                      key_option(k.name), k.type, k.meaning));
         values[i] = o.speed_m_per_s;  // Default::inflow_speed
         continue;
       }
       const double v = *given->second;
       if (!(v >= k.lo && v <= k.hi))
-        throw UserError(fmt::format("{} {:g} must be in [{:g}, {:g}] ({}): {}", law_option(k.name),
+        throw UserError(fmt::format("{} {:g} must be in [{:g}, {:g}] ({}): {}", key_option(k.name),
                                     v, k.lo, k.hi, k.type, k.why));
       values[i] = v;
     }
@@ -282,11 +453,17 @@ CollisionResult run_head_on_collision(const CollisionOptions& o) {
   paper.contacts.options.limit_force = o.limit_force;
   paper.contacts.options.law_parameters = collision_law_parameters(o);
   paper.precision = o.precision;
-  paper.obstacle = make_obstacle(ObstacleShape::cylinder, {0, 0, 0}, {10 * kDiameter}, aluminium());
   const auto dash = o.pair.find('-');
   const std::string second = o.pair.substr(dash + 1);
   const int a = paper_species(o.pair.substr(0, dash));
   const int b = second == "obstacle" ? -1 : paper_species(second);
+  // The obstacle, of aluminium, and the line of impact: the flow's onto it, x between two
+  // particles, unless given.
+  const Obstacle body = collision_obstacle(o, b < 0);
+  paper.obstacle = body;
+  paper.obstacle->material = aluminium();
+  ImpactPlace place = o.place;
+  if (place.axis == kImpactAxisOfThePair) place.axis = b < 0 ? 1 : 0;
   double dt = o.dt.value_or(0.0);
   std::optional<PairCalibration> calibration;
   if (o.restitution_mode == RestitutionMode::discrete) {
@@ -305,7 +482,8 @@ CollisionResult run_head_on_collision(const CollisionOptions& o) {
     else
       c.calibrated_beta[a][b] = c.calibrated_beta[b][a] = calibration->beta;
   }
-  CollisionResult r = collide_species(paper, a, b, o.speed_m_per_s, dt, o.force, o.phase, o.place);
+  CollisionResult r = collide(paper, a, b, o.speed_m_per_s, dt, o.force, o.phase, place,
+                              Backend::default_space, body);
   r.pair = o.pair;
   r.calibration = calibration;
   return r;
@@ -358,6 +536,19 @@ std::string to_json(const CollisionResult& r) {
   j["phase"] = r.phase;
   j["at"] = r.place.centre;
   j["along"] = r.place.axis == 0 ? "x" : "y";
+  // The obstacle as a scene's [obstacle] table names it (its shape and size keys, m or
+  // degrees, its centre at `at`), and where and on what the particle struck it.
+  if (r.obstacle) {
+    nlohmann::json obstacle;
+    obstacle["shape"] = choice_name(r.obstacle->shape);
+    with_obstacle_shape(*r.obstacle, [&](auto s) {
+      for (std::size_t i = 0; i < std::size(s.keys); ++i)
+        obstacle[s.keys[i].name] = r.obstacle->size[i];
+    });
+    obstacle["struck"] = r.struck;
+    obstacle["struck_at"] = r.struck_at;
+    j["obstacle"] = obstacle;
+  }
   j["beta"] = r.beta;
   j["restitution_mode"] =
       to_string(r.calibration ? RestitutionMode::discrete : RestitutionMode::continuous);
