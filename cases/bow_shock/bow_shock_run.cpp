@@ -3,35 +3,27 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <csignal>
 #include <iostream>
 
 #include "analysis/figure_switch.hpp"
-#include "analysis/json_file.hpp"
 #include "analysis/run_analysis.hpp"
 #include "cases/accuracy/accuracy_choice.hpp"
 #include "cases/bow_shock/interrupt.hpp"
-#include "cases/bow_shock/run_checks.hpp"
 #include "cases/bow_shock/run_observables.hpp"
+#include "cases/bow_shock/run_resume.hpp"
 #include "cases/bow_shock/run_state.hpp"
 #include "cases/bow_shock/run_summary.hpp"
 #include "cases/build_info/build_description.hpp"
-#include "core/checkpoint_checks.hpp"
 #include "core/choice_names.hpp"
 #include "core/failure_agreement.hpp"
 #include "core/process_clock.hpp"
 #include "core/shell_text.hpp"
 #include "core/user_error.hpp"
-#include "io/atomic_file.hpp"
-#include "io/checkpoint_file.hpp"
 #include "io/field_sums_file.hpp"
-#include "io/xdmf_writer.hpp"
 #include "kernels/device/launch_counter.hpp"
-#include "kernels/models/obstacle_shapes.hpp"
-#include "kernels/models/restitution_calibration.hpp"
-#include "parallel/mpi_communicator.hpp"
+#include "models/obstacle_shapes.hpp"
 
 namespace granshock {
 
@@ -44,37 +36,6 @@ std::vector<std::array<double, 2>> obstacle_polygon(const Scene& scene) {
   if (!scene.setup.obstacle) return {};
   const Obstacle& o = *scene.setup.obstacle;
   return outline_points(obstacle_outline(o), o.centre[0], o.centre[1]);
-}
-
-// Adds the wall time of one output (gather and write) to a total and counts it.
-struct OutputTimer {
-  double& seconds;
-  long& count;
-  std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
-  OutputTimer(double& s, long& n) : seconds(s), count(n) {}
-  ~OutputTimer() {
-    seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    ++count;
-  }
-};
-
-// A write of the run's outputs that failed (a full disk, a file-size limit): the run says
-// what survives it (BowShockRun::what_survives). Other errors in the loop are said as
-// they are: making room would not help them.
-class WriteFailed : public UserError {
- public:
-  explicit WriteFailed(const std::string& what) : UserError(what) {}
-};
-
-template <class Write>
-void writing(Write&& write) {
-  try {
-    write();
-  } catch (const WriteFailed&) {
-    throw;
-  } catch (const UserError& e) {
-    throw WriteFailed(e.what());
-  }
 }
 
 std::string signal_name(int signal) {
@@ -96,10 +57,7 @@ BowShockRun::BowShockRun(const RunOptions& o, LoadedScene loaded, const Communic
       comm_(comm),
       root_(comm.is_root()),
       log_(root_),
-      loaded_(std::move(loaded)),
-      scene_(loaded_.scene),
-      inflow_(scene_),
-      sampling_(scene_),
+      given_(std::move(loaded)),
       backends_(o.backend_switch, o.quiet, log_) {}
 
 int BowShockRun::execute() {
@@ -171,12 +129,13 @@ int BowShockRun::execute_or_throw() {
     // resume reads and checks the checkpoint under it before it changes anything, so that a
     // refused --resume leaves the directory as it was (the marker, the temporaries).
     if (root_ && options_.resume) run_directory_.emplace(RunDirectory::hold(dir_, mode_));
-    if (options_.resume) read_checkpoint_and_check();
+    if (options_.resume)
+      resume_point_.emplace(read_resume_point(dir_, prepared_->loaded, *inflow_));
     if (root_ && !options_.resume) run_directory_.emplace(RunDirectory::claim(dir_, mode_));
     if (root_ && options_.resume) {
-      RunFile::check_resumable(
-          dir_ / "run.h5", checkpoint_state_.step,
-          {checkpoint_extras_.run_id, checkpoint_extras_.run_frames, checkpoint_extras_.run_rows});
+      RunFile::check_resumable(dir_ / "run.h5", resume_point_->state.step,
+                               {resume_point_->extras.run_id, resume_point_->extras.run_frames,
+                                resume_point_->extras.run_rows});
       run_directory_->settle();
     }
     claimed_ = true;
@@ -190,19 +149,19 @@ int BowShockRun::execute_or_throw() {
       thermo_.open(dir_,
                    fmt::format("{}: {} from step {}", version_line(),
                                options_.resume ? "--resume" : "new run", solver_->steps_done()));
-    if (options_.resume && root_) read_earlier_summary();
-    if (options_.resume && extension_.changes()) {
+    if (options_.resume && root_) earlier_ = read_earlier_summary(dir_);
+    if (options_.resume && resume_point_->extension.changes()) {
       if (options_.quiet)
-        log_.record(extension_note(extension_));
+        log_.record(extension_note(resume_point_->extension));
       else
-        log_.say(extension_note(extension_));
+        log_.say(extension_note(resume_point_->extension));
     }
   });
   try {
     if (!options_.resume) start_fresh();  // writes the outputs of step 0
     first_step_ = solver_->steps_done();
     cpu_at_leg_start_ = process_cpu_seconds();
-    meter_.emplace(first_step_, total_steps_, scene_.run.progress_interval_s,
+    meter_.emplace(first_step_, total_steps_, scene().run.progress_interval_s,
                    [this](const std::string& line) {
                      if (options_.quiet)
                        log_.record(line);
@@ -211,130 +170,59 @@ int BowShockRun::execute_or_throw() {
                    });
     return advance_to_end();
   } catch (const WriteFailed& e) {
-    throw UserError(fmt::format("{}; {}", e.what(), what_survives()));
+    throw UserError(fmt::format("{}; {}", e.what(), outputs_->what_survives()));
   }
 }
 
-// After a failed write: whether the last checkpoint and run.h5 still make a run that
-// --resume continues (rank 0, which wrote them, says it).
-std::string BowShockRun::what_survives() {
-  if (last_checkpoint_step_ < 0)
-    return "no checkpoint had been written yet: make room and start again with --overwrite";
-  const std::string resume =
-      fmt::format("checkpoint.h5 (step {}) is intact: make room and continue with --resume",
-                  last_checkpoint_step_);
-  if (!root_ || !run_file_) return resume;
-  // run.h5 reserves room before every change (io/run_file.hpp), so a failed write leaves it
-  // as it was; checked all the same, as the resume will check it.
-  try {
-    run_file_.reset();
-    RunFile::check_resumable(dir_ / "run.h5", last_checkpoint_step_, last_record_);
-  } catch (const std::exception&) {
-    return fmt::format(
-        "checkpoint.h5 (step {}) is intact, but the failed write damaged run.h5, so the run "
-        "cannot be resumed: make room and start again with --overwrite",
-        last_checkpoint_step_);
-  }
-  return resume;
-}
-
-// The scene's checks and calibrations, the directory's check and the solver.
+// The scene's checks and calibrations (prepared_scene.hpp), the directory's check and the
+// solver.
 void BowShockRun::prepare() {
-  dir_ = run_directory_of(options_, scene_);
+  dir_ = run_directory_of(options_, given_.scene);
   throw_if_interrupted();
-  std::vector<std::string> warnings = check_scene_before_run(
-      scene_, options_.force, comm_.size(), certified_step(options_.accuracy_choice));
   mode_ = options_.resume      ? DirectoryMode::resume
           : options_.overwrite ? DirectoryMode::overwrite
                                : DirectoryMode::create;
-  // Rank 0's alone: probing the lock from several ranks at once would see each other.
-  if (root_) RunDirectory::check(dir_, mode_);
-  backends_.choose_start(comm_.size());
-  // Again with a calibrated damping or sigma: the time-step guard depends on the damping
-  // ratio and on the fastest impact.
-  const bool damping_calibrated = calibrate_restitution();
-  throw_if_interrupted();
-  if (calibrate_inflow() || damping_calibrated)
-    warnings = check_scene_before_run(scene_, options_.force, comm_.size(),
-                                      certified_step(options_.accuracy_choice));
-  for (const std::string& w : warnings) log_.warn(w);
+  PrepareOptions how;
+  how.force = options_.force;
+  how.processes = comm_.size();
+  how.certified = certified_step(options_.accuracy_choice);
+  if (!options_.quiet) how.say = [this](const std::string& line) { log_.say(line); };
+  how.checked = [this, &how] {
+    // Rank 0's alone: probing the lock from several ranks at once would see each other.
+    if (root_) RunDirectory::check(dir_, mode_);
+    backends_.choose_start(comm_.size());
+    how.backend = backends_.backend();
+  };
+  prepared_.emplace(prepare_scene(std::move(given_), how));
+  for (const std::string& w : prepared_->warnings) log_.warn(w);
+  inflow_.emplace(scene());
+  sampling_.emplace(scene());
+  outputs_.emplace(comm_, dir_, options_.snapshot_output, obstacle_polygon(scene()));
 
   throw_if_interrupted();
-  total_steps_ = scene_.total_steps();
+  total_steps_ = scene().total_steps();
   series_.every =
-      every_seconds(scene_.run.series_interval_s, scene_.run.duration_s, scene_.setup.dt);
+      every_seconds(scene().run.series_interval_s, scene().run.duration_s, scene().setup.dt);
   snapshots_.every =
-      every_seconds(scene_.run.snapshot_interval_s, scene_.run.duration_s, scene_.setup.dt);
+      every_seconds(scene().run.snapshot_interval_s, scene().run.duration_s, scene().setup.dt);
   checkpoints_.every =
-      every_seconds(scene_.run.checkpoint_interval_s, scene_.run.duration_s, scene_.setup.dt);
+      every_seconds(scene().run.checkpoint_interval_s, scene().run.duration_s, scene().setup.dt);
   decomposition_.axis = options_.slabs;
   decomposition_.balance = options_.balance;
-  solver_ = make_run_solver(backends_.backend(), scene_.capacity_estimate());
-  samples_.assign(std::size_t(sampling_.blocks()), 0);
+  solver_ = make_run_solver(backends_.backend(), scene().capacity_estimate());
+  samples_.assign(std::size_t(sampling_->blocks()), 0);
 }
 
 // Rank 0's run.h5: a new one, or the one a checkpoint continues.
 void BowShockRun::open_run_file() {
-  if (!root_) return;
   if (options_.resume) {
-    last_record_ = {checkpoint_extras_.run_id, checkpoint_extras_.run_frames,
-                    checkpoint_extras_.run_rows};
-    run_file_.emplace(
-        RunFile::open_for_resume(dir_ / "run.h5", checkpoint_state_.step, last_record_));
-    last_record_ = run_file_->record();  // cut back to the checkpoint (and given an id)
-    extensions_ = record_extension(*run_file_, loaded_.as_given, loaded_.resolved, extension_);
-  } else {
-    SnapshotContents contents;
-    for (const Species& s : scene_.setup.species) contents.species_radius.push_back(s.radius_m());
-    contents.angular_velocity = scene_.setup.contacts.has_friction();
-    run_file_.emplace(RunFile::create(dir_ / "run.h5", loaded_.as_given, loaded_.resolved,
-                                      scene_.setup.dim, contents, build_description().dump()));
+    extensions_ = outputs_->continue_from(*resume_point_, prepared_->loaded);
+    return;
   }
-}
-
-// contact.restitution_mode = "discrete" (docs/contact_model.md, "Restitution at the chosen
-// time step"): a pure function of the scene, so a resumed run finds the same damping.
-bool BowShockRun::calibrate_restitution() {
-  if (scene_.setup.contacts.restitution_mode != RestitutionMode::discrete) return false;
-  const RestitutionCalibration c = apply_restitution_mode(loaded_.scene.setup);
-  if (!options_.quiet)
-    for (const PairCalibration& p : c.pairs)
-      log_.say(fmt::format(
-          "granshock: restitution of {} calibrated at dt = {:.3g} s, {:g} m/s: beta {:.5f} "
-          "(continuous {:.5f}) returns e = {:.5f} for {:g} (continuous: {:.5f})",
-          p.pair, c.dt, c.speed, p.beta, p.beta_continuous, p.e_eff, p.restitution,
-          p.e_eff_continuous));
-  return true;
-}
-
-// inflow.mach_at = "inlet_bins" (docs/fields.md, "Three upstream Mach numbers"): sigma is
-// calibrated in the inlet channel before anything is written. The calibration is a pure
-// function of the scene, so a resumed run computes the same sigma; the resolved scene (in
-// run.h5 and the checkpoint) carries it.
-bool BowShockRun::calibrate_inflow() {
-  if (scene_.inflow.mach_at != MachReference::inlet_bins) return false;
-  if (!options_.quiet)
-    log_.say(
-        fmt::format("granshock: calibrating sigma so that Ma over the two inlet bin rows is {:g} "
-                    "(inflow.mach_at = \"inlet_bins\")",
-                    *scene_.inflow.target_mach));
-  calibration_ = calibrate_inlet_mach(scene_, 6, backends_.backend());
-  loaded_.scene.inflow.sigma = calibration_->sigma;
-  loaded_.resolved = scene_to_toml(loaded_.scene);
-  const InletMach& last = calibration_->chosen();
-  if (!root_) return true;
-  if (!calibration_->converged)
-    log_.warn(fmt::format(
-        "the inflow calibration did not converge in {} runs: sigma = {:.4g} m/s gives Ma = "
-        "{:.3f} at the inlet rows against the target {:g}",
-        calibration_->iterations.size(), calibration_->sigma, last.mach, calibration_->target));
-  else if (!options_.quiet)
-    log_.say(fmt::format(
-        "granshock: sigma = {:.4g} m/s (inserted convention: {:.4g}): Ma = {:.3f} +- {:.3f} at "
-        "the inlet rows after {} channel run{}",
-        calibration_->sigma, calibration_->sigma_inserted, last.mach, last.mach_err,
-        calibration_->iterations.size(), calibration_->iterations.size() == 1 ? "" : "s"));
-  return true;
+  SnapshotContents contents;
+  for (const Species& s : scene().setup.species) contents.species_radius.push_back(s.radius_m());
+  contents.angular_velocity = scene().setup.contacts.has_friction();
+  outputs_->create(prepared_->loaded, scene().setup.dim, contents, build_description().dump());
 }
 
 // The time loop from the current step to the end, a signal or --stop-after-steps.
@@ -346,10 +234,10 @@ int BowShockRun::advance_to_end() {
     // time, so that progress and signals are answered promptly.
     const double slice_s = backends_.slice_seconds();
     long next = std::min(total_steps_, step + meter_->steps_per(slice_s, 50));
-    next = std::min(next, (step / inflow_.period_steps() + 1) * inflow_.period_steps());
+    next = std::min(next, (step / inflow_->period_steps() + 1) * inflow_->period_steps());
     for (const Schedule* s : {&series_, &snapshots_, &checkpoints_})
       next = std::min(next, s->next_after(step));
-    next = std::min(next, sampling_.next_after(step));
+    next = std::min(next, sampling_->next_after(step));
     if (options_.stop_after_steps > 0)
       next = std::min(next, first_step_ + options_.stop_after_steps);
     next = agreed_next_step(next);
@@ -375,7 +263,7 @@ int BowShockRun::advance_to_end() {
       return 128 + signal;
     }
     backends_.move_if_due(
-        solver_, scene_.capacity_estimate(),
+        solver_, scene().capacity_estimate(),
         [this](Backend b, std::size_t capacity) { return make_run_solver(b, capacity); });
     if (options_.stop_after_steps > 0 && step >= first_step_ + options_.stop_after_steps &&
         step < total_steps_) {
@@ -404,102 +292,32 @@ void BowShockRun::start_fresh() {
   // A large prefill takes minutes: its progress, in the run's form (progress_meter.hpp),
   // and a signal stops it between slabs, on every rank at the same slab (the insertion is
   // collective).
-  ProgressMeter prefill(0, 0, scene_.run.progress_interval_s,
+  ProgressMeter prefill(0, 0, scene().run.progress_interval_s,
                         [this](const std::string& line) { log_.say(line); });
-  inflow_.prefill(*solver_, [&](long done, long slabs) {
+  inflow_->prefill(*solver_, [&](long done, long slabs) {
     if (const int signal = int(comm_.max(double(interrupt_signal()))); signal != 0)
       throw Interrupted(signal);
     if (root_ && !options_.quiet && prefill.due())
-      prefill.report_prefill(done, slabs, long(inflow_.inserted()));
+      prefill.report_prefill(done, slabs, long(inflow_->inserted()));
   });
   actions_at(0);
 }
 
-// Every rank reads the whole checkpoint (docs/parallel.md: N ranks resume what M wrote).
-void BowShockRun::read_checkpoint_and_check() {
-  const fs::path path = dir_ / "checkpoint.h5";
-  checkpoint_state_ = read_checkpoint(path, checkpoint_extras_);
-  const CheckpointExtras& extras = checkpoint_extras_;
-  // The same values written in other digits (a checkpoint of a granshock that wrote every
-  // number with 17: io/shortest_floats.hpp) are the same scene.
-  // A checkpoint of an older granshock may hold another law's keys (io/scene_file.hpp).
-  const std::string stored = without_other_laws_keys(extras.scene_resolved);
-  const std::vector<std::string> keys = stored == loaded_.resolved
-                                            ? std::vector<std::string>()
-                                            : differing_keys(stored, loaded_.resolved);
-  const std::vector<std::string> fixed = keys_fixed_on_resume(keys);
-  if (!fixed.empty()) {
-    throw UserError(fmt::format(
-        "--resume: scene key{} {} differ{} from the run in '{}'; resume with the same scene "
-        "file and --set options (docs/scene_format.md, \"Resuming\": only time.duration and "
-        "time.production_start may change)",
-        fixed.size() == 1 ? "" : "s", fmt::join(fixed, ", "), fixed.size() == 1 ? "s" : "",
-        dir_.string()));
-  }
-  // The checkpoint is checked against its own scene's schedule, then the change of its
-  // time keys against what it holds (run_extension.hpp).
-  const Scene before =
-      keys.empty() ? scene_ : parse_scene(stored, {}, path.string() + ":/scene/resolved").scene;
-  try {
-    check_run(checkpoint_state_, extras,
-              run_fit(before, inflow_, SamplingPlan(before), checkpoint_state_.step));
-  } catch (const InvalidCheckpoint& e) {
-    throw refuse_checkpoint(path, e);
-  }
-  extension_ = plan_extension(before, scene_, checkpoint_state_.step);
-}
-
-// --resume (rank 0): the warnings and rate the earlier legs' summary.json recorded. A
-// summary that cannot be read (removed, damaged) only loses them: the run's own state is
-// in the checkpoint.
-void BowShockRun::read_earlier_summary() {
-  const fs::path path = dir_ / "summary.json";
-  std::error_code ec;
-  if (!fs::is_regular_file(fs::symlink_status(path, ec))) return;
-  try {
-    const JsonFile earlier = read_json_file(path, "summary");
-    if (!earlier.value.is_object()) return;
-    const nlohmann::json warnings = earlier.value.value("warnings", nlohmann::json());
-    if (warnings.is_array() && std::all_of(warnings.begin(), warnings.end(),
-                                           [](const nlohmann::json& w) { return w.is_string(); }))
-      earlier_warnings_ = warnings;
-    earlier_rate_ = earlier.value.value("particle_steps_per_second", nlohmann::json());
-  } catch (const UserError&) {
-  }
-}
-
 // Everything is checked before anything changes: a refused checkpoint leaves the run
-// directory as it was.
+// directory as it was (run_resume.hpp).
 void BowShockRun::resume() {
-  try {
-    solver_->import_state(checkpoint_state_);
-  } catch (const InvalidCheckpoint& e) {
-    throw refuse_checkpoint(dir_ / "checkpoint.h5", e);
-  }
-  restore_run_state(checkpoint_extras_, *solver_, inflow_, samples_);
-  // A new production window (run_extension.hpp): the earlier one's sums go, and the
-  // checkpoint's step is sampled where the new window samples it and the earlier did not.
-  if (extension_.samples_dropped > 0) {
-    solver_->restore_field_sums(std::vector<double>(solver_->field_sums(false).size(), 0.0),
-                                std::vector<double>(solver_->field_sums(true).size(), 0.0));
-    samples_.assign(samples_.size(), 0);
-  }
-  if (extension_.catch_up_block >= 0) {
-    solver_->sample_fields(extension_.catch_up_block);
-    ++samples_[std::size_t(extension_.catch_up_block)];
-  }
-  wall_before_ = checkpoint_extras_.wall_seconds_so_far;
-  cpu_before_ = checkpoint_extras_.cpu_seconds_so_far;
-  last_checkpoint_step_ = checkpoint_state_.step;
-  checkpoint_state_ = SolverState{};  // the solver holds it now
+  wall_before_ = resume_point_->extras.wall_seconds_so_far;
+  cpu_before_ = resume_point_->extras.cpu_seconds_so_far;
+  outputs_->resumed_at(resume_point_->state.step);
+  resume_from(*resume_point_, dir_, *solver_, *inflow_, samples_);
 }
 
 // Everything that happens at a step boundary, in a fixed order (a checkpoint at step s
 // is taken after the insertion and outputs of step s, and a resumed run starts after them).
 void BowShockRun::actions_at(long step) {
-  inflow_.insert_if_due(*solver_, step);
-  if (sampling_.due(step)) {
-    const int block = sampling_.block_of(step);
+  inflow_->insert_if_due(*solver_, step);
+  if (sampling_->due(step)) {
+    const int block = sampling_->block_of(step);
     solver_->sample_fields(block);
     ++samples_[block];
   }
@@ -524,12 +342,12 @@ TimeSeriesRow BowShockRun::observe(long step, Diagnostics* diagnostics) {
   const RemovalCounts removed = solver_->removed();
   TimeSeriesRow row;
   row.step = step;
-  row.time = step * scene_.setup.dt;
+  row.time = step * scene().setup.dt;
   row.particles = solver_->global_size();
   row.kinetic_energy = d.kinetic_energy + d.rotational_energy;
-  row.temperature = mixture_temperature(scene_, solver_->species_moments());
+  row.temperature = mixture_temperature(scene(), solver_->species_moments());
   row.contacts = d.contacts;
-  row.inserted = inflow_.inserted();
+  row.inserted = inflow_->inserted();
   row.deleted_outlet = removed.high[1];
   row.deleted_inlet = removed.low[1];
   if (diagnostics) *diagnostics = d;
@@ -540,12 +358,12 @@ TimeSeriesRow BowShockRun::observe(long step, Diagnostics* diagnostics) {
 void BowShockRun::write_series_row(long step) {
   Diagnostics d;
   const TimeSeriesRow row = observe(step, &d);
-  check_health(scene_, step, d, std::size_t(row.particles));
+  check_health(scene(), step, d, std::size_t(row.particles));
   if (!root_) return;
-  writing([&] { run_file_->append_time_series(row); });
+  outputs_->append_series_row(row);
   if (!warned_energy_) {
     const std::string energy =
-        energy_warning(scene_, row.kinetic_energy, std::size_t(row.particles), row.time);
+        energy_warning(scene(), row.kinetic_energy, std::size_t(row.particles), row.time);
     warned_energy_ = !energy.empty();
     if (warned_energy_) log_.warn(energy);
   }
@@ -556,32 +374,8 @@ void BowShockRun::write_series_row(long step) {
   }
 }
 
-// Several processes (docs/parallel.md, "Output"): a large frame is written by every
-// process at once (parallel HDF5), a small one gathered to rank 0, whichever measured
-// faster (RunFile::collective_pays, docs/scaling.md).
 void BowShockRun::write_snapshot(long step) {
-  const OutputTimer timer(output_.snapshot_seconds, output_.snapshots);
-  const double time = step * scene_.setup.dt;
-  const SnapshotPart part = solver_->snapshot_part();
-  const auto* mpi = dynamic_cast<const MpiCommunicator*>(&comm_);
-  const bool collective = options_.snapshot_output == SnapshotOutput::collective ||
-                          (options_.snapshot_output == SnapshotOutput::automatic &&
-                           RunFile::collective_pays(part.total));
-  if (mpi != nullptr && collective) {
-    ++output_.collective_snapshots;
-    writing([&] {
-      RunFile::append_snapshot_collectively(dir_ / "run.h5", mpi->native(), step, time, part,
-                                            run_file_);
-    });
-  } else {
-    const HostParticles frame = gather_snapshot(comm_, part);
-    if (root_) writing([&] { run_file_->append_snapshot(step, time, frame); });
-  }
-  if (!root_) return;
-  writing([&] {
-    write_particles_xdmf(dir_ / "run.xmf", "run.h5", run_file_->frames(), run_file_->dim(),
-                         run_file_->frame_view_arrays(), obstacle_polygon(scene_));
-  });
+  outputs_->write_snapshot(*solver_, step, step * scene().setup.dt);
 }
 
 double BowShockRun::cpu_seconds_so_far() const {
@@ -591,46 +385,31 @@ double BowShockRun::cpu_seconds_so_far() const {
 
 void BowShockRun::write_checkpoint_now() {
   const long step = solver_->steps_done();
-  if (step == last_checkpoint_step_) return;
-  const OutputTimer timer(output_.checkpoint_seconds, output_.checkpoints);
+  if (step == outputs_->last_checkpoint_step()) return;
   const double wall = wall_before_ + (meter_ ? meter_->elapsed_s() : 0.0);
-  CheckpointExtras extras =
-      pack_run_state(loaded_.resolved, *solver_, inflow_, samples_, wall, cpu_seconds_so_far());
+  CheckpointExtras extras = pack_run_state(prepared_->loaded.resolved, *solver_, *inflow_, samples_,
+                                           wall, cpu_seconds_so_far());
   extras.scene_overrides = options_.overrides;  // with --resume, every leg's (run_command.hpp)
-  const SolverState state = solver_->export_state();
-  if (root_) {
-    writing([&] {
-      // run.h5 as this checkpoint continues it: a resume checks it against this record.
-      run_file_->flush();
-      const RunFileRecord record = run_file_->record();
-      extras.run_id = record.run_id;
-      extras.run_frames = record.frames;
-      extras.run_rows = record.rows;
-      write_checkpoint(dir_ / "checkpoint.h5", state, extras);
-      last_record_ = record;
-    });
-  }
-  // After the write: a failed one leaves the last good checkpoint's step for the message.
-  last_checkpoint_step_ = step;
+  outputs_->write_checkpoint(step, solver_->export_state(), std::move(extras));
 }
 
 void BowShockRun::finish(bool completed) {
   FieldSumsRecord sums;
-  sums.sampling = sampling_.layout();
+  sums.sampling = sampling_->layout();
   sums.grid_sums = solver_->field_sums(false);
   if (sums.sampling.has_profile()) sums.profile_sums = solver_->field_sums(true);
   sums.samples = samples_;
-  sums.production_start = scene_.run.production_start_s;
-  sums.production_end = scene_.run.duration_s;
-  sums.sample_every = scene_.run.sample_every;
-  sums.y_end = scene_.setup.box.hi[1];
+  sums.production_start = scene().run.production_start_s;
+  sums.production_end = scene().run.duration_s;
+  sums.sample_every = scene().run.sample_every;
+  sums.y_end = scene().setup.box.hi[1];
   const double wall = wall_before_ + meter_->elapsed_s();
   const long steps = solver_->steps_done();
   const bool counted = launches_.running();
   const LaunchCounts launched = launches_.stop();
   nlohmann::json j =
-      run_summary(scene_, *solver_, inflow_, calibration_ ? &*calibration_ : nullptr, completed,
-                  {wall, cpu_seconds_so_far(), meter_->elapsed_s(), particle_steps_});
+      run_summary(scene(), *solver_, *inflow_, prepared_->inlet ? &*prepared_->inlet : nullptr,
+                  completed, {wall, cpu_seconds_so_far(), meter_->elapsed_s(), particle_steps_});
   // Several processes: how the work was shared (one process: nothing to say).
   if (comm_.size() > 1) j["processes"] = processes_summary();
   if (const nlohmann::json moves = backends_.summary(); !moves.is_null())
@@ -652,28 +431,21 @@ void BowShockRun::finish(bool completed) {
   if (!extensions_.empty()) j["extensions"] = extensions_;
   // A leg that ran no step (--resume of a completed run) measured no rate: the earlier
   // leg's stays.
-  if (particle_steps_ == 0 && earlier_rate_.is_number())
-    j["particle_steps_per_second"] = earlier_rate_;
+  if (particle_steps_ == 0 && earlier_.rate.is_number())
+    j["particle_steps_per_second"] = earlier_.rate;
   // Every leg's warnings (docs/stability.md), the earlier legs' first.
   nlohmann::json warnings =
-      earlier_warnings_.is_array() ? earlier_warnings_ : nlohmann::json::array();
+      earlier_.warnings.is_array() ? earlier_.warnings : nlohmann::json::array();
   for (const std::string& w : log_.warnings())
     if (std::find(warnings.begin(), warnings.end(), w) == warnings.end()) warnings.push_back(w);
   j["warnings"] = warnings;
-  writing([&] {
-    write_field_sums(*run_file_, sums);
-    run_file_->flush();
-    write_file_atomically(dir_ / "summary.json", j.dump(2) + "\n");
-  });
-  if (completed && run_file_) {
-    // The field analysis reads run.h5, which must be closed first.
-    run_file_.reset();
-    if (run_has_field_sums(dir_)) analyse();
-  }
+  outputs_->write_end(sums, j);
+  // The field analysis reads run.h5, which must be closed first.
+  if (completed && outputs_->close_run_file() && run_has_field_sums(dir_)) analyse();
   const std::string done = fmt::format(
       "granshock: {} done: {} steps, {:.4g} s simulated in {:.1f} s wall, {:.3g} "
       "particle-steps/s, {} particles at the end; results in {}",
-      scene_.name, steps, steps * scene_.setup.dt, wall,
+      scene().name, steps, steps * scene().setup.dt, wall,
       j["particle_steps_per_second"].get<double>(), j["particles_final"].get<long>(),
       dir_.string());
   if (completed) log_.record(done);
@@ -709,8 +481,8 @@ void BowShockRun::advance_slice(long steps) {
 
 // A new solver on `backend`, set up as this run's, without particles.
 std::unique_ptr<Solver> BowShockRun::make_run_solver(Backend backend, std::size_t capacity) const {
-  std::unique_ptr<Solver> solver = make_solver(scene_.setup, capacity, backend, &comm_);
-  solver->configure_sampling(sampling_.layout());
+  std::unique_ptr<Solver> solver = make_solver(scene().setup, capacity, backend, &comm_);
+  solver->configure_sampling(sampling_->layout());
   solver->decompose(decomposition_);
   return solver;
 }
@@ -720,47 +492,47 @@ std::unique_ptr<Solver> BowShockRun::make_run_solver(Backend backend, std::size_
 nlohmann::json BowShockRun::processes_summary() const {
   const HaloStats halo = solver_->halo_stats();
   const double wall = meter_->elapsed_s();
-  return {
-      {"count", comm_.size()},
-      {"slabs_along", choice_name(options_.slabs)},
-      {"balance", choice_name(options_.balance)},
-      {"particles_per_rank", gather_to_root(comm_, long(solver_->size()))},
-      {"ghosts_per_rank", gather_to_root(comm_, halo.ghosts)},
-      {"halo_share_per_rank", gather_to_root(comm_, wall > 0 ? halo.seconds / wall : 0.0)},
-      {"rebuild_exchange_share_per_rank",
-       gather_to_root(comm_, wall > 0 ? halo.rebuild_seconds / wall : 0.0)},
-      {"sync_share_per_rank", gather_to_root(comm_, wall > 0 ? halo.sync_seconds / wall : 0.0)},
-      {"halo_bytes_sent_per_rank", gather_to_root(comm_, halo.bytes_sent)},
-      {"rebalances", halo.rebalances},
-      {"migrated_per_rank", gather_to_root(comm_, halo.migrated)},
-      // Output (docs/scaling.md): how snapshots were written, and rank 0's seconds per
-      // snapshot (either way) and per checkpoint (gathered to rank 0, written there).
-      {"snapshot_output", choice_name(options_.snapshot_output)},
-      {"snapshots_written_collectively", output_.collective_snapshots},
-      {"snapshot_seconds_each",
-       output_.snapshots > 0 ? output_.snapshot_seconds / double(output_.snapshots) : 0.0},
-      {"checkpoint_seconds_each",
-       output_.checkpoints > 0 ? output_.checkpoint_seconds / double(output_.checkpoints) : 0.0}};
+  const OutputCost& cost = outputs_->cost();
+  return {{"count", comm_.size()},
+          {"slabs_along", choice_name(options_.slabs)},
+          {"balance", choice_name(options_.balance)},
+          {"particles_per_rank", gather_to_root(comm_, long(solver_->size()))},
+          {"ghosts_per_rank", gather_to_root(comm_, halo.ghosts)},
+          {"halo_share_per_rank", gather_to_root(comm_, wall > 0 ? halo.seconds / wall : 0.0)},
+          {"rebuild_exchange_share_per_rank",
+           gather_to_root(comm_, wall > 0 ? halo.rebuild_seconds / wall : 0.0)},
+          {"sync_share_per_rank", gather_to_root(comm_, wall > 0 ? halo.sync_seconds / wall : 0.0)},
+          {"halo_bytes_sent_per_rank", gather_to_root(comm_, halo.bytes_sent)},
+          {"rebalances", halo.rebalances},
+          {"migrated_per_rank", gather_to_root(comm_, halo.migrated)},
+          // Output (docs/scaling.md): how snapshots were written, and rank 0's seconds per
+          // snapshot (either way) and per checkpoint (gathered to rank 0, written there).
+          {"snapshot_output", choice_name(options_.snapshot_output)},
+          {"snapshots_written_collectively", cost.collective_snapshots},
+          {"snapshot_seconds_each",
+           cost.snapshots > 0 ? cost.snapshot_seconds / double(cost.snapshots) : 0.0},
+          {"checkpoint_seconds_each",
+           cost.checkpoints > 0 ? cost.checkpoint_seconds / double(cost.checkpoints) : 0.0}};
 }
 
 // docs/scene_format.md, "The inflow": a strip that cannot take what the inflow asks for
 // (area fraction near the insertion limit, a shock reaching the inlet) is reported, once,
 // as soon as the shortfall passes InflowController::kShortfallWarning.
 void BowShockRun::warn_if_inflow_falls_short() {
-  if (warned_inflow_ || !inflow_.falls_short()) return;
+  if (warned_inflow_ || !inflow_->falls_short()) return;
   warned_inflow_ = true;
   log_.warn(fmt::format(
       "the inflow falls short: {:.0f} of {:.0f} requested particles ({:.1f}%) found no room "
       "in the insertion strip by t = {:.4g} s; phi_inf will be below its target {:g} "
       "(summary.json: inflow)",
-      inflow_.shortfall(), inflow_.requested(), 100 * inflow_.shortfall() / inflow_.requested(),
-      solver_->time(), scene_.inflow.area_fraction));
+      inflow_->shortfall(), inflow_->requested(), 100 * inflow_->shortfall() / inflow_->requested(),
+      solver_->time(), scene().inflow.area_fraction));
 }
 
 std::string BowShockRun::inflow_note() const {
-  if (inflow_.shortfall() < 1.0) return {};
-  return fmt::format("inflow short by {:.0f} ({:.1f}%, backlog {:.0f})", inflow_.shortfall(),
-                     100 * inflow_.shortfall() / inflow_.requested(), inflow_.backlog());
+  if (inflow_->shortfall() < 1.0) return {};
+  return fmt::format("inflow short by {:.0f} ({:.1f}%, backlog {:.0f})", inflow_->shortfall(),
+                     100 * inflow_->shortfall() / inflow_->requested(), inflow_->backlog());
 }
 
 }  // namespace granshock

@@ -17,10 +17,13 @@
 #include "cases/bow_shock/backend_mover.hpp"
 #include "cases/bow_shock/inflow.hpp"
 #include "cases/bow_shock/inlet_calibration.hpp"
+#include "cases/bow_shock/prepared_scene.hpp"
 #include "cases/bow_shock/progress_meter.hpp"
 #include "cases/bow_shock/run_extension.hpp"
 #include "cases/bow_shock/run_log.hpp"
 #include "cases/bow_shock/run_options.hpp"
+#include "cases/bow_shock/run_outputs.hpp"
+#include "cases/bow_shock/run_resume.hpp"
 #include "cases/bow_shock/sampling_plan.hpp"
 #include "cases/bow_shock/thermo_table.hpp"
 #include "core/checkpoint_extras.hpp"
@@ -51,15 +54,11 @@ class BowShockRun {
   void prepare();
   void open_run_file();
   int advance_to_end();
-  std::string what_survives();
   void analyse();
   std::string interrupted_message(int signal) const;
   std::string resume_command() const;
   long agreed_next_step(long step);
-  bool calibrate_inflow();       // true when it changed sigma (inflow.mach_at = "inlet_bins")
-  bool calibrate_restitution();  // true when it set the damping (restitution_mode = "discrete")
   void start_fresh();
-  void read_checkpoint_and_check();
   void resume();
   nlohmann::json processes_summary() const;
   void actions_at(long step);
@@ -71,7 +70,6 @@ class BowShockRun {
   double cpu_seconds_so_far() const;
   void write_checkpoint_now();
   void finish(bool completed);
-  void read_earlier_summary();
   void warn_if_inflow_falls_short();
   std::string inflow_note() const;
   void advance_slice(long steps);
@@ -84,45 +82,35 @@ class BowShockRun {
   ThermoFile thermo_;  // thermo.txt (rank 0's)
   long last_thermo_step_ = -1;
   LaunchCounter launches_;  // over the time loop of this leg
-  LoadedScene loaded_;
-  const Scene& scene_;
+  LoadedScene given_;       // the scene as loaded, until prepare() makes prepared_ of it
+  // The scene this run runs, checked and calibrated once (prepared_scene.hpp), and what
+  // follows from it; set by prepare() and not changed after.
+  std::optional<const PreparedScene> prepared_;
+  const Scene& scene() const { return prepared_->scene(); }
   std::filesystem::path dir_;
   DirectoryMode mode_ = DirectoryMode::create;
-  SolverState checkpoint_state_;  // --resume: read and checked, until the solver takes it
-  CheckpointExtras checkpoint_extras_;
-  InflowController inflow_;
-  SamplingPlan sampling_;
+  std::optional<ResumePoint> resume_point_;  // --resume: read and checked (run_resume.hpp)
+  std::optional<InflowController> inflow_;
+  std::optional<SamplingPlan> sampling_;
   std::unique_ptr<Solver> solver_;
   Decomposition decomposition_;
-  BackendMover backends_;  // threads or one thread (backend_mover.hpp)
-  std::optional<RunFile> run_file_;
+  BackendMover backends_;              // threads or one thread (backend_mover.hpp)
+  std::optional<RunOutputs> outputs_;  // run.h5, checkpoint.h5, summary.json (run_outputs.hpp)
   Schedule series_{1}, snapshots_{1}, checkpoints_{1};
   long total_steps_ = 0, first_step_ = 0;
   double wall_before_ = 0;       // wall seconds of earlier legs (resumed runs)
   double cpu_before_ = 0;        // CPU seconds of earlier legs, all processes; -1: not known
   double cpu_at_leg_start_ = 0;  // this process's CPU clock when the time loop started
   double particle_steps_ = 0;    // particle-steps of this leg
-  // --resume: what the summary.json of the earlier legs said (null where it said nothing).
-  nlohmann::json earlier_warnings_, earlier_rate_;
-  std::vector<long> samples_;  // field samples per block
-  // --resume: what this leg changes of the checkpoint's time keys, and every extension
-  // run.h5 lists (summary.json "extensions").
-  RunExtension extension_;
-  nlohmann::json extensions_;
-  long last_checkpoint_step_ = -1;
-  RunFileRecord last_record_;  // run.h5 as the last checkpoint recorded it
-  bool claimed_ = false;       // the directory is the run's (marked, cleaned)
+  EarlierSummary earlier_;       // --resume: what the summary.json of the earlier legs said
+  std::vector<long> samples_;    // field samples per block
+  nlohmann::json extensions_;    // --resume: every extension run.h5 lists (summary.json)
+  bool claimed_ = false;         // the directory is the run's (marked, cleaned)
   std::optional<ProgressMeter> meter_;
   std::optional<RunDirectory> run_directory_;
   bool warned_inflow_ = false;
   bool warned_backflow_ = false;  // particles leaving through the inlet (run_observables.hpp)
   bool warned_energy_ = false;    // energy created by the integration (run_observables.hpp)
-  std::optional<InletCalibration> calibration_;
-  struct OutputCost {
-    double snapshot_seconds = 0, checkpoint_seconds = 0;
-    long snapshots = 0, checkpoints = 0;
-    long collective_snapshots = 0;  // of the snapshots (several processes)
-  } output_;
 };
 
 }  // namespace granshock

@@ -9,6 +9,7 @@
 
 #include "cases/accuracy/accuracy_choice.hpp"
 #include "cases/bow_shock/bow_shock_run.hpp"
+#include "cases/bow_shock/prepared_scene.hpp"
 #include "cases/bow_shock/run_checks.hpp"
 #include "core/failure_agreement.hpp"
 #include "core/shell_text.hpp"
@@ -16,7 +17,6 @@
 #include "io/checkpoint_file.hpp"
 #include "io/run_directory.hpp"
 #include "io/scene_file.hpp"
-#include "kernels/models/restitution_calibration.hpp"
 
 namespace granshock {
 
@@ -54,26 +54,24 @@ RunOptions with_run_overrides(const RunOptions& given, bool speaks) {
 
 RunCheck check_run(const RunOptions& given) {
   const RunOptions o = with_run_overrides(given, false);
-  LoadedScene loaded = load_scene_file(o.scene_file, o.overrides);
+  PrepareOptions how;
+  how.force = o.force;
+  how.certified = certified_step(o.accuracy_choice);
+  how.calibrate_inflow = false;  // the channel runs are the run's (the report says so)
+  const PreparedScene prepared = prepare_scene(load_scene_file(o.scene_file, o.overrides), how);
   RunCheck c;
-  const std::optional<CertifiedStep> certified = certified_step(o.accuracy_choice);
-  c.warnings = check_scene_before_run(loaded.scene, o.force, 1, certified);
-  // The guard again with the damping the run will calibrate (restitution_mode = "discrete").
-  if (loaded.scene.setup.contacts.restitution_mode == RestitutionMode::discrete) {
-    apply_restitution_mode(loaded.scene.setup);
-    c.warnings = check_scene_before_run(loaded.scene, o.force, 1, certified);
-  }
-  c.directory = run_directory_of(o, loaded.scene);
+  c.warnings = prepared.warnings;
+  c.directory = run_directory_of(o, prepared.scene());
   RunDirectory::check(c.directory, o.resume      ? DirectoryMode::resume
                                    : o.overwrite ? DirectoryMode::overwrite
                                                  : DirectoryMode::create);
-  c.resolved_scene = loaded.resolved;
-  const TimeStepAssessment guard = assess_time_step(loaded.scene);
+  c.resolved_scene = prepared.loaded.resolved;
+  const TimeStepAssessment guard = assess_time_step(prepared.scene());
   c.time_step = fmt::format(
       "time.dt = {:.4g} s is {:.3g} t_c ({} at {:.3g} m/s, t_c = {:.4g} s); stable limit {:.4g} s",
       guard.dt, guard.dt_over_tc(), guard.stiffest_pair, guard.impact_speed, guard.t_c,
       guard.dt_stable);
-  c.calibrates_inflow = loaded.scene.inflow.mach_at == MachReference::inlet_bins;
+  c.calibrates_inflow = prepared.scene().inflow.mach_at == MachReference::inlet_bins;
   return c;
 }
 

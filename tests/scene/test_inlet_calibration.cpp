@@ -72,17 +72,7 @@ INSTANTIATE_TEST_SUITE_P(TableOne, PaperInflows,
 // the calibration short (about 0.08 s simulated per channel run).
 TEST(InletCalibration, RunUsesReportsAndResumesTheCalibratedSigma) {
   testing::TempDir tmp;
-  std::string text = testing::small_scene(false);
-  const auto replace = [&](const std::string& from, const std::string& to) {
-    const std::size_t at = text.find(from);
-    ASSERT_NE(at, std::string::npos) << from;
-    text.replace(at, from.size(), to);
-  };
-  replace("sigma = 0.1", "mach = 13.7\nmach_at = \"inlet_bins\"");
-  replace("velocity = 1.0", "velocity = 2.375");
-  replace("width = \"40 d\"", "width = \"300 d\"");
-  replace("dt = 2e-7", "dt = 4e-7");
-  text += "[numerics]\nmass_definition = \"paper_sum\"\n";
+  const std::string text = testing::fast_inlet_scene();
   const auto scene = tmp.write("fast.toml", text);
   const std::vector<std::string> sets = {"time.duration=0.004", "time.production_start=0.002",
                                          "output.sample_every=20"};
