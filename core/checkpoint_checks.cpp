@@ -57,7 +57,8 @@ void check_shapes(const SolverState& s) {
   if (!(friction && s.history_obstacle_spring.empty()))
     expect_size("/state/history_obstacle_spring", s.history_obstacle_spring, friction ? n * dim : 0,
                 slot_rows);
-  // May be absent (a file from before it: docs/output_format.md).
+  // May be absent (a solver that held none, or a format-3 file written before it was kept:
+  // docs/output_format.md, "Checkpoint format versions").
   if (!s.contact_virial.empty())
     expect_size("/state/contact_virial", s.contact_virial, n * dim * dim, rows);
 }

@@ -31,7 +31,8 @@ struct SolverState {
   std::vector<double> history_obstacle_spring;  // n * dim
   // The contact virial of the step's last force pass, for the field sample a resumed run
   // may take at its first step (docs/fields.md, "The contact virial"): n * dim * dim, or
-  // empty where the solver held none (a checkpoint from before it).
+  // empty where the solver held none (and in format-3 checkpoints written before it was
+  // kept: io/checkpoint_file.hpp).
   std::vector<double> contact_virial;
 
   // The Verlet list and the reference positions of the skin criterion.
@@ -39,9 +40,9 @@ struct SolverState {
   std::vector<int> neighbour_offsets;      // n + 1
   std::vector<int> neighbours;             // neighbour_offsets[n]
   long list_builds = 0;
-  // The skin the list was built with (0: the scene's, as in files from before the
-  // adaptive skin) and the step of that build (adaptive skin: the next choice measures
-  // the displacement per step since then).
+  // The skin the list was built with (0: the scene's, as format-3 checkpoints written
+  // before the adaptive skin read) and the step of that build (adaptive skin: the next choice
+  // measures the displacement per step since then).
   double skin = 0;
   long last_build_step = 0;
   // Particles deleted so far through the lower/upper face of each axis.

@@ -20,8 +20,12 @@ namespace fs = std::filesystem;
 using h5::Handle;
 
 constexpr const char* kFileKind = "checkpoint";
-// 2: checksum header in a 512-byte user block (io/checkpoint_seal.hpp).
+// 2: checksum header in a 512-byte user block (io/checkpoint_seal.hpp); 3 and 4:
+// io/checkpoint_file.hpp.
 constexpr int kFormatVersion = kCheckpointFormat;
+// The first format that always holds /state@skin, /state@last_build_step and
+// /run@cpu_seconds_so_far: a file of this format or later that lacks one is refused.
+constexpr int kFormatWithEveryRecord = 4;
 
 // The stored shape of a per-particle array: [rows, tail...], rows = size / prod(tail).
 // Storing the real shape (not a flat list) lets h5py users read it as particles x
@@ -133,7 +137,9 @@ void expect_type(hid_t stored, hid_t documented) {
 // edited file must not make the reader allocate without bound.
 class Reader {
  public:
-  Reader(hid_t file, std::uintmax_t file_bytes) : file_(file), file_bytes_(file_bytes) {}
+  Reader(hid_t file, std::uintmax_t file_bytes, int format)
+      : file_(file), file_bytes_(file_bytes), format_(format) {}
+  int format() const { return format_; }
 
   template <class T>
   T attribute(const char* group, const char* name) const {
@@ -151,6 +157,12 @@ class Reader {
       if (!h5::has_attribute(g.get(), name)) return absent;
     }
     return attribute<T>(group, name);
+  }
+  // An attribute every file of format `since` or later holds; older files may lack it.
+  template <class T>
+  T attribute_since(int since, const char* group, const char* name, T absent) const {
+    return format_ >= since ? attribute<T>(group, name)
+                            : optional_attribute<T>(group, name, absent);
   }
   template <std::size_t N>
   void axes(const char* group, const char* name, std::array<long, N>& out) const {
@@ -200,6 +212,7 @@ class Reader {
 
   hid_t file_;
   std::uintmax_t file_bytes_;
+  int format_;
 };
 
 SolverState read_state(const Reader& in) {
@@ -218,16 +231,19 @@ SolverState read_state(const Reader& in) {
   s.history_partner = in.dataset<int>("/state", "history_partner");
   s.history_spring = in.dataset<double>("/state", "history_spring");
   s.history_obstacle_spring = in.dataset<double>("/state", "history_obstacle_spring");
-  // Files from before it: none (the solver then computes a sample's virial itself).
+  // Absent where the solver held none, and in format-3 files written before it was kept:
+  // the solver then computes a sample's virial itself.
   if (in.has("/state/contact_virial"))
     s.contact_virial = in.dataset<double>("/state", "contact_virial");
   s.reference_position = in.dataset<double>("/state", "reference_position");
   s.neighbour_offsets = in.dataset<int>("/state", "neighbour_offsets");
   s.neighbours = in.dataset<int>("/state", "neighbours");
   s.list_builds = in.attribute<long>("/state", "list_builds");
-  // Files from before the adaptive skin: the scene's skin, and no build step recorded.
-  s.skin = in.optional_attribute<double>("/state", "skin", 0.0);
-  s.last_build_step = in.optional_attribute<long>("/state", "last_build_step", s.step);
+  // Format 3 may lack them (written before the adaptive skin): the scene's skin, and no
+  // build step recorded.
+  s.skin = in.attribute_since<double>(kFormatWithEveryRecord, "/state", "skin", 0.0);
+  s.last_build_step =
+      in.attribute_since<long>(kFormatWithEveryRecord, "/state", "last_build_step", s.step);
   in.axes("/state", "removed_low", s.removed_low);
   in.axes("/state", "removed_high", s.removed_high);
   return s;
@@ -253,14 +269,15 @@ void read_extras(const Reader& in, hid_t file, CheckpointExtras& e) {
   e.insertion_carry = in.attribute<double>("/run", "insertion_carry");
   e.wall_seconds_so_far = in.attribute<double>("/run", "wall_seconds_so_far");
   Handle run = h5::open_group(file, "/run");
-  e.cpu_seconds_so_far = h5::has_attribute(run.get(), "cpu_seconds_so_far")
-                             ? in.attribute<double>("/run", "cpu_seconds_so_far")
-                             : -1.0;  // from before the record
+  // Format 3 may lack it (written before CPU time was kept): not known.
+  e.cpu_seconds_so_far =
+      in.attribute_since<double>(kFormatWithEveryRecord, "/run", "cpu_seconds_so_far", -1.0);
   e.bin_sums = in.dataset<double>("/run", "bin_sums");
   e.bin_shape = in.dataset<long>("/run", "bin_shape");
   e.scene_resolved = h5::read_string_dataset(file, "/scene/resolved");
   e.scene_overrides = read_overrides(in, file);
-  // The record of run.h5; absent in checkpoints from before it.
+  // The record of run.h5: absent where none was given (a checkpoint written outside a run),
+  // and in format-3 files written before run ids.
   if (h5::has_attribute(run.get(), "run_id")) {
     e.run_id = h5::read_string_attribute(run.get(), "run_id");
     e.run_frames = in.attribute<long>("/run", "run_file_frames");
@@ -292,11 +309,12 @@ std::optional<std::vector<std::string>> read_checkpoint_overrides(const fs::path
   try {
     std::error_code ec;
     if (!fs::exists(path, ec)) return std::nullopt;
-    seal::verify_file(path, kFormatVersion);  // as read_checkpoint: nothing damaged is parsed
+    // As read_checkpoint: nothing damaged is parsed.
+    const int format = seal::verify_file(path, kOldestCheckpointFormat, kFormatVersion);
     const hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
     if (id < 0) return std::nullopt;
     Handle file(id, H5Fclose);
-    return read_overrides(Reader(file.get(), fs::file_size(path)), file.get());
+    return read_overrides(Reader(file.get(), fs::file_size(path), format), file.get());
   } catch (const std::exception&) {
     return std::nullopt;  // read_checkpoint says what is wrong
   }
@@ -306,20 +324,20 @@ SolverState read_checkpoint(const fs::path& path, CheckpointExtras& extras) {
   const char* doing = "read checkpoint";
   h5::require_existing(path, doing);
   // Before HDF5 parses anything: damaged metadata must never reach the library.
-  seal::verify_file(path, kFormatVersion);
+  const int format = seal::verify_file(path, kOldestCheckpointFormat, kFormatVersion);
   Handle file = h5::open_existing_file(path, H5F_ACC_RDONLY, doing);
   return h5::naming_file_in_errors(path, "reading checkpoint", [&] {
     const hid_t f = file.get();
     if (!h5::is_granshock_file(f, kFileKind))
       throw h5::cannot_open(doing, path, "not a granshock checkpoint");
     const int version = h5::read_attribute<int>(f, "granshock_format_version");
-    if (version != kFormatVersion) {
+    if (version != format) {
       throw h5::cannot_open(doing, path,
                             "@granshock_format_version " + std::to_string(version) +
-                                " disagrees with its header's " + std::to_string(kFormatVersion));
+                                " disagrees with its header's " + std::to_string(format));
     }
 
-    const Reader in(f, fs::file_size(path));
+    const Reader in(f, fs::file_size(path), format);
     SolverState s = read_state(in);
     read_extras(in, f, extras);
     try {

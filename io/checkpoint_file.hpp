@@ -13,9 +13,14 @@
 
 namespace granshock {
 
-// The layout version of checkpoint.h5 this granshock writes and reads
-// (docs/output_format.md). 3: /state/history_wall_spring became history_obstacle_spring.
-inline constexpr int kCheckpointFormat = 3;
+// The layout versions of checkpoint.h5 (docs/output_format.md, "Checkpoint format
+// versions"): this granshock writes kCheckpointFormat and reads every format from
+// kOldestCheckpointFormat on.
+// 3: /state/history_wall_spring became history_obstacle_spring.
+// 4: /state@skin, /state@last_build_step and /run@cpu_seconds_so_far are always present
+//    (format 3 files may lack each of them), and a format-4 file lacking one is refused.
+inline constexpr int kCheckpointFormat = 4;
+inline constexpr int kOldestCheckpointFormat = 3;
 
 // Writes path + ".tmp", closes and syncs it, then renames it over `path`. Throws
 // UserError naming the path when the directory is not writable (no .tmp is left), and
@@ -24,8 +29,8 @@ void write_checkpoint(const std::filesystem::path& path, const SolverState& stat
                       const CheckpointExtras& extras);
 
 // The --set overrides a checkpoint's run was set up with (CheckpointExtras), or nothing
-// when it holds none (from before they were kept), is missing or cannot be read
-// (read_checkpoint then says why).
+// when it holds none (a format-3 file may not: CheckpointExtras::scene_overrides), is
+// missing or cannot be read (read_checkpoint then says why).
 std::optional<std::vector<std::string>> read_checkpoint_overrides(
     const std::filesystem::path& path);
 

@@ -105,6 +105,12 @@ Parsed parse(const std::string& block, Header& h) {
   return complete ? Parsed::complete : Parsed::version_only;
 }
 
+// "3 to 4", or "4" where one version is read.
+std::string versions(int oldest, int newest) {
+  return oldest == newest ? std::to_string(newest)
+                          : std::to_string(oldest) + " to " + std::to_string(newest);
+}
+
 }  // namespace
 
 std::string header(int format_version, std::uint64_t hashed_bytes, std::uint64_t hash) {
@@ -129,7 +135,7 @@ void seal_file(const fs::path& file, int format_version) {
     throw std::runtime_error(put < 0 ? std::strerror(saved) : "short write");
 }
 
-void verify_file(const fs::path& file, int format_version) {
+int verify_file(const fs::path& file, int oldest, int newest) {
   const std::string where = "checkpoint '" + file.string() + "'";
   const RegularFile opened(file, "checkpoint");  // a FIFO would block the reads forever
   const int fd = opened.fd();
@@ -152,17 +158,17 @@ void verify_file(const fs::path& file, int format_version) {
     if (starts_with(block, hdf5))
       throw UserError("cannot read " + where +
                       ": it has no checksum header, so it is a checkpoint of format version 1 "
-                      "(this granshock reads format version " +
-                      std::to_string(format_version) +
+                      "(this granshock reads format versions " +
+                      versions(oldest, newest) +
                       ") or not a granshock checkpoint at all; rerun with --overwrite");
     throw UserError("cannot read " + where + ": not a granshock checkpoint");
   }
   Header h;
   const Parsed parsed = block.size() < kUserBlockBytes ? Parsed::broken : parse(block, h);
   if (parsed == Parsed::broken) throw UserError(damaged(file, "checksum header unreadable"));
-  if (h.version != format_version)
+  if (h.version < oldest || h.version > newest)
     throw UserError(where + " has format version " + std::to_string(h.version) +
-                    "; this granshock reads format version " + std::to_string(format_version) +
+                    "; this granshock reads format versions " + versions(oldest, newest) +
                     ": resume it with the granshock that wrote it, or rerun with --overwrite");
   if (parsed != Parsed::complete) throw UserError(damaged(file, "checksum header unreadable"));
   if (size - kUserBlockBytes != h.hashed_bytes)
@@ -176,6 +182,7 @@ void verify_file(const fs::path& file, int format_version) {
     throw UserError("cannot read " + where + ": " + e.what());
   }
   if (hash != h.hash) throw UserError(damaged(file, "checksum mismatch"));
+  return h.version;
 }
 
 }  // namespace granshock::seal

@@ -20,9 +20,10 @@ std::string header(int format_version, std::uint64_t hashed_bytes, std::uint64_t
 // Throws std::runtime_error when the file cannot be read or written.
 void seal_file(const std::filesystem::path& file, int format_version);
 
-// Checks the header, the file's length and its hash. Throws UserError with one line
-// naming `file` and the cause: damaged, written in another format version (format 1 had
-// no header), or not a granshock checkpoint at all.
-void verify_file(const std::filesystem::path& file, int format_version);
+// Checks the header, the file's length and its hash; returns the header's format version.
+// Throws UserError with one line naming `file` and the cause: damaged, written in a format
+// version outside [oldest, newest] (format 1 had no header), or not a granshock checkpoint
+// at all.
+int verify_file(const std::filesystem::path& file, int oldest, int newest);
 
 }  // namespace granshock::seal

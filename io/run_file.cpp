@@ -32,8 +32,7 @@ namespace fs = std::filesystem;
 using h5::Handle;
 
 constexpr const char* kFileKind = "run";
-// 2: snapshots add radius and, with friction, angular_velocity (docs/output_format.md).
-constexpr int kFormatVersion = 2;
+constexpr int kFormatVersion = kRunFileFormat;  // io/run_file.hpp
 constexpr const char* kSpeciesRadius = "/parameters/species_radius";
 constexpr std::uintmax_t kMostPromised = std::uintmax_t(1) << 20;
 
@@ -87,6 +86,10 @@ std::string new_run_id() {
 std::string read_run_id(hid_t file) {
   return h5::has_attribute(file, kRunIdAttribute) ? h5::read_string_attribute(file, kRunIdAttribute)
                                                   : std::string();
+}
+
+int read_format_version(hid_t file) {
+  return h5::read_attribute<int>(file, "granshock_format_version");
 }
 
 }  // namespace run_file_detail

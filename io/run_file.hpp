@@ -39,10 +39,20 @@ struct SnapshotContents {
 
 // What a checkpoint records of the run file beside it (docs/output_format.md, "What a
 // resume checks"): the run's identity and the entries run.h5 held when it was written.
+// The layout versions of run.h5 (docs/output_format.md, "Format versions"): this granshock
+// writes kRunFileFormat and reads formats 1 to it; a resumed run keeps its file's format.
+// 2: snapshots add radius and, with friction, angular_velocity.
+// 3: a run id, the /xdmf frame views and snapshot chunks made as a frame grows (collective
+//    output) always (format-2 files may lack each); a format-3 file without a run id is
+//    refused on resume.
+inline constexpr int kRunFileFormat = 3;
+
 struct RunFileRecord {
-  std::string run_id;  // empty: a checkpoint from before the record, which is not checked
-  long frames = -1;    // snapshot frames
-  long rows = -1;      // time-series rows
+  // Empty: a checkpoint that recorded none (format-3 checkpoints written before run ids,
+  // or one written outside a run), which is not checked.
+  std::string run_id;
+  long frames = -1;  // snapshot frames
+  long rows = -1;    // time-series rows
 };
 
 class RunFile {
@@ -59,7 +69,8 @@ class RunFile {
   // frames, time-series rows) whose step is after checkpoint_step. Throws UserError, with
   // the file unchanged, when it is missing, is not a granshock run file, or does not match
   // the checkpoint's record: another run's, or holding other entries up to its step. A
-  // checkpoint from before the record is not checked; a file without a run id gets one.
+  // checkpoint without a record (RunFileRecord::run_id) is not checked; a file without a
+  // run id (run.h5 format 1, or format 2 written before run ids) gets one.
   static RunFile open_for_resume(const std::filesystem::path& path, long checkpoint_step,
                                  const RunFileRecord& checkpoint);
 

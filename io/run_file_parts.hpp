@@ -31,7 +31,10 @@ int read_dim(hid_t file);
 // A random identity for a new run, written into run.h5 and every checkpoint of the run so
 // that a resume never joins files of two runs (docs/output_format.md).
 std::string new_run_id();
-std::string read_run_id(hid_t file);  // empty: a file from before run ids
+// Empty: a file without one (format 1, or 2 written before run ids).
+std::string read_run_id(hid_t file);
+// The file's @granshock_format_version.
+int read_format_version(hid_t file);
 
 // --- run_file_series.cpp: time-indexed elements, H5MD style ------------------------------
 // Creates GROUP/{step,time,value} for a time-indexed quantity, H5MD style. `tail` is

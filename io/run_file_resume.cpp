@@ -76,8 +76,9 @@ Entries entries_up_to(hid_t file, const std::string& group_path, long step) {
 // file: the same run id, and the frames and rows it recorded, at or before its step.
 void check_against_checkpoint(hid_t file, const fs::path& path, long step,
                               const RunFileRecord& checkpoint) {
-  // A checkpoint from before the record cannot be checked (and a resume that stopped
-  // before writing a checkpoint with a record must be able to start again from it).
+  // A checkpoint without a record (RunFileRecord::run_id) cannot be checked (and a resume
+  // that stopped before writing a checkpoint with a record must be able to start again
+  // from it).
   if (checkpoint.run_id.empty()) return;
   const std::string id = read_run_id(file);
   if (checkpoint.run_id != id)
@@ -108,6 +109,13 @@ RunFile RunFile::open_for_resume(const fs::path& path, long checkpoint_step,
                                  const RunFileRecord& checkpoint) {
   Handle file = open_existing(path, H5F_ACC_RDWR, "resume");
   h5::naming_file_in_errors(path, "resuming", [&] {
+    // Every file of format 3 or later was given a run id when it was made: one without is
+    // not a file granshock wrote as it stands.
+    if (read_format_version(file.get()) >= 3 && read_run_id(file.get()).empty())
+      throw UserError(fmt::format(
+          "cannot resume '{}': it has no @run_id, which every run file of format 3 holds; it "
+          "was edited or damaged: start again with --overwrite",
+          path.string()));
     check_against_checkpoint(file.get(), path, checkpoint_step, checkpoint);
   });
   const int dim = h5::naming_file_in_errors(path, "resuming", [&] { return read_dim(file.get()); });
@@ -119,7 +127,8 @@ RunFile RunFile::open_for_resume(const fs::path& path, long checkpoint_step,
     h5::check(H5Lvisit(f, H5_INDEX_NAME, H5_ITER_INC, collect_step_groups, &groups),
               "listing the time series");
     for (const std::string& group : groups) truncate_after(f, group, checkpoint_step);
-    // A run from before the record: from now on its checkpoints record this file.
+    // A file without a run id (format 1, or 2 written before run ids): from now on its
+    // checkpoints record this file.
     if (read_run_id(f).empty()) h5::write_attribute(f, kRunIdAttribute, new_run_id());
   });
   run.flush();

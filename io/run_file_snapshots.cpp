@@ -56,7 +56,8 @@ void write_frame_rows(hid_t dataset, const std::vector<hsize_t>& new_dims, hsize
 }
 
 // Whether the snapshot datasets make a frame's chunks when they grow to it, as parallel
-// HDF5 needs (create_time_element); files from before collective output do not.
+// HDF5 needs (create_time_element); format-1 files, and format-2 files written before
+// collective output, do not.
 bool snapshot_chunks_made_early(hid_t file) {
   Handle set = h5::open_dataset(file, std::string(kParticles) + "/position/value");
   Handle props = h5::plist(H5Dget_create_plist(set.get()), "reading dataset properties");
@@ -101,8 +102,8 @@ std::uintmax_t RunFile::completion_growth(long total) const {
   return h5::naming_file_in_errors(path_, "reading", [&] {
     const hid_t f = file_.get();
     const long frames = long(series_end(f, std::string(kParticles) + "/count").entries);
-    // The new frame's views, and those of earlier frames without any (a file from before
-    // views, resumed).
+    // The new frame's views, and those of earlier frames without any (a format-1 file, or a
+    // format-2 file written before frame views, resumed).
     long without_views = 1;
     for (long k = 0; k < frames; ++k) without_views += h5::exists(f, frame_view_group(k)) ? 0 : 1;
     const long vertices = vertex_index_length(f);

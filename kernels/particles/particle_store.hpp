@@ -46,7 +46,8 @@ struct StateArray {
   Member member;
   unsigned roles = kept_at_home;
   Host rest = 0;
-  // A state may lack it (a checkpoint from before it existed): the array then holds `rest`
+  // A state may lack it (a format-3 checkpoint written before it was kept,
+  // io/checkpoint_file.hpp): the array then holds `rest`
   // and the solver knows it was not given (StateTransfer::import_state).
   bool may_be_absent = false;
 };

@@ -154,8 +154,8 @@ class StateTransfer {
   }
 
  private:
-  // The skin a state's list was built with: the scene's unless the skin adapts (files
-  // from before the adaptive skin store 0, the scene's).
+  // The skin a state's list was built with: the scene's unless the skin adapts (format-3
+  // checkpoints written before the adaptive skin read as 0, the scene's).
   Real state_skin(const SolverState& st) const {
     const auto& setup = s_.setup;
     if (st.skin == 0 || Real(st.skin) == Real(setup.skin())) return Real(setup.skin());

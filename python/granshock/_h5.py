@@ -8,7 +8,7 @@ import numpy as np
 from .errors import GranshockError
 
 # The newest format of each file this reader knows (the files' @granshock_format_version).
-KNOWN_FORMATS = {"run": 2, "fields": 2}
+KNOWN_FORMATS = {"run": 3, "fields": 2}
 
 
 def text(value):

@@ -26,7 +26,7 @@ def text(value):
 def check_run(path, dim, counts, species_radius, spin):
     frames, n_max = len(counts), max(counts)
     with h5py.File(path, "r") as f:
-        expect(int(f.attrs["granshock_format_version"]) == 2, f"{path}: format version")
+        expect(int(f.attrs["granshock_format_version"]) == 3, f"{path}: format version")
         expect(list(f["h5md"].attrs["version"]) == [1, 1], f"{path}: /h5md version")
         expect(text(f["h5md/creator"].attrs["name"]) == "granshock", f"{path}: creator name")
         expect("version" in f["h5md/creator"].attrs, f"{path}: creator version")
@@ -142,7 +142,7 @@ def check_checkpoint_header(path):
     block, body = raw[:512], raw[512:]
     text = block.rstrip(b"\0").decode()
     lines = text.splitlines()
-    expect(lines[:2] == ["granshock checkpoint", "format_version 3"], f"{path}: header {lines}")
+    expect(lines[:2] == ["granshock checkpoint", "format_version 4"], f"{path}: header {lines}")
     expect(lines[2] == f"hashed_bytes {len(body)}", f"{path}: hashed_bytes")
     expect(lines[3] == f"hash {gshash64(body):016x}", f"{path}: hash")
     head = text[:text.rindex("header_hash ")].encode()

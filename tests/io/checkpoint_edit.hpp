@@ -21,14 +21,16 @@ inline void h5_ok(herr_t status, const std::string& what) {
   if (status < 0) throw std::runtime_error("test edit failed: " + what);
 }
 
-// Recomputes the checksum header of `file` as write_checkpoint does.
-inline void reseal(const std::filesystem::path& file) {
-  seal::seal_file(file, kCheckpointFormat);
+// Recomputes the checksum header of `file` as write_checkpoint does (or as a granshock
+// writing format `format` did).
+inline void reseal(const std::filesystem::path& file, int format = kCheckpointFormat) {
+  seal::seal_file(file, format);
 }
 
-// Opens `file` read-write, runs `edit`, closes it and re-seals it.
+// Opens `file` read-write, runs `edit`, closes it and re-seals it (as format `format`).
 inline void edit_checkpoint(const std::filesystem::path& file,
-                            const std::function<void(hid_t file)>& edit) {
+                            const std::function<void(hid_t file)>& edit,
+                            int format = kCheckpointFormat) {
   const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
   if (f < 0) throw std::runtime_error("test edit: cannot open " + file.string());
   try {
@@ -38,7 +40,17 @@ inline void edit_checkpoint(const std::filesystem::path& file,
     throw;
   }
   h5_ok(H5Fclose(f), "closing");
-  reseal(file);
+  reseal(file, format);
+}
+
+// Inside an edit: the root's @granshock_format_version set to `format`, as a granshock
+// that wrote that format did (seal with the same format: edit_checkpoint's last argument).
+inline void set_format_version(hid_t file, int format) {
+  const hid_t a = H5Aopen(file, "granshock_format_version", H5P_DEFAULT);
+  h5_ok(a, "opening @granshock_format_version");
+  const herr_t written = H5Awrite(a, H5T_NATIVE_INT, &format);
+  H5Aclose(a);
+  h5_ok(written, "writing @granshock_format_version");
 }
 
 // A dataset read whole in its own type (native memory layout), with its shape.

@@ -263,24 +263,78 @@ TEST(Checkpoint, ReadingWhatIsNotACheckpointIsAUserError) {
   }
 }
 
-// Checkpoints from before the adaptive skin have neither attribute: they read as the
-// scene's skin (0) with the last build at the stored step.
-TEST(Checkpoint, FileWithoutSkinAttributesReadsAsTheScenesSkin) {
+// Format-3 checkpoints written before the adaptive skin and the CPU-time record lack
+// @skin, @last_build_step and @cpu_seconds_so_far: they read as the scene's skin (0), the
+// last build at the stored step and an unknown CPU time (io/checkpoint_file.hpp). Format 4
+// always holds them: a format-4 file without one is refused, naming it.
+void delete_format_four_records(hid_t f) {
+  const hid_t state = H5Gopen2(f, "/state", H5P_DEFAULT);
+  test::h5_ok(H5Adelete(state, "skin"), "deleting @skin");
+  test::h5_ok(H5Adelete(state, "last_build_step"), "deleting @last_build_step");
+  H5Gclose(state);
+  const hid_t run = H5Gopen2(f, "/run", H5P_DEFAULT);
+  test::h5_ok(H5Adelete(run, "cpu_seconds_so_far"), "deleting @cpu_seconds_so_far");
+  H5Gclose(run);
+}
+
+TEST(Checkpoint, FormatThreeWithoutSkinOrCpuTimeReadsAsTheScenesSkin) {
   TempDir dir;
   const auto path = dir / "checkpoint.h5";
   const SolverState state = make_state<double>(8, 2, 0, 4);
   write_checkpoint(path, state, make_extras());
-  test::edit_checkpoint(path, [](hid_t f) {
-    const hid_t group = H5Gopen2(f, "/state", H5P_DEFAULT);
-    test::h5_ok(H5Adelete(group, "skin"), "deleting @skin");
-    test::h5_ok(H5Adelete(group, "last_build_step"), "deleting @last_build_step");
-    H5Gclose(group);
-  });
+  test::edit_checkpoint(
+      path,
+      [](hid_t f) {
+        delete_format_four_records(f);
+        test::set_format_version(f, 3);
+      },
+      3);
   CheckpointExtras extras;
   const SolverState back = read_checkpoint(path, extras);
   EXPECT_EQ(back.skin, 0.0);
   EXPECT_EQ(back.last_build_step, state.step);
+  EXPECT_EQ(extras.cpu_seconds_so_far, -1.0);
   EXPECT_TRUE(same_bits(back.position, state.position));
+}
+
+TEST(Checkpoint, FormatFourWithoutSkinIsRefused) {
+  TempDir dir;
+  const auto path = dir / "checkpoint.h5";
+  write_checkpoint(path, make_state<double>(8, 2, 0, 4), make_extras());
+  test::edit_checkpoint(path, delete_format_four_records);
+  CheckpointExtras extras;
+  try {
+    read_checkpoint(path, extras);
+    FAIL() << "a format-4 checkpoint without /state@skin was read";
+  } catch (const UserError& e) {
+    EXPECT_NE(std::string(e.what()).find("/state@skin"), std::string::npos) << e.what();
+  }
+}
+
+// A format-3 checkpoint whose contents are format 4's reads the same (every file this
+// granshock wrote before format 4 did is such a file), and a root that disagrees with
+// its header is refused.
+TEST(Checkpoint, FormatThreeReadsAsFormatFour) {
+  TempDir dir;
+  const auto path = dir / "checkpoint.h5";
+  const SolverState state = make_state<double>(8, 2, 0, 4);
+  write_checkpoint(path, state, make_extras());
+  test::edit_checkpoint(
+      path, [](hid_t f) { test::set_format_version(f, 3); }, 3);
+  CheckpointExtras extras;
+  const SolverState back = read_checkpoint(path, extras);
+  EXPECT_EQ(back.skin, state.skin);
+  EXPECT_EQ(back.last_build_step, state.last_build_step);
+  EXPECT_EQ(extras.cpu_seconds_so_far, make_extras().cpu_seconds_so_far);
+  test::edit_checkpoint(
+      path, [](hid_t f) { test::set_format_version(f, 4); }, 3);
+  try {
+    read_checkpoint(path, extras);
+    FAIL() << "a root format that disagrees with the header was read";
+  } catch (const UserError& e) {
+    EXPECT_NE(std::string(e.what()).find("disagrees with its header's 3"), std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(Checkpoint, StoresNaturalShapes) {

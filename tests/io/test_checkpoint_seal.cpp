@@ -92,7 +92,8 @@ TEST(CheckpointSeal, HeaderIsTextInTheUserBlockAndHdf5StillReadsTheFile) {
   write_checkpoint(path, small_state(4), CheckpointExtras{});
   const std::string bytes = test::read_bytes(path);
   ASSERT_GT(bytes.size(), seal::kUserBlockBytes);
-  const std::string expected = "granshock checkpoint\nformat_version 3\nhashed_bytes " +
+  const std::string expected = "granshock checkpoint\nformat_version " +
+                               std::to_string(kCheckpointFormat) + "\nhashed_bytes " +
                                std::to_string(bytes.size() - seal::kUserBlockBytes) + "\nhash ";
   EXPECT_EQ(bytes.compare(0, expected.size(), expected), 0) << bytes.substr(0, 120);
   EXPECT_EQ(bytes.compare(seal::kUserBlockBytes, 4, "\x89HDF"), 0);
@@ -166,7 +167,9 @@ TEST(CheckpointSeal, NewerFormatVersionIsNamedNotCalledDamage) {
   write_checkpoint(path, small_state(3), CheckpointExtras{});
   std::string bytes = test::read_bytes(path);
   // A future format with a valid header of its own (the header hashes itself).
-  std::string text = "granshock checkpoint\nformat_version 4\nsomething new\n";
+  const int future = kCheckpointFormat + 1;
+  std::string text =
+      "granshock checkpoint\nformat_version " + std::to_string(future) + "\nsomething new\n";
   text += "header_hash " + [&] {
     char hex[17];
     std::snprintf(hex, sizeof hex, "%016llx",
@@ -177,7 +180,9 @@ TEST(CheckpointSeal, NewerFormatVersionIsNamedNotCalledDamage) {
   bytes.replace(0, seal::kUserBlockBytes, text);
   test::write_bytes(path, bytes);
   const std::string message = refusal(path);
-  EXPECT_NE(message.find("format version 4"), std::string::npos) << message;
+  EXPECT_NE(message.find("has format version " + std::to_string(future)), std::string::npos)
+      << message;
+  EXPECT_NE(message.find("reads format versions 3 to 4"), std::string::npos) << message;
   EXPECT_EQ(message.find("damaged"), std::string::npos) << message;
 }
 

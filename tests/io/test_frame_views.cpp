@@ -90,7 +90,7 @@ TEST(FrameViews, HoldExactlyEachFramesParticles) {
   // An empty frame has an empty group (viewers leave it out).
   EXPECT_TRUE(test::has_object(path, frame_view_group(2)));
   EXPECT_FALSE(test::has_object(path, view(2, "position")));
-  EXPECT_EQ(format_version(path), 2);
+  EXPECT_EQ(format_version(path), kRunFileFormat);
 }
 
 TEST(FrameViews, ThreeDimensionalVelocitiesAreViewedAsStored) {
@@ -164,13 +164,13 @@ TEST(FrameViews, ANewerFormatIsRefusedByName) {
   TempDir dir;
   const auto path = dir / "run.h5";
   { RunFile::create(path, "", "", 2); }
-  rewrite_as_format(path, 3, nullptr);
+  rewrite_as_format(path, kRunFileFormat + 1, nullptr);
   try {
     RunFile::open_read_only(path);
-    FAIL() << "a run file of format 3 was read";
+    FAIL() << "a run file of a newer format was read";
   } catch (const UserError& e) {
-    EXPECT_NE(std::string(e.what()).find("run file of format 3, written by a newer granshock "
-                                         "(this one reads formats 1 to 2)"),
+    EXPECT_NE(std::string(e.what()).find("run file of format 4, written by a newer granshock "
+                                         "(this one reads formats 1 to 3)"),
               std::string::npos)
         << e.what();
   }

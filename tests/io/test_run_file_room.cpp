@@ -237,18 +237,25 @@ TEST(RunFileRecord, ResumeRefusesAFileTheCheckpointWasNotWrittenWithAndChangesNo
   EXPECT_EQ(resumed.frames().size(), 2u);
 }
 
-// A checkpoint from before the record is not checked (run.h5 may already have an id: a
-// resume from it that stopped before its first checkpoint), and a file without an id gets
-// one; a checkpoint with a record refuses a file without an id.
+// The file without its @run_id, its root saying format `format`.
+void remove_run_id(const std::filesystem::path& path, int format) {
+  const hid_t f = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  ASSERT_GE(f, 0);
+  ASSERT_GE(H5Adelete(f, "run_id"), 0);
+  const hid_t a = H5Aopen(f, "granshock_format_version", H5P_DEFAULT);
+  ASSERT_GE(H5Awrite(a, H5T_NATIVE_INT, &format), 0);
+  H5Aclose(a);
+  H5Fclose(f);
+}
+
+// A checkpoint without a record (format 3 written before run ids) is not checked (run.h5
+// may already have an id: a resume from it that stopped before its first checkpoint), and
+// a format-2 file without an id gets one; a checkpoint with a record refuses a file without
+// an id.
 TEST(RunFileRecord, FilesAndCheckpointsFromBeforeRunIds) {
   TempDir dir;
   write_run(dir / "run.h5", 2, nullptr);
-  {
-    const hid_t f = H5Fopen((dir / "run.h5").c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
-    ASSERT_GE(f, 0);
-    ASSERT_GE(H5Adelete(f, "run_id"), 0);
-    H5Fclose(f);
-  }
+  remove_run_id(dir / "run.h5", 2);  // as format 2 left it: format 3 always holds one
   RunFileRecord recorded;
   recorded.run_id = "0123456789abcdef0123456789abcdef";
   recorded.frames = recorded.rows = 1;
@@ -268,6 +275,21 @@ TEST(RunFileRecord, FilesAndCheckpointsFromBeforeRunIds) {
   // Again from the same old checkpoint: the file's new id is no obstacle, nor changed.
   RunFile again = RunFile::open_for_resume(dir / "run.h5", 100, RunFileRecord{});
   EXPECT_EQ(again.record().run_id, id);
+}
+
+// Format 3 gives every run file a run id when it is made: one without was edited or
+// damaged, and a resume refuses it with the file unchanged, whatever the checkpoint holds.
+TEST(RunFileRecord, FormatThreeWithoutARunIdIsRefused) {
+  TempDir dir;
+  write_run(dir / "run.h5", 2, nullptr);
+  remove_run_id(dir / "run.h5", kRunFileFormat);
+  const std::string before = bytes_of(dir / "run.h5");
+  const std::string refusal =
+      refusal_of([&] { RunFile::open_for_resume(dir / "run.h5", 100, RunFileRecord{}); });
+  EXPECT_NE(refusal.find("has no @run_id, which every run file of format 3 holds"),
+            std::string::npos)
+      << refusal;
+  EXPECT_EQ(bytes_of(dir / "run.h5"), before) << "a refused resume changed run.h5";
 }
 
 }  // namespace
