@@ -28,6 +28,9 @@ packages=(
   # ParaView's pvbatch and an X server without a screen, for io.paraview_opens_outputs
   # (docs/output_format.md, "What ParaView shows"): about 140 MB to download, 800 MB installed.
   python3-paraview xvfb xauth
+  # ps and pgrep, for the command-line tests that check no process is left behind
+  # (tests/cli/gpu_study_mps.sh).
+  procps
 )
 
 missing=()
