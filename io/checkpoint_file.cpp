@@ -139,7 +139,6 @@ class Reader {
  public:
   Reader(hid_t file, std::uintmax_t file_bytes, int format)
       : file_(file), file_bytes_(file_bytes), format_(format) {}
-  int format() const { return format_; }
 
   template <class T>
   T attribute(const char* group, const char* name) const {

@@ -59,9 +59,8 @@ Handle open_existing(const fs::path& path, unsigned flags, const char* doing) {
     ours = false;
   }
   if (!ours) throw h5::cannot_open(doing, path, "not a granshock run file");
-  const int version = h5::naming_file_in_errors(path, "reading", [&] {
-    return h5::read_attribute<int>(file.get(), "granshock_format_version");
-  });
+  const int version =
+      h5::naming_file_in_errors(path, "reading", [&] { return read_format_version(file.get()); });
   if (version > kFormatVersion) {
     throw h5::cannot_open(doing, path,
                           "it is a run file of format " + std::to_string(version) +

@@ -265,17 +265,6 @@ const std::vector<Key> kObstacleKeys = obstacle_keys();
 // The least gap an obstacle leaves across the periodic channel, in particle diameters.
 constexpr double kMinObstacleGapDiameters = 3;
 
-// The shape's size keys with their values, as a refusal names them.
-std::string obstacle_sizes(const Obstacle& c) {
-  return with_obstacle_shape(c, [&](auto s) {
-    std::vector<std::string> sizes;
-    for (std::size_t i = 0; i < std::size(s.keys); ++i)
-      sizes.push_back(fmt::format("{} {} {}", s.keys[i].name, c.size[i],
-                                  s.keys[i].kind == ShapeKey::Kind::angle ? "deg" : "m"));
-    return fmt::format("{}", fmt::join(sizes, ", "));
-  });
-}
-
 // The keys that set the shape's width across the flow (the D of delta/D): those of its
 // size keys whose change moves the width (a plate's width, not its thickness).
 std::string frontal_width_keys(const Obstacle& c) {
@@ -300,7 +289,7 @@ void after_obstacle(Reading& st) {
       c.centre[1] + along > length)
     fail("obstacle",
          fmt::format("centre ({}, {}) m, {} ({} m across and {} m along the flow)", c.centre[0],
-                     c.centre[1], obstacle_sizes(c), 2 * across, 2 * along),
+                     c.centre[1], obstacle_size_text(c), 2 * across, 2 * along),
          fmt::format("the {} must lie inside the domain, downstream of the insertion strip",
                      choice_name(c.shape)));
   // The periodic channel beside it: an obstacle as wide as the domain closes it, and the

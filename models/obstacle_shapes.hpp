@@ -8,6 +8,9 @@
 // an obstacle shape").
 #pragma once
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
 #include <cmath>
 #include <cstddef>
 #include <optional>
@@ -159,6 +162,17 @@ inline bool obstacle_upstream_surface(const Obstacle& o, double x, double& y) {
   return true;
 }
 // The signed distance of (x, y) from the surface: negative inside.
+// The obstacle's size keys with their values, as a message names them: "diameter 0.01 m",
+// "half_angle 30 deg, length 0.02 m".
+inline std::string obstacle_size_text(const Obstacle& o) {
+  return with_obstacle_shape(o, [&](auto s) {
+    std::vector<std::string> sizes;
+    for (std::size_t i = 0; i < std::size(s.keys); ++i)
+      sizes.push_back(fmt::format("{} {} {}", s.keys[i].name, o.size[i],
+                                  s.keys[i].kind == ShapeKey::Kind::angle ? "deg" : "m"));
+    return fmt::format("{}", fmt::join(sizes, ", "));
+  });
+}
 inline double obstacle_distance(const Obstacle& o, double x, double y) {
   return outline_distance(obstacle_outline(o), x - o.centre[0], y - o.centre[1]);
 }

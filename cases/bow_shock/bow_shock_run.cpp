@@ -11,6 +11,7 @@
 #include "analysis/run_analysis.hpp"
 #include "cases/accuracy/accuracy_choice.hpp"
 #include "cases/bow_shock/interrupt.hpp"
+#include "cases/bow_shock/run_extension.hpp"
 #include "cases/bow_shock/run_observables.hpp"
 #include "cases/bow_shock/run_resume.hpp"
 #include "cases/bow_shock/run_state.hpp"
@@ -187,11 +188,11 @@ void BowShockRun::prepare() {
   how.processes = comm_.size();
   how.certified = certified_step(options_.accuracy_choice);
   if (!options_.quiet) how.say = [this](const std::string& line) { log_.say(line); };
-  how.checked = [this, &how] {
+  how.checked = [this] {
     // Rank 0's alone: probing the lock from several ranks at once would see each other.
     if (root_) RunDirectory::check(dir_, mode_);
     backends_.choose_start(comm_.size());
-    how.backend = backends_.backend();
+    return backends_.backend();
   };
   prepared_.emplace(prepare_scene(std::move(given_), how));
   for (const std::string& w : prepared_->warnings) log_.warn(w);

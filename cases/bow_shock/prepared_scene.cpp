@@ -30,12 +30,12 @@ void calibrate_restitution(PreparedScene& p, const PrepareOptions& o) {
 // calibrated in the inlet channel before anything is written. The calibration is a pure
 // function of the scene, so a resumed run computes the same sigma; the resolved scene (in
 // run.h5 and the checkpoint) carries it.
-void calibrate_inflow(PreparedScene& p, const PrepareOptions& o) {
+void calibrate_inflow(PreparedScene& p, const PrepareOptions& o, Backend backend) {
   Scene& scene = p.loaded.scene;
   say(o, fmt::format("granshock: calibrating sigma so that Ma over the two inlet bin rows is {:g} "
                      "(inflow.mach_at = \"inlet_bins\")",
                      *scene.inflow.target_mach));
-  const InletCalibration& c = p.inlet.emplace(calibrate_inlet_mach(scene, 6, o.backend));
+  const InletCalibration& c = p.inlet.emplace(calibrate_inlet_mach(scene, 6, backend));
   scene.inflow.sigma = c.sigma;
   p.loaded.resolved = scene_to_toml(scene);
   const InletMach& last = c.chosen();
@@ -59,13 +59,13 @@ PreparedScene prepare_scene(LoadedScene loaded, const PrepareOptions& o) {
     return check_scene_before_run(p.scene(), o.force, o.processes, o.certified);
   };
   std::vector<std::string> checked = check();
-  if (o.checked) o.checked();
+  const Backend backend = o.checked ? o.checked() : Backend::default_space;
   throw_if_interrupted();
   const bool discrete = p.scene().setup.contacts.restitution_mode == RestitutionMode::discrete;
   if (discrete) calibrate_restitution(p, o);
   throw_if_interrupted();
   const bool inlet = o.calibrate_inflow && p.scene().inflow.mach_at == MachReference::inlet_bins;
-  if (inlet) calibrate_inflow(p, o);
+  if (inlet) calibrate_inflow(p, o, backend);
   // Again with the calibrated damping or sigma: the time-step guard depends on the damping
   // ratio and on the fastest impact.
   if (discrete || inlet) checked = check();

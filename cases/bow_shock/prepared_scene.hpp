@@ -28,19 +28,19 @@ struct PreparedScene {
 };
 
 struct PrepareOptions {
-  bool force = false;                        // --force: the guard's refusals become warnings
-  int processes = 1;                         // the memory check is per process
-  std::optional<CertifiedStep> certified;    // --accuracy's measured step (run_checks.hpp)
-  Backend backend = Backend::default_space;  // where the inlet calibration's channel runs
+  bool force = false;                      // --force: the guard's refusals become warnings
+  int processes = 1;                       // the memory check is per process
+  std::optional<CertifiedStep> certified;  // --accuracy's measured step (run_checks.hpp)
   // The inlet calibration runs the channel several times; --dry-run leaves sigma at its
   // first guess and says so.
   bool calibrate_inflow = true;
   // The calibrations' lines as they happen (none: silent); the warnings are returned.
   std::function<void(const std::string&)> say;
   // Called once the scene has passed its checks, before the calibrations' cost: the run
-  // checks its directory there, so that a refused directory is said at once, and chooses
-  // its start backend, which it may set in `backend` (these options are read after it).
-  std::function<void()> checked;
+  // checks its directory there, so that a refused directory is said at once, and returns
+  // the backend it starts on, where the inlet calibration's channel runs. None: Kokkos'
+  // default execution space.
+  std::function<Backend()> checked;
 };
 
 // Throws UserError, one line naming the key, for a scene that must not run.

@@ -99,17 +99,6 @@ bool passed_through(const Geometry& g, const HostParticles& p) {
   return g.along(p.position[1]) < g.along(p.position[0]);
 }
 
-// The obstacle's sizes as a refusal names them: "diameter 0.01 m".
-std::string shape_sizes(const Obstacle& o) {
-  return with_obstacle_shape(o, [&](auto s) {
-    std::vector<std::string> sizes;
-    for (std::size_t i = 0; i < std::size(s.keys); ++i)
-      sizes.push_back(fmt::format("{} {:g} {}", s.keys[i].name, o.size[i],
-                                  s.keys[i].kind == ShapeKey::Kind::angle ? "deg" : "m"));
-    return fmt::format("{}", fmt::join(sizes, ", "));
-  });
-}
-
 // From the obstacle's centre to its upstream surface on the flow's line (the axis x =
 // centre): what the flow of a scene strikes first (models/obstacle_shapes.hpp).
 double upstream_surface_distance(const Obstacle& body) {
@@ -118,7 +107,7 @@ double upstream_surface_distance(const Obstacle& body) {
   double y = 0;
   if (!obstacle_upstream_surface(at_origin, 0, y))
     throw UserError(fmt::format("the {} ({}) has no surface on the flow's line: it is {:g} m wide",
-                                choice_name(body.shape), shape_sizes(body),
+                                choice_name(body.shape), obstacle_size_text(body),
                                 obstacle_frontal_width(at_origin)));
   return -y;
 }
@@ -147,7 +136,7 @@ std::string check_head_on(const Obstacle& body, int axis, double surface, double
         "--along {}: the {} ({}) is struck on its upstream surface, {:.3g} m before its "
         "centre on the flow's line y, and the line along {} meets its surface elsewhere: "
         "strike it along y (the default for the obstacle)",
-        line, shape, shape_sizes(o), surface, line));
+        line, shape, obstacle_size_text(o), surface, line));
   const double h = 1e-4 * radius;
   const double aside = (distance(surface + radius, h) - distance(surface + radius, -h)) / (2 * h);
   if (!(std::abs(aside) <= kHeadOnNormal))
@@ -155,7 +144,7 @@ std::string check_head_on(const Obstacle& body, int axis, double surface, double
         "the {} ({}) is not struck head-on: its surface where the line of impact along {} "
         "meets it is slanted, its normal {:.3g} degrees off the line; a head-on impact needs "
         "a face across the line or a corner symmetric about it there{}",
-        shape, shape_sizes(o), line, std::asin(std::min(1.0, std::abs(aside))) * 180 / M_PI,
+        shape, obstacle_size_text(o), line, std::asin(std::min(1.0, std::abs(aside))) * 180 / M_PI,
         axis == 1 ? "" : ": strike it along y, the flow's line (the default for the obstacle)"));
   const ShapeOutline outline = obstacle_outline(o);
   if (outline.kind == ShapeOutline::Kind::disk) return "curved surface";

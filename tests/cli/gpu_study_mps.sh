@@ -211,28 +211,36 @@ check "no daemon marker left" no_daemon
 check "nothing left running" nothing_left
 check "no process of the fake left (pgrep)" no_fake_process
 
+# Starts the script on K long cases, waits until all K run, sends it SIGNAL and waits up to
+# 15 s for it to end; rc holds its exit status.
+signal_while_running() {  # SIGNAL K
+  local signal=$1 k=$2
+  # shellcheck disable=SC2046 # the case indices, one word each
+  PATH=$bin:$PATH GRANSHOCK=$tmp/granshock WORK=$tmp/work OUT=$tmp/out FAKE_SLEEP=30 \
+    bash "$script" --concurrent "$k" "$tmp/study.toml" $(seq 0 $((k - 1))) >"$tmp/output.txt" 2>&1 &
+  script_pid=$!
+  for _ in $(seq 100); do
+    [ "$(events start | wc -l)" = "$k" ] && break
+    sleep 0.1
+  done
+  check "$k cases running" [ "$(events start | wc -l)" = "$k" ]
+  kill -"$signal" "$script_pid"
+  for _ in $(seq 150); do
+    kill -0 "$script_pid" 2>/dev/null || break
+    sleep 0.1
+  done
+  if kill -0 "$script_pid" 2>/dev/null; then
+    fail "the script still runs 15 s after SIG$signal"
+    kill -KILL "$script_pid"
+  fi
+  wait "$script_pid"
+  rc=$?
+  script_pid=""
+}
+
 # (3) SIGTERM while the cases run: passed on to them, daemon quit, nothing left.
 begin "(3) SIGTERM"
-PATH=$bin:$PATH GRANSHOCK=$tmp/granshock WORK=$tmp/work OUT=$tmp/out FAKE_SLEEP=30 \
-  bash "$script" --concurrent 3 "$tmp/study.toml" 0 1 2 >"$tmp/output.txt" 2>&1 &
-script_pid=$!
-for _ in $(seq 100); do
-  [ "$(events start | wc -l)" = 3 ] && break
-  sleep 0.1
-done
-check "three cases running" [ "$(events start | wc -l)" = 3 ]
-kill -TERM "$script_pid"
-for _ in $(seq 150); do
-  kill -0 "$script_pid" 2>/dev/null || break
-  sleep 0.1
-done
-if kill -0 "$script_pid" 2>/dev/null; then
-  fail "the script still runs 15 s after SIGTERM"
-  kill -KILL "$script_pid"
-fi
-wait "$script_pid"
-rc=$?
-script_pid=""
+signal_while_running TERM 3
 show
 check "exit 143" [ "$rc" = 143 ]
 check "every case got SIGTERM (its checkpoint)" interrupted_by TERM 3
@@ -245,23 +253,7 @@ kill_leftovers
 # (3b) The script ended partway by something it does not trap (SIGUSR1 here; an error
 # would end it the same way): its EXIT trap stops the cases (SIGINT) and the daemon.
 begin "(3b) ended partway"
-PATH=$bin:$PATH GRANSHOCK=$tmp/granshock WORK=$tmp/work OUT=$tmp/out FAKE_SLEEP=30 \
-  bash "$script" --concurrent 2 "$tmp/study.toml" 0 1 >"$tmp/output.txt" 2>&1 &
-script_pid=$!
-for _ in $(seq 100); do
-  [ "$(events start | wc -l)" = 2 ] && break
-  sleep 0.1
-done
-check "two cases running" [ "$(events start | wc -l)" = 2 ]
-kill -USR1 "$script_pid"
-for _ in $(seq 150); do
-  kill -0 "$script_pid" 2>/dev/null || break
-  sleep 0.1
-done
-kill -0 "$script_pid" 2>/dev/null && fail "the script still runs 15 s after SIGUSR1"
-kill -KILL "$script_pid" 2>/dev/null
-wait "$script_pid"
-script_pid=""
+signal_while_running USR1 2
 show
 check "every case got SIGINT (its checkpoint)" interrupted_by INT 2
 check "daemon quit" [ "$(mps_calls quit)" = 1 ]

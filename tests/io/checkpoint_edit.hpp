@@ -53,6 +53,19 @@ inline void set_format_version(hid_t file, int format) {
   h5_ok(written, "writing @granshock_format_version");
 }
 
+// `file` as a granshock writing format `format` left it: `edit` (if any), then the root's
+// @granshock_format_version and the checksum header's version.
+inline void rewrite_as_format(const std::filesystem::path& file, int format,
+                              const std::function<void(hid_t file)>& edit = {}) {
+  edit_checkpoint(
+      file,
+      [&](hid_t f) {
+        if (edit) edit(f);
+        set_format_version(f, format);
+      },
+      format);
+}
+
 // A dataset read whole in its own type (native memory layout), with its shape.
 struct RawDataset {
   std::vector<hsize_t> shape;

@@ -282,13 +282,7 @@ TEST(Checkpoint, FormatThreeWithoutSkinOrCpuTimeReadsAsTheScenesSkin) {
   const auto path = dir / "checkpoint.h5";
   const SolverState state = make_state<double>(8, 2, 0, 4);
   write_checkpoint(path, state, make_extras());
-  test::edit_checkpoint(
-      path,
-      [](hid_t f) {
-        delete_format_four_records(f);
-        test::set_format_version(f, 3);
-      },
-      3);
+  test::rewrite_as_format(path, 3, delete_format_four_records);
   CheckpointExtras extras;
   const SolverState back = read_checkpoint(path, extras);
   EXPECT_EQ(back.skin, 0.0);
@@ -319,8 +313,7 @@ TEST(Checkpoint, FormatThreeReadsAsFormatFour) {
   const auto path = dir / "checkpoint.h5";
   const SolverState state = make_state<double>(8, 2, 0, 4);
   write_checkpoint(path, state, make_extras());
-  test::edit_checkpoint(
-      path, [](hid_t f) { test::set_format_version(f, 3); }, 3);
+  test::rewrite_as_format(path, 3);
   CheckpointExtras extras;
   const SolverState back = read_checkpoint(path, extras);
   EXPECT_EQ(back.skin, state.skin);

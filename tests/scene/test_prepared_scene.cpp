@@ -49,7 +49,10 @@ TEST(PreparedScene, ChecksComeBeforeTheDirectoryAndTheCalibrations) {
   std::vector<std::string> events;
   PrepareOptions how;
   how.say = [&](const std::string& line) { events.push_back("say: " + line); };
-  how.checked = [&] { events.push_back("checked"); };
+  how.checked = [&] {
+    events.push_back("checked");
+    return Backend::default_space;
+  };
   prepare_scene(parse_scene(testing::small_scene(), kDiscrete), how);
   ASSERT_GE(events.size(), 2u);
   EXPECT_EQ(events.front(), "checked");
