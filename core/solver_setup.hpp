@@ -36,9 +36,10 @@ struct SolverSetup {
   // speed (kernels/neighbours/rebuild_watch.hpp): the same rebuild steps, slower; for
   // tests and benchmarks.
   bool exact_list_check = false;
-  // Host backends on one process: run up to this many fused steps in one parallel region
-  // (kernels/solver/fused_steps.hpp); 1 gives one region per step. The trajectory is the
-  // same either way.
+  // One process: host backends run up to this many fused steps in one parallel region
+  // (kernels/solver/fused_steps.hpp), device paths queue up to this many steps between two
+  // reads by the host (kernels/solver/chained_steps.hpp); 1 gives one region, or one read,
+  // per step. The trajectory is the same either way.
   long steps_per_region = 4096;
   // Host backends: build the Verlet list in one visit of the candidates
   // (kernels/neighbours/verlet_list.hpp); false visits them twice, as a device does. The

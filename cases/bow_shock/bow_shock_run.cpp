@@ -427,6 +427,7 @@ void BowShockRun::finish(bool completed) {
   j["device_to_host_copies_per_step"] = per_step(launched.device_to_host_copies);
   j["deep_copies_per_step"] = per_step(launched.deep_copies);
   j["reductions_per_step"] = per_step(launched.reductions);
+  j["host_reads_per_step"] = per_step(launched.host_reads);
   if (!root_) return;
   if (!options_.accuracy_choice.is_null()) j["accuracy_choice"] = options_.accuracy_choice;
   if (!extensions_.empty()) j["extensions"] = extensions_;

@@ -11,7 +11,11 @@ namespace {
 // The hooks are plain functions: the counts of the one running counter.
 std::atomic<bool> g_in_use{false};
 std::atomic<std::uint64_t> g_kernels{0}, g_reductions{0}, g_fences{0}, g_copies{0},
-    g_device_to_host{0};
+    g_device_to_host{0}, g_host_reads{0};
+
+bool ends_with(std::string_view text, std::string_view end) {
+  return text.size() >= end.size() && text.substr(text.size() - end.size()) == end;
+}
 
 void on_kernel(const char*, std::uint32_t, std::uint64_t* id) {
   *id = 0;
@@ -21,6 +25,7 @@ void on_kernel(const char*, std::uint32_t, std::uint64_t* id) {
 void on_reduction(const char* name, std::uint32_t device, std::uint64_t* id) {
   on_kernel(name, device, id);
   ++g_reductions;
+  if (!ends_with(name, result_on_device_suffix)) ++g_host_reads;
 }
 
 void on_fence(const char*, std::uint32_t, std::uint64_t* id) {
@@ -28,10 +33,15 @@ void on_fence(const char*, std::uint32_t, std::uint64_t* id) {
   ++g_fences;
 }
 
-void on_deep_copy(Kokkos::Tools::SpaceHandle dst, const char*, const void*,
+void on_deep_copy(Kokkos::Tools::SpaceHandle dst, const char* dst_label, const void*,
                   Kokkos::Tools::SpaceHandle src, const char*, const void*, std::uint64_t) {
   ++g_copies;
-  if (std::strcmp(dst.name, "Host") == 0 && std::strcmp(src.name, "Host") != 0) ++g_device_to_host;
+  const bool into_host = std::strcmp(dst.name, "Host") == 0;
+  const bool across = into_host && std::strcmp(src.name, "Host") != 0;
+  if (across) ++g_device_to_host;
+  if (across ||
+      (into_host && (std::string_view(dst_label) == "Scalar" || ends_with(dst_label, "_mirror"))))
+    ++g_host_reads;
 }
 
 void set_hooks(bool on) {
@@ -41,6 +51,18 @@ void set_hooks(bool on) {
   tools::set_begin_parallel_scan_callback(on ? on_kernel : nullptr);
   tools::set_begin_fence_callback(on ? on_fence : nullptr);
   tools::set_begin_deep_copy_callback(on ? on_deep_copy : nullptr);
+}
+
+LaunchCounts current(bool fences_reported) {
+  LaunchCounts c;
+  c.kernels = g_kernels;
+  c.reductions = g_reductions;
+  c.fences = g_fences;
+  c.deep_copies = g_copies;
+  c.device_to_host_copies = g_device_to_host;
+  c.host_reads = g_host_reads;
+  c.fences_reported = fences_reported;
+  return c;
 }
 
 }  // namespace
@@ -53,22 +75,20 @@ bool LaunchCounter::start() {
   set_hooks(true);
   Kokkos::fence();  // whether this Kokkos reports a fence to its tools
   fences_reported_ = g_fences > 0;
-  g_kernels = g_reductions = g_fences = g_copies = g_device_to_host = 0;
+  g_kernels = g_reductions = g_fences = g_copies = g_device_to_host = g_host_reads = 0;
   running_ = true;
   return true;
 }
 
 LaunchCounts LaunchCounter::counts() const {
   if (!running_) return final_;
-  return {g_kernels.load(), g_reductions.load(),     g_fences.load(),
-          g_copies.load(),  g_device_to_host.load(), fences_reported_};
+  return current(fences_reported_);
 }
 
 LaunchCounts LaunchCounter::stop() {
   if (!running_) return final_;
   set_hooks(false);
-  final_ = {g_kernels.load(), g_reductions.load(),     g_fences.load(),
-            g_copies.load(),  g_device_to_host.load(), fences_reported_};
+  final_ = current(fences_reported_);
   running_ = false;
   g_in_use = false;
   return final_;

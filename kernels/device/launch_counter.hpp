@@ -7,13 +7,25 @@
 // the same paths would make (-DGRANSHOCK_DEVICE_PATHS=ON runs them). Fences are those
 // Kokkos reports to its tools, where it reports them (LaunchCounts::fences_reported).
 //
+// `host_reads` counts what makes the host wait for the device's values, in every build, as
+// a GPU build would: a parallel_reduce into a host value (a fence and a device-to-host read
+// on a GPU), unless its name ends in result_on_device_suffix (the result stays in a device
+// View); and a deep copy into host memory from another space, into a host scalar, or into
+// a mirror (Kokkos labels create_mirror's Views "<label>_mirror"): the copies
+// host_mirror.hpp's host_copy makes on device paths, which on a host build are copies
+// within host memory.
+//
 // The hooks are Kokkos' tool interface: where a profiling tool is loaded (KOKKOS_TOOLS_LIBS)
 // the counter stays off rather than replace the tool's callbacks.
 #pragma once
 
 #include <cstdint>
+#include <string_view>
 
 namespace granshock {
+
+// The end of the name of a reduction whose result stays in device memory.
+inline constexpr std::string_view result_on_device_suffix = "->device";
 
 struct LaunchCounts {
   std::uint64_t kernels = 0;
@@ -23,6 +35,7 @@ struct LaunchCounts {
   std::uint64_t fences = 0;
   std::uint64_t deep_copies = 0;
   std::uint64_t device_to_host_copies = 0;  // into host memory from another memory space
+  std::uint64_t host_reads = 0;             // waits for device values (above)
   // Whether this Kokkos reports fences to its tools at all (Kokkos 3.4 does not: its
   // fence hook is never called; 4.x calls it for every fence).
   bool fences_reported = false;

@@ -12,7 +12,9 @@
 // that of measuring every step (tests/unit/test_rebuild_watch.cpp).
 // The bookkeeping is the host's (the kernels report max|v|^2 or the exact max
 // displacement^2); its bound alone, SpeedBound, also runs inside the host backends'
-// multi-step pass (solver/fused_steps.hpp), which must decide as the host would.
+// multi-step pass (solver/fused_steps.hpp), and the whole watch on the device between the
+// chained steps of device paths (solver/chained_steps.hpp): both must decide as the host
+// would, so every member is callable on either side.
 #pragma once
 
 #include <Kokkos_Core.hpp>
@@ -47,31 +49,33 @@ struct SpeedBound {
 class RebuildWatch {
  public:
   // rebuild_distance: skin/2; dt: the drift's time step.
-  RebuildWatch(double rebuild_distance, double dt) : bound_{rebuild_distance * (1 - margin), dt} {}
+  KOKKOS_INLINE_FUNCTION RebuildWatch(double rebuild_distance, double dt)
+      : bound_{rebuild_distance * (1 - margin), dt} {}
+  RebuildWatch() = default;  // a device View's element, assigned before use
 
   // The largest squared displacement since the last build, measured exactly.
-  void measured(double max_d2) {
+  KOKKOS_INLINE_FUNCTION void measured(double max_d2) {
     exact_d2_ = max_d2;
     bound_.bound = dmath::sqrt(max_d2);
   }
   // A drift by dt at speeds up to sqrt(max_v2) happened and was not measured.
-  void drifted(double max_v2) {
+  KOKKOS_INLINE_FUNCTION void drifted(double max_v2) {
     exact_d2_ = unknown;
     bound_.drifted(max_v2);
   }
-  void rebuilt() { measured(0); }
+  KOKKOS_INLINE_FUNCTION void rebuilt() { measured(0); }
 
   // True when the exact displacement is known for the current positions.
-  bool exact_known() const { return exact_d2_ >= 0; }
-  double exact_d2() const { return exact_d2_; }
+  KOKKOS_INLINE_FUNCTION bool exact_known() const { return exact_d2_ >= 0; }
+  KOKKOS_INLINE_FUNCTION double exact_d2() const { return exact_d2_; }
   // True when the bound proves the list still valid: no exact measurement needed.
-  bool bound_proves_valid() const { return bound_.proves_valid(); }
+  KOKKOS_INLINE_FUNCTION bool bound_proves_valid() const { return bound_.proves_valid(); }
   // Whether the next drift should report speeds (the bound) rather than the exact
   // displacement: only while the bound is far enough from the limit that measuring
   // exactly afterwards is unlikely. A heuristic: the answer changes the cost, never the
   // rebuild steps.
-  bool next_drift_by_speed() const { return bound_.next_drift_by_speed(); }
-  const SpeedBound& speed_bound() const { return bound_; }
+  KOKKOS_INLINE_FUNCTION bool next_drift_by_speed() const { return bound_.next_drift_by_speed(); }
+  KOKKOS_INLINE_FUNCTION const SpeedBound& speed_bound() const { return bound_; }
 
   // Far above the relative round-off of the displacements and speeds (single precision
   // included), so that B < limit implies the computed displacement is below skin/2.
@@ -79,7 +83,7 @@ class RebuildWatch {
 
  private:
   static constexpr double unknown = -1;
-  SpeedBound bound_;
+  SpeedBound bound_{0, 0};
   double exact_d2_ = 0;
 };
 

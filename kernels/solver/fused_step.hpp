@@ -61,11 +61,17 @@ struct FusedStepKernel {
   }
 
   KOKKOS_FORCEINLINE_FUNCTION void operator()(const int run, Real& worst) const {
+    advance_run(run, report_speed, worst);
+  }
+
+  // One work item's particles; by_speed as report_speed, given apart for the chained
+  // steps of device paths, whose device-side watch decides it (chained_steps.hpp).
+  KOKKOS_FORCEINLINE_FUNCTION void advance_run(const int run, const bool by_speed,
+                                               Real& worst) const {
     const int first = run * run_length;
     const int last = first + run_length < n ? first + run_length : n;
     const Real half = Real(0.5) * forces.dt, step = forces.dt;
     const Vec<Dim, Real> g = gravity;
-    const bool by_speed = report_speed;
     Real largest = worst;
     if (!V::obstacle::present || run >= runs_known || near_obstacle(run)) {
       for (int i = first; i < last; ++i) advance(i, half, step, g, by_speed, largest);

@@ -63,6 +63,7 @@ class ListKeeping {
     copy_prefix<ExecSpace>(p.x_ref, p.x, int(p.x.extent(0)));  // space_alloc.hpp: not on OpenMP
     mark_runs_near_obstacle();
     s_.watch.rebuilt();
+    s_.last_build_interval = s_.builds > 0 ? s_.steps - s_.last_build_step : 0;
     ++s_.builds;
     s_.last_build_step = s_.steps;
   }

@@ -29,6 +29,7 @@
 #include "kernels/particles/slab_exchange.hpp"
 #include "kernels/particles/variant_types.hpp"
 #include "kernels/sampling/field_sampler.hpp"
+#include "kernels/solver/chained_steps.hpp"
 #include "kernels/solver/diagnostics.hpp"
 #include "kernels/solver/pair_table.hpp"
 #include "kernels/solver/velocity_verlet.hpp"
@@ -118,16 +119,19 @@ struct SolverParts {
   typename Store::PositionView x_next;  // the fused step's second buffers
   typename Store::VectorView v_next;
   typename Store::ScalarView omega_next;
-  Kokkos::View<std::uint8_t*, Mem> near_obstacle_runs;  // obstacle scenes only
-  int near_obstacle_runs_known = 0;                     // work items marked at the build
+  Kokkos::View<std::uint8_t*, Mem> near_obstacle_runs;       // obstacle scenes only
+  int near_obstacle_runs_known = 0;                          // work items marked at the build
+  Kokkos::View<ChainState, Mem> chain_state{"chain_state"};  // device paths (chained_steps.hpp)
+  Kokkos::View<Real, Mem> chain_reported{"chain_reported"};  // the last pass's reduction
 
   // Counters and the rebuild decision.
   long steps = 0;
   long builds = 0;
   RebuildWatch watch;
-  SkinModel skin_model;      // adaptive skin only
-  long last_build_step = 0;  // steps at the last list build
-  long exact_checks = 0;     // exact displacement passes after a bound that failed
+  SkinModel skin_model;          // adaptive skin only
+  long last_build_step = 0;      // steps at the last list build
+  long last_build_interval = 0;  // steps between the last two builds (0: not yet two)
+  long exact_checks = 0;         // exact displacement passes after a bound that failed
   long step_regions = 0;
   double sync_seconds = 0;
   // Whether p.virial is the contact virial of the force pass that ended the current step

@@ -13,6 +13,7 @@
 
 #include "kernels/device/host_mirror.hpp"
 #include "kernels/device/space_alloc.hpp"
+#include "kernels/solver/chained_steps.hpp"
 #include "kernels/solver/contact_forces.hpp"
 #include "kernels/solver/fused_step.hpp"
 #include "kernels/solver/fused_steps.hpp"
@@ -41,15 +42,15 @@ class StepLoop {
   // sample at this step reads (compute_forces).
   void advance(long steps) {
     if (steps <= 0) return;
+    if (steps > 1 && steps_chained_on_device()) {  // one step: nothing to chain
+      advance_chained(steps);
+      check_history_overflow();
+      return;
+    }
     const WorkClock work = start_work_clock();
     s_.watch.measured(s_.global_max(s_.integrator.first_half(s_.p, s_.table)));
     for (long k = 0; k < steps; ++k) {
-      if (lists_.expired()) {
-        if (s_.setup.adaptive_skin) lists_.choose_skin();
-        lists_.rebuild();
-      } else if (s_.slabs) {
-        s_.slabs->update_ghosts(s_.p);
-      }
+      if (!rebuild_if_expired() && s_.slabs) s_.slabs->update_ghosts(s_.p);
       if (k + 1 < steps) {
         const bool by_speed = !s_.setup.exact_list_check && s_.watch.next_drift_by_speed();
         if (by_speed && steps_in_one_region()) {
@@ -74,15 +75,53 @@ class StepLoop {
     // virial, read their velocities).
     if (s_.slabs) s_.slabs->update_ghosts(s_.p);
     stop_work_clock(work, steps);
-    if constexpr (V::friction) {
-      int overflow = 0;
-      Kokkos::deep_copy(overflow, s_.history_overflow);
-      if (s_.comm.any(overflow != 0))
-        throw std::runtime_error("a particle had more than " +
-                                 std::to_string(Store::history_slots) +
-                                 " simultaneous contacts: the packing is unphysically dense "
-                                 "(huge overlaps?); reduce dt or check the scene");
+    check_history_overflow();
+  }
+
+  // advance() on device paths and one process (chained_steps.hpp): the same steps, the
+  // rebuild decision kept on the device between the host's turns. The host reads the
+  // chain's state once per chain, and acts where the host loop would (a list build, an
+  // exact displacement pass) before queueing the next.
+  void advance_chained(long steps) {
+    write_chain_state(false);
+    long counted = 0;  // the steps of the state's count already taken into account
+    s_.integrator.first_half("verlet::first_half->device", s_.p, s_.table,
+                             Kokkos::Max<Real, Mem>(s_.chain_reported));
+    launch_chain_watch(false);
+    long k = 0;
+    while (k + 1 < steps) {
+      const long queued = chain_length(steps - 1 - k);
+      // Forth from the current buffers into the second ones, then back (no swap until the
+      // chain is read).
+      const ChainedFusedStep<V, ExecSpace, Paths> forth{fused_kernel(false, false), s_.chain_state},
+          back{fused_kernel(false, true), s_.chain_state};
+      const Policy items(0, forth.kernel.work_items(s_.p.n));
+      for (long j = 0; j < queued; ++j) {
+        Kokkos::parallel_reduce("fused_step->device", items, j % 2 == 0 ? forth : back,
+                                Kokkos::Max<Real, Mem>(s_.chain_reported));
+        launch_chain_watch(true);
+      }
+      ChainState read;
+      Kokkos::deep_copy(read, s_.chain_state);  // the chain's one read
+      const long taken = read.done - counted;
+      counted = read.done;
+      s_.watch = read.watch;
+      k += taken;
+      s_.steps += taken;
+      s_.step_regions += taken;
+      if (taken % 2 == 1) swap_step_buffers();
+      if (!read.stopped && taken != queued)
+        throw std::logic_error("a chain neither ran its steps nor stopped");
+      if (read.stopped && k + 1 < steps) {
+        rebuild_if_expired();  // as the host loop, which would check here
+        write_chain_state(!s_.setup.exact_list_check && s_.watch.next_drift_by_speed());
+        counted = 0;
+      }
     }
+    rebuild_if_expired();
+    compute_forces();
+    s_.integrator.second_half(s_.p, s_.table);
+    ++s_.steps;
   }
 
   // The forces at the current state, and each particle's contact virial of these very
@@ -169,6 +208,60 @@ class StepLoop {
   }
 
  private:
+  // The list check before each step: a rebuild (after the adaptive skin's choice) when
+  // some particle may have moved more than skin/2. True when it rebuilt.
+  bool rebuild_if_expired() {
+    if (!lists_.expired()) return false;
+    if (s_.setup.adaptive_skin) lists_.choose_skin();
+    lists_.rebuild();
+    return true;
+  }
+
+  void check_history_overflow() {
+    if constexpr (V::friction) {
+      int overflow = 0;
+      Kokkos::deep_copy(overflow, s_.history_overflow);
+      if (s_.comm.any(overflow != 0))
+        throw std::runtime_error("a particle had more than " +
+                                 std::to_string(Store::history_slots) +
+                                 " simultaneous contacts: the packing is unphysically dense "
+                                 "(huge overlaps?); reduce dt or check the scene");
+    }
+  }
+
+  // Device paths on one process chain their steps (several processes exchange ghosts and
+  // agree on the displacement between steps, on the host).
+  bool steps_chained_on_device() const { return !Paths::host && !s_.slabs; }
+
+  // How many steps to queue: the steps left before the call's last, at most
+  // steps_per_region, and, once two builds are known, about as many as remain of the last
+  // build interval (at least chain_floor): steps queued past a list build do nothing, but
+  // each costs two launches.
+  static constexpr long chain_floor = 16;
+  long chain_length(long left) const {
+    long n = std::min(left, std::max(1L, s_.setup.steps_per_region));
+    if (s_.last_build_interval > 0) {
+      const long since = s_.steps - s_.last_build_step;
+      n = std::min(n, std::max(chain_floor, s_.last_build_interval - since));
+    }
+    return n;
+  }
+
+  // The host's watch onto the device, the count from 0, and the next step's report: a
+  // one-thread kernel, queued like the steps (a deep_copy of a value fences).
+  void write_chain_state(bool by_speed) {
+    ChainState c;
+    c.watch = s_.watch;
+    c.by_speed = by_speed ? 1 : 0;
+    Kokkos::parallel_for("chain_state", Policy(0, 1), SetChainState<Mem>{s_.chain_state, c});
+  }
+  void launch_chain_watch(bool after_step) {
+    const ChainWatch<Real, Mem> watch{s_.chain_state, s_.chain_reported,
+                                      Real(0.25) * s_.skin * s_.skin,  // as ListKeeping::expired
+                                      s_.setup.exact_list_check, after_step};
+    Kokkos::parallel_for("chain_watch", Policy(0, 1), watch);
+  }
+
   void swap_step_buffers() {
     std::swap(s_.p.x, s_.x_next);
     std::swap(s_.p.v, s_.v_next);

@@ -34,6 +34,17 @@ struct VelocityVerlet {
   // at the last neighbour-list build, which decides whether the list is still valid
   // (a process-local maximum: the solver reduces it over processes).
   Real first_half(const Store& p, const Table& table) const {
+    Real max_d2 = 0;
+    first_half("verlet::first_half", p, table, Kokkos::Max<Real>(max_d2));
+    return max_d2;
+  }
+
+  // The same, the largest squared displacement reduced by `largest`: into a host value as
+  // above, or into a device View where device paths keep it for their watch
+  // (chained_steps.hpp; the kernel's name then says so: launch_counter.hpp).
+  template <class Reducer>
+  void first_half(const char* name, const Store& p, const Table& table,
+                  const Reducer& largest) const {
     const Real half = Real(0.5) * dt, step = dt;
     const auto g = gravity;
     const auto x = p.x, x_ref = p.x_ref;  // one type per auto declaration
@@ -41,9 +52,8 @@ struct VelocityVerlet {
     const auto omega = p.omega, torque = p.torque;
     const auto species = p.species;
     const auto inv_mass = table.inv_mass, inv_inertia = table.inv_inertia;
-    Real max_d2 = 0;
     Kokkos::parallel_reduce(
-        "verlet::first_half", Policy(0, p.n),
+        name, Policy(0, p.n),
         KOKKOS_LAMBDA(const int i, Real& worst) {
           capture_before_if_constexpr(omega, torque, inv_inertia);
           const int s = species(i);
@@ -58,8 +68,7 @@ struct VelocityVerlet {
           if constexpr (V::friction) half_spin_kick(omega(i), half, torque(i), inv_inertia(s));
           if (d2 > worst) worst = d2;
         },
-        Kokkos::Max<Real>(max_d2));
-    return max_d2;
+        largest);
   }
 
   // The largest squared displacement from x_ref, as first_half() measures it, without

@@ -89,6 +89,8 @@ expect(first.get("kernel_launches_per_step", 0) > 0, "no kernel launches counted
 expect(0 <= first.get("reductions_per_step", -1) <= first["kernel_launches_per_step"],
        "reductions_per_step %r" % first.get("reductions_per_step"))
 expect(first.get("device_to_host_copies_per_step") == 0, "copies across spaces on the host")
+expect(0 < first.get("host_reads_per_step", -1) <= first["kernel_launches_per_step"] +
+       first["deep_copies_per_step"], "host_reads_per_step %r" % first.get("host_reads_per_step"))
 expect("fences_per_step" in first, "no fences_per_step key")
 finished = json.load(open(d + "/finished.json"))
 expect(finished["particle_steps_per_second"] > 0, "the finished run measured no rate")

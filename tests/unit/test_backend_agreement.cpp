@@ -200,3 +200,59 @@ TEST(KernelPaths, DeviceTrajectoryIsTheHostTrajectoryBitwiseFrictionless) {
 TEST(KernelPaths, DeviceTrajectoryIsTheHostTrajectoryBitwiseWithFrictionAndObstacle) {
   compare_paths(friction_with_obstacle(), 3000);
 }
+
+namespace {
+
+// Device paths chain their steps (kernels/solver/chained_steps.hpp): the rebuild watch on
+// the device, read by the host once per chain. How many steps a chain queues changes what
+// the host waits for, never the trajectory: one step per chain (steps_per_region = 1),
+// chains of up to 7 and calls of one step against the default, and each against host
+// paths.
+void compare_chain_lengths(SolverSetup s, int steps) {
+  const HostParticles gas = make_gas(s);
+  SolverSetup one = s, seven = s;
+  one.steps_per_region = 1;
+  seven.steps_per_region = 7;
+  auto host = test::make_solver_on_paths(s, gas.size(), test::Paths::host);
+  std::vector<std::unique_ptr<Solver>> chained;
+  for (const SolverSetup& setup : {s, one, seven})
+    chained.push_back(test::make_solver_on_paths(setup, gas.size(), test::Paths::device));
+  // And calls of one step each, which have nothing to chain (device paths, all alike).
+  chained.push_back(test::make_solver_on_paths(s, gas.size(), test::Paths::device));
+  host->set_particles(gas);
+  host->advance(steps);
+  for (auto& solver : chained) {
+    solver->set_particles(gas);
+    if (solver == chained.back()) {
+      for (int k = 0; k < steps; ++k) solver->advance(1);
+    } else {
+      solver->advance(steps);
+    }
+    EXPECT_EQ(solver->list_builds(), host->list_builds());
+    EXPECT_EQ(solver->exact_list_checks(), host->exact_list_checks());
+    EXPECT_EQ(solver->steps_done(), host->steps_done());
+    expect_bitwise_identical(solver->particles(), host->particles());
+  }
+  EXPECT_GT(host->list_builds(), 1);
+}
+
+}  // namespace
+
+TEST(ChainedSteps, AnyChainLengthGivesTheHostTrajectoryFrictionless) {
+  compare_chain_lengths(frictionless(), 2000);
+}
+
+TEST(ChainedSteps, AnyChainLengthGivesTheHostTrajectoryWithFrictionAndObstacle) {
+  compare_chain_lengths(friction_with_obstacle(), 2000);
+}
+
+// Every step reporting its exact displacement, and the adaptive skin choosing a new skin
+// at each build: the device's watch asks as the host's does.
+TEST(ChainedSteps, ExactListCheckAndAdaptiveSkinGiveTheHostTrajectory) {
+  SolverSetup exact = frictionless();
+  exact.exact_list_check = true;
+  compare_chain_lengths(exact, 1500);
+  SolverSetup adaptive = frictionless();
+  adaptive.adaptive_skin = true;
+  compare_chain_lengths(adaptive, 1500);
+}

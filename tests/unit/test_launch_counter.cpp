@@ -72,3 +72,26 @@ TEST(LaunchCounter, ACopyToTheHostFromAnotherSpaceIsADeviceToHostRead) {
       std::is_same_v<Kokkos::DefaultExecutionSpace::memory_space, Kokkos::HostSpace>;
   EXPECT_EQ(c.device_to_host_copies, same ? 0u : 1u);
 }
+
+// What makes the host wait (host_reads): a copy into a host value, or into a mirror, as
+// device paths read device Views on any build; not a fill, nor a copy between two Views
+// of the device. (Reductions into a device View, named "...->device", are checked with
+// the solver's kernels: ChainedSteps.TwoLaunchesPerStepAndOneHostReadPerChain.)
+TEST(LaunchCounter, HostReadsAreCopiesIntoHostValuesAndMirrors) {
+  Kokkos::View<double*> device("device", 8), other("other", 8);
+  Kokkos::View<double> scalar("scalar");
+  auto mirror = Kokkos::create_mirror(device);
+  LaunchCounter counter;
+  ASSERT_TRUE(counter.start());
+  Kokkos::deep_copy(device, 1.0);     // a fill
+  Kokkos::deep_copy(other, device);   // within the device's memory
+  Kokkos::deep_copy(device, mirror);  // host to device: a write
+  const LaunchCounts writes = counter.counts();
+  double value = 0;
+  Kokkos::deep_copy(value, scalar);   // a host value
+  Kokkos::deep_copy(mirror, device);  // a mirror
+  const LaunchCounts c = counter.stop();
+  EXPECT_EQ(writes.host_reads, 0u);
+  EXPECT_EQ(c.host_reads, 2u);
+  EXPECT_EQ(c.deep_copies, 5u);
+}
