@@ -50,5 +50,13 @@ KOKKOS_INLINE_FUNCTION Real dot(const Vec<Dim, Real>& a, const Vec<Dim, Real>& b
   for (int d = 0; d < Dim; ++d) s += a.c[d] * b.c[d];
   return s;
 }
+// |a|^2, the same value as dot(a, a) (0 + a square is that square, both >= +0) with one
+// addition fewer: the compiler may not drop the 0 + itself.
+template <int Dim, class Real>
+KOKKOS_INLINE_FUNCTION Real norm2(const Vec<Dim, Real>& a) {
+  Real s = a.c[0] * a.c[0];
+  for (int d = 1; d < Dim; ++d) s += a.c[d] * a.c[d];
+  return s;
+}
 
 }  // namespace granshock

@@ -11,6 +11,7 @@
 
 #include "kernels/device/box_geometry.hpp"
 #include "kernels/device/position.hpp"
+#include "kernels/device/row_element.hpp"
 #include "kernels/device/vec.hpp"
 
 namespace granshock {
@@ -27,7 +28,7 @@ struct PairLoop {
 
   KOKKOS_FORCEINLINE_FUNCTION Vec<Dim, Position> position(int i) const {
     Vec<Dim, Position> r;
-    for (int d = 0; d < Dim; ++d) r[d] = x(i, d);
+    for (int d = 0; d < Dim; ++d) r[d] = row_element(x, i, d);
     return r;
   }
 
@@ -44,7 +45,7 @@ struct PairLoop {
     for (int k = offsets(i); k < offsets(i + 1); ++k) {
       const int j = neighbours(k);
       const Vec<Dim, Real> dx = to_real<Real>(box.nearby_image(xi - position(j)));
-      const Real r2 = dot(dx, dx);
+      const Real r2 = norm2(dx);
       if (r2 >= reach2) continue;
       const int sj = species(j);
       const Real rsum = ri + radius(sj);

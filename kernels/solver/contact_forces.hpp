@@ -9,6 +9,7 @@
 
 #include <Kokkos_Core.hpp>
 
+#include "kernels/device/row_element.hpp"
 #include "kernels/device/vec.hpp"
 #include "kernels/models/clamped_normal.hpp"
 #include "kernels/models/tangential_spring.hpp"
@@ -75,15 +76,28 @@ struct ContactForceKernel {
     if constexpr (V::friction) p.torque(i) = torque;
   }
 
+  // Passed as vi to total(): particle i's own velocity is then read where a contact needs
+  // it, not before the pair loop. The fused step (fused_step.hpp) passes it: most list
+  // partners do not touch, and a velocity held past them took registers from the pair
+  // loop, which then kept other values on the stack (docs/benchmarks.md, "Instructions
+  // per particle-step"). The values are the same.
+  struct ReadOwnVelocity {};
+  KOKKOS_FORCEINLINE_FUNCTION Vec<Dim, Real> own_velocity(int, const Vec<Dim, Real>& vi) const {
+    return vi;
+  }
+  KOKKOS_FORCEINLINE_FUNCTION Vec<Dim, Real> own_velocity(int i, ReadOwnVelocity) const {
+    return velocity(i);
+  }
+
   // The force and torque on particle i at xi with velocity vi (not ForceMode::virial): its
   // contacts, their springs (updated) and the obstacle; w, when given, gets the contacts'
   // virial (ForceMode::forces_and_virial). The fused step (fused_step.hpp) calls it
   // directly and keeps the result in registers, with WithObstacle false for a particle
   // known not to touch the obstacle (obstacle_runs.hpp).
-  template <bool WithObstacle = V::obstacle::present>
-  KOKKOS_FORCEINLINE_FUNCTION void total(int i, const Vec<Dim, Position>& xi,
-                                         const Vec<Dim, Real>& vi, Vec<Dim, Real>& force,
-                                         Real& torque, Real* w = nullptr) const {
+  template <bool WithObstacle = V::obstacle::present, class OwnVelocity = Vec<Dim, Real>>
+  KOKKOS_FORCEINLINE_FUNCTION void total(int i, const Vec<Dim, Position>& xi, const OwnVelocity& vi,
+                                         Vec<Dim, Real>& force, Real& torque,
+                                         Real* w = nullptr) const {
     force = Vec<Dim, Real>::zero();
     torque = 0;
     int used_slots = 0;  // bit s set when slot s carried a contact this step
@@ -91,14 +105,15 @@ struct ContactForceKernel {
     if constexpr (V::friction) release_unused_slots(i, used_slots);
     if constexpr (WithObstacle) {
       const int si = p.species(i);
-      obstacle_contact(i, xi, vi, si, table.radius(si), force, torque);
+      obstacle_contact(i, xi, own_velocity(i, vi), si, table.radius(si), force, torque);
     }
   }
 
   // Sums the pair forces of i's contacts into force (and torque; w, the virial, unless in
   // ForceMode::forces).
+  template <class OwnVelocity>
   KOKKOS_FORCEINLINE_FUNCTION void sum_contacts(int i, const Vec<Dim, Position>& xi,
-                                                const Vec<Dim, Real>& vi, Vec<Dim, Real>& force,
+                                                const OwnVelocity& vi, Vec<Dim, Real>& force,
                                                 Real& torque, int& used_slots, Real* w) const {
     const int si = p.species(i);
     const Real ri = table.radius(si);
@@ -106,7 +121,7 @@ struct ContactForceKernel {
         i, xi, ri, [&](int j, int sj, const Vec<Dim, Real>& dx, Real r2, Real rsum) {
           const Real r = dmath::sqrt(r2);
           const Vec<Dim, Real> n = (Real(1) / r) * dx;
-          const Vec<Dim, Real> vrel = vi - velocity(j);
+          const Vec<Dim, Real> vrel = own_velocity(i, vi) - velocity(j);
           const auto& c = table.pair(si, sj);
           const auto normal =
               clamped_normal<Model>(c, rsum - r, dot(vrel, n), table.normal_force_floor);
@@ -148,7 +163,7 @@ struct ContactForceKernel {
 
   KOKKOS_FORCEINLINE_FUNCTION Vec<Dim, Real> velocity(int i) const {
     Vec<Dim, Real> r;
-    for (int d = 0; d < Dim; ++d) r[d] = p.v(i, d);
+    for (int d = 0; d < Dim; ++d) r[d] = row_element(p.v, i, d);
     return r;
   }
 

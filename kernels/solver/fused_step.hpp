@@ -1,7 +1,8 @@
 // The fused step: one pass per time step instead of three (docs/design.md, "The solver").
 // Velocity Verlet split into half steps (velocity_verlet.hpp) runs, between two list
 // checks, forces -> second half of step n -> first half of step n+1; the fused kernel does
-// the three for each particle in one pass, with the force kept in registers:
+// the three for each particle in one pass, with the force kept in registers (on a host, in
+// a local array for the run of particles a work item moves):
 //   f_i  = F(x^{n+1}, v^{n+1/2})                       (contact_forces.hpp, total())
 //   v_i' = v_i + dt/2 (f_i/m_i + g);  v_i'' = v_i' + dt/2 (f_i/m_i + g);  x_i' = x_i + dt v_i''
 // Each partner's position and velocity are read while other threads move theirs, so the
@@ -20,6 +21,7 @@
 #include <cstdint>
 
 #include "kernels/device/backends.hpp"
+#include "kernels/device/row_element.hpp"
 #include "kernels/particles/variant_types.hpp"
 #include "kernels/solver/contact_forces.hpp"
 #include "kernels/solver/kick.hpp"
@@ -70,44 +72,71 @@ struct FusedStepKernel {
                                                Real& worst) const {
     const int first = run * run_length;
     const int last = first + run_length < n ? first + run_length : n;
+    // On a host, two loops over the run: the forces of all its particles, kept in a local
+    // array, then their kicks and drifts. Each loop keeps its own values in registers; in
+    // one loop the pair loop's box, reach and partner views and the kick's velocities and
+    // constants together did not fit, and the compiler kept them on the stack, for every
+    // particle (docs/benchmarks.md, "Instructions per particle-step"). The kick's
+    // constants are read after the first loop for the same reason. The arithmetic is the
+    // same, so the trajectory is bitwise the same.
+    Vec<Dim, Real> f[run_length];
+    Real torque[run_length];
+    if (!V::obstacle::present || run >= runs_known || near_obstacle(run)) {
+      for (int i = first; i < last; ++i) force(i, f[i - first], torque[i - first]);
+    } else {
+      for (int i = first; i < last; ++i) force<false>(i, f[i - first], torque[i - first]);
+    }
     const Real half = Real(0.5) * forces.dt, step = forces.dt;
     const Vec<Dim, Real> g = gravity;
     Real largest = worst;
-    if (!V::obstacle::present || run >= runs_known || near_obstacle(run)) {
-      for (int i = first; i < last; ++i) advance(i, half, step, g, by_speed, largest);
+    if (by_speed) {  // the test out of the loop
+      for (int i = first; i < last; ++i)
+        move<true>(i, f[i - first], torque[i - first], half, step, g, largest);
     } else {
-      for (int i = first; i < last; ++i) advance<false>(i, half, step, g, by_speed, largest);
+      for (int i = first; i < last; ++i)
+        move<false>(i, f[i - first], torque[i - first], half, step, g, largest);
     }
     if (largest > worst) worst = largest;
   }
 
-  // WithObstacle false: particle i is known not to touch the obstacle (obstacle_runs.hpp).
+  // The force and torque on particle i. WithObstacle false: particle i is known not to
+  // touch the obstacle (obstacle_runs.hpp).
   template <bool WithObstacle = V::obstacle::present>
-  KOKKOS_FORCEINLINE_FUNCTION void advance(const int i, const Real half, const Real step,
-                                           const Vec<Dim, Real>& g, const bool by_speed,
-                                           Real& worst) const {
+  KOKKOS_FORCEINLINE_FUNCTION void force(const int i, Vec<Dim, Real>& f, Real& torque) const {
+    forces.template total<WithObstacle>(
+        i, forces.pairs.position(i), typename ContactForceKernel<V, ExecSpace>::ReadOwnVelocity{},
+        f, torque);
+  }
+
+  // The kicks and the drift of particle i under force f (and torque), written to the
+  // second buffers; worst gets the particle's squared speed (BySpeed) or displacement.
+  template <bool BySpeed>
+  KOKKOS_FORCEINLINE_FUNCTION void move(const int i, const Vec<Dim, Real>& f, const Real torque,
+                                        const Real half, const Real step, const Vec<Dim, Real>& g,
+                                        Real& worst) const {
     const auto& p = forces.p;
     const Vec<Dim, Position> xi = forces.pairs.position(i);
     const Vec<Dim, Real> vi = forces.velocity(i);
-    Vec<Dim, Real> f;
-    Real torque;
-    forces.template total<WithObstacle>(i, xi, vi, f, torque);
     const int s = p.species(i);
     const Real im = forces.table.inv_mass(s);
+    // d2 starts from the first square, not from 0: 0 + a square is that square (both are
+    // >= +0), and the compiler may not drop the addition itself.
     Real d2 = 0;
     for (int d = 0; d < Dim; ++d) {
       Real v = vi[d];
       half_kick(v, half, f[d], im, g[d]);   // second half of this step
       half_kick(v, half, f[d], im, g[d]);   // first half of the next
       const Position x = xi[d] + step * v;  // the drift: a Real step onto a Position
-      v_next(i, d) = v;
-      x_next(i, d) = x;
-      if (by_speed) {
-        d2 += v * v;
+      row_element(v_next, i, d) = v;
+      row_element(x_next, i, d) = x;
+      Real square;
+      if constexpr (BySpeed) {
+        square = v * v;
       } else {
-        const Real moved = Real(x - p.x_ref(i, d));
-        d2 += moved * moved;
+        const Real moved = Real(x - row_element(p.x_ref, i, d));
+        square = moved * moved;
       }
+      d2 = d == 0 ? square : d2 + square;
     }
     if constexpr (V::friction) {
       const Real ii = forces.table.inv_inertia(s);
@@ -115,6 +144,8 @@ struct FusedStepKernel {
       half_spin_kick(w, half, torque, ii);
       half_spin_kick(w, half, torque, ii);
       omega_next(i) = w;
+    } else {
+      (void)torque;
     }
     if (d2 > worst) worst = d2;
   }
