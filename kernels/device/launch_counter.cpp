@@ -54,15 +54,8 @@ void set_hooks(bool on) {
 }
 
 LaunchCounts current(bool fences_reported) {
-  LaunchCounts c;
-  c.kernels = g_kernels;
-  c.reductions = g_reductions;
-  c.fences = g_fences;
-  c.deep_copies = g_copies;
-  c.device_to_host_copies = g_device_to_host;
-  c.host_reads = g_host_reads;
-  c.fences_reported = fences_reported;
-  return c;
+  return {g_kernels,        g_reductions, g_fences,       g_copies,
+          g_device_to_host, g_host_reads, fences_reported};
 }
 
 }  // namespace

@@ -38,9 +38,10 @@ class ListKeeping {
       ++s_.exact_checks;
       s_.watch.measured(s_.global_max(s_.integrator.largest_displacement2(s_.p)));
     }
-    const Real rebuild_d2 = Real(0.25) * s_.skin * s_.skin;  // (skin/2)^2
-    return Real(s_.watch.exact_d2()) > rebuild_d2;
+    return Real(s_.watch.exact_d2()) > rebuild_distance2();
   }
+  // (skin/2)^2 in Real, as expired() compares (and the chained steps' device watch).
+  Real rebuild_distance2() const { return Real(0.25) * s_.skin * s_.skin; }
 
   // Wraps periodic coordinates, hands particles between processes, deletes escaped ones,
   // sorts by cell and rebuilds the Verlet list; x_ref remembers where particles were, for

@@ -52,7 +52,7 @@ class StepLoop {
     for (long k = 0; k < steps; ++k) {
       if (!rebuild_if_expired() && s_.slabs) s_.slabs->update_ghosts(s_.p);
       if (k + 1 < steps) {
-        const bool by_speed = !s_.setup.exact_list_check && s_.watch.next_drift_by_speed();
+        const bool by_speed = next_drift_by_speed();
         if (by_speed && steps_in_one_region()) {
           const long done = fused_steps(std::min(steps - 1 - k, s_.setup.steps_per_region));
           k += done - 1;  // the loop counts the last
@@ -114,7 +114,7 @@ class StepLoop {
         throw std::logic_error("a chain neither ran its steps nor stopped");
       if (read.stopped && k + 1 < steps) {
         rebuild_if_expired();  // as the host loop, which would check here
-        write_chain_state(!s_.setup.exact_list_check && s_.watch.next_drift_by_speed());
+        write_chain_state(next_drift_by_speed());
         counted = 0;
       }
     }
@@ -217,6 +217,12 @@ class StepLoop {
     return true;
   }
 
+  // Whether the next step reports its top speed (the watch's bound) rather than the exact
+  // displacement (ChainWatch asks the same on the device).
+  bool next_drift_by_speed() const {
+    return !s_.setup.exact_list_check && s_.watch.next_drift_by_speed();
+  }
+
   void check_history_overflow() {
     if constexpr (V::friction) {
       int overflow = 0;
@@ -256,8 +262,7 @@ class StepLoop {
     Kokkos::parallel_for("chain_state", Policy(0, 1), SetChainState<Mem>{s_.chain_state, c});
   }
   void launch_chain_watch(bool after_step) {
-    const ChainWatch<Real, Mem> watch{s_.chain_state, s_.chain_reported,
-                                      Real(0.25) * s_.skin * s_.skin,  // as ListKeeping::expired
+    const ChainWatch<Real, Mem> watch{s_.chain_state, s_.chain_reported, lists_.rebuild_distance2(),
                                       s_.setup.exact_list_check, after_step};
     Kokkos::parallel_for("chain_watch", Policy(0, 1), watch);
   }
