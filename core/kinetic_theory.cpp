@@ -8,20 +8,35 @@
 
 namespace granshock {
 
-double radial_distribution(double phi) {
-  return (16.0 - 7.0 * phi) / (16.0 * (1 - phi) * (1 - phi));
+namespace {
+void check_dimension(int dim) {
+  if (dim != 2 && dim != 3)
+    throw std::invalid_argument("kinetic theory: dimension " + std::to_string(dim) +
+                                " (2 or 3 expected)");
+}
+}  // namespace
+
+double radial_distribution(double phi, int dim) {
+  check_dimension(dim);
+  const double hole = 1 - phi;
+  if (dim == 3) return (1.0 - 0.5 * phi) / (hole * hole * hole);
+  return (16.0 - 7.0 * phi) / (16.0 * hole * hole);
 }
 
-double radial_distribution_slope(double phi) {
-  return (25.0 - 7.0 * phi) / (16.0 * (1 - phi) * (1 - phi) * (1 - phi));
+double radial_distribution_slope(double phi, int dim) {
+  check_dimension(dim);
+  const double hole = 1 - phi;
+  if (dim == 3) return (2.5 - phi) / (hole * hole * hole * hole);
+  return (25.0 - 7.0 * phi) / (16.0 * hole * hole * hole);
 }
 
 double pressure_factor(double phi, double e, int dim) {
-  return 1.0 + (dim - 1) * (1.0 + e) * phi * radial_distribution(phi);
+  return 1.0 + (dim - 1) * (1.0 + e) * phi * radial_distribution(phi, dim);
 }
 
 double pressure_factor_slope(double phi, double e, int dim) {
-  return (dim - 1) * (1.0 + e) * (radial_distribution(phi) + phi * radial_distribution_slope(phi));
+  return (dim - 1) * (1.0 + e) *
+         (radial_distribution(phi, dim) + phi * radial_distribution_slope(phi, dim));
 }
 
 double sound_speed_factor(double phi, double e, int dim) {

@@ -1,6 +1,7 @@
 // Kinetic-theory relations of the paper's section 2 (docs/fields.md) for a granular gas
-// of dimension Dim with area (2-D) or volume fraction phi and restitution e:
+// of dimension Dim with area (2-D) or volume fraction (3-D) phi and restitution e:
 //   g(phi) = (16 - 7 phi) / (16 (1 - phi)^2)                (Henderson 1975, 2-D disks)
+//   g(phi) = (1 - phi/2) / (1 - phi)^3                       (Carnahan & Starling 1969, spheres)
 //   F(phi) = 1 + (Dim - 1)(1 + e) phi g(phi)
 //   a      = sqrt( T/m (1 + (2/Dim) F + (phi/F) dF/dphi) F )  (adiabatic sound speed)
 #pragma once
@@ -10,9 +11,11 @@
 
 namespace granshock {
 
-double radial_distribution(double phi);                 // g(phi)
-double radial_distribution_slope(double phi);           // dg/dphi = (25 - 7 phi) / (16 (1 - phi)^3)
-double pressure_factor(double phi, double e, int dim);  // F
+// g(phi) at contact, and dg/dphi: (25 - 7 phi) / (16 (1 - phi)^3) for disks,
+// (5/2 - phi) / (1 - phi)^4 for spheres. Dim is 2 or 3.
+double radial_distribution(double phi, int dim);
+double radial_distribution_slope(double phi, int dim);
+double pressure_factor(double phi, double e, int dim);        // F
 double pressure_factor_slope(double phi, double e, int dim);  // dF/dphi
 // a^2 / (T/m): the dimensionless factor (1 + (2/Dim) F + (phi/F) F') F.
 double sound_speed_factor(double phi, double e, int dim);

@@ -76,3 +76,51 @@ TEST(SoundSpeed, FieldComputationUsesBothMassDefinitions) {
               f.mach_mixture_mean[static_cast<std::size_t>(ix)]);
   }
 }
+
+namespace {
+
+// The Carnahan-Starling equation of state of elastic hard spheres (Carnahan & Starling
+// 1969): p / (n T) = Z(phi) = (1 + phi + phi^2 - phi^3) / (1 - phi)^3.
+double carnahan_starling(double phi) {
+  return (1 + phi + phi * phi - phi * phi * phi) / std::pow(1 - phi, 3);
+}
+
+}  // namespace
+
+// In 3-D the contact value is Carnahan-Starling's, so the elastic gas's pressure factor is
+// the CS compressibility, written independently above.
+TEST(SoundSpeed, ThreeDimensionalPressureIsCarnahanStarling) {
+  for (const double phi : {0.01, 0.1, 0.2, 0.3, 0.4, 0.5})
+    EXPECT_NEAR(pressure_factor(phi, 1.0, 3), carnahan_starling(phi),
+                1e-12 * carnahan_starling(phi))
+        << "phi " << phi;
+}
+
+// The adiabatic sound speed of a hard-particle gas (no potential energy, c_v = Dim/2 per
+// particle) from thermodynamics: m a^2 / T = Z + phi dZ/dphi + (2/Dim) Z^2, with dZ/dphi by
+// central differences of the CS formula; against eq. 6's factor for elastic spheres.
+TEST(SoundSpeed, ThreeDimensionalSoundSpeedFromTheCarnahanStarlingState) {
+  for (const double phi : {0.05, 0.1, 0.3, 0.5}) {
+    const double h = 1e-5;
+    const double z = carnahan_starling(phi);
+    const double slope = (carnahan_starling(phi + h) - carnahan_starling(phi - h)) / (2 * h);
+    const double expected = z + phi * slope + 2.0 / 3.0 * z * z;
+    EXPECT_NEAR(sound_speed_factor(phi, 1.0, 3), expected, 1e-8 * expected) << "phi " << phi;
+  }
+}
+
+// g's slope against central differences of g, for disks and spheres; other dimensions are
+// refused.
+TEST(SoundSpeed, ContactValueSlopesAndDimensions) {
+  for (const int dim : {2, 3})
+    for (const double phi : {0.05, 0.3, 0.6}) {
+      const double h = 1e-6;
+      const double numeric =
+          (radial_distribution(phi + h, dim) - radial_distribution(phi - h, dim)) / (2 * h);
+      EXPECT_NEAR(radial_distribution_slope(phi, dim), numeric, 1e-7 * numeric)
+          << "dim " << dim << ", phi " << phi;
+    }
+  EXPECT_DOUBLE_EQ(radial_distribution(0.0, 2), 1.0);
+  EXPECT_DOUBLE_EQ(radial_distribution(0.0, 3), 1.0);
+  EXPECT_THROW(radial_distribution(0.1, 1), std::invalid_argument);
+}
