@@ -107,6 +107,18 @@ struct Choices<BackendSwitchMode> {
 };
 
 template <>
+struct Choices<ThreadShareMode> {
+  static constexpr const char* what = "thread shares";
+  static constexpr ChoiceName<ThreadShareMode> table[] = {
+      {ThreadShareMode::by_time, "by_time",
+       "each thread's particles cut by the time the threads took before"},
+      {ThreadShareMode::equal, "equal", "equally many particles per thread"},
+      {ThreadShareMode::alternating, "alternating",
+       "cuts moved at every region of steps (a check that they change nothing)"},
+  };
+};
+
+template <>
 struct Choices<ImpactLine> {
   static constexpr const char* what = "line of impact";
   static constexpr ChoiceName<ImpactLine> table[] = {
@@ -131,6 +143,7 @@ static_assert(choice_table_is_one_to_one<SlabAxis>());
 static_assert(choice_table_is_one_to_one<SlabBalance>());
 static_assert(choice_table_is_one_to_one<SnapshotOutput>());
 static_assert(choice_table_is_one_to_one<BackendSwitchMode>());
+static_assert(choice_table_is_one_to_one<ThreadShareMode>());
 static_assert(choice_table_is_one_to_one<ImpactLine>());
 static_assert(choice_table_is_one_to_one<BatchScript>());
 
@@ -139,7 +152,7 @@ template <class F>
 void for_each_choice(F&& f) {
   f(ContactModelKind{}), f(RestitutionMode{}), f(Precision{}), f(ScatterStrategy{});
   f(MassDefinition{}), f(MachReference{}), f(SlabAxis{}), f(SlabBalance{});
-  f(SnapshotOutput{}), f(BackendSwitchMode{}), f(ObstacleShape{});
+  f(SnapshotOutput{}), f(BackendSwitchMode{}), f(ThreadShareMode{}), f(ObstacleShape{});
   f(ImpactLine{}), f(BatchScript{});
 }
 

@@ -14,6 +14,12 @@ enum class SnapshotOutput { automatic, gathered, collective };
 // the threads; alternate moves at every slice (a check that both give the same run).
 enum class BackendSwitchMode { automatic, off, alternate };
 
+// One process on several host threads, regions of many steps
+// (kernels/solver/thread_shares.hpp): each thread's share of the particles cut by the time
+// the threads took before (by_time), equal shares, or moved at every region (alternating:
+// a check that the cuts change nothing).
+enum class ThreadShareMode { by_time, equal, alternating };
+
 // `granshock collide --along`: the line along which the two bodies approach (values are
 // the coordinate index, cases/collision/head_on_collision.hpp).
 enum class ImpactLine { x = 0, y = 1 };

@@ -14,6 +14,7 @@
 #include "core/material.hpp"
 #include "core/obstacle.hpp"
 #include "core/pair_properties.hpp"
+#include "core/run_modes.hpp"
 
 namespace granshock {
 
@@ -41,6 +42,11 @@ struct SolverSetup {
   // reads by the host (kernels/solver/chained_steps.hpp); 1 gives one region, or one read,
   // per step. The trajectory is the same either way.
   long steps_per_region = 4096;
+  // Host backends, those regions: how the threads' shares of the particles are cut
+  // (core/run_modes.hpp, kernels/solver/thread_shares.hpp; alternating moves them to a
+  // quarter and three quarters of the particles in turn). The trajectory is the same in
+  // every mode.
+  ThreadShareMode thread_shares = ThreadShareMode::by_time;
   // Host backends: build the Verlet list in one visit of the candidates
   // (kernels/neighbours/verlet_list.hpp); false visits them twice, as a device does. The
   // lists are the same either way.

@@ -49,6 +49,15 @@ struct HaloStats {
   double exchange_seconds() const { return seconds + rebuild_seconds; }
 };
 
+// Host regions of many steps (kernels/solver/thread_shares.hpp): each thread's share of
+// the particles in the last region (empty: no such region ran), how often the balance by
+// time moved the cuts, and the last region's slowest share over the mean (1: balanced).
+struct ThreadShareStats {
+  std::vector<double> shares;
+  long moves = 0;
+  double imbalance = 1;
+};
+
 class SolverStatistics {
  public:
   virtual ~SolverStatistics() = default;
@@ -68,6 +77,7 @@ class SolverStatistics {
   // Parallel regions that ran fused steps: one per step, or one per run of steps with
   // SolverSetup::steps_per_region > 1 (kernels/solver/fused_steps.hpp).
   virtual long step_regions() const = 0;
+  virtual ThreadShareStats thread_shares() const = 0;
 };
 
 }  // namespace granshock

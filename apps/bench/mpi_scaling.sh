@@ -11,7 +11,9 @@
 #   (defaults 20000, 500000 = 0.1 s of the default scene, 5, scenes/default.toml)
 # Environment: GRANSHOCK (binary), MPIEXEC (default mpirun), NICE (default 10), CONFIGS
 #   (default: threads2 and ranks2_{y,x}_{equal,work}, and ranks2_y_particles; a
-#   configuration ranks2_AXIS_BALANCE runs with --slabs AXIS --balance BALANCE).
+#   configuration ranks2_AXIS_BALANCE runs with --slabs AXIS --balance BALANCE, threads1
+#   is one process on one thread, threads2_equal two threads with equal shares of the
+#   particles instead of shares by time: --thread-shares).
 # Output: a Markdown table on stdout (medians; ratios to one process per repeat, then
 # their median), progress on stderr.
 set -euo pipefail
@@ -42,8 +44,10 @@ for ((r = 1; r <= repeats; r++)); do
     out=$work/$c.$r
     cp -r "$work/warm" "$out"
     case $c in
-    threads2) OMP_NUM_THREADS=2 run_nice "$granshock" run "$scene" --out "$out" --resume \
-      --quiet "${times[@]}" >&2 ;;
+    threads[12]) OMP_NUM_THREADS=${c#threads} run_nice "$granshock" run "$scene" --out "$out" \
+      --resume --quiet "${times[@]}" >&2 ;;
+    threads2_equal) OMP_NUM_THREADS=2 run_nice "$granshock" run "$scene" --out "$out" --resume \
+      --quiet --thread-shares equal "${times[@]}" >&2 ;;
     ranks2_*_*)
       axis=${c#ranks2_} && axis=${axis%_*}
       OMP_NUM_THREADS=1 run_nice "$mpiexec" -np 2 --bind-to core "$granshock" run "$scene" \
@@ -77,8 +81,9 @@ for c in configs:
                 for k in range(p.get("count", 1))] if p.get("count", 1) > 1 else []
     share, sync = shares("halo_share_per_rank"), shares("sync_share_per_rank")
     rebuild = shares("rebuild_exchange_share_per_rank")
-    if c == "threads2":
-        label = "1 process x 2 threads"
+    if c.startswith("threads"):
+        label = {"threads1": "1 process x 1 thread", "threads2": "1 process x 2 threads",
+                 "threads2_equal": "1 process x 2 threads, equal shares"}[c]
     else:
         axis, balance = c.split("_")[1:]
         label = (f"2 processes x 1 thread, slabs along {axis}, "

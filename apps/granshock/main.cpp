@@ -239,6 +239,10 @@ void add_run_command(CLI::App& app, granshock::RunOptions& o) {
                     "one process on several threads: whether the run moves to one thread "
                     "while another process is busy on the machine (docs/benchmarks.md, \"A "
                     "busy machine\"); the results are the same bit for bit");
+  add_choice_option(*cmd, "--thread-shares", o.thread_shares,
+                    "one process on several threads, small scenes: how the threads share the "
+                    "particles (docs/benchmarks.md, \"Threads on a small scene\"); the results "
+                    "are the same bit for bit");
   add_choice_option(*cmd, "--snapshot-output", o.snapshot_output,
                     "under mpirun: how snapshots reach run.h5 (docs/parallel.md); the files "
                     "are the same bit for bit");

@@ -415,6 +415,13 @@ void BowShockRun::finish(bool completed) {
   if (comm_.size() > 1) j["processes"] = processes_summary();
   if (const nlohmann::json moves = backends_.summary(); !moves.is_null())
     j["backend_switch"] = moves;
+  // One process on several threads: how they shared the particles (docs/benchmarks.md,
+  // "Threads on a small scene").
+  if (const ThreadShareStats shares = solver_->thread_shares(); shares.shares.size() > 1)
+    j["thread_shares"] = {{"mode", choice_name(options_.thread_shares)},
+                          {"shares", shares.shares},
+                          {"moves", shares.moves},
+                          {"last_imbalance", shares.imbalance}};
   // Per step of this leg's time loop, this process' (docs/cuda.md, "Launches per step");
   // null where a profiling tool held Kokkos' hooks or no step ran, and fences where this
   // Kokkos does not report them (3.4).
@@ -483,7 +490,9 @@ void BowShockRun::advance_slice(long steps) {
 
 // A new solver on `backend`, set up as this run's, without particles.
 std::unique_ptr<Solver> BowShockRun::make_run_solver(Backend backend, std::size_t capacity) const {
-  std::unique_ptr<Solver> solver = make_solver(scene().setup, capacity, backend, &comm_);
+  SolverSetup setup = scene().setup;
+  setup.thread_shares = options_.thread_shares;
+  std::unique_ptr<Solver> solver = make_solver(setup, capacity, backend, &comm_);
   solver->configure_sampling(sampling_->layout());
   solver->decompose(decomposition_);
   return solver;

@@ -34,6 +34,8 @@ struct RunOptions {
   // One process on the host's threads: whether the run moves between the threads and one
   // thread (core/run_modes.hpp, backend_switch.hpp).
   BackendSwitchMode backend_switch = BackendSwitchMode::automatic;
+  // And how the threads share the particles (core/run_modes.hpp).
+  ThreadShareMode thread_shares = ThreadShareMode::by_time;
   bool dry_run = false;  // check the scene and the directory, print the resolved scene
   std::string accuracy;  // an error budget ("2%"): settings from a measured table
   std::filesystem::path accuracy_table;  // that table; empty: default_accuracy_table()

@@ -1,7 +1,8 @@
 // Contiguous shares of a range, as a static schedule deals them out: share s of `shares`
 // over [0, total) is [share_begin(total, s, shares), share_begin(total, s + 1, shares)).
-// Kernels that hand each thread one share themselves (the one-visit list build, the
-// multi-step pass, the row owners' bands) cut the range the same way.
+// Kernels that hand each thread one share themselves (the one-visit list build, the row
+// owners' bands) cut the range the same way; the multi-step pass starts from these cuts and
+// moves them by time (solver/thread_shares.hpp).
 #pragma once
 
 #include <Kokkos_Core.hpp>

@@ -144,6 +144,7 @@ class DemSolver final : public Solver {
   long list_builds() const override { return s_.builds; }
   long exact_list_checks() const override { return s_.exact_checks; }
   long step_regions() const override { return s_.step_regions; }
+  ThreadShareStats thread_shares() const override { return s_.thread_shares.stats(); }
 
  private:
   SolverParts<V, ExecSpace, Paths> s_;

@@ -8,12 +8,14 @@
 // drift may be reported by speed, exactly when the host's loop would take another fused
 // step without an exact check. The host then replays the reported speeds into its watch.
 // The arithmetic per particle is that of the one-step pass, so the trajectory is bitwise
-// the same (tests/unit/test_backend_agreement.cpp, `FusedSteps`).
+// the same (tests/unit/test_backend_agreement.cpp, `FusedSteps`). Each thread's share of
+// the runs is cut by the measured time of the earlier regions (thread_shares.hpp), and
+// the pass times every share for the next cut.
 #pragma once
 
 #include <Kokkos_Core.hpp>
 
-#include "kernels/device/share.hpp"
+#include "kernels/device/host_clock.hpp"
 #include "kernels/neighbours/rebuild_watch.hpp"
 #include "kernels/particles/variant_types.hpp"
 #include "kernels/solver/fused_step.hpp"
@@ -38,22 +40,27 @@ struct FusedStepsPass {
   long max_steps;
   Kokkos::View<double*, Mem> top_speed2;  // of each step done
   Kokkos::View<long, Mem> done;
+  Kokkos::View<const int*, Mem> cuts;        // thread t's runs: [cuts(t), cuts(t + 1))
+  Kokkos::View<double*, Mem> share_seconds;  // each share's time over the region
 
   KOKKOS_INLINE_FUNCTION void operator()(const Member& team) const {
     SpeedBound b = bound;
     long k = 0;
+    double seconds = 0;  // this thread's share, all steps
+    int mine = -1;       // which share that is
     while (k < max_steps) {
       const Kernel& kernel = k % 2 == 0 ? forth : back;
       Real top = 0;
       // One contiguous share of the runs per thread, as a static range policy gives: the
       // host team's TeamThreadRange deals items out in turn, and every run's neighbours
       // would then be in the other core's cache.
-      const int runs = Kernel::work_items(kernel.n), threads = team.team_size();
       Kokkos::parallel_reduce(
-          Kokkos::TeamThreadRange(team, threads),
+          Kokkos::TeamThreadRange(team, team.team_size()),
           [&](const int share, Real& worst) {
-            const int end = share_begin(runs, share + 1, threads);
-            for (int run = share_begin(runs, share, threads); run < end; ++run) kernel(run, worst);
+            const std::int64_t start = host_nanoseconds();
+            for (int run = cuts(share), end = cuts(share + 1); run < end; ++run) kernel(run, worst);
+            seconds += 1e-9 * double(host_nanoseconds() - start);
+            mine = share;
           },
           Kokkos::Max<Real>(top));
       if (team.team_rank() == 0) top_speed2(k) = double(top);
@@ -61,6 +68,7 @@ struct FusedStepsPass {
       ++k;
       if (!b.next_drift_by_speed()) break;
     }
+    if (mine >= 0) share_seconds(mine) = seconds;
     if (team.team_rank() == 0) done() = k;
   }
 };

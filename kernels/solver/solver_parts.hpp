@@ -32,6 +32,7 @@
 #include "kernels/solver/chained_steps.hpp"
 #include "kernels/solver/diagnostics.hpp"
 #include "kernels/solver/pair_table.hpp"
+#include "kernels/solver/thread_shares.hpp"
 #include "kernels/solver/velocity_verlet.hpp"
 
 namespace granshock {
@@ -116,7 +117,8 @@ struct SolverParts {
   Kokkos::View<double*, Mem> top_speed2;  // fused_steps: each step's top speed^2
   Kokkos::View<long, Mem> steps_done_in_region{"steps_done_in_region"};
   int region_team_size = 0;
-  typename Store::PositionView x_next;  // the fused step's second buffers
+  ThreadShares<Mem> thread_shares{setup.thread_shares};  // the threads' runs in those regions
+  typename Store::PositionView x_next;                   // the fused step's second buffers
   typename Store::VectorView v_next;
   typename Store::ScalarView omega_next;
   Kokkos::View<std::uint8_t*, Mem> near_obstacle_runs;       // obstacle scenes only

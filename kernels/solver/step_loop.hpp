@@ -163,15 +163,21 @@ class StepLoop {
     if constexpr (!Paths::host) {
       return 0;  // never called: steps_in_one_region() is false
     } else {
-      const FusedStepsPass<V, ExecSpace, Paths> pass{
-          fused_kernel(true, false),      fused_kernel(true, true),
-          s_.watch.speed_bound(),         max_steps,
-          top_speed2_of_steps(max_steps), s_.steps_done_in_region};
-      Kokkos::parallel_for("fused_steps", Kokkos::TeamPolicy<ExecSpace>(1, region_team_size()),
-                           pass);
+      const int team = region_team_size();
+      using Pass = FusedStepsPass<V, ExecSpace, Paths>;
+      const Pass pass{fused_kernel(true, false),
+                      fused_kernel(true, true),
+                      s_.watch.speed_bound(),
+                      max_steps,
+                      top_speed2_of_steps(max_steps),
+                      s_.steps_done_in_region,
+                      s_.thread_shares.cuts(Pass::Kernel::work_items(s_.p.n), team),
+                      s_.thread_shares.seconds()};
+      Kokkos::parallel_for("fused_steps", Kokkos::TeamPolicy<ExecSpace>(1, team), pass);
       ++s_.step_regions;
       long done = 0;
       Kokkos::deep_copy(done, s_.steps_done_in_region);
+      s_.thread_shares.balance(done);
       const auto speeds =
           host_copy<Paths>(Kokkos::subview(s_.top_speed2, Kokkos::make_pair(0L, done)));
       for (long k = 0; k < done; ++k) s_.watch.drifted(speeds(k));

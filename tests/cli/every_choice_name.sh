@@ -45,10 +45,11 @@ precisions=($(names precision)) scatters=($(names "field scatter"))
 masses=($(names "mass definition")) machs=($(names "mach reference"))
 axes=($(names "slab axis")) balances=($(names balance))
 outputs=($(names "snapshot output")) switches=($(names "backend switch"))
+shares=($(names "thread shares"))
 [ ${#models[@]} -ge 2 ] || fail "granshock info lists the contact models '${models[*]}'"
 
 rounds=0
-for list in models modes precisions scatters masses machs axes balances outputs switches; do
+for list in models modes precisions scatters masses machs axes balances outputs switches shares; do
   eval "n=\${#$list[@]}"
   [ "$n" -gt "$rounds" ] && rounds=$n
 done
@@ -62,8 +63,8 @@ for ((k = 0; k < rounds; ++k)); do
   precision=$(nth $k "${precisions[@]}") scatter=$(nth $k "${scatters[@]}")
   mass=$(nth $k "${masses[@]}") mach=$(nth $k "${machs[@]}") axis=$(nth $k "${axes[@]}")
   balance=$(nth $k "${balances[@]}") output=$(nth $k "${outputs[@]}")
-  switch=$(nth $k "${switches[@]}")
-  what="round $k ($model, $mode, $precision, $scatter, $mass, $mach, $axis, $balance, $output, $switch)"
+  switch=$(nth $k "${switches[@]}") share=$(nth $k "${shares[@]}")
+  what="round $k ($model, $mode, $precision, $scatter, $mass, $mach, $axis, $balance, $output, $switch, $share)"
 
   out=$("$granshock" collide --pair steel-steel --speed 1 --model "$model" $(law_keys "$model" option) \
     --restitution-mode "$mode" --precision "$precision" 2>&1) || fail "$what: collide: $out"
@@ -77,7 +78,7 @@ for ((k = 0; k < rounds; ++k)); do
   out=$("$granshock" run "$scene" --dry-run --out "$dir/never" "${scene_keys[@]}" \
     --set "numerics.mass_definition=\"$mass\"" --set "inflow.mach_at=\"$mach\"" \
     --slabs "$axis" --balance "$balance" --snapshot-output "$output" \
-    --backend-switch "$switch" 2>&1) || { fail "$what: dry run: $out"; continue; }
+    --backend-switch "$switch" --thread-shares "$share" 2>&1) || { fail "$what: dry run: $out"; continue; }
   for line in "model = '$model'" "restitution_mode = '$mode'" "precision = '$precision'" \
     "field_scatter = '$scatter'" "mass_definition = '$mass'"; do
     has "$out" "$line" || fail "$what: the dry run's resolved scene lacks $line"
@@ -85,7 +86,7 @@ for ((k = 0; k < rounds; ++k)); do
 
   run="$dir/run$k"
   "$granshock" run "$scene" --out "$run" --quiet --no-figures "${scene_keys[@]}" \
-    --backend-switch "$switch" --set time.duration=0.0004 --set time.production_start=0.0002 \
+    --backend-switch "$switch" --thread-shares "$share" --set time.duration=0.0004 --set time.production_start=0.0002 \
     --set output.snapshot_interval=0.0002 --set output.series_interval=0.0001 \
     --set output.checkpoint_interval=0.0002 --set output.sample_every=10 \
     >"$dir/out$k" 2>&1 || { fail "$what: run: $(tail -3 "$dir/out$k")"; continue; }
@@ -94,6 +95,10 @@ for ((k = 0; k < rounds; ++k)); do
   if grep -q '"backend_switch"' "$run/summary.json"; then
     grep -q "\"mode\": \"$switch\"" "$run/summary.json" ||
       fail "$what: summary.json's backend switch is $(grep '"mode"' "$run/summary.json")"
+  fi
+  if grep -q '"thread_shares"' "$run/summary.json"; then
+    grep -q "\"mode\": \"$share\"" "$run/summary.json" ||
+      fail "$what: summary.json's thread shares are $(grep -A1 '"thread_shares"' "$run/summary.json")"
   fi
   resolved=$(h5dump -d /scene/resolved "$run/checkpoint.h5") || { fail "$what: h5dump"; continue; }
   for line in "model = '$model'" "restitution_mode = '$mode'" "precision = '$precision'" \

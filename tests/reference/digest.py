@@ -22,7 +22,7 @@ import numpy
 MACHINE_KEYS = {"wall_seconds", "cpu_seconds", "particle_steps_per_second", "threads",
                 "backend", "cpu_model", "variant", "backend_switch", "build", "kernel_launches_per_step",
                 "reductions_per_step", "deep_copies_per_step", "device_to_host_copies_per_step",
-                "fences_per_step", "host_reads_per_step"}
+                "fences_per_step", "host_reads_per_step", "thread_shares"}
 
 
 def sha(array):

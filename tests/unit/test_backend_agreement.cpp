@@ -7,7 +7,10 @@
 #include <gtest/gtest.h>
 
 #include <Kokkos_Core.hpp>
+#include <algorithm>
 #include <cmath>
+#include <memory>
+#include <vector>
 
 #include "cases/gas/homogeneous_gas.hpp"
 #include "core/solver.hpp"
@@ -255,4 +258,50 @@ TEST(ChainedSteps, ExactListCheckAndAdaptiveSkinGiveTheHostTrajectory) {
   SolverSetup adaptive = frictionless();
   adaptive.adaptive_skin = true;
   compare_chain_lengths(adaptive, 1500);
+}
+
+namespace {
+
+// The threads' shares in regions of many steps (kernels/solver/thread_shares.hpp): cut by
+// measured time, equal, or moved at every region (a quarter and three quarters of the
+// particles in turn). Who moves a particle never changes how, so the trajectories are
+// bitwise the same.
+void compare_thread_shares(SolverSetup s, int steps) {
+  if (Kokkos::DefaultExecutionSpace().concurrency() < 2)
+    GTEST_SKIP() << "needs 2 or more threads (OMP_NUM_THREADS=2)";
+  const HostParticles gas = make_gas(s);
+  using Mode = ThreadShareMode;
+  std::vector<std::unique_ptr<Solver>> solvers;
+  for (const Mode mode : {Mode::equal, Mode::alternating, Mode::by_time}) {
+    SolverSetup setup = s;
+    setup.thread_shares = mode;
+    solvers.push_back(test::make_solver_on_paths(setup, gas.size(), test::Paths::host));
+    solvers.back()->set_particles(gas);
+    solvers.back()->advance(steps);
+  }
+  const ThreadShareStats equal = solvers[0]->thread_shares(),
+                         alternating = solvers[1]->thread_shares();
+  ASSERT_EQ(equal.shares.size(), 2u) << "no region of many steps ran";
+  EXPECT_NEAR(equal.shares[0], 0.5, 0.02);
+  EXPECT_EQ(equal.moves, 0);
+  // Every region of many steps moved the alternating cuts, to a quarter or three quarters
+  // (runs of 64 particles).
+  EXPECT_LE(alternating.moves, solvers[1]->step_regions());
+  EXPECT_GT(alternating.moves, 2);
+  EXPECT_NEAR(std::min(alternating.shares[0], alternating.shares[1]), 0.25, 0.03);
+  for (const auto& solver : solvers) {
+    EXPECT_EQ(solver->list_builds(), solvers[0]->list_builds());
+    expect_bitwise_identical(solver->particles(), solvers[0]->particles());
+  }
+  EXPECT_GT(solvers[0]->list_builds(), 1);
+}
+
+}  // namespace
+
+TEST(ThreadShares, CutsNeverChangeTheTrajectoryFrictionless) {
+  compare_thread_shares(frictionless(), 2000);
+}
+
+TEST(ThreadShares, CutsNeverChangeTheTrajectoryWithFrictionAndObstacle) {
+  compare_thread_shares(friction_with_obstacle(), 2000);
 }
