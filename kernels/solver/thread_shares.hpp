@@ -1,6 +1,7 @@
 // The threads' shares of the multi-step fused pass (fused_steps.hpp): contiguous runs of
 // work items, cut so that each thread's share takes the same measured time
-// (core/work_shares.hpp). Each region times every thread's share of every step; after a
+// (core/work_shares.hpp). Each region times every thread's share of every fourth step
+// (FusedStepsPass::timed_every); after a
 // region of enough steps the cuts move half of the way to the balanced ones, when the
 // slowest share took more than `tolerated_imbalance` times the mean. Where the work per
 // particle differs (the bow shock against the free stream and the wake) equal shares
@@ -26,7 +27,7 @@ class ThreadShares {
   explicit ThreadShares(Mode mode = Mode::by_time) : mode_(mode) {}
 
   static constexpr double tolerated_imbalance = 1.03;
-  static constexpr long least_steps = 8;  // fewer: too little time measured to move the cuts
+  static constexpr long least_steps = 8;  // fewer (2 timed): too little to move the cuts
   static constexpr double step = 0.5;
 
   // The cuts for `items` work items among `threads` (kept from the last region, scaled
