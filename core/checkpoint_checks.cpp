@@ -49,8 +49,9 @@ void check_shapes(const SolverState& s) {
   const bool friction = slots > 0;
   const std::string slot_rows = friction ? fmt::format("{} and {} history slots", rows, slots)
                                          : "no contact history without friction (slots = 0)";
-  expect_size("/state/angular_velocity", s.angular_velocity, friction ? n : 0, slot_rows);
-  expect_size("/state/torque", s.torque, friction ? n : 0, slot_rows);
+  const std::size_t spins = friction ? n * std::size_t(spin_components(s.dim)) : 0;
+  expect_size("/state/angular_velocity", s.angular_velocity, spins, slot_rows);
+  expect_size("/state/torque", s.torque, spins, slot_rows);
   expect_size("/state/history_partner", s.history_partner, n * slots, slot_rows);
   expect_size("/state/history_spring", s.history_spring, n * slots * dim, slot_rows);
   // The wall springs may be stored empty (docs/output_format.md); the solver decides.

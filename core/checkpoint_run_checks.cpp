@@ -70,14 +70,19 @@ void check_energy(const SolverState& s, const RunFit& fit) {
                       "a step: the state has blown up",
                       at("/state/force", i * dim), std::sqrt(f2), 2 * v_max));
     if (s.angular_velocity.empty()) continue;
-    const double w = s.angular_velocity[i];
-    rotational += 0.5 * fit.inertia[a] * w * w;
+    const std::size_t spins = std::size_t(spin_components(s.dim));
+    double w2 = 0, t2 = 0;
+    for (std::size_t c = 0; c < spins; ++c) {
+      w2 += s.angular_velocity[i * spins + c] * s.angular_velocity[i * spins + c];
+      t2 += s.torque[i * spins + c] * s.torque[i * spins + c];
+    }
+    rotational += 0.5 * fit.inertia[a] * w2;
     const double w_max = std::sqrt(2 * budget / fit.inertia[a]);
-    if (std::abs(s.torque[i]) * 0.5 * fit.dt / fit.inertia[a] > 2 * w_max)
+    if (std::sqrt(t2) * 0.5 * fit.dt / fit.inertia[a] > 2 * w_max)
       fail(
           fmt::format("{} = {} N m would change the spin by more than {} rad/s in half a step: "
                       "the state has blown up",
-                      at("/state/torque", i), s.torque[i], 2 * w_max));
+                      at("/state/torque", i * spins), std::sqrt(t2), 2 * w_max));
   }
   for (const auto& [name, energy] : {std::pair<const char*, double>{"/state/velocity", kinetic},
                                      {"/state/angular_velocity", rotational}})

@@ -11,7 +11,9 @@ namespace granshock {
 struct HostParticles {
   std::vector<std::array<double, 3>> position;
   std::vector<std::array<double, 3>> velocity;
-  std::vector<double> angular_velocity;  // about z (quasi-2-D); empty = all zero
+  // spin_components(dim) per particle (core/solver_state.hpp): about z in 2-D, a vector
+  // in 3-D; empty = all zero
+  std::vector<double> angular_velocity;
   std::vector<int> species;
   std::vector<int> id;
 

@@ -12,18 +12,24 @@
 
 namespace granshock {
 
+// Spin values per particle: about z in 2-D, a vector in 3-D (kernels/device/spin.hpp).
+constexpr int spin_components(int dim) {
+  return dim == 2 ? 1 : 3;
+}
+
 struct SolverState {
   int dim = 2;
   long step = 0;    // steps done
   int next_id = 0;  // the next global id to hand out
   // Per particle, n = id.size(); vectors are flattened [particle][component].
-  std::vector<double> position;          // n * dim
-  std::vector<double> velocity;          // n * dim
-  std::vector<double> force;             // n * dim (needed: the next half-step uses it)
-  std::vector<double> angular_velocity;  // n, or empty without friction
-  std::vector<double> torque;            // n, or empty without friction
-  std::vector<int> species;              // n
-  std::vector<int> id;                   // n
+  std::vector<double> position;  // n * dim
+  std::vector<double> velocity;  // n * dim
+  std::vector<double> force;     // n * dim (needed: the next half-step uses it)
+  // n * spin_components(dim) (about z in 2-D, a vector in 3-D), or empty without friction
+  std::vector<double> angular_velocity;
+  std::vector<double> torque;  // as angular_velocity
+  std::vector<int> species;    // n
+  std::vector<int> id;         // n
   // Contact history (friction only): slots per particle, partner ids (-1 free), springs.
   int history_slots = 0;
   std::vector<int> history_partner;             // n * slots

@@ -18,10 +18,11 @@ namespace granshock {
 struct InsertionRequest {
   std::array<double, 2> x_range{0, 0};
   std::array<double, 2> y_range{0, 0};
-  int count = 0;                        // particles wanted
-  std::vector<double> number_fraction;  // per species, sums to 1
-  std::array<double, 2> mean_velocity{0, 0};
-  double sigma_m_per_s = 0;  // Gaussian fluctuation per component
+  std::array<double, 2> z_range{0, 0};        // 3-D only: the layer's depth (2-D: z = 0)
+  int count = 0;                              // particles wanted
+  std::vector<double> number_fraction;        // per species, sums to 1
+  std::array<double, 2> mean_velocity{0, 0};  // in the x-y plane (3-D: none along z)
+  double sigma_m_per_s = 0;  // Gaussian fluctuation per component, z's included in 3-D
   std::uint64_t seed = 0;
   std::uint64_t event = 0;    // insertion event number: the RNG stream
   long inserted_before = 0;   // particles inserted by earlier events

@@ -36,6 +36,7 @@ namespace {
 struct Options {
   std::vector<int> particles{5000, 32000};
   std::vector<double> phi{0.1};
+  int dim = 2;  // 3: spheres in a periodic cube (double precision only)
   std::string precision = granshock::choice_name(granshock::Precision::double_precision);
   int repeats = 5;
   double min_seconds = 1.0;
@@ -55,6 +56,7 @@ struct Options {
 };
 
 struct Row {
+  int dim = 2;
   double phi = 0;
   int particles = 0;
   int threads = 0;
@@ -123,6 +125,7 @@ std::pair<long, double> run_at_least(granshock::Solver& solver, long chunk, long
 
 Row bench_one(const Options& o, double phi, int n_wanted) {
   granshock::SolverSetup setup = granshock::paper_mixture(o.restitution);
+  setup.dim = o.dim;
   setup.dt = o.dt;
   if (o.skin_d > 0) setup.skin_m = o.skin_d * setup.max_diameter();
   setup.exact_list_check = o.exact_list_check;
@@ -141,6 +144,7 @@ Row bench_one(const Options& o, double phi, int n_wanted) {
   solver->set_particles(gas);
 
   Row row;
+  row.dim = o.dim;
   row.phi = phi;
   row.particles = int(solver->size());
   row.threads = Kokkos::DefaultExecutionSpace().concurrency();
@@ -227,6 +231,7 @@ nlohmann::json to_json(const Row& r) {
   return {{"phi", r.phi},
           {"particles", r.particles},
           {"threads", r.threads},
+          {"dim", r.dim},
           {"variant", r.variant},
           {"box_length_m", r.box_length_m},
           {"solver_bytes_per_particle", r.solver_bytes_per_particle},
@@ -256,13 +261,17 @@ int main(int argc, char** argv) {
   granshock::KokkosRuntime kokkos(argc, argv);
 
   CLI::App app{
-      "granshock_bench_gas: particle-steps per second of a homogeneous 2-D granular "
-      "gas (paper mixture, periodic box)"};
+      "granshock_bench_gas: particle-steps per second of a homogeneous granular gas "
+      "(paper mixture, periodic box; 2-D disks or, with --dim 3, spheres)"};
   Options o;
-  app.add_option("--particles", o.particles, "particle counts (rounded to a square lattice)")
+  app.add_option("--dim", o.dim, "2: disks in a periodic square; 3: spheres in a periodic cube")
+      ->check(CLI::IsMember({2, 3}));
+  app.add_option("--particles", o.particles,
+                 "particle counts (rounded to a square lattice, cubic with --dim 3)")
       ->delimiter(',')
       ->check(CLI::Range(9, 1 << 30));
-  app.add_option("--phi", o.phi, "area fractions, in (0, 0.78)")
+  app.add_option("--phi", o.phi,
+                 "area fractions, in (0, 0.78); volume fractions with --dim 3, below 0.52")
       ->delimiter(',')
       ->check(CLI::Range(1e-6, 0.78));
   app.add_option("--precision", o.precision, granshock::choice_list<granshock::Precision>())

@@ -1,6 +1,7 @@
 // A homogeneous granular gas in a periodic box: the initial state of the benchmarks and
-// of several physics tests. Particles sit on a jittered square (2-D) lattice, so they
-// never overlap, with Gaussian velocities of zero total momentum.
+// of several physics tests. Particles sit on a jittered square lattice (2-D) or cubic
+// lattice (setup.dim = 3), so they never overlap, with Gaussian velocities of zero total
+// momentum.
 #pragma once
 
 #include <cstdint>
@@ -11,19 +12,20 @@
 namespace granshock {
 
 struct GasSpec {
-  int particles = 1000;  // rounded to a full lattice
-  double area_fraction = 0.1;
+  int particles = 1000;        // rounded to a full lattice
+  double area_fraction = 0.1;  // the solid fraction: of area in 2-D, of volume in 3-D
   double sigma_m_per_s = 1.0;  // velocity standard deviation per component
   std::uint64_t seed = 1;
 };
 
-// The square periodic box (2-D) that holds spec.particles at spec.area_fraction for the
-// setup's species (equal number fractions). Writes setup.box.
+// The square (2-D) or cubic (3-D) periodic box that holds spec.particles at
+// spec.area_fraction for the setup's species (equal number fractions). Writes setup.box.
 void size_periodic_box(SolverSetup& setup, const GasSpec& spec);
 
 // Fills setup.box (which must come from size_periodic_box) with the lattice gas;
 // species alternate so number fractions are equal. Throws if the lattice is too dense
-// for non-overlapping placement (area fraction above pi/4 for equal diameters).
+// for non-overlapping placement (area fraction above pi/4 for equal diameters, volume
+// fraction above pi/6 in 3-D).
 HostParticles make_homogeneous_gas(const SolverSetup& setup, const GasSpec& spec);
 
 // The paper's binary mixture (steel and aluminium, d = 1 mm, e per pair, no friction),

@@ -59,4 +59,14 @@ KOKKOS_INLINE_FUNCTION Real norm2(const Vec<Dim, Real>& a) {
   return s;
 }
 
+// a x b (3-D: spins, torques).
+template <class Real>
+KOKKOS_INLINE_FUNCTION Vec<3, Real> cross(const Vec<3, Real>& a, const Vec<3, Real>& b) {
+  Vec<3, Real> c;
+  c[0] = a[1] * b[2] - a[2] * b[1];
+  c[1] = a[2] * b[0] - a[0] * b[2];
+  c[2] = a[0] * b[1] - a[1] * b[0];
+  return c;
+}
+
 }  // namespace granshock

@@ -25,6 +25,7 @@
 #include "core/solver_state.hpp"
 #include "kernels/device/device_lambda.hpp"
 #include "kernels/device/position.hpp"
+#include "kernels/device/spin.hpp"
 #include "kernels/particles/reorder.hpp"
 
 namespace granshock {
@@ -66,16 +67,18 @@ struct ParticleStore {
   using PartnerView = Kokkos::View<int* [history_slots], MemSpace>;
   using SpringView = Kokkos::View<Real * [history_slots * Dim], MemSpace>;
   using VirialView = Kokkos::View<Real * [Dim * Dim], MemSpace>;
+  // Angular velocity and torque: about z in 2-D, vectors in 3-D (device/spin.hpp).
+  using SpinView = std::conditional_t<Dim == 2, ScalarView, VectorView>;
 
   PositionView x;      // positions
   PositionView x_ref;  // positions at the last neighbour-list build (the skin criterion)
   VectorView v, f;
   IntView species;
   IntView id;  // global id, never reused within a run
-  // With friction: spin about z and its torque, and the tangential springs, kept per
-  // partner's global id so that they survive rebuilds and reordering without remapping.
-  // Only the thread handling particle i touches i's slots (full neighbour list).
-  ScalarView omega, torque;
+  // With friction: spin (about z in 2-D) and its torque, and the tangential springs, kept
+  // per partner's global id so that they survive rebuilds and reordering without
+  // remapping. Only the thread handling particle i touches i's slots (full neighbour list).
+  SpinView omega, torque;
   PartnerView history_partner;  // partner global id per slot, -1 when free
   SpringView history_spring;    // spring xi per slot
   VectorView obstacle_spring;   // spring xi against the obstacle

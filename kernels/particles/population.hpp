@@ -16,6 +16,7 @@
 #include "kernels/device/counter_rng.hpp"
 #include "kernels/device/device_lambda.hpp"
 #include "kernels/device/host_mirror.hpp"
+#include "kernels/device/spin.hpp"
 #include "kernels/particles/particle_store.hpp"
 #include "kernels/particles/population_kernels.hpp"
 #include "kernels/particles/variant_types.hpp"
@@ -52,8 +53,9 @@ class ParticlePopulation {
     }
   }
 
-  // Inserts particles in a rectangle without overlaps, entirely on the device, in rounds
-  // (docs/scene_format.md, "The inflow"). One round:
+  // Inserts particles in a rectangle (in 3-D a box: x_range x y_range x z_range, z and the
+  // z velocity drawn from streams of their own) without overlaps, entirely on the device,
+  // in rounds (docs/scene_format.md, "The inflow"). One round:
   //  1. draw 2R + 32 candidate positions from the counter RNG (R still wanted);
   //  2. reject a candidate that overlaps a particle already near the region (including
   //     those placed by earlier rounds), or any candidate of this round with a smaller
@@ -102,6 +104,7 @@ class ParticlePopulation {
     const Position x0 = Position(rq.x_range[0]), y0 = Position(rq.y_range[0]);
     const Position wx = Position(rq.x_range[1] - rq.x_range[0]);
     const Position wy = Position(rq.y_range[1] - rq.y_range[0]);
+    const Position z0 = Position(rq.z_range[0]), wz = Position(rq.z_range[1] - rq.z_range[0]);
     const auto box = box_;
     const auto x = p.x;
 
@@ -122,12 +125,15 @@ class ParticlePopulation {
 
     const CounterRng rng{rq.seed};
     const std::uint64_t pos_stream = InsertionStreams::position(rq.event);
-    Kokkos::View<Position* [2], Mem> cand("insert_candidates", m);
+    const std::uint64_t depth_stream = InsertionStreams::depth_position(rq.event);
+    Kokkos::View<Position* [Dim], Mem> cand("insert_candidates", m);
     Kokkos::parallel_for(
         "insert::draw", Policy(0, m), KOKKOS_LAMBDA(const int k) {
           const std::uint64_t c = std::uint64_t(first_candidate + k);
           cand(k, 0) = x0 + Position(rng.uniform(pos_stream, 2 * c)) * wx;
           cand(k, 1) = y0 + Position(rng.uniform(pos_stream, 2 * c + 1)) * wy;
+          for (int d = 2; d < Dim; ++d)
+            cand(k, d) = z0 + Position(rng.uniform(depth_stream, c)) * wz;
         });
     const auto obstacle = obstacle_;
     Kokkos::View<int*, Mem> rank("insert_rank", m);
@@ -136,9 +142,8 @@ class ParticlePopulation {
     Kokkos::parallel_scan(
         "insert::accept", Policy(0, m),
         KOKKOS_LAMBDA(const int k, int& running, const bool final) {
-          Vec<Dim, Position> ck = Vec<Dim, Position>::zero();
-          ck[0] = cand(k, 0);
-          ck[1] = cand(k, 1);
+          Vec<Dim, Position> ck;
+          for (int d = 0; d < Dim; ++d) ck[d] = cand(k, d);
           bool ok = !obstacle.keeps_out(ck[0], ck[1], dmax);
           for (int e = 0; e < n_near && ok; ++e) {
             Vec<Dim, Position> dx;
@@ -147,9 +152,8 @@ class ParticlePopulation {
             ok = dot(dx, dx) >= d2;
           }
           for (int j = 0; j < k && ok; ++j) {
-            Vec<Dim, Position> dx = Vec<Dim, Position>::zero();
-            dx[0] = ck[0] - cand(j, 0);
-            dx[1] = ck[1] - cand(j, 1);
+            Vec<Dim, Position> dx;
+            for (int d = 0; d < Dim; ++d) dx[d] = ck[d] - cand(j, d);
             dx = box.minimum_image(dx);
             ok = dot(dx, dx) >= d2;
           }
@@ -160,6 +164,7 @@ class ParticlePopulation {
     const int take = accepted < wanted ? accepted : wanted;
 
     const std::uint64_t vel_stream = InsertionStreams::velocity(rq.event);
+    const std::uint64_t depth_vel_stream = InsertionStreams::depth_velocity(rq.event);
     const Real ux = Real(rq.mean_velocity[0]), uy = Real(rq.mean_velocity[1]);
     const double sigma = rq.sigma_m_per_s;
     const long first = rq.inserted_before + placed;
@@ -173,12 +178,12 @@ class ParticlePopulation {
           const int i = n + r;
           const std::uint64_t s = std::uint64_t(placed + r);  // rank within the whole event
           for (int d = 0; d < Dim; ++d) {
-            q.x(i, d) = d < 2 ? cand(k, d) : Position(0);
+            q.x(i, d) = cand(k, d);
             q.f(i, d) = 0;
           }
           q.v(i, 0) = ux + Real(sigma * rng.normal(vel_stream, 2 * s));
           q.v(i, 1) = uy + Real(sigma * rng.normal(vel_stream, 2 * s + 1));
-          for (int d = 2; d < Dim; ++d) q.v(i, d) = 0;
+          for (int d = 2; d < Dim; ++d) q.v(i, d) = Real(sigma * rng.normal(depth_vel_stream, s));
           for (int d = 0; d < Dim; ++d) q.x_ref(i, d) = q.x(i, d);
           q.species(i) = species_for(cumulative, first + r);
           q.id(i) = first_id + r;
@@ -186,8 +191,8 @@ class ParticlePopulation {
           // virial for a sample before the next one (docs/fields.md, "The contact virial").
           for (int c = 0; c < Dim * Dim; ++c) q.virial(i, c) = 0;
           if constexpr (V::friction) {
-            q.omega(i) = 0;
-            q.torque(i) = 0;
+            store_spin<Dim>(q.omega, i, zero_spin<Dim, Real>());
+            store_spin<Dim>(q.torque, i, zero_spin<Dim, Real>());
             // The row may hold a deleted particle's history: free every slot and zero
             // its spring, as the force kernel keeps them.
             for (int slot = 0; slot < Store::history_slots; ++slot) {

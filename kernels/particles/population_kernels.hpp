@@ -65,6 +65,16 @@ struct InsertionStreams {
   KOKKOS_INLINE_FUNCTION static std::uint64_t velocity(std::uint64_t event) {
     return tag ^ (2 * event + 1);
   }
+  // 3-D: the z coordinate and velocity, from streams of their own, so that x, y and the
+  // in-plane velocities are the draws a 2-D run makes. A tag that differs from `tag` in
+  // its top byte: no event below 2^55 gives a stream of the 2-D ones.
+  static constexpr std::uint64_t depth_tag = 0x5a494e5345525400ULL;  // "ZINSERT"
+  KOKKOS_INLINE_FUNCTION static std::uint64_t depth_position(std::uint64_t event) {
+    return depth_tag ^ (2 * event);
+  }
+  KOKKOS_INLINE_FUNCTION static std::uint64_t depth_velocity(std::uint64_t event) {
+    return depth_tag ^ (2 * event + 1);
+  }
 };
 
 // Species of the k-th inserted particle of a run: a Weyl sequence u_k = frac(k phi)

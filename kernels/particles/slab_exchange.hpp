@@ -132,9 +132,9 @@ class SlabExchange {
   using Mem = typename ExecSpace::memory_space;
   using Grid = CellGrid<Dim, Position>;
 
-  // The exchange takes any axis of the flat cell index, but only 2-D solvers are built
-  // (docs/design.md, "Dimension"), so only 2-D is compiled and tested.
-  static_assert(Dim == 2, "slabs of 2-D cell grids only: no 3-D solver is built");
+  // Any axis of the flat cell index, in 2-D and 3-D: a slab's boundary layer is one range
+  // of storage per grid row (or per z-layer) across the slab axis (storage_ranges).
+  static_assert(Dim == 2 || Dim == 3);
 
   // Equal slabs of the grid's rows along `axis`; two rows at least where that axis is
   // periodic, so that the rows below and above a slab are two different rows.

@@ -45,10 +45,13 @@ inline std::vector<int> in_cell_order(const std::vector<int>& cells) {
 template <class Position, class Slabs>
 HostParticles mine(const HostParticles& all, const Slabs& slabs) {
   HostParticles out;
+  // Spin values per particle: 1 in 2-D, 3 in 3-D (core/host_particles.hpp), or none.
+  const std::size_t spins = all.size() == 0 ? 0 : all.angular_velocity.size() / all.size();
   for (std::size_t i = 0; i < all.size(); ++i) {
     if (!slabs.owns(Position(all.position[i][std::size_t(slabs.axis())]))) continue;
     out.add(all.position[i], all.velocity[i], all.species[i], all.id[i]);
-    if (!all.angular_velocity.empty()) out.angular_velocity.push_back(all.angular_velocity[i]);
+    for (std::size_t c = 0; c < spins; ++c)
+      out.angular_velocity.push_back(all.angular_velocity[i * spins + c]);
   }
   return out;
 }

@@ -10,6 +10,7 @@
 #include <Kokkos_Core.hpp>
 
 #include "kernels/device/row_element.hpp"
+#include "kernels/device/spin.hpp"
 #include "kernels/device/vec.hpp"
 #include "kernels/models/clamped_normal.hpp"
 #include "kernels/models/tangential_spring.hpp"
@@ -37,6 +38,7 @@ struct ContactForceKernel {
   using Store = typename Types::Store;
   using Obstacle = typename Types::Obstacle;
   using Position = typename Types::Position;  // of x: double (device/position.hpp)
+  using SpinValue = Spin<Dim, Real>;          // about z in 2-D (device/spin.hpp)
 
   Store p;
   PairLoop<Dim, Real, Mem> pairs;
@@ -52,28 +54,29 @@ struct ContactForceKernel {
     if constexpr (Mode == ForceMode::virial) {
       Real w[Dim * Dim] = {};
       Vec<Dim, Real> force = Vec<Dim, Real>::zero();
-      Real torque = 0;
+      SpinValue torque = zero_spin<Dim, Real>();
       int used_slots = 0;
       sum_contacts(i, xi, vi, force, torque, used_slots, w);
       for (int k = 0; k < Dim * Dim; ++k) virial(i, k) = w[k];
     } else if constexpr (Mode == ForceMode::forces_and_virial) {
       Vec<Dim, Real> force;
-      Real torque;
+      SpinValue torque;
       Real w[Dim * Dim] = {};
       total(i, xi, vi, force, torque, w);
       store(i, force, torque);
       for (int k = 0; k < Dim * Dim; ++k) virial(i, k) = w[k];
     } else {
       Vec<Dim, Real> force;
-      Real torque;
+      SpinValue torque;
       total(i, xi, vi, force, torque);
       store(i, force, torque);
     }
   }
 
-  KOKKOS_FORCEINLINE_FUNCTION void store(int i, const Vec<Dim, Real>& force, Real torque) const {
+  KOKKOS_FORCEINLINE_FUNCTION void store(int i, const Vec<Dim, Real>& force,
+                                         const SpinValue& torque) const {
     for (int d = 0; d < Dim; ++d) p.f(i, d) = force[d];
-    if constexpr (V::friction) p.torque(i) = torque;
+    if constexpr (V::friction) store_spin<Dim>(p.torque, i, torque);
   }
 
   // Passed as vi to total(): particle i's own velocity is then read where a contact needs
@@ -96,10 +99,10 @@ struct ContactForceKernel {
   // known not to touch the obstacle (obstacle_runs.hpp).
   template <bool WithObstacle = V::obstacle::present, class OwnVelocity = Vec<Dim, Real>>
   KOKKOS_FORCEINLINE_FUNCTION void total(int i, const Vec<Dim, Position>& xi, const OwnVelocity& vi,
-                                         Vec<Dim, Real>& force, Real& torque,
+                                         Vec<Dim, Real>& force, SpinValue& torque,
                                          Real* w = nullptr) const {
     force = Vec<Dim, Real>::zero();
-    torque = 0;
+    torque = zero_spin<Dim, Real>();
     int used_slots = 0;  // bit s set when slot s carried a contact this step
     sum_contacts(i, xi, vi, force, torque, used_slots, w);
     if constexpr (V::friction) release_unused_slots(i, used_slots);
@@ -114,7 +117,7 @@ struct ContactForceKernel {
   template <class OwnVelocity>
   KOKKOS_FORCEINLINE_FUNCTION void sum_contacts(int i, const Vec<Dim, Position>& xi,
                                                 const OwnVelocity& vi, Vec<Dim, Real>& force,
-                                                Real& torque, int& used_slots, Real* w) const {
+                                                SpinValue& torque, int& used_slots, Real* w) const {
     const int si = p.species(i);
     const Real ri = table.radius(si);
     pairs.for_each_contact(
@@ -129,17 +132,16 @@ struct ContactForceKernel {
           if constexpr (V::friction) {
             const int slot = Mode != ForceMode::virial ? claim_slot(i, p.id(j), used_slots)
                                                        : find_slot(i, p.id(j));
-            const Vec<2, Real> vc =
-                contact_point_velocity(vrel, n, ri * p.omega(i) + table.radius(sj) * p.omega(j));
-            Vec<2, Real> xi_t = Vec<2, Real>::zero();
+            const Vec<Dim, Real> vc = contact_point_velocity(
+                vrel, n,
+                ri * load_spin<Dim>(p.omega, i) + table.radius(sj) * load_spin<Dim>(p.omega, j));
+            Vec<Dim, Real> xi_t = Vec<Dim, Real>::zero();
             if (slot >= 0)
-              xi_t = {{p.history_spring(i, Dim * slot), p.history_spring(i, Dim * slot + 1)}};
-            const Vec<2, Real> ft = friction(c, normal, n, vc, xi_t);
+              for (int d = 0; d < Dim; ++d) xi_t[d] = p.history_spring(i, Dim * slot + d);
+            const Vec<Dim, Real> ft = friction(c, normal, n, vc, xi_t);
             if constexpr (Mode != ForceMode::virial) {
-              if (slot >= 0) {
-                p.history_spring(i, Dim * slot) = xi_t[0];
-                p.history_spring(i, Dim * slot + 1) = xi_t[1];
-              }
+              if (slot >= 0)
+                for (int d = 0; d < Dim; ++d) p.history_spring(i, Dim * slot + d) = xi_t[d];
               torque += contact_torque(ri, n, ft);
             }
             pair_force += ft;
@@ -154,9 +156,10 @@ struct ContactForceKernel {
   // The tangential force of a contact with normal force `normal` (docs/contact_model.md,
   // "Tangential force"); advances the spring xi_t.
   template <class Coefficients, class Normal>
-  KOKKOS_FORCEINLINE_FUNCTION Vec<2, Real> friction(const Coefficients& c, const Normal& normal,
-                                                    const Vec<Dim, Real>& n, const Vec<2, Real>& vc,
-                                                    Vec<2, Real>& xi_t) const {
+  KOKKOS_FORCEINLINE_FUNCTION Vec<Dim, Real> friction(const Coefficients& c, const Normal& normal,
+                                                      const Vec<Dim, Real>& n,
+                                                      const Vec<Dim, Real>& vc,
+                                                      Vec<Dim, Real>& xi_t) const {
     const auto spring = Model::tangential(c, normal);
     return tangential_force(spring.kt, spring.gt, c.friction, normal.force, n, vc, dt, xi_t);
   }
@@ -171,7 +174,8 @@ struct ContactForceKernel {
   // force with the obstacle coefficients (R* = r_i, m* = m_i).
   KOKKOS_FORCEINLINE_FUNCTION void obstacle_contact(int i, const Vec<Dim, Position>& xi,
                                                     const Vec<Dim, Real>& vi, int si, Real ri,
-                                                    Vec<Dim, Real>& force, Real& torque) const {
+                                                    Vec<Dim, Real>& force,
+                                                    SpinValue& torque) const {
     Real dn;
     Vec<Dim, Real> n;
     if (!obstacle.touches(xi, ri, dn, n)) {
@@ -183,11 +187,11 @@ struct ContactForceKernel {
     const auto normal = clamped_normal<Model>(c, dn, dot(vi, n), table.normal_force_floor);
     force += normal.force * n;
     if constexpr (V::friction) {
-      const Vec<2, Real> vc = contact_point_velocity(vi, n, ri * p.omega(i));
-      Vec<2, Real> xi_t{{p.obstacle_spring(i, 0), p.obstacle_spring(i, 1)}};
-      const Vec<2, Real> ft = friction(c, normal, n, vc, xi_t);
-      p.obstacle_spring(i, 0) = xi_t[0];
-      p.obstacle_spring(i, 1) = xi_t[1];
+      const Vec<Dim, Real> vc = contact_point_velocity(vi, n, ri * load_spin<Dim>(p.omega, i));
+      Vec<Dim, Real> xi_t;
+      for (int d = 0; d < Dim; ++d) xi_t[d] = p.obstacle_spring(i, d);
+      const Vec<Dim, Real> ft = friction(c, normal, n, vc, xi_t);
+      for (int d = 0; d < Dim; ++d) p.obstacle_spring(i, d) = xi_t[d];
       force += ft;
       torque += contact_torque(ri, n, ft);
     }

@@ -19,6 +19,7 @@
 
 #include "core/communicator.hpp"
 #include "core/solver.hpp"
+#include "core/user_error.hpp"
 #include "kernels/device/backends.hpp"
 #include "kernels/solver/list_keeping.hpp"
 #include "kernels/solver/solver_parts.hpp"
@@ -97,7 +98,13 @@ class DemSolver final : public Solver {
   }
 
   // Field sampling ----------------------------------------------------------------------
-  void configure_sampling(const FieldSampling& f) override { s_.sampler.configure(f); }
+  // 3-D: refused until the bins keep the z moments and the virial's 3 x 3 terms (the
+  // bins' layout, core/bin_layout.hpp, holds the x-y ones: docs/design.md, "Dimension").
+  void configure_sampling(const FieldSampling& f) override {
+    if constexpr (V::dim == 3)
+      throw UserError("field sampling is 2-D only: 3-D bins need the z moments");
+    s_.sampler.configure(f);
+  }
 
   // The virial of the last force pass where it recorded one at this step; otherwise (a
   // state from a checkpoint that held none) computed here, at the current velocities.

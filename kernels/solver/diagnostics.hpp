@@ -15,6 +15,7 @@
 #include "kernels/device/backends.hpp"
 #include "kernels/device/device_lambda.hpp"
 #include "kernels/device/host_mirror.hpp"
+#include "kernels/device/spin.hpp"
 #include "kernels/neighbours/pair_loop.hpp"
 #include "kernels/particles/particle_store.hpp"
 #include "kernels/particles/variant_types.hpp"
@@ -72,8 +73,7 @@ struct SolverDiagnostics {
     if constexpr (V::friction) {
       out.rotational_energy = sum(
           "diag::rotational", KOKKOS_LAMBDA(const int i, double& acc) {
-            acc +=
-                0.5 * double(omega(i)) * double(omega(i)) / double(table_.inv_inertia(species(i)));
+            acc += 0.5 * spin_square<Dim>(omega, i) / double(table_.inv_inertia(species(i)));
           });
     }
     for (int c = 0; c < Dim; ++c) {

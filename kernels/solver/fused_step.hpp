@@ -22,6 +22,7 @@
 
 #include "kernels/device/backends.hpp"
 #include "kernels/device/row_element.hpp"
+#include "kernels/device/spin.hpp"
 #include "kernels/particles/variant_types.hpp"
 #include "kernels/solver/contact_forces.hpp"
 #include "kernels/solver/kick.hpp"
@@ -37,12 +38,13 @@ struct FusedStepKernel {
   using Store = typename Types::Store;
   using Position = typename Types::Position;
   using VectorView = typename Store::VectorView;
-  using ScalarView = typename Store::ScalarView;
+  using SpinView = typename Store::SpinView;
+  using SpinValue = Spin<Dim, Real>;  // device/spin.hpp
 
   ContactForceKernel<V, ExecSpace> forces;  // reads the current x, v (and spin)
   typename Store::PositionView x_next;
   VectorView v_next;
-  ScalarView omega_next;  // with friction
+  SpinView omega_next;  // with friction
   Vec<Dim, Real> gravity;
   bool report_speed;  // reduce max |v|^2 instead of the displacement since the last build
 
@@ -80,7 +82,7 @@ struct FusedStepKernel {
     // constants are read after the first loop for the same reason. The arithmetic is the
     // same, so the trajectory is bitwise the same.
     Vec<Dim, Real> f[run_length];
-    Real torque[run_length];
+    SpinValue torque[run_length];
     if (!V::obstacle::present || run >= runs_known || near_obstacle(run)) {
       for (int i = first; i < last; ++i) force(i, f[i - first], torque[i - first]);
     } else {
@@ -102,7 +104,7 @@ struct FusedStepKernel {
   // The force and torque on particle i. WithObstacle false: particle i is known not to
   // touch the obstacle (obstacle_runs.hpp).
   template <bool WithObstacle = V::obstacle::present>
-  KOKKOS_FORCEINLINE_FUNCTION void force(const int i, Vec<Dim, Real>& f, Real& torque) const {
+  KOKKOS_FORCEINLINE_FUNCTION void force(const int i, Vec<Dim, Real>& f, SpinValue& torque) const {
     forces.template total<WithObstacle>(
         i, forces.pairs.position(i), typename ContactForceKernel<V, ExecSpace>::ReadOwnVelocity{},
         f, torque);
@@ -111,9 +113,9 @@ struct FusedStepKernel {
   // The kicks and the drift of particle i under force f (and torque), written to the
   // second buffers; worst gets the particle's squared speed (BySpeed) or displacement.
   template <bool BySpeed>
-  KOKKOS_FORCEINLINE_FUNCTION void move(const int i, const Vec<Dim, Real>& f, const Real torque,
-                                        const Real half, const Real step, const Vec<Dim, Real>& g,
-                                        Real& worst) const {
+  KOKKOS_FORCEINLINE_FUNCTION void move(const int i, const Vec<Dim, Real>& f,
+                                        const SpinValue& torque, const Real half, const Real step,
+                                        const Vec<Dim, Real>& g, Real& worst) const {
     const auto& p = forces.p;
     const Vec<Dim, Position> xi = forces.pairs.position(i);
     const Vec<Dim, Real> vi = forces.velocity(i);
@@ -140,10 +142,10 @@ struct FusedStepKernel {
     }
     if constexpr (V::friction) {
       const Real ii = forces.table.inv_inertia(s);
-      Real w = p.omega(i);
+      SpinValue w = load_spin<Dim>(p.omega, i);
       half_spin_kick(w, half, torque, ii);
       half_spin_kick(w, half, torque, ii);
-      omega_next(i) = w;
+      store_spin<Dim>(omega_next, i, w);
     } else {
       (void)torque;
     }

@@ -120,7 +120,7 @@ struct SolverParts {
   ThreadShares<Mem> thread_shares{setup.thread_shares};  // the threads' runs in those regions
   typename Store::PositionView x_next;                   // the fused step's second buffers
   typename Store::VectorView v_next;
-  typename Store::ScalarView omega_next;
+  typename Store::SpinView omega_next;
   Kokkos::View<std::uint8_t*, Mem> near_obstacle_runs;       // obstacle scenes only
   int near_obstacle_runs_known = 0;                          // work items marked at the build
   Kokkos::View<ChainState, Mem> chain_state{"chain_state"};  // device paths (chained_steps.hpp)

@@ -18,6 +18,7 @@
 #include "core/solver_state.hpp"
 #include "core/user_error.hpp"
 #include "kernels/device/host_mirror.hpp"
+#include "kernels/device/spin.hpp"
 #include "kernels/particles/slab_state.hpp"
 #include "kernels/solver/list_keeping.hpp"
 #include "kernels/solver/solver_parts.hpp"
@@ -68,7 +69,11 @@ class StateTransfer {
         vi[d] = v(i, d);
       }
       hp.add(xi, vi, species(i), id(i));
-      if constexpr (V::friction) hp.angular_velocity.push_back(omega(i));
+      if constexpr (V::friction && Dim == 2) {
+        hp.angular_velocity.push_back(omega(i));
+      } else if constexpr (V::friction) {
+        for (int c = 0; c < spin_components(Dim); ++c) hp.angular_velocity.push_back(omega(i, c));
+      }
     }
     return hp;
   }

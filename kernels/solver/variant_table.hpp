@@ -1,11 +1,11 @@
 // The variant table (docs/design.md, "The variant table"): every combination of dimension,
 // contact law, friction and obstacle shape that granshock compiles, for each precision and
-// backend. The lists below are the whole table; make_solver_variant walks their product,
-// skips the combinations a Variant does not compile (Variant::compiled), and builds the
-// DemSolver whose Variant matches the scene. Adding a contact law is one entry in
-// ContactLaws (kernels/models/models.hpp), an obstacle shape one entry in ObstacleShapes
-// (models/obstacle_shapes.hpp), which adds no variant; adding a backend is one file
-// variants_<backend>_<precision>.cpp and a line in solver_dispatch.cpp.
+// backend. The lists below are the whole table; make_solver_variant walks their product
+// for one dimension, skips the combinations a Variant does not compile (Variant::compiled:
+// 3-D in double precision only), and builds the DemSolver whose Variant matches the scene. Adding a
+// contact law is one entry in ContactLaws (kernels/models/models.hpp), an obstacle shape one entry
+// in ObstacleShapes (models/obstacle_shapes.hpp), which adds no variant; adding a backend is one
+// file variants_<backend>_<precision>[_3d].cpp and a line in solver_dispatch.cpp.
 #pragma once
 
 #include <memory>
@@ -21,8 +21,8 @@ namespace granshock {
 template <int... D>
 struct DimList {};
 
-using CompiledDimensions = DimList<2>;  // quasi-2-D; 3-D needs 3-D insertion and sampling
-using CompiledModels = ContactLaws;     // kernels/models/models.hpp
+using CompiledDimensions = DimList<2, 3>;  // one translation unit per dimension
+using CompiledModels = ContactLaws;        // kernels/models/models.hpp
 // Every shape is one ObstacleBody (kernels/models/obstacle_body.hpp): shapes add no variant.
 using CompiledObstacles = TypeList<NoObstacle, ObstacleBody>;
 
@@ -47,10 +47,10 @@ void for_each_variant(F&& f, DimList<Dims...>, TypeList<Models...>, TypeList<Obs
   (with_dim(std::integral_constant<int, Dims>{}), ...);
 }
 
-// The solver of the compiled variant that matches the scene, for one precision and backend
-// (instantiated in variants_<backend>_<precision>.cpp, which compile in parallel), on the
-// backend's own host or device paths (device/backends.hpp).
-template <class Real, class ExecSpace, class Paths = DefaultPaths<ExecSpace>>
+// The solver of the compiled variant that matches the scene, for one dimension, precision
+// and backend (instantiated in variants_<backend>_<precision>[_3d].cpp, which compile in
+// parallel), on the backend's own host or device paths (device/backends.hpp).
+template <int Dim, class Real, class ExecSpace, class Paths = DefaultPaths<ExecSpace>>
 std::unique_ptr<Solver> make_solver_variant(const SolverSetup& setup, std::size_t capacity,
                                             const Communicator& comm);
 

@@ -6,7 +6,7 @@
 
 namespace granshock {
 
-template <class Real, class ExecSpace, class Paths>
+template <int Dim, class Real, class ExecSpace, class Paths>
 std::unique_ptr<Solver> make_solver_variant(const SolverSetup& setup, std::size_t capacity,
                                             const Communicator& comm) {
   std::unique_ptr<Solver> solver;
@@ -16,7 +16,7 @@ std::unique_ptr<Solver> make_solver_variant(const SolverSetup& setup, std::size_
         if (!solver && V::matches(setup))
           solver = std::make_unique<DemSolver<V, ExecSpace, Paths>>(setup, capacity, comm);
       },
-      CompiledDimensions{}, CompiledModels{}, CompiledObstacles{});
+      DimList<Dim>{}, CompiledModels{}, CompiledObstacles{});
   if (!solver)
     throw UserError(
         "no compiled solver variant for this scene (dim = " + std::to_string(setup.dim) +

@@ -1,6 +1,6 @@
 #include "kernels/solver/variants.inl"
 
 namespace granshock {
-template std::unique_ptr<Solver> make_solver_variant<float, Kokkos::DefaultExecutionSpace>(
+template std::unique_ptr<Solver> make_solver_variant<2, float, Kokkos::DefaultExecutionSpace>(
     const SolverSetup&, std::size_t, const Communicator&);
 }  // namespace granshock

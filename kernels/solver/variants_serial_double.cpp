@@ -3,8 +3,7 @@
 #include "kernels/solver/variants.inl"
 
 namespace granshock {
-template std::unique_ptr<Solver> make_solver_variant<double, Kokkos::Serial>(const SolverSetup&,
-                                                                             std::size_t,
-                                                                             const Communicator&);
+template std::unique_ptr<Solver> make_solver_variant<2, double, Kokkos::Serial>(
+    const SolverSetup&, std::size_t, const Communicator&);
 }  // namespace granshock
 #endif

@@ -9,6 +9,7 @@
 #include <Kokkos_Core.hpp>
 
 #include "kernels/device/device_lambda.hpp"
+#include "kernels/device/spin.hpp"
 #include "kernels/device/vec.hpp"
 #include "kernels/particles/particle_store.hpp"
 #include "kernels/particles/variant_types.hpp"
@@ -65,7 +66,11 @@ struct VelocityVerlet {
             const Real moved = Real(x(i, d) - x_ref(i, d));
             d2 += moved * moved;
           }
-          if constexpr (V::friction) half_spin_kick(omega(i), half, torque(i), inv_inertia(s));
+          if constexpr (V::friction) {
+            Spin<Dim, Real> w = load_spin<Dim>(omega, i);
+            half_spin_kick(w, half, load_spin<Dim>(torque, i), inv_inertia(s));
+            store_spin<Dim>(omega, i, w);
+          }
           if (d2 > worst) worst = d2;
         },
         largest);
@@ -103,7 +108,11 @@ struct VelocityVerlet {
           const int s = species(i);
           const Real im = inv_mass(s);
           for (int d = 0; d < Dim; ++d) half_kick(v(i, d), half, f(i, d), im, g[d]);
-          if constexpr (V::friction) half_spin_kick(omega(i), half, torque(i), inv_inertia(s));
+          if constexpr (V::friction) {
+            Spin<Dim, Real> w = load_spin<Dim>(omega, i);
+            half_spin_kick(w, half, load_spin<Dim>(torque, i), inv_inertia(s));
+            store_spin<Dim>(omega, i, w);
+          }
         });
   }
 };

@@ -92,7 +92,8 @@ SolverState make_state(int n, int dim, int slots, unsigned seed) {
   s.removed_low = {1, 20000000000L, 3};
   s.removed_high = {4, 5, 6};
   if (slots > 0) {
-    for (std::size_t i = 0; i < un; ++i) {
+    // About z in 2-D, a vector in 3-D (core/solver_state.hpp).
+    for (std::size_t i = 0; i < un * std::size_t(spin_components(dim)); ++i) {
       s.angular_velocity.push_back(value());
       s.torque.push_back(value());
     }

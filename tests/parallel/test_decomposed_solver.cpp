@@ -5,6 +5,7 @@
 // case runs on slabs along y and along x (where the ghost rows interleave by cell).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 #include <map>
 #include <memory>
@@ -33,7 +34,7 @@ class DecomposedSolver : public ::testing::TestWithParam<SlabAxis> {
     solver->decompose(d);
     return solver;
   }
-  void expect_dense_gas_bitwise(bool adaptive_skin) const;
+  void expect_dense_gas_bitwise(bool adaptive_skin, int dim = 2) const;
 };
 
 }  // namespace
@@ -45,23 +46,32 @@ INSTANTIATE_TEST_SUITE_P(SlabsAlong, DecomposedSolver, ::testing::Values(SlabAxi
 
 // With an adaptive skin every rank must pick the same skin at the same builds (counts
 // summed over ranks), or the lists, and so the sums, would differ from one process's.
-void DecomposedSolver::expect_dense_gas_bitwise(bool adaptive_skin) const {
+// In 3-D the spheres (13^3 = 2197) have friction (mu = 0.4) and start spinning (three
+// components each, handed to each slab with its particle), and their spins are compared
+// too; they travel 1.6 d over 4000 steps, and the slabs' boundary layers are a range of
+// storage per grid row and z-layer.
+void DecomposedSolver::expect_dense_gas_bitwise(bool adaptive_skin, int dim) const {
   const MpiCommunicator comm;
   SolverSetup setup = paper_mixture(0.5);
   setup.adaptive_skin = adaptive_skin;
+  setup.dim = dim;
+  if (dim == 3) setup.contacts = ContactSettings::uniform(2, 0.5, 0.4);
   // phi = 0.3 at 2 m/s: about 1.3 contacts per particle, and particles cross slab faces
   // many times over 8000 steps (3.2 d travelled at the mean speed).
   const GasSpec spec{2000, 0.3, 2.0, 11};
   size_periodic_box(setup, spec);
   setup.dt = 1e-7;  // about t_c/20 at the fastest impacts of this gas
-  const HostParticles gas = make_homogeneous_gas(setup, spec);
+  HostParticles gas = make_homogeneous_gas(setup, spec);
+  if (dim == 3)
+    for (std::size_t k = 0; k < 3 * gas.size(); ++k)
+      gas.angular_velocity.push_back(1000.0 * std::sin(double(k)));  // rad/s: v ~ r w / 2
 
   const auto one = make_solver(setup, gas.size());  // one process, on this rank
   const auto slabs = on_slabs(setup, gas.size(), comm);
   one->set_particles(gas);
   slabs->set_particles(gas);
   EXPECT_EQ(comm.sum(long(slabs->size())), long(gas.size()));
-  for (int chunk = 0; chunk < 4; ++chunk) {
+  for (int chunk = 0; chunk < (dim == 3 ? 2 : 4); ++chunk) {
     one->advance(2000);
     slabs->advance(2000);
   }
@@ -78,10 +88,20 @@ void DecomposedSolver::expect_dense_gas_bitwise(bool adaptive_skin) const {
   long differing = 0;
   for (std::size_t k = 0; k < mine.size(); ++k) {
     const std::size_t r = index.at(mine.id[k]);
-    for (int d = 0; d < 2; ++d)
+    for (int d = 0; d < dim; ++d)
       if (!same_bits(mine.position[k][d], all.position[r][d]) ||
           !same_bits(mine.velocity[k][d], all.velocity[r][d]))
         ++differing;
+    const std::size_t spins = mine.angular_velocity.size() / mine.size();
+    for (std::size_t c = 0; c < spins; ++c)
+      if (!same_bits(mine.angular_velocity[k * spins + c], all.angular_velocity[r * spins + c]))
+        ++differing;
+  }
+  if (dim == 3) {
+    EXPECT_EQ(all.angular_velocity.size(), 3 * all.size());
+    double spin = 0;
+    for (double w : all.angular_velocity) spin += std::abs(w);
+    EXPECT_GT(spin, 0) << "friction never turned a sphere";
   }
   EXPECT_EQ(comm.sum(differing), 0L) << "components differing from one process (all ranks)";
 }
@@ -92,6 +112,10 @@ TEST_P(DecomposedSolver, DenseGasIsBitwiseTheSameAsOneProcess) {
 
 TEST_P(DecomposedSolver, DenseGasWithAdaptiveSkinIsBitwiseTheSameAsOneProcess) {
   expect_dense_gas_bitwise(true);
+}
+
+TEST_P(DecomposedSolver, DenseFrictionalGasIn3dIsBitwiseTheSameAsOneProcess) {
+  expect_dense_gas_bitwise(false, 3);
 }
 
 // An open y axis with the gas in its lower half only: the upper slabs along y start empty

@@ -12,7 +12,10 @@
 // The set-up and the solver run are in oblique_impact.hpp (shared with the hooke test).
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "core/solver.hpp"
 #include "physics/oblique_impact.hpp"
@@ -106,4 +109,90 @@ TEST(FrictionImpact, StickingStaysBelowTheCoulombLimit) {
   EXPECT_NEAR(r.jt, ref, 0.02 * std::abs(ref)) << "reference tangential impulse " << ref;
   const Species sp{"steel", steel(), kD};
   EXPECT_NEAR(sp.moment_of_inertia() * r.spin, -kR * r.jt, 1e-3 * std::abs(kR * r.jt));
+}
+
+namespace {
+
+// 3-D (docs/contact_model.md, "Tangential force"): the steel sphere strikes the flat -y
+// face of a plate (0.2 m wide, 0.02 m thick, extruded along z), with the slip along the
+// face's tangent t = (t_x, 0, t_z). The face is the same flat wall in every tangential
+// direction and its normal n = (0, -1, 0) does not turn (unlike the cylinder's), so the
+// impulses must be the 2-D impact's (slip along x) for any t, up to rounding; the spin is
+// then a vector, the contact point's velocity vrel - (r w) x n and the torque -r n x Ft in
+// full.
+struct PlateImpact {
+  double jn;                   // normal impulse on the particle: m (vn - v_y)
+  std::array<double, 3> jt;    // tangential impulse on the particle, m (v - v0), y excluded
+  std::array<double, 3> spin;  // final angular velocity (2-D: z only)
+};
+
+PlateImpact simulate_plate_impact(int dim, double vn, double vt, const std::array<double, 2>& t) {
+  SolverSetup s = wall_setup(ContactModelKind::hertz, 0);
+  s.dim = dim;
+  s.obstacle = make_obstacle(ObstacleShape::plate, {0, 0, 0}, {0.2, 0.02}, aluminium());
+  if (dim == 3) {
+    s.box.lo[2] = -2 * kD;  // open along z; the particle moves by 1e-5 d along z
+    s.box.hi[2] = 2 * kD;
+  }
+  s.dt = collision_time(ContactModelKind::hertz, s.obstacle_pair(0), s.contacts.options, vn) / 100;
+  auto solver = make_solver(s, 1);
+  HostParticles p;
+  const std::array<double, 3> v0{vt * t[0], vn, vt * t[1]};
+  const double y0 = -(0.01 + kR + 3 * vn * s.dt);
+  p.add({0, y0, 0}, v0, 0, 0);
+  solver->set_particles(p);
+  const double m = s.species[0].mass_kg();
+  PlateImpact out{};
+  for (int step = 0; step < 2000; ++step) {
+    solver->advance(1);
+    const HostParticles q = solver->particles();
+    out.jn = m * (vn - q.velocity[0][1]);
+    for (int d : {0, 2}) out.jt[d] = m * (q.velocity[0][d] - v0[d]);
+    const std::vector<double>& w = q.angular_velocity;
+    out.spin = dim == 2 ? std::array<double, 3>{0, 0, w.at(0)}
+                        : std::array<double, 3>{w.at(0), w.at(1), w.at(2)};
+    if (q.position[0][1] < y0) break;  // rebounded past its start
+  }
+  return out;
+}
+
+// Returns the 3-D impact with the slip at 60 degrees to the plane of motion.
+PlateImpact expect_3d_impact_as_in_the_plane(double vn, double vt) {
+  const PlateImpact plane = simulate_plate_impact(2, vn, vt, {1, 0});
+  const double inertia = Species{"steel", steel(), kD}.moment_of_inertia();
+  EXPECT_GT(plane.jn, 0);
+  EXPECT_LT(plane.jt[0], 0);  // against the slip
+  PlateImpact slanted{};
+  // In the plane, along z, and at 60 degrees from the plane of motion.
+  for (const std::array<double, 2> t :
+       {std::array<double, 2>{1, 0}, {0, 1}, {0.5, std::sqrt(0.75)}}) {
+    SCOPED_TRACE("tangent (" + std::to_string(t[0]) + ", 0, " + std::to_string(t[1]) + ")");
+    const PlateImpact r = simulate_plate_impact(3, vn, vt, t);
+    // The same arithmetic as the 2-D solver's up to rounding: 1e-9 relative.
+    const double jt = std::abs(plane.jt[0]);
+    EXPECT_NEAR(r.jn, plane.jn, 1e-9 * plane.jn);
+    const double along = r.jt[0] * t[0] + r.jt[2] * t[1];
+    const double across = r.jt[2] * t[0] - r.jt[0] * t[1];
+    EXPECT_NEAR(along, plane.jt[0], 1e-9 * jt) << "2-D impulse " << plane.jt[0];
+    EXPECT_NEAR(across, 0, 1e-9 * jt) << "the impulse left the slip's direction";
+    // I w = (-r n) x J_t = (0, r, 0) x (J_x, 0, J_z) = (r J_z, 0, -r J_x).
+    EXPECT_NEAR(inertia * r.spin[0], kR * r.jt[2], 1e-9 * kR * jt);
+    EXPECT_NEAR(inertia * r.spin[1], 0, 1e-9 * kR * jt);
+    EXPECT_NEAR(inertia * r.spin[2], -kR * r.jt[0], 1e-9 * kR * jt);
+    slanted = r;
+  }
+  EXPECT_NEAR(inertia * plane.spin[2], -kR * plane.jt[0], 1e-9 * kR * std::abs(plane.jt[0]));
+  return slanted;
+}
+
+}  // namespace
+
+TEST(FrictionImpact, ThreeDimensionsSlidingAlongAnyTangentIsThePlaneImpact) {
+  const PlateImpact r = expect_3d_impact_as_in_the_plane(1.0, 4.0);
+  EXPECT_NEAR(std::hypot(r.jt[0], r.jt[2]) / r.jn, kMu, 0.005 * kMu);  // Coulomb's law
+}
+
+TEST(FrictionImpact, ThreeDimensionsStickingAlongAnyTangentIsThePlaneImpact) {
+  const PlateImpact r = expect_3d_impact_as_in_the_plane(1.0, 0.2);
+  EXPECT_LT(std::hypot(r.jt[0], r.jt[2]) / r.jn, 0.9 * kMu) << "it must not slide";
 }

@@ -36,10 +36,10 @@ std::unique_ptr<Solver> other_paths_solver(const SolverSetup& s, std::size_t cap
             solver = std::make_unique<DemSolver<V, Space, Other>>(s, capacity,
                                                                   SingleProcess::instance());
         },
-        CompiledDimensions{}, TypeList<HertzModel>{}, CompiledObstacles{});
+        DimList<2>{}, TypeList<HertzModel>{}, CompiledObstacles{});
     if (!solver)
       throw std::logic_error(
-          "make_solver_on_paths: the other paths are built for double precision and Hertz "
+          "make_solver_on_paths: the other paths are built for 2-D, double precision and Hertz "
           "contacts only");
     return solver;
   }

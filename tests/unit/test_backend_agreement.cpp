@@ -26,7 +26,8 @@ namespace {
 using test::expect_bitwise_identical;
 
 // A 2500-particle gas at phi = 0.4 in a periodic box (around a centred cylinder when the
-// setup has one, the box then open along y).
+// setup has one, the box then open along z in 2-D); in 3-D (s.dim = 3) a cube of
+// 14^3 = 2744 spheres, periodic on every axis, around the cylinder extruded along z.
 HostParticles make_gas(SolverSetup& s) {
   GasSpec spec;
   spec.particles = 2500;
@@ -35,7 +36,7 @@ HostParticles make_gas(SolverSetup& s) {
   size_periodic_box(s, spec);
   if (s.obstacle) {
     s.obstacle->centre = {0.5 * s.box.length(0), 0.5 * s.box.length(1), 0};
-    s.box.periodic = {true, true, false};
+    s.box.periodic = {true, true, s.dim == 3};
   }
   HostParticles gas = make_homogeneous_gas(s, spec);
   if (s.obstacle) {  // remove particles that would start inside the cylinder
@@ -111,6 +112,11 @@ SolverSetup friction_with_obstacle() {
   return s;
 }
 
+SolverSetup in_3d(SolverSetup s) {
+  s.dim = 3;
+  return s;
+}
+
 }  // namespace
 
 TEST(BackendAgreement, FrictionlessDouble) {
@@ -134,6 +140,15 @@ TEST(FusedStep, MatchesSeparateHalvesFrictionless) {
 
 TEST(FusedStep, MatchesSeparateHalvesWithFrictionAndObstacle) {
   compare_fused_with_separate_halves(friction_with_obstacle(), 2000);
+}
+
+// 3-D: spin vectors, 3-component springs and the 27-cell search, bitwise as in 2-D.
+TEST(BackendAgreement, FrictionWithObstacleIn3d) {
+  compare_backends(in_3d(friction_with_obstacle()), 2000);
+}
+
+TEST(FusedStep, MatchesSeparateHalvesWithFrictionAndObstacleIn3d) {
+  compare_fused_with_separate_halves(in_3d(friction_with_obstacle()), 1000);
 }
 
 namespace {
