@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 
@@ -20,13 +21,20 @@ using namespace granshock;
 
 namespace {
 
-TEST(ThreeDimensions, InsertionFillsTheLayerWithoutOverlap) {
-  SolverSetup s = paper_mixture(0.9);
+// The paper mixture of spheres in the box [0, hi) with the given periodic axes.
+SolverSetup spheres_in_box(double restitution, double dt, const std::array<double, 3>& hi,
+                           const std::array<bool, 3>& periodic) {
+  SolverSetup s = paper_mixture(restitution);
   s.dim = 3;
-  s.dt = 1e-7;
+  s.dt = dt;
   s.box.lo = {0, 0, 0};
-  s.box.hi = {0.04, 0.04, 0.003};
-  s.box.periodic = {true, false, false};
+  s.box.hi = hi;
+  s.box.periodic = periodic;
+  return s;
+}
+
+TEST(ThreeDimensions, InsertionFillsTheLayerWithoutOverlap) {
+  const SolverSetup s = spheres_in_box(0.9, 1e-7, {0.04, 0.04, 0.003}, {true, false, false});
   auto solver = make_solver(s, 1024);
   InsertionRequest rq;
   rq.x_range = {0, 0.04};
@@ -112,12 +120,7 @@ TEST(ThreeDimensions, StateImportsIntoAFreshSolverAndContinuesBitwise) {
 // Deletion through the open z faces: a sphere past the box along z is deleted and counted
 // on its face, as along x and y.
 TEST(ThreeDimensions, SpheresLeavingAlongZAreDeletedAndCountedPerFace) {
-  SolverSetup s = paper_mixture(0.5);
-  s.dim = 3;
-  s.dt = 1e-6;
-  s.box.lo = {0, 0, 0};
-  s.box.hi = {0.01, 0.01, 0.004};
-  s.box.periodic = {true, true, false};
+  SolverSetup s = spheres_in_box(0.5, 1e-6, {0.01, 0.01, 0.004}, {true, true, false});
   s.delete_outside = true;
   HostParticles p;
   p.add({0.002, 0.002, 0.0015}, {0, 0, -1.0}, 0, 0);  // leaves through z = 0
