@@ -52,29 +52,17 @@ HostParticles make_homogeneous_gas(const SolverSetup& setup, const GasSpec& spec
   const CounterRng rng{spec.seed};
   const int n_species = int(setup.species.size());
   HostParticles p;
-  if (setup.dim == 3) {
-    // The 2-D lattice's draws for x and y, new streams for z.
-    for (int k = 0; k < side * side * side; ++k) {
-      const int ix = k % side, iy = (k / side) % side, iz = k / (side * side);
-      std::array<double, 3> x{}, v{};
-      const int cell[3] = {ix, iy, iz};
-      for (int d = 0; d < 3; ++d) {
-        x[d] = setup.box.lo[d] + (cell[d] + 0.5) * spacing + (rng.uniform(k, d) - 0.5) * room;
-        v[d] = spec.sigma_m_per_s * rng.normal(k, d + 1);
-      }
-      p.add(x, v, k % n_species, k);
+  const int sites = setup.dim == 3 ? side * side * side : side * side;
+  for (int k = 0; k < sites; ++k) {
+    // Site k's cell along each axis; the jitter keeps every pair at least one diameter
+    // apart: each centre stays within room/2 of its lattice site. Axis d draws uniform
+    // number d and normal number d + 1 of stream k (z only in 3-D).
+    std::array<double, 3> x{0, 0, 0}, v{0, 0, 0};
+    for (int d = 0, stride = 1; d < setup.dim; ++d, stride *= side) {
+      const int cell = (k / stride) % side;
+      x[d] = setup.box.lo[d] + (cell + 0.5) * spacing + (rng.uniform(k, d) - 0.5) * room;
+      v[d] = spec.sigma_m_per_s * rng.normal(k, d + 1);
     }
-  }
-  for (int k = 0; setup.dim == 2 && k < side * side; ++k) {
-    const int ix = k % side, iy = k / side;
-    // Jitter keeps every pair at least one diameter apart: each centre stays within
-    // room/2 of its lattice site.
-    const double jx = (rng.uniform(k, 0) - 0.5) * room;
-    const double jy = (rng.uniform(k, 1) - 0.5) * room;
-    const std::array<double, 3> x{setup.box.lo[0] + (ix + 0.5) * spacing + jx,
-                                  setup.box.lo[1] + (iy + 0.5) * spacing + jy, 0};
-    const std::array<double, 3> v{spec.sigma_m_per_s * rng.normal(k, 1),
-                                  spec.sigma_m_per_s * rng.normal(k, 2), 0};
     p.add(x, v, k % n_species, k);
   }
   // Remove the centre-of-mass velocity so the total momentum is zero.
