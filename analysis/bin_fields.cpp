@@ -66,7 +66,11 @@ BinFields compute_bin_fields(const BinSums& sums, const FieldPhysics& phys, cons
   f.nx = sums.nx;
   f.ny = sums.ny;
   f.n_species = sums.n_species;
+  f.dim = sums.dim;
   resize_all(f);
+  if (sums.dim != phys.dim)
+    throw std::invalid_argument("compute_bin_fields: " + std::to_string(sums.dim) +
+                                "-D sums of a " + std::to_string(phys.dim) + "-D scene");
   if (static_cast<std::size_t>(sums.n_species) != phys.mass.size())
     throw std::invalid_argument("compute_bin_fields: sums for " + std::to_string(sums.n_species) +
                                 " species, scene has " + std::to_string(phys.mass.size()));
@@ -77,17 +81,21 @@ BinFields compute_bin_fields(const BinSums& sums, const FieldPhysics& phys, cons
   const BinLayout l = sums.layout();
   const std::size_t ns = static_cast<std::size_t>(sums.n_species);
 
+  const bool three_d = sums.dim == 3;
   for (int iy = 0; iy < sums.ny; ++iy) {
-    const double area = sums.bin_area(iy);
+    const double area = sums.bin_measure(iy);  // a volume in 3-D
     for (int ix = 0; ix < sums.nx; ++ix) {
       const std::size_t k = f.index(iy, ix);
       if (!(samples > 0)) continue;  // never sampled: everything NaN, masked
       auto q = [&](int a, BinLayout::SpeciesQuantity what) {
         return sums.pooled(iy, ix, l.species_index(a, what));
       };
+      auto qz = [&](int a, BinLayout::DepthQuantity what) {
+        return three_d ? sums.pooled(iy, ix, l.depth_index(a, what)) : 0.0;
+      };
 
       // Densities (eq. 3) and the mass-averaged velocity.
-      double count = 0, mass_count = 0, mass_cx = 0, mass_cy = 0, phi = 0, rho = 0;
+      double count = 0, mass_count = 0, mass_cx = 0, mass_cy = 0, mass_cz = 0, phi = 0, rho = 0;
       for (std::size_t a = 0; a < ns; ++a) {
         const int ai = static_cast<int>(a);
         const double na_samples = q(ai, BinLayout::count);
@@ -98,7 +106,9 @@ BinFields compute_bin_fields(const BinSums& sums, const FieldPhysics& phys, cons
         mass_count += phys.mass[a] * na_samples;
         mass_cx += phys.mass[a] * q(ai, BinLayout::sum_vx);
         mass_cy += phys.mass[a] * q(ai, BinLayout::sum_vy);
-        phi += n_a * M_PI * phys.diameter[a] * phys.diameter[a] / 4;
+        mass_cz += phys.mass[a] * qz(ai, BinLayout::sum_vz);
+        const double d_a = phys.diameter[a];
+        phi += three_d ? n_a * M_PI * d_a * d_a * d_a / 6 : n_a * M_PI * d_a * d_a / 4;
         rho += phys.mass[a] * n_a;
       }
       f.particle_samples[k] = count;
@@ -109,8 +119,9 @@ BinFields compute_bin_fields(const BinSums& sums, const FieldPhysics& phys, cons
       if (!(count >= rule.min_particle_samples) || !(count > 0)) continue;
 
       const double ux = mass_cx / mass_count, uy = mass_cy / mass_count;
+      const double uz = mass_cz / mass_count;  // 0 in 2-D
       // Fluctuation tensors about the mixture velocity u (eq. 4): sum (c-u)(c-u).
-      double kxx = 0, kxy = 0, kyy = 0, trace_mass = 0, kinetic_mass = 0;
+      double kxx = 0, kxy = 0, kyy = 0, kzz = 0, trace_mass = 0, kinetic_mass = 0;
       std::vector<double> xi(ns);
       for (std::size_t a = 0; a < ns; ++a) {
         const int ai = static_cast<int>(a);
@@ -122,16 +133,23 @@ BinFields compute_bin_fields(const BinSums& sums, const FieldPhysics& phys, cons
         kxx += phys.mass[a] * qxx;
         kxy += phys.mass[a] * qxy;
         kyy += phys.mass[a] * qyy;
-        trace_mass += phys.mass[a] * (qxx + qyy);
-        const double kinetic_a = q(ai, BinLayout::sum_vxvx) + q(ai, BinLayout::sum_vyvy);
+        // z: sum (c_z - u_z)^2, nothing in 2-D.
+        const double cz = qz(ai, BinLayout::sum_vz);
+        const double qzz = three_d ? qz(ai, BinLayout::sum_vzvz) - 2 * uz * cz + na * uz * uz : 0.0;
+        kzz += phys.mass[a] * qzz;
+        const double trace_a = three_d ? qxx + qyy + qzz : qxx + qyy;
+        trace_mass += phys.mass[a] * trace_a;
+        const double kinetic_a = three_d ? q(ai, BinLayout::sum_vxvx) + q(ai, BinLayout::sum_vyvy) +
+                                               qz(ai, BinLayout::sum_vzvz)
+                                         : q(ai, BinLayout::sum_vxvx) + q(ai, BinLayout::sum_vyvy);
         kinetic_mass += phys.mass[a] * kinetic_a;
         xi[a] = na / count;
         if (na > 0) {
           f.species_ux[a][k] = cx / na;
           f.species_uy[a][k] = cy / na;
         }
-        if (na >= rule.min_particle_samples && temperature_resolved(qxx + qyy, kinetic_a, na, rule))
-          f.species_temperature[a][k] = phys.mass[a] * (qxx + qyy) / (dim * na);
+        if (na >= rule.min_particle_samples && temperature_resolved(trace_a, kinetic_a, na, rule))
+          f.species_temperature[a][k] = phys.mass[a] * trace_a / (dim * na);
       }
       const double temperature = trace_mass / (dim * count);  // sum_a xi_a T_a
       if (!temperature_resolved(trace_mass, kinetic_mass, count, rule)) {
@@ -154,7 +172,10 @@ BinFields compute_bin_fields(const BinSums& sums, const FieldPhysics& phys, cons
       f.p_col_xy[k] = sums.pooled(iy, ix, l.virial_index(BinLayout::w_xy)) * norm;
       f.p_col_yx[k] = sums.pooled(iy, ix, l.virial_index(BinLayout::w_yx)) * norm;
       f.p_col_yy[k] = sums.pooled(iy, ix, l.virial_index(BinLayout::w_yy)) * norm;
-      f.pressure[k] = (f.p_kin_xx[k] + f.p_kin_yy[k] + f.p_col_xx[k] + f.p_col_yy[k]) / dim;
+      const double zz = three_d ? kzz * norm + sums.pooled(iy, ix, l.w_zz_index()) * norm : 0.0;
+      f.pressure[k] = three_d
+                          ? (f.p_kin_xx[k] + f.p_kin_yy[k] + f.p_col_xx[k] + f.p_col_yy[k] + zz) / dim
+                          : (f.p_kin_xx[k] + f.p_kin_yy[k] + f.p_col_xx[k] + f.p_col_yy[k]) / dim;
       f.pressure_eos[k] = f.n[k] * temperature * pressure_factor(phi, phys.restitution, phys.dim);
       f.eos_deviation[k] = f.pressure[k] / f.pressure_eos[k] - 1;
 
@@ -214,6 +235,15 @@ std::vector<BinFields::Named> BinFields::named(const std::vector<std::string>& n
                    &species_uy[a]});
     out.push_back({"T_" + names[a], "J", "species temperature m_a <|c_a - u|^2> / Dim",
                    &species_temperature[a]});
+  }
+  if (dim == 3) {
+    // Per volume of the bins' columns, not per area; the pressures force per area.
+    for (Named& named : out) {
+      if (named.unit == "m-2") named.unit = "m-3";
+      if (named.unit == "kg m-2") named.unit = "kg m-3";
+      if (named.unit == "N m-1") named.unit = "N m-2";
+      if (named.name == "phi") named.description = "volume fraction sum_a n_a pi d_a^3 / 6";
+    }
   }
   return out;
 }

@@ -42,6 +42,9 @@ bool temperature_resolved(double fluctuation, double kinetic, double samples, co
 
 struct BinFields {
   int nx = 0, ny = 0, n_species = 0;
+  // 3: densities per volume of the bins' columns through the layer, T and the pressure
+  // with their z parts (docs/fields.md, "Three dimensions"); the units named() gives follow.
+  int dim = 2;
   // Every vector is [ny * nx], index iy * nx + ix.
   std::vector<double> particle_samples;               // sum_a N_a over all samples
   std::vector<double> mean_count;                     // <N> = sum_a N_a / S

@@ -42,9 +42,6 @@ bool FieldPhysics::Obstacle::upstream_surface(double x, double& y) const {
 }
 
 FieldPhysics field_physics_from_scene(const Scene& s) {
-  if (s.setup.dim != 2)
-    throw UserError("granshock fields: the scene has dimension " + std::to_string(s.setup.dim) +
-                    "; the field analysis handles quasi-2-D scenes (scene.dim = 2) only");
   FieldPhysics p;
   p.dim = s.setup.dim;
   for (const Species& sp : s.setup.species) {

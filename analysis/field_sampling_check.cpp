@@ -113,7 +113,7 @@ void check_samples(const Scene& s) {
                                    std::max(1L, long(window / s.setup.dt / double(needed)))));
   // Particles an upstream grid bin counts per sample at phi_inf.
   const double per_sample =
-      s.inflow.area_fraction * s.bin_size_m * s.bin_size_m / s.mean_particle_area();
+      s.inflow_number_per_area() * s.bin_size_m * s.bin_size_m;
   const double expected = per_sample * double(samples);
   if (expected < Limits::upstream_particle_samples)
     throw UserError(

@@ -6,7 +6,9 @@
 // and, for the mixture, the contact virial of the particles in the bin
 //   sum over contacts of 1/2 r_ij (x) F_ij: W_xx, W_xy, W_yx, W_yy        (4)
 // (each particle carries half of each of its contacts; r_ij = x_i - x_j, F_ij the force
-// on i), so that the collisional stress of a bin is -<W>/V_bin.
+// on i), so that the collisional stress of a bin is -<W>/V_bin. A 3-D scene's bins are
+// columns through the layer (docs/fields.md, "Three dimensions"); after the 2-D quantities
+// come, per species, sum c_z and sum c_z c_z, then W_zz for the mixture (2 n_species + 1).
 // Sums are kept per block: the production window is cut into `blocks` equal parts, so
 // that statistical uncertainties follow from block averages.
 #pragma once
@@ -22,14 +24,22 @@ struct BinLayout {
   // belongs to the last column (the one that wraps across the periodic boundary).
   double x_period = 0;
   int blocks = 10;
+  int dim = 2;       // 3: the z moments follow (depth_index, w_zz_index)
+  double depth = 0;  // 3-D: the columns' extent along z (the layer's thickness), m
 
   static constexpr int per_species = 6;
   enum SpeciesQuantity { count = 0, sum_vx, sum_vy, sum_vxvx, sum_vxvy, sum_vyvy };
   enum VirialQuantity { w_xx = 0, w_xy, w_yx, w_yy };
+  enum DepthQuantity { sum_vz = 0, sum_vzvz };
 
-  int quantities() const { return per_species * n_species + 4; }
+  int depth_quantities() const { return dim == 3 ? 2 * n_species + 1 : 0; }
+  int quantities() const { return per_species * n_species + 4 + depth_quantities(); }
   int species_index(int species, SpeciesQuantity q) const { return per_species * species + q; }
   int virial_index(VirialQuantity q) const { return per_species * n_species + q; }
+  int depth_index(int species, DepthQuantity q) const {
+    return per_species * n_species + 4 + 2 * species + q;
+  }
+  int w_zz_index() const { return per_species * n_species + 4 + 2 * n_species; }
   int bins() const { return nx * ny; }
   // Offset of (block, bin iy, bin ix, quantity) in the flat row-major array
   // [blocks][ny][nx][quantities].

@@ -18,6 +18,8 @@ BinLayout BinSums::layout() const {
   l.dx = dx;
   l.dy = dy;
   l.x_period = x_period;
+  l.dim = dim;
+  l.depth = depth;
   l.blocks = blocks;
   return l;
 }

@@ -21,6 +21,8 @@ struct BinSums {
   double x0 = 0, y0 = 0;  // lower-left corner of bin (0, 0), m
   double dx = 0, dy = 0;  // bin width (x) and height (y), m
   double x_period = 0;    // > 0: the last column wraps across the periodic x boundary
+  int dim = 2;            // 3: columns through a layer `depth` thick, with z moments
+  double depth = 0;       // 3-D only, m
   // Where the domain ends along y: a last row reaching past it covers only the part below
   // (infinite: every row is whole).
   double y_end = std::numeric_limits<double>::infinity();
@@ -37,6 +39,8 @@ struct BinSums {
     const double top = y0 + (iy + 1) * dy;
     return dx * (top <= y_end ? dy : std::max(0.0, y_end - (y0 + iy * dy)));
   }
+  // Its area (2-D) or volume, the area times the depth (3-D): what densities divide by.
+  double bin_measure(int iy) const { return dim == 3 ? bin_area(iy) * depth : bin_area(iy); }
   double x_centre(int ix) const { return x0 + (ix + 0.5) * dx; }
   double y_centre(int iy) const { return y0 + (iy + 0.5) * dy; }
   double total_samples() const;

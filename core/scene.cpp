@@ -32,20 +32,33 @@ double Scene::mean_restitution() const {
   return e;
 }
 
-double Scene::mean_particle_area() const {
-  double area = 0;
-  for (std::size_t a = 0; a < setup.species.size(); ++a)
-    area += inflow.number_fraction[a] * M_PI * std::pow(setup.species[a].diameter_m, 2) / 4;
-  return area;
+double Scene::mean_particle_measure() const {
+  double measure = 0;
+  for (std::size_t a = 0; a < setup.species.size(); ++a) {
+    const double xi = inflow.number_fraction[a], d = setup.species[a].diameter_m;
+    measure += setup.dim == 3 ? xi * M_PI * std::pow(d, 3) / 6 : xi * M_PI * std::pow(d, 2) / 4;
+  }
+  return measure;
 }
 
-double Scene::inflow_number_density() const {
-  return inflow.area_fraction / mean_particle_area();
+double Scene::mean_particle_diameter() const {
+  double d2 = 0;
+  for (std::size_t a = 0; a < setup.species.size(); ++a)
+    d2 += inflow.number_fraction[a] * std::pow(setup.species[a].diameter_m, 2);
+  return std::sqrt(d2);
+}
+
+double Scene::depth() const {
+  return setup.dim == 3 ? setup.box.length(2) : 1.0;
+}
+
+double Scene::inflow_number_per_area() const {
+  return inflow.area_fraction * depth() / mean_particle_measure();
 }
 
 double Scene::capacity_unbounded() const {
   const double area = setup.box.length(0) * setup.box.length(1);
-  return 1.5 * inflow.area_fraction * area / mean_particle_area() + 1024;
+  return 1.5 * inflow_number_per_area() * area + 1024;
 }
 
 std::size_t Scene::capacity_estimate() const {

@@ -72,11 +72,16 @@ struct Scene {
   // Mean particle mass and the restitution used in the sound speed.
   double mean_mass() const;
   double mean_restitution() const;
-  // The mean particle's area in the plane (pi d^2 / 4), by number fraction: phi_inf over
-  // it is the number of particles per unit area upstream.
-  double mean_particle_area() const;
-  // Particles per unit area upstream, n_inf = phi_inf / mean_particle_area().
-  double inflow_number_density() const;
+  // The mean particle's area (pi d^2 / 4, 2-D) or volume (pi d^3 / 6, 3-D) by number
+  // fraction: phi_inf (an area or a volume fraction) over it is the number density upstream.
+  double mean_particle_measure() const;
+  // The root mean square diameter by number fraction: the d of D/d.
+  double mean_particle_diameter() const;
+  // The domain's extent across the x-y plane that the particles fill: 1 in 2-D (numbers
+  // per area are numbers per area), the thickness box.length(2) in 3-D.
+  double depth() const;
+  // Particles per unit area of the x-y plane upstream: phi_inf depth / mean_particle_measure().
+  double inflow_number_per_area() const;
   // The sigma that gives upstream Mach number `mach` at the inflow's speed and state
   // (core/kinetic_theory.hpp), and the Mach number the scene asks for: inflow.mach, or
   // the one its inflow.sigma gives (sigma is proportional to U / Ma).

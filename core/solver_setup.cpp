@@ -95,12 +95,24 @@ PairProperties SolverSetup::obstacle_pair(int a) const {
   return p;
 }
 
+PairProperties SolverSetup::wall_pair(int a) const {
+  if (!z_walls) throw std::logic_error("wall_pair: the scene has no walls");
+  PairProperties p = softened(
+      particle_obstacle(species.at(a), wall_material, contacts.obstacle_restitution.at(a), 0.0),
+      contacts.softening);
+  if (!contacts.obstacle_calibrated_beta.empty()) p.beta = contacts.obstacle_calibrated_beta.at(a);
+  return p;
+}
+
 std::vector<PairProperties> SolverSetup::all_pairs() const {
   std::vector<PairProperties> pairs;
   const int n = int(species.size());
   for (int a = 0; a < n; ++a) {
     for (int b = a; b < n; ++b) pairs.push_back(pair(a, b));
     if (obstacle) pairs.push_back(obstacle_pair(a));
+    // Walls of another material than the obstacle's (a scene's are of its material).
+    if (z_walls && (!obstacle || obstacle->material.name != wall_material.name))
+      pairs.push_back(wall_pair(a));
   }
   return pairs;
 }

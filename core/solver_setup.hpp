@@ -53,6 +53,11 @@ struct SolverSetup {
   bool list_visits_once = true;
   std::array<double, 3> gravity{0, 0, 0};
   Precision precision = Precision::double_precision;
+  // 3-D: the box's z faces are flat frictionless walls, which hold a slab of particles
+  // (kernels/models/z_walls.hpp), of wall_material (a scene's: its obstacle's) with the
+  // obstacle's restitution and calibrated damping (wall_pair).
+  bool z_walls = false;
+  Material wall_material = aluminium();
   // Particles beyond the box on an open axis are deleted (inflow/outflow scenes).
   bool delete_outside = false;
 
@@ -63,6 +68,7 @@ struct SolverSetup {
   std::vector<PairProperties> all_pairs() const;
   PairProperties pair(int a, int b) const;
   PairProperties obstacle_pair(int a) const;
+  PairProperties wall_pair(int a) const;  // z_walls only
 };
 
 }  // namespace granshock

@@ -24,6 +24,7 @@ void write_geometry(RunFile& f, const std::string& group, const BinLayout& l, do
   f.write_attribute(group, "dy", l.dy);
   f.write_attribute(group, "x_period", l.x_period);
   f.write_attribute(group, "y_end", y_end);
+  if (l.dim == 3) f.write_attribute(group, "depth", l.depth);  // 2-D files as they were
 }
 
 }  // namespace
@@ -86,11 +87,15 @@ void validate(const RunFile& run, const std::string& group, BinSums& s,
                     " bins of " + std::to_string(s.dx) + " m x " + std::to_string(s.dy) + " m in " +
                     std::to_string(s.blocks) + " blocks; all must be positive");
   const long q = shape.size() == rank ? shape.back() : 0;
-  if (q < 4 + BinLayout::per_species || (q - 4) % BinLayout::per_species != 0)
+  // 6 n + 4 quantities, and 2 n + 1 more in 3-D (core/bin_layout.hpp).
+  const long fixed = s.dim == 3 ? 5 : 4, per = BinLayout::per_species + (s.dim == 3 ? 2 : 0);
+  if (q < fixed + per || (q - fixed) % per != 0 || (s.dim == 3 && !(s.depth > 0)))
     throw UserError(where + "/sums has shape " + shape_text(shape) + ": expected rank " +
                     std::to_string(rank) +
-                    " with a last extent of 6 n_species + 4 (core/bin_layout.hpp)");
-  const int species_from_shape = static_cast<int>((q - 4) / BinLayout::per_species);
+                    (s.dim == 3 ? " with a last extent of 8 n_species + 5 and depth > 0"
+                                : " with a last extent of 6 n_species + 4") +
+                    " (core/bin_layout.hpp)");
+  const int species_from_shape = static_cast<int>((q - fixed) / per);
   if (s.n_species <= 0) s.n_species = species_from_shape;
   const std::vector<long> expected = rank == 4
                                          ? std::vector<long>{s.blocks, s.ny, s.nx, s.quantities()}
@@ -122,6 +127,9 @@ void read_geometry(const RunFile& run, const std::string& g, BinSums& s) {
   s.dy = run.read_attribute_double(g, "dy");
   s.x_period = run.read_attribute_double(g, "x_period");
   s.y_end = run.read_attribute_double(g, "y_end");
+  s.depth = optional_double(run, g, "depth");
+  s.dim = std::isfinite(s.depth) ? 3 : 2;
+  if (s.dim == 2) s.depth = 0;
 }
 
 bool has_attribute(const RunFile& run, const std::string& object, const std::string& name) {

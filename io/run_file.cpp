@@ -193,7 +193,10 @@ void write_layout(hid_t f, const std::string& scene_toml_as_given,
     h5::write_attribute(h5::open_dataset(f, kSpeciesRadius).get(), "unit", "m");
   }
   if (contents.angular_velocity) {
-    create_time_element(f, all + "/angular_velocity", H5T_IEEE_F64LE, {0}, &kFloatFill,
+    // About z in 2-D, a vector in 3-D (core/solver_state.hpp, spin_components).
+    const std::vector<hsize_t> spin_shape =
+        dim == 3 ? std::vector<hsize_t>{0, 3} : std::vector<hsize_t>{0};
+    create_time_element(f, all + "/angular_velocity", H5T_IEEE_F64LE, spin_shape, &kFloatFill,
                         H5T_NATIVE_DOUBLE, "rad s-1");
   }
   create_time_element(f, all + "/count", H5T_STD_I64LE, {}, nullptr, H5T_NATIVE_LONG, nullptr);

@@ -168,9 +168,10 @@ long RunFile::write_snapshot_rows(long step, const HostParticles& p,
       radius.push_back(contents_.species_radius[std::size_t(s)]);
     }
   }
+  const std::size_t spins = dim_ == 3 ? 3 : 1;
   std::vector<double> spin = p.angular_velocity;
-  if (spin.empty()) spin.assign(n, 0.0);
-  if (spin.size() != n)
+  if (spin.empty()) spin.assign(n * spins, 0.0);
+  if (spin.size() != n * spins)
     throw std::invalid_argument("RunFile: snapshot particle arrays differ in length");
   return h5::naming_file_in_errors(path_, "writing", [&] {
     const hid_t f = file_.get();
@@ -209,7 +210,12 @@ long RunFile::write_snapshot_rows(long step, const HostParticles& p,
                        transfer);
     };
     if (!contents_.species_radius.empty()) write_doubles("radius", radius);
-    if (contents_.angular_velocity) write_doubles("angular_velocity", spin);
+    if (contents_.angular_velocity && spins == 1) write_doubles("angular_velocity", spin);
+    if (contents_.angular_velocity && spins == 3) {
+      Handle set = h5::open_dataset(f, all + "/angular_velocity/value");
+      write_frame_rows(set.get(), {frame + 1, capacity, 3}, frame, rows, H5T_NATIVE_DOUBLE,
+                       spin.data(), transfer);
+    }
     return long(frame);
   });
 }
@@ -316,7 +322,8 @@ HostParticles RunFile::read_snapshot(long frame) const {
     read_frame_rows(file_.get(), base + "/species", frame, n, 0, p.species);
     read_frame_rows(file_.get(), base + "/id", frame, n, 0, p.id);
     if (contents_.angular_velocity)
-      read_frame_rows(file_.get(), base + "/angular_velocity", frame, n, 0, p.angular_velocity);
+      read_frame_rows(file_.get(), base + "/angular_velocity", frame, n, dim_ == 3 ? 3 : 0,
+                      p.angular_velocity);
     for (long i = 0; i < n; ++i) {
       std::array<double, 3> xi{0, 0, 0}, vi{0, 0, 0};
       for (int k = 0; k < dim_; ++k) {

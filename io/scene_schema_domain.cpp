@@ -44,8 +44,46 @@ const Key kDomainKeys[] = {
      [](const Writing& w, toml::table& t, const std::string& k) {
        t.insert(k, w.s.setup.box.hi[1]);
      }},
+    {"thickness",
+     "length",
+     {"m, `\"N d\"`",
+      "at least d_max between walls, at least 3 interaction ranges when periodic; at most 1e4 m",
+      "required when `scene.dim = 3`, refused otherwise",
+      "across the layer (z), from 0 to thickness"},
+     [](TableReader& r, Reading& st, const std::string& k) {
+       if (st.s.setup.dim != 3) {
+         if (r.has(k))
+           fail(r.key(k), "(given)", "belongs to a 3-D scene (scene.dim = 3): a quasi-2-D "
+                                     "scene is one diameter thick");
+         return;
+       }
+       if (!r.has(k)) fail(r.key(k), "(missing)", "a 3-D scene (scene.dim = 3) needs it");
+       st.s.setup.box.hi[2] = r.positive_length(k);
+       if (st.s.setup.box.hi[2] > kMaxDomainLength)
+         fail(r.key(k), fmt::format("{} m", st.s.setup.box.hi[2]),
+              fmt::format("must be at most {:g} m", kMaxDomainLength));
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) {
+       if (w.s.setup.dim == 3) t.insert(k, w.s.setup.box.hi[2]);
+     }},
+    {"z_boundary",
+     "string",
+     {"", "walls, periodic", "`\"walls\"`",
+      "3-D only: flat frictionless walls at z = 0 and z = thickness, of the obstacle's material "
+      "and restitution (a slab), or a periodic z axis"},
+     [](TableReader& r, Reading& st, const std::string& k) {
+       if (st.s.setup.dim != 3) {
+         if (r.has(k)) fail(r.key(k), "(given)", "belongs to a 3-D scene (scene.dim = 3)");
+         return;
+       }
+       st.s.setup.z_walls = r.choice(k, {"walls", "periodic"}, "walls") == "walls";
+     },
+     [](const Writing& w, toml::table& t, const std::string& k) {
+       if (w.s.setup.dim == 3) t.insert(k, w.s.setup.z_walls ? "walls" : "periodic");
+     }},
 };
-// Periodic across (x), open along the flow (y), one diameter thick (z).
+// Periodic across (x), open along the flow (y); one diameter thick (z) in 2-D, in 3-D
+// `thickness` between walls or periodic.
 void after_domain(Reading& st) {
   SolverSetup& setup = st.s.setup;
   const double width = setup.box.hi[0], range = setup.max_diameter() + setup.skin_m;
@@ -55,8 +93,16 @@ void after_domain(Reading& st) {
                      "numerics.skin ({} m)",
                      3 * range));
   setup.box.lo = {0, 0, 0};
-  setup.box.hi[2] = setup.max_diameter();
-  setup.box.periodic = {true, false, false};
+  if (setup.dim == 2) setup.box.hi[2] = setup.max_diameter();
+  setup.box.periodic = {true, false, setup.dim == 3 && !setup.z_walls};
+  const double thickness = setup.box.hi[2];
+  if (setup.dim == 3 && setup.z_walls && thickness < setup.max_diameter())
+    fail("domain.thickness", fmt::format("{} m", thickness),
+         fmt::format("must be at least the largest diameter ({} m) between walls",
+                     setup.max_diameter()));
+  if (setup.dim == 3 && !setup.z_walls && thickness < 3 * range)
+    fail("domain.thickness", fmt::format("{} m", thickness),
+         fmt::format("must be at least 3 interaction ranges ({} m) when z is periodic", 3 * range));
   setup.delete_outside = true;
 }
 
@@ -245,7 +291,9 @@ std::vector<Key> obstacle_keys() {
                    "from a wedge's tip to its base)"},
                   [](TableReader& r, Reading& st, const std::string& k) {
                     const Box& box = st.s.setup.box;
-                    st.obstacle.centre = {0.5 * box.hi[0], 0.5 * box.hi[1], 0};
+                    // In 3-D the middle of the layer (a sphere's centre).
+                    st.obstacle.centre = {0.5 * box.hi[0], 0.5 * box.hi[1],
+                                          st.s.setup.dim == 3 ? 0.5 * box.hi[2] : 0};
                     if (const toml::node* n = r.node(k)) {
                       const toml::array* a = n->as_array();
                       if (!a || a->size() != 2)
@@ -303,6 +351,7 @@ void after_obstacle(Reading& st) {
                     "at least {:g} for the flow to pass: make it narrower or the domain wider",
                     choice_name(c.shape), gap / d, kMinObstacleGapDiameters));
   st.s.setup.obstacle = c;
+  st.s.setup.wall_material = c.material;  // a slab's walls
 }
 
 }  // namespace

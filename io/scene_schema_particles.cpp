@@ -66,12 +66,14 @@ const Key kSceneKeys[] = {
      [](const Writing& w, toml::table& t, const std::string& k) { t.insert(k, w.s.name); }},
     {"dim",
      "integer",
-     {"", "2 only", "`2`", "quasi-2-D (centres in the x-y plane)"},
+     {"", "2, 3", "`2`",
+      "2: quasi-2-D (centres in the x-y plane); 3: spheres in a layer `domain.thickness` deep "
+      "(scene_format.md, \"Three dimensions\")"},
      [](TableReader& r, Reading& st, const std::string& k) {
        const long dim = r.integer_at_least(k, 2, 2);
-       if (dim != 2)
-         fail(r.key(k), std::to_string(dim), "only quasi-2-D scenes (dim = 2) are supported");
-       st.s.setup.dim = 2;
+       if (dim != 2 && dim != 3)
+         fail(r.key(k), std::to_string(dim), "must be 2 (quasi-2-D) or 3");
+       st.s.setup.dim = int(dim);
      },
      [](const Writing& w, toml::table& t, const std::string& k) { t.insert(k, w.s.setup.dim); }},
     {"seed",

@@ -11,7 +11,7 @@ namespace granshock {
 
 SceneCorner scene_corner(const Scene& s) {
   SceneCorner c;
-  const double d = std::sqrt(4 * s.mean_particle_area() / M_PI);
+  const double d = s.mean_particle_diameter();
   if (s.setup.obstacle) c.obstacle_over_particle = obstacle_frontal_width(*s.setup.obstacle) / d;
   c.mach = s.inflow_mach();
   return c;

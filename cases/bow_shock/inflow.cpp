@@ -13,7 +13,9 @@ InflowController::InflowController(const Scene& scene) : scene_(scene) {
   // The strip length actually swept between batches (the period is a whole number of
   // steps), so the rate n_inf U W is met exactly.
   const double swept = period_steps_ * scene.setup.dt * in.speed_m_per_s;
-  per_batch_ = in.area_fraction * scene.setup.box.length(0) * swept / scene.mean_particle_area();
+  // (phi W swept) depth / measure: in 2-D the product the rate always was, bit for bit.
+  per_batch_ = in.area_fraction * scene.setup.box.length(0) * swept * scene.depth() /
+               scene.mean_particle_measure();
 }
 
 double InflowController::requested() const {
@@ -32,6 +34,12 @@ int InflowController::insert_batch(SolverStepping& solver, double y_lo, double y
   InsertionRequest rq;
   rq.x_range = {scene_.setup.box.lo[0], scene_.setup.box.hi[0]};
   rq.y_range = {y_lo, y_hi};
+  if (scene_.setup.dim == 3) {
+    // Centres across the whole layer: a radius clear of a slab's walls.
+    const Box& box = scene_.setup.box;
+    const double margin = scene_.setup.z_walls ? 0.5 * scene_.setup.max_diameter() : 0;
+    rq.z_range = {box.lo[2] + margin, box.hi[2] - margin};
+  }
   rq.count = int(std::floor(wanted));
   rq.number_fraction = scene_.inflow.number_fraction;
   rq.mean_velocity = {0, scene_.inflow.speed_m_per_s};

@@ -34,7 +34,7 @@ Scene inlet_channel(const Scene& s, double sigma) {
   c.inflow.sigma = sigma;
   c.inflow.sigma_m_per_s = sigma;
 
-  const double flux = s.inflow_number_density() * c.setup.box.length(0) * s.inflow.speed_m_per_s;
+  const double flux = s.inflow_number_per_area() * c.setup.box.length(0) * s.inflow.speed_m_per_s;
   // Prefilled, the channel is developed after one transit; two make sure.
   const double spin_up = 2 * c.setup.box.length(1) / s.inflow.speed_m_per_s;
   c.run.production_start_s = spin_up;
@@ -65,6 +65,11 @@ void add_sample(BinSums& sums, const HostParticles& p, int block) {
     q[layout.species_index(a, BinLayout::sum_vxvx)] += vx * vx;
     q[layout.species_index(a, BinLayout::sum_vxvy)] += vx * vy;
     q[layout.species_index(a, BinLayout::sum_vyvy)] += vy * vy;
+    if (layout.dim == 3) {
+      const double vz = p.velocity[i][2];
+      q[layout.depth_index(a, BinLayout::sum_vz)] += vz;
+      q[layout.depth_index(a, BinLayout::sum_vzvz)] += vz * vz;
+    }
   }
   sums.samples[std::size_t(block)] += 1;
 }
@@ -85,6 +90,8 @@ InletMach measure_inlet_mach(const Scene& scene, double sigma, Backend backend) 
   sums.x0 = c.setup.box.lo[0];
   sums.y0 = c.setup.box.lo[1];
   sums.dx = sums.dy = c.bin_size_m;
+  sums.dim = c.setup.dim;
+  sums.depth = c.setup.dim == 3 ? c.setup.box.length(2) : 0;
   sums.sums.assign(std::size_t(sums.blocks) * sums.bins() * sums.quantities(), 0.0);
   sums.samples.assign(std::size_t(sums.blocks), 0.0);
 

@@ -47,7 +47,7 @@ OverlapAssessment assess_overlap(const Scene& s) {
 double expected_insertions(const Scene& s) {
   const double width = s.setup.box.length(0);
   const double streamwise = s.setup.box.length(1) + s.inflow.speed_m_per_s * s.run.duration_s;
-  return s.inflow.area_fraction * width * streamwise / s.mean_particle_area();
+  return s.inflow_number_per_area() * width * streamwise;
 }
 
 std::vector<std::string> check_scene_before_run(const Scene& s, bool force, int processes,

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "cases/bow_shock/sampling_plan.hpp"
+#include "core/solver_state.hpp"
 #include "core/user_error.hpp"
 #include "kernels/device/backends.hpp"
 
@@ -23,7 +24,9 @@ namespace {
 // margin over the inflow's count (Scene::capacity_estimate) is the shock layer's
 // compression.
 double partners_per_particle(const Scene& s) {
+  // The number density times the shell between d and the list's range.
   const double d = s.setup.max_diameter(), range = d + s.setup.skin();
+  if (s.setup.dim == 3) return 8 * s.inflow.area_fraction * (std::pow(range / d, 3) - 1);
   return 4 * s.inflow.area_fraction * (range * range - d * d) / (d * d);
 }
 
@@ -42,7 +45,7 @@ double bytes_per_slot(const Scene& s, bool host_backend) {
   if (!host_backend) b += 8;  // a device's sampling: bins
   if (s.setup.contacts.has_friction()) {
     const int slots = dim == 2 ? 8 : 16;
-    b += 4 * real + 2 * slots * 4 + 2 * slots * dim * real + vector;
+    b += 4 * real * spin_components(dim) + 2 * slots * 4 + 2 * slots * dim * real + vector;
   }
   return b;
 }
@@ -54,8 +57,10 @@ double bytes_per_slot(const Scene& s, bool host_backend) {
 double host_bytes_per_particle(const Scene& s, double partners) {
   const int dim = s.setup.dim;
   double b = 4 * 8.0 * dim + 8.0 * dim * dim + 8 + 4 + 4 * partners;  // state, offsets, list
-  if (s.setup.contacts.has_friction()) b += 16 + (dim == 2 ? 8 : 16) * (4 + 8.0 * dim) + 8.0 * dim;
-  b += 2 * 24 + 8 + 8;  // the snapshot's positions and velocities (3 doubles), spin, ids
+  const int spins = spin_components(dim);
+  if (s.setup.contacts.has_friction())
+    b += 16 * spins + (dim == 2 ? 8 : 16) * (4 + 8.0 * dim) + 8.0 * dim;
+  b += 2 * 24 + 8 * spins + 8;  // the snapshot's positions and velocities (3 doubles), spin, ids
   return b;
 }
 

@@ -35,7 +35,8 @@ double mixture_temperature(const Scene& s, const std::vector<SpeciesMoments>& mo
 
 double inflow_energy(const Scene& s) {
   return 0.5 * s.mean_mass() *
-         (s.inflow.speed_m_per_s * s.inflow.speed_m_per_s + 2 * s.inflow.sigma * s.inflow.sigma);
+         (s.inflow.speed_m_per_s * s.inflow.speed_m_per_s +
+          s.setup.dim * s.inflow.sigma * s.inflow.sigma);
 }
 
 void check_health(const Scene& s, long step, const Diagnostics& d, std::size_t particles) {

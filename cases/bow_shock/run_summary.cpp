@@ -91,6 +91,7 @@ nlohmann::json run_summary(const Scene& s, const Solver& solver, const InflowCon
   const TimeStepAssessment guard = assess_time_step(s.setup, s.fastest_impact_speed());
   nlohmann::json j;
   j["scene"] = s.name;
+  j["dimension"] = s.setup.dim;  // 2: quasi-2-D; 3: spheres in a layer (scene.dim)
   j["completed"] = completed;
   j["steps"] = steps;
   j["simulated_time"] = steps * s.setup.dt;

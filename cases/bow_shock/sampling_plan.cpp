@@ -49,6 +49,8 @@ SamplingPlan::SamplingPlan(const Scene& s)
   BinLayout& g = layout_.grid;
   g.n_species = int(s.setup.species.size());
   g.blocks = s.run.blocks;
+  g.dim = s.setup.dim;  // 3-D: columns through the layer (docs/fields.md, "Three dimensions")
+  g.depth = s.setup.dim == 3 ? box.length(2) : 0;
   g.nx = bins_tiling(box.length(0), s.bin_size_m);
   g.dx = box.length(0) / g.nx;
   g.x0 = box.lo[0];
@@ -69,6 +71,8 @@ SamplingPlan::SamplingPlan(const Scene& s)
     BinLayout& p = layout_.profile;
     p.n_species = g.n_species;
     p.blocks = g.blocks;
+    p.dim = g.dim;
+    p.depth = g.depth;
     p.nx = kProfileColumns;
     p.dx = kProfileColumnWidth * s.d_m;
     p.x0 = obstacle->centre[0] - 0.5 * p.nx * p.dx;

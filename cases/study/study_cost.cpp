@@ -10,10 +10,10 @@
 namespace granshock {
 
 double expected_particles(const Scene& s) {
-  const double disk = s.mean_particle_area();
   double free_area = s.setup.box.length(0) * s.setup.box.length(1);
   if (s.setup.obstacle) free_area -= obstacle_area(*s.setup.obstacle);
-  return disk > 0 ? s.inflow.area_fraction * std::max(0.0, free_area) / disk : 0.0;
+  return s.mean_particle_measure() > 0 ? s.inflow_number_per_area() * std::max(0.0, free_area)
+                                       : 0.0;
 }
 
 double expected_particle_steps(const Scene& s, long steps_done) {

@@ -55,6 +55,7 @@ struct StateArray {
 
 template <int Dim, class Real, class MemSpace, bool Friction>
 struct ParticleStore {
+  static constexpr int dim = Dim;
   static constexpr bool friction = Friction;
   // Tangential springs per particle: more than the contacts a sphere can have.
   static constexpr int history_slots = Dim == 2 ? 8 : 16;

@@ -61,7 +61,7 @@ struct SampleContribution {
   Store p;
   VirialView virial;
   long block_offset;
-  int quantities, per_species, virial_terms;
+  int quantities, per_species, n_species;
 
   template <class Add>
   KOKKOS_INLINE_FUNCTION void operator()(const int i, Add& add) const {
@@ -83,12 +83,15 @@ struct SampleContribution {
     prefetch_for_write(last);
   }
 
-  // Particle i's moments, and its virial terms virial_of(k), added to bin `bin`.
+  // Particle i's moments, and its virial terms virial_of(k) (W_ab at k = a Dim + b), added
+  // to bin `bin` in the order of core/bin_layout.hpp.
   template <class Add, class VirialOf>
   KOKKOS_FORCEINLINE_FUNCTION void add_to_bin(int bin, int i, Add& add,
                                               const VirialOf& virial_of) const {
+    constexpr int Dim = Store::dim;
     const long base = block_offset + long(bin) * quantities;
-    const long s = base + long(per_species) * p.species(i);
+    const int species = p.species(i);
+    const long s = base + long(per_species) * species;
     const double vx = p.v(i, 0), vy = p.v(i, 1);
     add(s + 0, 1.0);
     add(s + 1, vx);
@@ -96,7 +99,17 @@ struct SampleContribution {
     add(s + 3, vx * vx);
     add(s + 4, vx * vy);
     add(s + 5, vy * vy);
-    for (int k = 0; k < virial_terms; ++k) add(base + quantities - 4 + k, double(virial_of(k)));
+    const long w = base + long(per_species) * n_species;
+    add(w + 0, double(virial_of(0)));        // xx
+    add(w + 1, double(virial_of(1)));        // xy
+    add(w + 2, double(virial_of(Dim)));      // yx
+    add(w + 3, double(virial_of(Dim + 1)));  // yy
+    if constexpr (Dim == 3) {
+      const double vz = p.v(i, 2);
+      add(w + 4 + 2 * species, vz);
+      add(w + 5 + 2 * species, vz * vz);
+      add(w + 4 + 2 * n_species, double(virial_of(8)));  // zz
+    }
   }
 };
 
@@ -174,19 +187,21 @@ class BinAccumulator {
   template <ScatterStrategy Strategy, class Where, class Store, class VirialView>
   void sample(int block, const Where& where, const Store& p, const VirialView& virial) {
     using Policy = Kokkos::RangePolicy<ExecSpace>;
-    const int virial_terms = int(virial.extent(1)) < 4 ? int(virial.extent(1)) : 4;
+    // quantities_ = 6 n + 4 (+ 2 n + 1 in 3-D): core/bin_layout.hpp.
+    const int n_species = Store::dim == 3 ? (quantities_ - 5) / (BinLayout::per_species + 2)
+                                          : (quantities_ - 4) / BinLayout::per_species;
     using Contribution = SampleContribution<Where, Store, VirialView>;
     static_assert(Strategy == ScatterStrategy::atomic || Strategy == ScatterStrategy::scatter_view,
                   "row owners sample through sampling/row_owner_sampling.hpp");
     const long offset = long(block) * block_size();
     if constexpr (Strategy == ScatterStrategy::atomic) {
       const Contribution one{where,       p, virial, offset, quantities_, BinLayout::per_species,
-                             virial_terms};
+                             n_species};
       Kokkos::parallel_for("fields::sample_atomic", Policy(0, p.n),
                            AtomicSample<Contribution, Sums>{one, sums_});
     } else {
       const Contribution one{where,       p, virial, 0, quantities_, BinLayout::per_species,
-                             virial_terms};
+                             n_species};
       Kokkos::deep_copy(block_, 0.0);
       scatter_.reset_except(block_);
       Kokkos::parallel_for("fields::sample_scatter", Policy(0, p.n),

@@ -87,14 +87,14 @@ class FieldSampler {
                             const Store& p, const VirialView& virial) {
     using Part = SampleContribution<GridIndex, Store, VirialView>;
     const int quantities = sampling_.grid.quantities();
-    const int virial_terms = Dim * Dim < 4 ? Dim * Dim : 4;
+    const int n_species = sampling_.grid.n_species;
     const Part grid_part{
         grid,        p, virial, block * grid_sums_.block_size(), quantities, BinLayout::per_species,
-        virial_terms};
+        n_species};
     const Part profile_part{profile,     p,
                             virial,      block * profile_sums_.block_size(),
                             quantities,  BinLayout::per_species,
-                            virial_terms};
+                            n_species};
     if (int(sample_bins_.extent(0)) < p.n)
       sample_bins_ = decltype(sample_bins_)(alloc_on<ExecSpace>("sample_bins"), p.capacity());
     Kokkos::parallel_for("fields::locate", Policy(0, p.n),

@@ -14,6 +14,7 @@
 #include "kernels/device/vec.hpp"
 #include "kernels/models/clamped_normal.hpp"
 #include "kernels/models/tangential_spring.hpp"
+#include "kernels/models/z_walls.hpp"
 #include "kernels/neighbours/pair_loop.hpp"
 #include "kernels/particles/particle_store.hpp"
 #include "kernels/particles/variant_types.hpp"
@@ -47,6 +48,7 @@ struct ContactForceKernel {
   Real dt;
   Kokkos::View<int, Mem> history_overflow;       // set when slots run out
   Kokkos::View<Real * [Dim * Dim], Mem> virial;  // not in ForceMode::forces
+  ZWalls walls;  // a 3-D slab's walls
 
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
     const Vec<Dim, Position> xi = pairs.position(i);
@@ -110,6 +112,8 @@ struct ContactForceKernel {
       const int si = p.species(i);
       obstacle_contact(i, xi, own_velocity(i, vi), si, table.radius(si), force, torque);
     }
+    if constexpr (Dim == 3)
+      if (walls.on) wall_contacts(i, xi, own_velocity(i, vi), force);
   }
 
   // Sums the pair forces of i's contacts into force (and torque; w, the virial, unless in
@@ -194,6 +198,22 @@ struct ContactForceKernel {
       for (int d = 0; d < Dim; ++d) p.obstacle_spring(i, d) = xi_t[d];
       force += ft;
       torque += contact_torque(ri, n, ft);
+    }
+  }
+
+  // Contacts with a slab's walls (models/z_walls.hpp): normal forces only, along z. Not
+  // part of the contact virial, which sums pair forces.
+  KOKKOS_FORCEINLINE_FUNCTION void wall_contacts(int i, const Vec<Dim, Position>& xi,
+                                                 const Vec<Dim, Real>& vi,
+                                                 Vec<Dim, Real>& force) const {
+    const int si = p.species(i);
+    const Real ri = table.radius(si);
+    for (int side = 0; side < 2; ++side) {
+      Real dn, nz;
+      if (!walls.touches(side, xi[Dim - 1], ri, dn, nz)) continue;
+      const auto normal =
+          clamped_normal<Model>(table.wall(si), dn, vi[Dim - 1] * nz, table.normal_force_floor);
+      force[Dim - 1] += normal.force * nz;
     }
   }
 

@@ -101,8 +101,11 @@ class DemSolver final : public Solver {
   // 3-D: refused until the bins keep the z moments and the virial's 3 x 3 terms (the
   // bins' layout, core/bin_layout.hpp, holds the x-y ones: docs/design.md, "Dimension").
   void configure_sampling(const FieldSampling& f) override {
-    if constexpr (V::dim == 3)
-      throw UserError("field sampling is 2-D only: 3-D bins need the z moments");
+    // The bins' quantities follow the dimension (core/bin_layout.hpp).
+    if (f.grid.dim != V::dim || (f.has_profile() && f.profile.dim != V::dim))
+      throw std::logic_error("field sampling laid out for dimension " +
+                             std::to_string(f.grid.dim) + " in a " + std::to_string(V::dim) +
+                             "-D solver");
     s_.sampler.configure(f);
   }
 

@@ -19,6 +19,7 @@
 #include "core/user_error.hpp"
 #include "kernels/device/backends.hpp"
 #include "kernels/device/box_geometry.hpp"
+#include "kernels/models/z_walls.hpp"
 #include "kernels/neighbours/cell_grid.hpp"
 #include "kernels/neighbours/cell_sort.hpp"
 #include "kernels/neighbours/pair_loop.hpp"
@@ -55,6 +56,7 @@ struct SolverParts {
         table(Table::template build<Paths>(setup)),
         box(BoxGeometry<Dim, Position>::from(setup.box)),
         obstacle(Obstacle::from(setup.obstacle)),
+        walls(ZWalls::from(setup)),
         skin(Real(setup.skin())),
         grid(CellGrid<Dim, Position>::make(setup.box, setup.max_diameter() + setup.skin())),
         population(setup, box, obstacle),
@@ -97,6 +99,7 @@ struct SolverParts {
   Table table;
   BoxGeometry<Dim, Position> box;
   Obstacle obstacle;
+  ZWalls walls;  // a 3-D slab's (models/z_walls.hpp)
   Real skin;  // of the current list: the scene's, or the adaptive skin's last choice
   CellGrid<Dim, Position> grid;
   VelocityVerlet<V, ExecSpace> integrator;
@@ -146,6 +149,8 @@ struct SolverParts {
     if (s.species.empty()) throw UserError("a scene needs at least one species");
     if (!(s.max_diameter() > 0)) throw UserError("particle diameters must be > 0");
     if (!V::matches(s)) throw std::logic_error("DemSolver variant does not match the scene");
+    if (s.z_walls && (Dim != 3 || s.box.periodic[2]))
+      throw UserError("walls across z need a 3-D scene with an open z axis");
     return s;
   }
 };

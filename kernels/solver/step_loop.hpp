@@ -140,7 +140,8 @@ class StepLoop {
   ContactForceKernel<V, ExecSpace, Mode> force_kernel(
       const Store& from, const PairLoop<Dim, Real, Mem>& pairs,
       const Kokkos::View<Real * [Dim * Dim], Mem>& virial = {}) const {
-    return {from, pairs, s_.table, s_.obstacle, Real(s_.setup.dt), s_.history_overflow, virial};
+    return {from,   pairs, s_.table, s_.obstacle, Real(s_.setup.dt), s_.history_overflow,
+            virial, s_.walls};
   }
 
   // Forces at the current positions, then the end of this step and the start of the next

@@ -196,3 +196,63 @@ TEST(FrictionImpact, ThreeDimensionsStickingAlongAnyTangentIsThePlaneImpact) {
   const PlateImpact r = expect_3d_impact_as_in_the_plane(1.0, 0.2);
   EXPECT_LT(std::hypot(r.jt[0], r.jt[2]) / r.jn, 0.9 * kMu) << "it must not slide";
 }
+
+namespace {
+
+// A 3-D slab's walls (kernels/models/z_walls.hpp): the steel sphere, spinning, strikes the
+// lower or upper wall of a slab 4 d thick with slip (vt, 0) along the wall. The walls are
+// frictionless and of the obstacle's material and restitution, so the normal impulse must
+// be the one the plate's flat face gives at the same normal speed (same law, same
+// coefficients, the normal along z instead of y), up to rounding, and the velocity along
+// the wall and the spin must not change at all.
+struct WallImpact {
+  double jn;                 // normal impulse on the particle, m (|vz'| + vn)
+  double vx, vy;             // velocity along the wall after the rebound
+  std::array<double, 3> w;   // spin after the rebound
+};
+
+WallImpact simulate_wall_impact(bool upper, double vn, double vt) {
+  SolverSetup s = wall_setup(ContactModelKind::hertz, 0);
+  s.dim = 3;
+  s.obstacle = make_obstacle(ObstacleShape::plate, {0, 0.1, 0}, {0.02, 0.002}, aluminium());
+  s.box.lo[2] = 0;
+  s.box.hi[2] = 4 * kD;
+  s.z_walls = true;
+  s.dt = collision_time(ContactModelKind::hertz, s.obstacle_pair(0), s.contacts.options, vn) / 100;
+  auto solver = make_solver(s, 1);
+  HostParticles p;
+  const double gap = kR + 3 * vn * s.dt;
+  p.add({0, 0, upper ? 4 * kD - gap : gap}, {vt, 0, upper ? vn : -vn}, 0, 0);
+  p.angular_velocity = {100.0, -50.0, 30.0};
+  solver->set_particles(p);
+  const double m = s.species[0].mass_kg();
+  WallImpact out{};
+  for (int step = 0; step < 2000; ++step) {
+    solver->advance(1);
+    const HostParticles q = solver->particles();
+    const double vz = q.velocity[0][2];
+    out = {m * (vn + (upper ? -vz : vz)), q.velocity[0][0], q.velocity[0][1],
+           {q.angular_velocity.at(0), q.angular_velocity.at(1), q.angular_velocity.at(2)}};
+    if (upper ? q.position[0][2] < p.position[0][2] : q.position[0][2] > p.position[0][2]) break;
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST(SlabWalls, FrictionlessWallsReboundAsTheObstacleFaceWithoutTangentialImpulse) {
+  const double vn = 1.0, vt = 2.0;
+  const PlateImpact face = simulate_plate_impact(2, vn, 0.0, {1, 0});
+  const double m = Species{"steel", steel(), kD}.mass_kg();
+  EXPECT_GT(face.jn, 1.2 * m * vn);  // a rebound: e_eff above 0.2
+  for (const bool upper : {false, true}) {
+    SCOPED_TRACE(upper ? "upper wall" : "lower wall");
+    const WallImpact r = simulate_wall_impact(upper, vn, vt);
+    EXPECT_NEAR(r.jn, face.jn, 1e-9 * face.jn);
+    EXPECT_EQ(r.vx, vt);
+    EXPECT_EQ(r.vy, 0.0);
+    EXPECT_EQ(r.w[0], 100.0);
+    EXPECT_EQ(r.w[1], -50.0);
+    EXPECT_EQ(r.w[2], 30.0);
+  }
+}

@@ -139,7 +139,7 @@ TEST(ThreeDimensions, SpheresLeavingAlongZAreDeletedAndCountedPerFace) {
   for (std::size_t i = 0; i < left.size(); ++i) EXPECT_GE(left.id[i], 2);
 }
 
-TEST(ThreeDimensions, SinglePrecisionAndFieldSamplingAreRefused) {
+TEST(ThreeDimensions, SinglePrecisionAndA2dSamplingLayoutAreRefused) {
   SolverSetup s = paper_mixture(0.5);
   s.dim = 3;
   s.dt = 1e-7;
@@ -148,7 +148,11 @@ TEST(ThreeDimensions, SinglePrecisionAndFieldSamplingAreRefused) {
   EXPECT_THROW(make_solver(s, 27), UserError);
   s.precision = Precision::double_precision;
   auto solver = make_solver(s, 27);
-  EXPECT_THROW(solver->configure_sampling(FieldSampling{}), UserError);
+  EXPECT_THROW(solver->configure_sampling(FieldSampling{}), std::logic_error);
+  FieldSampling columns;
+  columns.grid.dim = 3;
+  columns.grid.depth = s.box.length(2);
+  EXPECT_NO_THROW(solver->configure_sampling(columns));
   s.dim = 4;
   EXPECT_THROW(make_solver(s, 27), UserError);
 }
