@@ -9,6 +9,7 @@
 #include "core/scene.hpp"
 #include "core/user_error.hpp"
 #include "models/obstacle_shapes.hpp"
+#include "models/sampled_layer.hpp"
 
 namespace granshock {
 
@@ -113,7 +114,8 @@ void check_samples(const Scene& s) {
                                    std::max(1L, long(window / s.setup.dt / double(needed)))));
   // Particles an upstream grid bin counts per sample at phi_inf.
   const double per_sample =
-      s.inflow_number_per_area() * s.bin_size_m * s.bin_size_m;
+      s.inflow_number_per_area() * s.bin_size_m * s.bin_size_m *
+      (s.setup.dim == 3 ? sampled_z_range(s)[1] / s.depth() : 1.0);
   const double expected = per_sample * double(samples);
   if (expected < Limits::upstream_particle_samples)
     throw UserError(

@@ -25,7 +25,8 @@ struct BinLayout {
   double x_period = 0;
   int blocks = 10;
   int dim = 2;       // 3: the z moments follow (depth_index, w_zz_index)
-  double depth = 0;  // 3-D: the columns' extent along z (the layer's thickness), m
+  double depth = 0;  // 3-D: the columns' extent along z from z0 (the layer's thickness), m
+  double z0 = 0;     // 3-D: the columns' lower end (a sphere's centre-plane cut)
 
   static constexpr int per_species = 6;
   enum SpeciesQuantity { count = 0, sum_vx, sum_vy, sum_vxvx, sum_vxvy, sum_vyvy };

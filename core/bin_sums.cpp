@@ -20,6 +20,7 @@ BinLayout BinSums::layout() const {
   l.x_period = x_period;
   l.dim = dim;
   l.depth = depth;
+  l.z0 = z0;
   l.blocks = blocks;
   return l;
 }

@@ -22,7 +22,8 @@ struct BinSums {
   double dx = 0, dy = 0;  // bin width (x) and height (y), m
   double x_period = 0;    // > 0: the last column wraps across the periodic x boundary
   int dim = 2;            // 3: columns through a layer `depth` thick, with z moments
-  double depth = 0;       // 3-D only, m
+  double depth = 0;       // 3-D only: the columns' extent along z from z0, m
+  double z0 = 0;
   // Where the domain ends along y: a last row reaching past it covers only the part below
   // (infinite: every row is whole).
   double y_end = std::numeric_limits<double>::infinity();

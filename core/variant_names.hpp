@@ -36,6 +36,9 @@ struct Choices<ObstacleShape> {
       {ObstacleShape::plate, "plate", "a flat plate or rectangular block facing the flow"},
       {ObstacleShape::square, "square",
        "a square block, a face or (rotated 45 degrees) a corner upstream"},
+      {ObstacleShape::sphere, "sphere",
+       "a sphere at the middle of the layer (3-D; a quasi-2-D scene's particles meet its cut "
+       "through the centre, the cylinder's disk)"},
   };
 };
 

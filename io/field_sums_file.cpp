@@ -24,7 +24,10 @@ void write_geometry(RunFile& f, const std::string& group, const BinLayout& l, do
   f.write_attribute(group, "dy", l.dy);
   f.write_attribute(group, "x_period", l.x_period);
   f.write_attribute(group, "y_end", y_end);
-  if (l.dim == 3) f.write_attribute(group, "depth", l.depth);  // 2-D files as they were
+  if (l.dim == 3) {  // 2-D files as they were
+    f.write_attribute(group, "depth", l.depth);
+    f.write_attribute(group, "z0", l.z0);
+  }
 }
 
 }  // namespace
@@ -130,6 +133,7 @@ void read_geometry(const RunFile& run, const std::string& g, BinSums& s) {
   s.depth = optional_double(run, g, "depth");
   s.dim = std::isfinite(s.depth) ? 3 : 2;
   if (s.dim == 2) s.depth = 0;
+  s.z0 = s.dim == 3 ? run.read_attribute_double(g, "z0") : 0;
 }
 
 bool has_attribute(const RunFile& run, const std::string& object, const std::string& name) {

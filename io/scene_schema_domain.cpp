@@ -255,8 +255,9 @@ std::vector<Key> obstacle_keys() {
   std::vector<Key> keys = {
       {"shape",
        "string",
-       {"", "cylinder, wedge, plate, square", "`\"cylinder\"`",
-        "a fixed prism along z: its cross-section (scene_format.md, \"Obstacle shapes\"); a "
+       {"", "cylinder, wedge, plate, square, sphere", "`\"cylinder\"`",
+        "a fixed prism along z: its cross-section, or a sphere (scene_format.md, \"Obstacle "
+        "shapes\"); a "
         "`[obstacle]` table makes the obstacle (no table: no obstacle), and each shape takes only "
         "its own size keys"},
        [](TableReader& r, Reading& st, const std::string& k) {

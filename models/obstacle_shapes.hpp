@@ -22,6 +22,7 @@
 #include "core/variant_names.hpp"
 #include "models/cylinder.hpp"
 #include "models/plate.hpp"
+#include "models/sphere.hpp"
 #include "models/shape_key.hpp"
 #include "models/shape_outline.hpp"
 #include "models/square.hpp"
@@ -32,7 +33,8 @@ namespace granshock {
 template <class... Shapes>
 struct ShapeList {};
 
-using ObstacleShapes = ShapeList<CylinderShape, WedgeShape, PlateShape, SquareShape>;
+using ObstacleShapes =
+    ShapeList<CylinderShape, WedgeShape, PlateShape, SquareShape, SphereShape>;
 
 namespace shapes_detail {
 

@@ -20,6 +20,9 @@ struct ShapeOutline {
   enum class Kind { disk, polygon };
   Kind kind = Kind::disk;
   double radius = 0;  // disk
+  // A sphere (models/sphere.hpp): the disk is its cut through the centre, and in 3-D the
+  // force kernel measures from the centre along z too.
+  bool ball = false;
   int corners = 0;    // polygon: 3 or 4, counter-clockwise
   std::array<std::array<double, 2>, kMaxCorners> corner{};
 };

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "models/obstacle_shapes.hpp"
+#include "models/sampled_layer.hpp"
 
 namespace granshock {
 
@@ -50,7 +51,8 @@ SamplingPlan::SamplingPlan(const Scene& s)
   g.n_species = int(s.setup.species.size());
   g.blocks = s.run.blocks;
   g.dim = s.setup.dim;  // 3-D: columns through the layer (docs/fields.md, "Three dimensions")
-  g.depth = s.setup.dim == 3 ? box.length(2) : 0;
+  g.z0 = sampled_z_range(s)[0];
+  g.depth = sampled_z_range(s)[1];
   g.nx = bins_tiling(box.length(0), s.bin_size_m);
   g.dx = box.length(0) / g.nx;
   g.x0 = box.lo[0];
@@ -73,6 +75,7 @@ SamplingPlan::SamplingPlan(const Scene& s)
     p.blocks = g.blocks;
     p.dim = g.dim;
     p.depth = g.depth;
+    p.z0 = g.z0;
     p.nx = kProfileColumns;
     p.dx = kProfileColumnWidth * s.d_m;
     p.x0 = obstacle->centre[0] - 0.5 * p.nx * p.dx;

@@ -1,7 +1,8 @@
 // The obstacle as the kernels see it (docs/design.md, "Obstacles"): one compiled type for
 // every shape, so that shapes do not multiply the variant table. Its geometry is the
 // shape's outline (models/shape_outline.hpp), a disk or a convex polygon, copied
-// to the device at start-up; which of the two is a value read once per particle-obstacle
+// to the device at start-up (a sphere's disk measured along z too in 3-D); which of the two
+// is a value read once per particle-obstacle
 // check, not per pair. The disk is the cylinder's own arithmetic, unchanged; a polygon
 // gives the closest point on its boundary, so a particle at a face is pushed along the
 // face's normal and one at a corner away from the corner. The contact law is the same
@@ -29,8 +30,9 @@ struct ObstacleBody {
   template <int Dim, class Real>
   struct Geometry {
     static constexpr int kMaxCorners = ShapeOutline::kMaxCorners;
-    Vec<Dim, Position> centre;  // in 3-D centre[2] is ignored (the axis is along z)
+    Vec<Dim, Position> centre;  // in 3-D centre[2] counts for a sphere only (prisms along z)
     bool polygon = false;
+    bool ball = false;  // a sphere: in 3-D the distance along z counts
     Real radius;  // the disk's; for a polygon the radius of a circle about the centre
                   // that holds it, which no touching particle's offset is beyond
     int corners = 0;
@@ -44,6 +46,7 @@ struct ObstacleBody {
       for (int d = 0; d < Dim; ++d) g.centre[d] = Position(o->centre[d]);
       const ShapeOutline s = obstacle_outline(*o);
       g.polygon = s.kind == ShapeOutline::Kind::polygon;
+      g.ball = s.ball;
       if (!g.polygon) {
         g.radius = Real(s.radius);
         return g;
@@ -72,7 +75,8 @@ struct ObstacleBody {
     KOKKOS_FORCEINLINE_FUNCTION bool touches(const Vec<Dim, Position>& x, Real r, Real& dn,
                                              Vec<Dim, Real>& n) const {
       Vec<Dim, Real> dx = to_real<Real>(x - centre);
-      if constexpr (Dim == 3) dx[2] = 0;
+      if constexpr (Dim == 3)
+        if (!ball) dx[2] = 0;
       const Real r2 = dot(dx, dx);
       const Real reach = r + radius;
       if (r2 >= reach * reach) return false;

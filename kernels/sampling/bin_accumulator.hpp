@@ -30,9 +30,12 @@ struct GridIndex {
   double x0, y0, inv_dx, inv_dy;
   int nx, ny;
   bool wrap;
+  double z0, z1;  // 3-D: the columns' extent along z (holds_z)
   static GridIndex of(const BinLayout& l) {
-    return {l.x0, l.y0, 1.0 / l.dx, 1.0 / l.dy, l.nx, l.ny, l.x_period > 0};
+    return {l.x0, l.y0, 1.0 / l.dx, 1.0 / l.dy, l.nx, l.ny, l.x_period > 0, l.z0, l.z0 + l.depth};
   }
+  // 3-D: whether height z lies in the columns (all of a slab, a sphere's cut).
+  KOKKOS_INLINE_FUNCTION bool holds_z(double z) const { return z >= z0 && z < z1; }
   // The row that y falls in, clamped to [0, ny].
   KOKKOS_INLINE_FUNCTION int row_of(double y) const {
     const double fy = (y - y0) * inv_dy;
@@ -66,6 +69,8 @@ struct SampleContribution {
   template <class Add>
   KOKKOS_INLINE_FUNCTION void operator()(const int i, Add& add) const {
     int row = 0;
+    if constexpr (Store::dim == 3)
+      if (!where.holds_z(double(p.x(i, 2)))) return;
     const int bin = where(double(p.x(i, 0)), double(p.x(i, 1)), row);
     if (bin < 0) return;
     add_to_bin(bin, i, add, [&](int k) { return virial(i, k); });

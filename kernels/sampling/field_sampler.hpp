@@ -98,7 +98,7 @@ class FieldSampler {
     if (int(sample_bins_.extent(0)) < p.n)
       sample_bins_ = decltype(sample_bins_)(alloc_on<ExecSpace>("sample_bins"), p.capacity());
     Kokkos::parallel_for("fields::locate", Policy(0, p.n),
-                         LocateSampleBins<decltype(p.x), decltype(sample_bins_)>{
+                         LocateSampleBins<decltype(p.x), decltype(sample_bins_), Dim>{
                              grid, profile, !profile_sums_.empty(), p.x, sample_bins_});
     const int owners = Accumulator::row_owners();
     const RowOwnerSamplePass<ExecSpace, Part, decltype(p.x), decltype(sample_bins_)> pass{

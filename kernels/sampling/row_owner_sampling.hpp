@@ -18,7 +18,7 @@
 
 namespace granshock {
 
-template <class PositionView, class Bins>
+template <class PositionView, class Bins, int Dim>
 struct LocateSampleBins {
   GridIndex grid, profile;
   bool with_profile;
@@ -30,6 +30,10 @@ struct LocateSampleBins {
     int row = 0;
     bins(i, 0) = grid(xi, yi, row);
     bins(i, 1) = with_profile ? profile(xi, yi, row) : -1;
+    if constexpr (Dim == 3) {
+      if (!grid.holds_z(double(x(i, 2)))) bins(i, 0) = -1;  // outside the columns (3-D)
+      if (!profile.holds_z(double(x(i, 2)))) bins(i, 1) = -1;
+    }
   }
 };
 

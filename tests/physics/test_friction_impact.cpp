@@ -256,3 +256,62 @@ TEST(SlabWalls, FrictionlessWallsReboundAsTheObstacleFaceWithoutTangentialImpuls
     EXPECT_EQ(r.w[2], 30.0);
   }
 }
+
+namespace {
+
+// The sphere obstacle (models/sphere.hpp) in 3-D: a steel sphere struck head-on along a
+// line at 45 degrees to the x-y plane through its centre rebounds along that line with the
+// normal impulse of the plate's flat face at the same normal speed (the same law, R* = r_i
+// for every obstacle), and a particle that passes above the sphere's top, where a cylinder
+// would stand, keeps its velocity exactly.
+struct SphereImpact {
+  double jn;                         // impulse along the line, on the particle
+  std::array<double, 3> v;           // velocity at the end
+};
+
+SphereImpact simulate_sphere_impact(const std::array<double, 3>& start,
+                                    const std::array<double, 3>& v0, double dt, int steps) {
+  SolverSetup s = wall_setup(ContactModelKind::hertz, 0);
+  s.dim = 3;
+  s.box.lo[2] = -0.11;
+  s.box.hi[2] = 0.11;
+  s.obstacle = make_obstacle(ObstacleShape::sphere, {0, 0, 0}, {kCylinder}, aluminium());
+  s.dt = dt;
+  auto solver = make_solver(s, 1);
+  HostParticles p;
+  p.add(start, v0, 0, 0);
+  solver->set_particles(p);
+  solver->advance(steps);
+  const HostParticles q = solver->particles();
+  const double m = s.species[0].mass_kg();
+  const double speed = std::sqrt(v0[0] * v0[0] + v0[1] * v0[1] + v0[2] * v0[2]);
+  double along = 0;  // final velocity along the incoming direction
+  for (int d = 0; d < 3; ++d) along += q.velocity[0][d] * v0[d] / speed;
+  return {m * (speed - along), q.velocity[0]};
+}
+
+}  // namespace
+
+TEST(SphereObstacle, HeadOnAlongAnyLineReboundsAsTheFlatFaceAndAParticleAboveItPasses) {
+  const double vn = 1.0;
+  const PlateImpact face = simulate_plate_impact(2, vn, 0.0, {1, 0});
+  SolverSetup probe = wall_setup(ContactModelKind::hertz, 0);
+  const double dt =
+      collision_time(ContactModelKind::hertz, probe.obstacle_pair(0), probe.contacts.options, vn) /
+      100;
+  // Along (0, 1, 1)/sqrt(2) towards the centre, from 3 steps' travel off the surface.
+  const double c = std::sqrt(0.5), gap = 0.5 * kCylinder + kR + 3 * vn * dt;
+  const SphereImpact hit = simulate_sphere_impact({0, -gap * c, -gap * c}, {0, vn * c, vn * c}, dt,
+                                                  800);
+  EXPECT_NEAR(hit.jn, face.jn, 1e-9 * face.jn);
+  EXPECT_NEAR(hit.v[0], 0.0, 1e-12);
+  EXPECT_NEAR(hit.v[1], hit.v[2], 1e-9 * vn) << "the rebound must stay on the line";
+  EXPECT_LT(hit.v[1], 0.0);
+  // Above the top (z = R + r + 0.1 d), moving along y past the axis: no contact.
+  const double over = 0.5 * kCylinder + kR + 0.1 * kD;
+  const SphereImpact miss = simulate_sphere_impact({0, -0.5 * kCylinder - kD, over}, {0, vn, 0},
+                                                   dt, int((kCylinder + 2 * kD) / (vn * dt)));
+  EXPECT_EQ(miss.v[0], 0.0);
+  EXPECT_EQ(miss.v[1], vn);
+  EXPECT_EQ(miss.v[2], 0.0);
+}
