@@ -25,6 +25,7 @@ struct NoObstacle {
       return false;
     }
     KOKKOS_FORCEINLINE_FUNCTION bool keeps_out(Position, Position, Real) const { return false; }
+    KOKKOS_FORCEINLINE_FUNCTION bool contains(const Vec<Dim, Position>&) const { return false; }
   };
 };
 

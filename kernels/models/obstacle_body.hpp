@@ -119,7 +119,20 @@ struct ObstacleBody {
       return true;
     }
 
-    // Insertion places no centre within `clearance` of the surface.
+    // Whether a particle's centre lies inside the body: a sphere's ball in 3-D, the
+    // cross-section of a prism (or of a sphere in 2-D) otherwise.
+    KOKKOS_FORCEINLINE_FUNCTION bool contains(const Vec<Dim, Position>& x) const {
+      if constexpr (Dim == 3) {
+        if (ball) {
+          const Vec<Dim, Real> dx = to_real<Real>(x - centre);
+          return dot(dx, dx) < radius * radius;
+        }
+      }
+      return keeps_out(x[0], x[1], Real(0));
+    }
+
+    // Insertion places no centre within `clearance` of the surface (a sphere's whole
+    // column in 3-D: no particle is placed above or below it).
     KOKKOS_FORCEINLINE_FUNCTION bool keeps_out(Position x0, Position x1, Real clearance) const {
       const Position cx = x0 - centre[0], cy = x1 - centre[1];
       const Position reach = Position(radius + clearance);

@@ -113,7 +113,9 @@ struct SolverDiagnostics {
         }));
     out.inside_obstacle = long(sum(
         "diag::inside_obstacle", KOKKOS_LAMBDA(const int i, double& acc) {
-          acc += obstacle_.keeps_out(x(i, 0), x(i, 1), Real(0)) ? 1.0 : 0.0;
+          Vec<Dim, Position> xi;
+          for (int d = 0; d < Dim; ++d) xi[d] = x(i, d);
+          acc += obstacle_.contains(xi) ? 1.0 : 0.0;
         }));
     out.kinetic_energy = comm.sum(out.kinetic_energy);
     out.rotational_energy = comm.sum(out.rotational_energy);

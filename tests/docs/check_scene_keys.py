@@ -91,6 +91,10 @@ density = 2500.0
                 .replace('material = "aluminium"', 'material = "hard"')
             + 'material = "hard"\n[materials.hard]\nyoungs_modulus = 1e13\npoisson_ratio = 0.2\n'
               'density = 1.0\n',
+    # A 3-D layer 4 d thick (walls by default; thick enough to be periodic), for the keys
+    # of 3-D scenes (docs/scene_format.md, "Three dimensions").
+    "three_d": BASE.replace("[[species]]", '[scene]\ndim = 3\n[[species]]', 1)
+                   .replace('length = "60 d"\n', 'length = "60 d"\nthickness = "4 d"\n'),
     # One species, whose number fraction is 1.
     "one_species": BASE.replace("""[[species]]
 name = "aluminium"
@@ -118,6 +122,7 @@ SET_AS = {
     "contact.stiffness": ("contact.stiffness", "linear"),
     "inflow.mach": ("inflow.mach", "mach"),
     "inflow.mach_at": ("inflow.mach_at", "mach"),
+    "domain.z_boundary": ("domain.z_boundary", "three_d"),
 }
 
 
@@ -221,6 +226,7 @@ NOT_WRITTEN = {
 DEFAULT_IN = {
     "obstacle.rotation": "square",
     "contact.characteristic_velocity": "hooke",
+    "domain.z_boundary": "three_d",
 }
 
 NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
