@@ -45,10 +45,10 @@ struct SolverFit {
   bool delete_outside = false;
   std::vector<double> radius;  // per species
   double max_friction = 0;     // largest Coulomb coefficient of any pair
-  // The signed distance of a point (x, y) from the obstacle's surface, negative inside;
-  // empty without an obstacle. Given by the solver, which knows the shapes
+  // The signed distance of a point (its dim coordinates) from the obstacle's surface,
+  // negative inside; empty without an obstacle. Given by the solver, which knows the shapes
   // (models/obstacle_shapes.hpp): core does not.
-  std::function<double(double, double)> obstacle_distance;
+  std::function<double(const double* position)> obstacle_distance;
   // Distances within this of a contact distance are not judged: the solver rounds
   // positions to its precision (a few ulps of the box's extent).
   double distance_tolerance = 0;

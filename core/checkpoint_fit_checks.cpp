@@ -85,7 +85,7 @@ void check_contact_range(const SolverState& s, const SolverFit& fit, std::size_t
                       s.id[i], s.id[j], overlap, kOverlapRefuse));
   }
   if (!fit.obstacle_distance) return;
-  const double depth = -fit.obstacle_distance(s.position[i * dim], s.position[i * dim + 1]);
+  const double depth = -fit.obstacle_distance(&s.position[i * dim]);
   if (depth > 0)
     fail(
         fmt::format("particle {} lies inside the obstacle (its centre {:.3g} m inside the "
@@ -151,7 +151,7 @@ void check_contacts(const SolverState& s, const SolverFit& fit) {
     }
     bool on_obstacle = false;
     if (fit.obstacle_distance) {
-      on_obstacle = fit.obstacle_distance(s.position[i * dim], s.position[i * dim + 1]) < ri + tol;
+      on_obstacle = fit.obstacle_distance(&s.position[i * dim]) < ri + tol;
     }
     if (!on_obstacle && !s.history_obstacle_spring.empty() &&
         norm(s.history_obstacle_spring, i * dim, dim) != 0)

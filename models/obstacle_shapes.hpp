@@ -178,6 +178,14 @@ inline std::string obstacle_size_text(const Obstacle& o) {
 inline double obstacle_distance(const Obstacle& o, double x, double y) {
   return outline_distance(obstacle_outline(o), x - o.centre[0], y - o.centre[1]);
 }
+// In 3-D: a sphere's distance counts along z too; a prism's is its cross-section's.
+inline double obstacle_distance_in_3d(const Obstacle& o, double x, double y, double z) {
+  const ShapeOutline s = obstacle_outline(o);
+  if (!s.ball) return outline_distance(s, x - o.centre[0], y - o.centre[1]);
+  return std::sqrt(std::pow(x - o.centre[0], 2) + std::pow(y - o.centre[1], 2) +
+                   std::pow(z - o.centre[2], 2)) -
+         s.radius;
+}
 // The area of the slab y in [y_lo, y_hi] within `clearance` of the obstacle: what
 // insertion's keep-out zone takes from the inflow's free area.
 inline double obstacle_kept_out_area(const Obstacle& o, double clearance, double y_lo,

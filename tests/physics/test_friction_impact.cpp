@@ -307,10 +307,11 @@ TEST(SphereObstacle, HeadOnAlongAnyLineReboundsAsTheFlatFaceAndAParticleAboveItP
   EXPECT_NEAR(hit.v[0], 0.0, 1e-12);
   EXPECT_NEAR(hit.v[1], hit.v[2], 1e-9 * vn) << "the rebound must stay on the line";
   EXPECT_LT(hit.v[1], 0.0);
-  // Above the top (z = R + r + 0.1 d), moving along y past the axis: no contact.
+  // Above the top (z = R + r + 0.1 d), moving along y over the apex, where a cylinder's
+  // cross-section lies: no contact.
   const double over = 0.5 * kCylinder + kR + 0.1 * kD;
-  const SphereImpact miss = simulate_sphere_impact({0, -0.5 * kCylinder - kD, over}, {0, vn, 0},
-                                                   dt, int((kCylinder + 2 * kD) / (vn * dt)));
+  const SphereImpact miss =
+      simulate_sphere_impact({0, -2 * kD, over}, {0, vn, 0}, dt, int(4 * kD / (vn * dt)));
   EXPECT_EQ(miss.v[0], 0.0);
   EXPECT_EQ(miss.v[1], vn);
   EXPECT_EQ(miss.v[2], 0.0);
