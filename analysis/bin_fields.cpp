@@ -173,9 +173,9 @@ BinFields compute_bin_fields(const BinSums& sums, const FieldPhysics& phys, cons
       f.p_col_yx[k] = sums.pooled(iy, ix, l.virial_index(BinLayout::w_yx)) * norm;
       f.p_col_yy[k] = sums.pooled(iy, ix, l.virial_index(BinLayout::w_yy)) * norm;
       const double zz = three_d ? kzz * norm + sums.pooled(iy, ix, l.w_zz_index()) * norm : 0.0;
-      f.pressure[k] = three_d
-                          ? (f.p_kin_xx[k] + f.p_kin_yy[k] + f.p_col_xx[k] + f.p_col_yy[k] + zz) / dim
-                          : (f.p_kin_xx[k] + f.p_kin_yy[k] + f.p_col_xx[k] + f.p_col_yy[k]) / dim;
+      f.pressure[k] =
+          three_d ? (f.p_kin_xx[k] + f.p_kin_yy[k] + f.p_col_xx[k] + f.p_col_yy[k] + zz) / dim
+                  : (f.p_kin_xx[k] + f.p_kin_yy[k] + f.p_col_xx[k] + f.p_col_yy[k]) / dim;
       f.pressure_eos[k] = f.n[k] * temperature * pressure_factor(phi, phys.restitution, phys.dim);
       f.eos_deviation[k] = f.pressure[k] / f.pressure_eos[k] - 1;
 

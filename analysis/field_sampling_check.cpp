@@ -113,9 +113,8 @@ void check_samples(const Scene& s) {
                                    s.run.blocks, needed, Limits::samples_per_block,
                                    std::max(1L, long(window / s.setup.dt / double(needed)))));
   // Particles an upstream grid bin counts per sample at phi_inf.
-  const double per_sample =
-      s.inflow_number_per_area() * s.bin_size_m * s.bin_size_m *
-      (s.setup.dim == 3 ? sampled_z_range(s)[1] / s.depth() : 1.0);
+  const double per_sample = s.inflow_number_per_area() * s.bin_size_m * s.bin_size_m *
+                            (s.setup.dim == 3 ? sampled_z_range(s)[1] / s.depth() : 1.0);
   const double expected = per_sample * double(samples);
   if (expected < Limits::upstream_particle_samples)
     throw UserError(

@@ -75,6 +75,7 @@ struct RunFit {
   // Field sums: grid and profile lengths, samples per block due by this step.
   long grid_sums = 0, profile_sums = 0;
   int quantities = 0, n_species = 0;  // per bin (core/bin_layout.hpp)
+  int dim = 2;                        // 3: the z moments and W_zz follow the virial
   std::vector<long> samples;
 };
 

@@ -1,6 +1,7 @@
 // The field sums of a checkpoint against the scene's bins and sampling schedule, and
 // the moments within each bin against each other (layout: core/bin_layout.hpp).
 #include <algorithm>
+#include <vector>
 
 #include "core/checkpoint_check_support.hpp"
 
@@ -47,6 +48,20 @@ void check_species(const std::vector<double>& v, std::size_t k, double v2_max, d
                     at(kSums, k + 1), sx, sy, sxy, sxx, syy));
 }
 
+// 3-D: sums Sz, Szz of a species with count n (core/bin_layout.hpp: after the virial):
+// Szz bounded by the speed, Sz by Szz (Cauchy-Schwarz); none without a particle.
+void check_depth_moments(const std::vector<double>& v, std::size_t k, double n, double v2_max) {
+  const double sz = v[k], szz = v[k + 1];
+  if (n == 0 && (sz != 0 || szz != 0))
+    fail(fmt::format("{} = {} in a bin that saw no particle", at(kSums, sz != 0 ? k : k + 1),
+                     sz != 0 ? sz : szz));
+  if (szz < 0 || szz > n * v2_max * kSlack || sz * sz > n * szz * kSlack + 1e-300)
+    fail(
+        fmt::format("{}: z velocity sums {} and {} are inconsistent with each other or with {} "
+                    "particle samples at the largest possible speed",
+                    at(kSums, k), sz, szz, n));
+}
+
 // One accumulator (grid or profile): [blocks][bins][quantities] from `first`.
 void check_accumulator(const std::vector<double>& v, std::size_t first, std::size_t length,
                        const RunFit& fit, const Limits& limits) {
@@ -69,7 +84,15 @@ void check_accumulator(const std::vector<double>& v, std::size_t first, std::siz
         check_species(v, k, limits.v2[std::size_t(a)], max_count);
         particles += v[k];
       }
-      for (std::size_t w = bin + std::size_t(6 * fit.n_species); w < bin + q; ++w)
+      const std::size_t virial = bin + std::size_t(6 * fit.n_species);
+      std::vector<std::size_t> virial_terms = {virial, virial + 1, virial + 2, virial + 3};
+      if (fit.dim == 3) {
+        for (int a = 0; a < fit.n_species; ++a)
+          check_depth_moments(v, virial + 4 + std::size_t(2 * a), v[bin + std::size_t(6 * a)],
+                              limits.v2[std::size_t(a)]);
+        virial_terms.push_back(bin + q - 1);  // W_zz
+      }
+      for (std::size_t w : virial_terms)
         if (std::abs(v[w]) > particles * limits.virial)
           fail(
               fmt::format("{} = {}: a virial beyond what {} particle samples with the largest "
@@ -93,8 +116,8 @@ void check_field_sums(const CheckpointExtras& e, const RunFit& fit) {
       fail(fmt::format("{} = {} samples in block {}, but the schedule gives {} by this step",
                        at(kSums, tail + b), e.bin_sums[tail + b], b, fit.samples[b]));
   const long q = fit.quantities;
-  if (q != 6L * fit.n_species + 4 || fit.grid_sums % (blocks * q) != 0 ||
-      fit.profile_sums % (blocks * q) != 0)
+  const long expected_q = fit.dim == 3 ? 8L * fit.n_species + 5 : 6L * fit.n_species + 4;
+  if (q != expected_q || fit.grid_sums % (blocks * q) != 0 || fit.profile_sums % (blocks * q) != 0)
     throw std::logic_error("check_field_sums: RunFit does not describe core/bin_layout.hpp");
 
   // The budget of the run's health check (check_energy) for the most particles the run

@@ -63,6 +63,15 @@ struct Choices<MachReference> {
 };
 
 template <>
+struct Choices<ZBoundary> {
+  static constexpr const char* what = "z boundary";
+  static constexpr ChoiceName<ZBoundary> table[] = {
+      {ZBoundary::walls, "walls", "flat frictionless walls at z = 0 and z = thickness"},
+      {ZBoundary::periodic, "periodic", "a periodic z axis"},
+  };
+};
+
+template <>
 struct Choices<SlabAxis> {
   static constexpr const char* what = "slab axis";
   static constexpr ChoiceName<SlabAxis> table[] = {
@@ -139,6 +148,7 @@ static_assert(choice_table_is_one_to_one<RestitutionMode>());
 static_assert(choice_table_is_one_to_one<ScatterStrategy>());
 static_assert(choice_table_is_one_to_one<MassDefinition>());
 static_assert(choice_table_is_one_to_one<MachReference>());
+static_assert(choice_table_is_one_to_one<ZBoundary>());
 static_assert(choice_table_is_one_to_one<SlabAxis>());
 static_assert(choice_table_is_one_to_one<SlabBalance>());
 static_assert(choice_table_is_one_to_one<SnapshotOutput>());
@@ -153,7 +163,7 @@ void for_each_choice(F&& f) {
   f(ContactModelKind{}), f(RestitutionMode{}), f(Precision{}), f(ScatterStrategy{});
   f(MassDefinition{}), f(MachReference{}), f(SlabAxis{}), f(SlabBalance{});
   f(SnapshotOutput{}), f(BackendSwitchMode{}), f(ThreadShareMode{}), f(ObstacleShape{});
-  f(ImpactLine{}), f(BatchScript{});
+  f(ImpactLine{}), f(BatchScript{}), f(ZBoundary{});
 }
 
 }  // namespace granshock

@@ -53,8 +53,9 @@ const Key kDomainKeys[] = {
      [](TableReader& r, Reading& st, const std::string& k) {
        if (st.s.setup.dim != 3) {
          if (r.has(k))
-           fail(r.key(k), "(given)", "belongs to a 3-D scene (scene.dim = 3): a quasi-2-D "
-                                     "scene is one diameter thick");
+           fail(r.key(k), "(given)",
+                "belongs to a 3-D scene (scene.dim = 3): a quasi-2-D "
+                "scene is one diameter thick");
          return;
        }
        if (!r.has(k)) fail(r.key(k), "(missing)", "a 3-D scene (scene.dim = 3) needs it");
@@ -76,10 +77,11 @@ const Key kDomainKeys[] = {
          if (r.has(k)) fail(r.key(k), "(given)", "belongs to a 3-D scene (scene.dim = 3)");
          return;
        }
-       st.s.setup.z_walls = r.choice(k, {"walls", "periodic"}, "walls") == "walls";
+       st.s.setup.z_walls = read_choice(r, k, ZBoundary::walls) == ZBoundary::walls;
      },
      [](const Writing& w, toml::table& t, const std::string& k) {
-       if (w.s.setup.dim == 3) t.insert(k, w.s.setup.z_walls ? "walls" : "periodic");
+       if (w.s.setup.dim == 3)
+         t.insert(k, choice_name(w.s.setup.z_walls ? ZBoundary::walls : ZBoundary::periodic));
      }},
 };
 // Periodic across (x), open along the flow (y); one diameter thick (z) in 2-D, in 3-D

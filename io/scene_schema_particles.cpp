@@ -71,8 +71,7 @@ const Key kSceneKeys[] = {
       "(scene_format.md, \"Three dimensions\")"},
      [](TableReader& r, Reading& st, const std::string& k) {
        const long dim = r.integer_at_least(k, 2, 2);
-       if (dim != 2 && dim != 3)
-         fail(r.key(k), std::to_string(dim), "must be 2 (quasi-2-D) or 3");
+       if (dim != 2 && dim != 3) fail(r.key(k), std::to_string(dim), "must be 2 (quasi-2-D) or 3");
        st.s.setup.dim = int(dim);
      },
      [](const Writing& w, toml::table& t, const std::string& k) { t.insert(k, w.s.setup.dim); }},

@@ -22,9 +22,9 @@
 #include "core/variant_names.hpp"
 #include "models/cylinder.hpp"
 #include "models/plate.hpp"
-#include "models/sphere.hpp"
 #include "models/shape_key.hpp"
 #include "models/shape_outline.hpp"
+#include "models/sphere.hpp"
 #include "models/square.hpp"
 #include "models/wedge.hpp"
 
@@ -33,8 +33,7 @@ namespace granshock {
 template <class... Shapes>
 struct ShapeList {};
 
-using ObstacleShapes =
-    ShapeList<CylinderShape, WedgeShape, PlateShape, SquareShape, SphereShape>;
+using ObstacleShapes = ShapeList<CylinderShape, WedgeShape, PlateShape, SquareShape, SphereShape>;
 
 namespace shapes_detail {
 

@@ -23,7 +23,7 @@ struct ShapeOutline {
   // A sphere (models/sphere.hpp): the disk is its cut through the centre, and in 3-D the
   // force kernel measures from the centre along z too.
   bool ball = false;
-  int corners = 0;    // polygon: 3 or 4, counter-clockwise
+  int corners = 0;  // polygon: 3 or 4, counter-clockwise
   std::array<std::array<double, 2>, kMaxCorners> corner{};
 };
 

@@ -9,6 +9,7 @@
 
 #include "core/obstacle.hpp"
 #include "core/variant_names.hpp"
+#include "models/cylinder.hpp"
 #include "models/shape_key.hpp"
 #include "models/shape_outline.hpp"
 
@@ -24,10 +25,9 @@ struct SphereShape {
 
   static double diameter(const Obstacle& o) { return o.size[0]; }
 
+  // The cylinder's disk, marked as a ball.
   static ShapeOutline outline(const Obstacle& o) {
-    ShapeOutline s;
-    s.kind = ShapeOutline::Kind::disk;
-    s.radius = 0.5 * diameter(o);
+    ShapeOutline s = CylinderShape::outline(o);
     s.ball = true;
     return s;
   }

@@ -52,6 +52,7 @@ RunFit run_fit(const Scene& s, const InflowController& inflow, const SamplingPla
   const BinLayout& g = sampling.layout().grid;
   f.quantities = g.quantities();
   f.n_species = g.n_species;
+  f.dim = g.dim;
   f.grid_sums = long(g.bins()) * g.quantities() * g.blocks;
   f.profile_sums = long(sampling.layout().profile.bins()) * g.quantities() * g.blocks;
   f.samples = sampling.samples_by(step);

@@ -17,8 +17,9 @@ namespace {
 
 BinSums empty_sums(const BinLayout& l, const Scene& scene) {
   if (scene.setup.dim != 2)
-    throw UserError("granshock from-dump: the scene is 3-D; a dump's sums are binned for "
-                    "quasi-2-D scenes (scene.dim = 2) only");
+    throw UserError(
+        "granshock from-dump: the scene is 3-D; a dump's sums are binned for "
+        "quasi-2-D scenes (scene.dim = 2) only");
   BinSums s;
   s.n_species = l.n_species;
   s.nx = l.nx;

@@ -33,8 +33,8 @@ struct ObstacleBody {
     Vec<Dim, Position> centre;  // in 3-D centre[2] counts for a sphere only (prisms along z)
     bool polygon = false;
     bool ball = false;  // a sphere: in 3-D the distance along z counts
-    Real radius;  // the disk's; for a polygon the radius of a circle about the centre
-                  // that holds it, which no touching particle's offset is beyond
+    Real radius;        // the disk's; for a polygon the radius of a circle about the centre
+                        // that holds it, which no touching particle's offset is beyond
     int corners = 0;
     Real corner[kMaxCorners][2] = {};
     Real edge[kMaxCorners][2] = {};    // corner[e + 1] - corner[e]

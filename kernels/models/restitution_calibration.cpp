@@ -174,8 +174,10 @@ RestitutionCalibration apply_restitution_mode(SolverSetup& setup) {
   for (int a = 0; a < n; ++a) {
     for (int b = a; b < n; ++b) beta[a][b] = beta[b][a] = calibrate(setup.pair(a, b));
     // The obstacle's row serves a slab's walls too (core/solver_setup.hpp, wall_pair).
-    if (setup.obstacle) obstacle_beta[a] = calibrate(setup.obstacle_pair(a));
-    else if (setup.z_walls) obstacle_beta[a] = calibrate(setup.wall_pair(a));
+    if (setup.obstacle)
+      obstacle_beta[a] = calibrate(setup.obstacle_pair(a));
+    else if (setup.z_walls)
+      obstacle_beta[a] = calibrate(setup.wall_pair(a));
   }
   contacts.calibrated_beta = beta;
   if (setup.obstacle || setup.z_walls) contacts.obstacle_calibrated_beta = obstacle_beta;

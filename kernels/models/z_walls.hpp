@@ -28,8 +28,7 @@ struct ZWalls {
   // wall: then dn is the overlap and nz the z component of the unit normal from the wall to
   // the particle (+1 at the lower wall, -1 at the upper).
   template <class Real>
-  KOKKOS_FORCEINLINE_FUNCTION bool touches(int side, Position z, Real r, Real& dn,
-                                           Real& nz) const {
+  KOKKOS_FORCEINLINE_FUNCTION bool touches(int side, Position z, Real r, Real& dn, Real& nz) const {
     const Real gap = side == 0 ? Real(z - lo) : Real(hi - z);
     if (gap >= r) return false;
     dn = r - gap;

@@ -200,13 +200,12 @@ class BinAccumulator {
                   "row owners sample through sampling/row_owner_sampling.hpp");
     const long offset = long(block) * block_size();
     if constexpr (Strategy == ScatterStrategy::atomic) {
-      const Contribution one{where,       p, virial, offset, quantities_, BinLayout::per_species,
+      const Contribution one{where,    p, virial, offset, quantities_, BinLayout::per_species,
                              n_species};
       Kokkos::parallel_for("fields::sample_atomic", Policy(0, p.n),
                            AtomicSample<Contribution, Sums>{one, sums_});
     } else {
-      const Contribution one{where,       p, virial, 0, quantities_, BinLayout::per_species,
-                             n_species};
+      const Contribution one{where, p, virial, 0, quantities_, BinLayout::per_species, n_species};
       Kokkos::deep_copy(block_, 0.0);
       scatter_.reset_except(block_);
       Kokkos::parallel_for("fields::sample_scatter", Policy(0, p.n),

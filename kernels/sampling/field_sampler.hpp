@@ -89,12 +89,11 @@ class FieldSampler {
     const int quantities = sampling_.grid.quantities();
     const int n_species = sampling_.grid.n_species;
     const Part grid_part{
-        grid,        p, virial, block * grid_sums_.block_size(), quantities, BinLayout::per_species,
+        grid,     p, virial, block * grid_sums_.block_size(), quantities, BinLayout::per_species,
         n_species};
-    const Part profile_part{profile,     p,
-                            virial,      block * profile_sums_.block_size(),
-                            quantities,  BinLayout::per_species,
-                            n_species};
+    const Part profile_part{
+        profile,  p, virial, block * profile_sums_.block_size(), quantities, BinLayout::per_species,
+        n_species};
     if (int(sample_bins_.extent(0)) < p.n)
       sample_bins_ = decltype(sample_bins_)(alloc_on<ExecSpace>("sample_bins"), p.capacity());
     Kokkos::parallel_for("fields::locate", Policy(0, p.n),

@@ -48,7 +48,7 @@ struct ContactForceKernel {
   Real dt;
   Kokkos::View<int, Mem> history_overflow;       // set when slots run out
   Kokkos::View<Real * [Dim * Dim], Mem> virial;  // not in ForceMode::forces
-  ZWalls walls;  // a 3-D slab's walls
+  ZWalls walls;                                  // a 3-D slab's walls
 
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const {
     const Vec<Dim, Position> xi = pairs.position(i);

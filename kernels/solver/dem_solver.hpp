@@ -103,9 +103,8 @@ class DemSolver final : public Solver {
   void configure_sampling(const FieldSampling& f) override {
     // The bins' quantities follow the dimension (core/bin_layout.hpp).
     if (f.grid.dim != V::dim || (f.has_profile() && f.profile.dim != V::dim))
-      throw std::logic_error("field sampling laid out for dimension " +
-                             std::to_string(f.grid.dim) + " in a " + std::to_string(V::dim) +
-                             "-D solver");
+      throw std::logic_error("field sampling laid out for dimension " + std::to_string(f.grid.dim) +
+                             " in a " + std::to_string(V::dim) + "-D solver");
     s_.sampler.configure(f);
   }
 

@@ -100,7 +100,7 @@ struct SolverParts {
   BoxGeometry<Dim, Position> box;
   Obstacle obstacle;
   ZWalls walls;  // a 3-D slab's (models/z_walls.hpp)
-  Real skin;  // of the current list: the scene's, or the adaptive skin's last choice
+  Real skin;     // of the current list: the scene's, or the adaptive skin's last choice
   CellGrid<Dim, Position> grid;
   VelocityVerlet<V, ExecSpace> integrator;
 

@@ -233,7 +233,8 @@ SolverFit solver_fit(const SolverSetup& setup, bool friction) {
   for (double mu : setup.contacts.obstacle_friction) f.max_friction = std::max(f.max_friction, mu);
   if (setup.obstacle)
     f.obstacle_distance = [o = *setup.obstacle](const double* x) {
-      return Dim == 3 ? obstacle_distance_in_3d(o, x[0], x[1], x[2]) : obstacle_distance(o, x[0], x[1]);
+      return Dim == 3 ? obstacle_distance_in_3d(o, x[0], x[1], x[2])
+                      : obstacle_distance(o, x[0], x[1]);
     };
   double extent = 0;
   for (int d = 0; d < Dim; ++d)

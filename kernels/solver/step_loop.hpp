@@ -140,7 +140,7 @@ class StepLoop {
   ContactForceKernel<V, ExecSpace, Mode> force_kernel(
       const Store& from, const PairLoop<Dim, Real, Mem>& pairs,
       const Kokkos::View<Real * [Dim * Dim], Mem>& virial = {}) const {
-    return {from,   pairs, s_.table, s_.obstacle, Real(s_.setup.dt), s_.history_overflow,
+    return {from,   pairs,   s_.table, s_.obstacle, Real(s_.setup.dt), s_.history_overflow,
             virial, s_.walls};
   }
 

@@ -1,5 +1,6 @@
 """The obstacle's cross-section in the x-y plane (docs/scene_format.md, "Obstacle shapes";
-models/cylinder.hpp, wedge.hpp, plate.hpp, square.hpp): a prism along z, symmetric
+models/cylinder.hpp, wedge.hpp, plate.hpp, square.hpp, sphere.hpp): a prism along z (a
+sphere: its cut through the centre), symmetric
 about x = centre[0], spanning centre +- half its size along x and y. The flow runs along
 +y. A fields.h5 holds the outline granshock collided with (/obstacle/outline); where it
 is there, it is used as it is, so that only a scene without fields needs the shapes
@@ -19,7 +20,7 @@ CYLINDER_SEGMENTS = 72
 class Obstacle:
     """An obstacle, in m.
 
-    shape: "cylinder", "wedge", "plate" or "square".
+    shape: "cylinder", "wedge", "plate", "square" or "sphere" (its cut through the centre).
     centre: (x, y), the middle of the shape's extent along x and y.
     frontal_width: D, the width across the flow (what delta/D divides by).
     length: the extent along the flow.
@@ -49,7 +50,7 @@ class Obstacle:
 
 def corners(shape, sizes):
     """The outline about the centre, counter-clockwise, not yet closed."""
-    if shape == "cylinder":
+    if shape in ("cylinder", "sphere"):  # a sphere: its cut through the centre
         angle = np.linspace(0.0, 2 * np.pi, CYLINDER_SEGMENTS, endpoint=False)
         radius = 0.5 * sizes["diameter"]
         return np.column_stack([radius * np.cos(angle), radius * np.sin(angle)])
@@ -68,7 +69,8 @@ def corners(shape, sizes):
         c, s = math.cos(a), math.sin(a)
         return np.array([[c * x - s * y, s * x + c * y]
                          for x, y in ((-h, -h), (h, -h), (h, h), (-h, h))])
-    raise ValueError(f"unknown obstacle shape {shape!r} (cylinder, wedge, plate or square)")
+    raise ValueError(
+        f"unknown obstacle shape {shape!r} (cylinder, wedge, plate, square or sphere)")
 
 
 def make_obstacle(shape, centre, sizes, outline=None):

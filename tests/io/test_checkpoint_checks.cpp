@@ -229,7 +229,9 @@ TEST(CheckpointChecks, StateAgainstTheSolver) {
          Obstacle o;
          o.centre = {0.030, 0.0405, 0};
          o.size[0] = 0.004;
-         x.fit.obstacle_distance = [o](const double* p) { return obstacle_distance(o, p[0], p[1]); };
+         x.fit.obstacle_distance = [o](const double* p) {
+           return obstacle_distance(o, p[0], p[1]);
+         };
        },
        "particle 2 lies inside the obstacle"},
   });

@@ -206,9 +206,9 @@ namespace {
 // coefficients, the normal along z instead of y), up to rounding, and the velocity along
 // the wall and the spin must not change at all.
 struct WallImpact {
-  double jn;                 // normal impulse on the particle, m (|vz'| + vn)
-  double vx, vy;             // velocity along the wall after the rebound
-  std::array<double, 3> w;   // spin after the rebound
+  double jn;                // normal impulse on the particle, m (|vz'| + vn)
+  double vx, vy;            // velocity along the wall after the rebound
+  std::array<double, 3> w;  // spin after the rebound
 };
 
 WallImpact simulate_wall_impact(bool upper, double vn, double vt) {
@@ -231,7 +231,9 @@ WallImpact simulate_wall_impact(bool upper, double vn, double vt) {
     solver->advance(1);
     const HostParticles q = solver->particles();
     const double vz = q.velocity[0][2];
-    out = {m * (vn + (upper ? -vz : vz)), q.velocity[0][0], q.velocity[0][1],
+    out = {m * (vn + (upper ? -vz : vz)),
+           q.velocity[0][0],
+           q.velocity[0][1],
            {q.angular_velocity.at(0), q.angular_velocity.at(1), q.angular_velocity.at(2)}};
     if (upper ? q.position[0][2] < p.position[0][2] : q.position[0][2] > p.position[0][2]) break;
   }
@@ -265,8 +267,8 @@ namespace {
 // for every obstacle), and a particle that passes above the sphere's top, where a cylinder
 // would stand, keeps its velocity exactly.
 struct SphereImpact {
-  double jn;                         // impulse along the line, on the particle
-  std::array<double, 3> v;           // velocity at the end
+  double jn;                // impulse along the line, on the particle
+  std::array<double, 3> v;  // velocity at the end
 };
 
 SphereImpact simulate_sphere_impact(const std::array<double, 3>& start,
@@ -301,8 +303,8 @@ TEST(SphereObstacle, HeadOnAlongAnyLineReboundsAsTheFlatFaceAndAParticleAboveItP
       100;
   // Along (0, 1, 1)/sqrt(2) towards the centre, from 3 steps' travel off the surface.
   const double c = std::sqrt(0.5), gap = 0.5 * kCylinder + kR + 3 * vn * dt;
-  const SphereImpact hit = simulate_sphere_impact({0, -gap * c, -gap * c}, {0, vn * c, vn * c}, dt,
-                                                  800);
+  const SphereImpact hit =
+      simulate_sphere_impact({0, -gap * c, -gap * c}, {0, vn * c, vn * c}, dt, 800);
   EXPECT_NEAR(hit.jn, face.jn, 1e-9 * face.jn);
   EXPECT_NEAR(hit.v[0], 0.0, 1e-12);
   EXPECT_NEAR(hit.v[1], hit.v[2], 1e-9 * vn) << "the rebound must stay on the line";

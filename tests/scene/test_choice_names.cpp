@@ -30,7 +30,7 @@ class ChoiceTable : public ::testing::Test {};
 using EveryChoice =
     ::testing::Types<ContactModelKind, RestitutionMode, Precision, ScatterStrategy, MassDefinition,
                      MachReference, SlabAxis, SlabBalance, SnapshotOutput, BackendSwitchMode,
-                     ObstacleShape, ImpactLine, BatchScript>;
+                     ObstacleShape, ImpactLine, BatchScript, ZBoundary>;
 TYPED_TEST_SUITE(ChoiceTable, EveryChoice);
 
 TYPED_TEST(ChoiceTable, EveryNameParsesToItsValueAndBack) {
@@ -122,6 +122,9 @@ const std::map<std::string, ChoiceKey>& choice_keys() {
     k["inflow.mach_at"].echoed = false;
     k["inflow.mach_at"].also = {"inflow.mach=7.5"};
     k["inflow.mach_at"].drop = "sigma = 0.1\n";
+    k["domain.z_boundary"] = choice_key<ZBoundary>(
+        [](const Scene& s) { return s.setup.z_walls ? ZBoundary::walls : ZBoundary::periodic; });
+    k["domain.z_boundary"].also = {"scene.dim=3", "domain.thickness=\"4 d\""};
     // Each shape has its own size keys (docs/scene_keys.md, [obstacle]).
     k["obstacle.shape"] =
         choice_key<ObstacleShape>([](const Scene& s) { return s.setup.obstacle->shape; });
@@ -130,7 +133,8 @@ const std::map<std::string, ChoiceKey>& choice_keys() {
         {"cylinder", {"obstacle.diameter=\"10 d\""}},
         {"wedge", {"obstacle.half_angle=20", "obstacle.length=\"10 d\""}},
         {"plate", {"obstacle.width=\"10 d\"", "obstacle.thickness=\"2 d\""}},
-        {"square", {"obstacle.side=\"8 d\""}}};
+        {"square", {"obstacle.side=\"8 d\""}},
+        {"sphere", {"obstacle.diameter=\"10 d\""}}};
     return k;
   }();
   return keys;
@@ -168,8 +172,12 @@ TEST(ChoiceNames, TheSceneRefusesAnUnknownNameListingTheTablesNames) {
     SCOPED_TRACE(key);
     std::string list;
     for (const std::string& n : choice.names) list += (list.empty() ? "" : ", ") + n;
+    std::string text = small_scene();  // with what the key needs beside it
+    if (!choice.drop.empty()) text.erase(text.find(choice.drop), choice.drop.size());
+    std::vector<std::string> overrides = choice.also;
+    overrides.push_back(key + "=\"no-such-name\"");
     try {
-      parse_scene(small_scene(), {key + "=\"no-such-name\""});
+      parse_scene(text, overrides);
       ADD_FAILURE() << "accepted";
     } catch (const UserError& e) {
       EXPECT_EQ(std::string(e.what()),

@@ -134,7 +134,10 @@ INSTANTIATE_TEST_SUITE_P(
                  {"species.0.material=\"copper\""},
                  "unknown material (defined: aluminium, steel)"},
         BadInput{"fractions_do_not_add_up", {"species.0.number_fraction=0.6"}, "must add up to 1"},
-        BadInput{"dim_three", {"scene.dim=3"}, "only quasi-2-D scenes"},
+        BadInput{"dim_four", {"scene.dim=4"}, "must be 2 (quasi-2-D) or 3"},
+        BadInput{"thickness_in_2d", {"domain.thickness=0.002"}, "belongs to a 3-D scene"},
+        BadInput{
+            "dim_three_without_thickness", {"scene.dim=3"}, "a 3-D scene (scene.dim = 3) needs it"},
         BadInput{"bad_precision", {"numerics.precision=\"half\""}, "must be one of double, single"},
         BadInput{"bad_override", {"inflow.velocity"}, "expected key=value"}),
     [](const auto& param_info) { return std::string(param_info.param.name); });

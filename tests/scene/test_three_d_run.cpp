@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -28,9 +29,9 @@ TEST(ThreeDimensionalRun, SlabResumesBitwiseAndWritesVectorsAndFields) {
   TempDir tmp;
   const auto scene = tmp.write("small.toml", small_scene(true));
   const double d = 1e-3, h = 2e-3, phi = 0.05;
-  const std::vector<std::string> sets = {
-      "scene.dim=3",          "domain.thickness=0.002", "contact.friction=0.3",
-      "inflow.area_fraction=0.05", "time.duration=0.004",    "time.production_start=0.002"};
+  const std::vector<std::string> sets = {"scene.dim=3",          "domain.thickness=0.002",
+                                         "contact.friction=0.3", "inflow.area_fraction=0.05",
+                                         "time.duration=0.004",  "time.production_start=0.002"};
   granshock::testing::run_straight_and_split(
       [&](const char* dir) { return run_options(scene, tmp.path() / dir, sets); }, 7001);
 
@@ -54,8 +55,8 @@ TEST(ThreeDimensionalRun, SlabResumesBitwiseAndWritesVectorsAndFields) {
   ASSERT_EQ(p.angular_velocity.size(), 3 * p.size());
   double spin = 0, z_lo = h, z_hi = 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
-    spin = std::max({spin, std::abs(p.angular_velocity[3 * i]),
-                     std::abs(p.angular_velocity[3 * i + 1])});
+    spin = std::max(
+        {spin, std::abs(p.angular_velocity[3 * i]), std::abs(p.angular_velocity[3 * i + 1])});
     z_lo = std::min(z_lo, p.position[i][2]);
     z_hi = std::max(z_hi, p.position[i][2]);
   }
@@ -75,6 +76,11 @@ TEST(ThreeDimensionalRun, SlabResumesBitwiseAndWritesVectorsAndFields) {
 
   const nlohmann::json j = read_json(tmp.path() / "split" / "summary.json");
   EXPECT_EQ(j["dimension"], 3);
-  ASSERT_TRUE(j["phi_inf_measured"].is_number()) << j.dump();
-  EXPECT_NEAR(j["phi_inf_measured"].get<double>(), phi, 0.25 * phi);
+  // Beyond the insertion strip (the rows over the strip read low while it fills, in 2-D as
+  // in 3-D: docs/results/three_d); 5 %: the 2-D and slab runs measure within 1 %.
+  const nlohmann::json& measured = j["phi_inf_measured_downstream"];
+  ASSERT_TRUE(measured.is_number()) << j.dump();
+  std::printf("  phi_inf measured %.4f beyond the strip against %.4f inserted\n",
+              measured.get<double>(), phi);
+  EXPECT_NEAR(measured.get<double>(), phi, 0.05 * phi);
 }

@@ -111,13 +111,12 @@ TEST(ObstacleScene, ShapeKeyErrorsNameTheKey) {
             "scene key 'obstacle.half_angle' = 20: is a key of obstacle.shape = \"wedge\", and "
             "the shape is \"cylinder\"");
   EXPECT_EQ(refusal(wedge, {"obstacle.diameter=\"10 d\""}),
-            "scene key 'obstacle.diameter' = \"10 d\": is a key of obstacle.shape = \"cylinder\", "
-            "and the shape is \"wedge\"");
+            "scene key 'obstacle.diameter' = \"10 d\": is a key of obstacle.shape = \"cylinder\" "
+            "or \"sphere\", and the shape is \"wedge\"");
   EXPECT_NE(refusal(scene_with("[obstacle]\nshape = \"wedge\"\nhalf_angle = 20\n"))
                 .find("obstacle.length"),
             std::string::npos);
-  EXPECT_EQ(refusal(plate, {"obstacle.shape=\"sphere\""}).rfind("scene key 'obstacle.shape'", 0),
-            0u);
+  EXPECT_EQ(refusal(plate, {"obstacle.shape=\"ball\""}).rfind("scene key 'obstacle.shape'", 0), 0u);
   const std::string square = scene_with(kSquare);
   EXPECT_EQ(refusal(square, {"obstacle.rotation=90"}),
             "scene key 'obstacle.rotation' = 90: must be in [0, 90)");
