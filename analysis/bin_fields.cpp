@@ -135,13 +135,12 @@ BinFields compute_bin_fields(const BinSums& sums, const FieldPhysics& phys, cons
         kyy += phys.mass[a] * qyy;
         // z: sum (c_z - u_z)^2, nothing in 2-D.
         const double cz = qz(ai, BinLayout::sum_vz);
-        const double qzz = three_d ? qz(ai, BinLayout::sum_vzvz) - 2 * uz * cz + na * uz * uz : 0.0;
+        const double qzz = qz(ai, BinLayout::sum_vzvz) - 2 * uz * cz + na * uz * uz;
         kzz += phys.mass[a] * qzz;
-        const double trace_a = three_d ? qxx + qyy + qzz : qxx + qyy;
+        const double trace_a = qxx + qyy + qzz;  // + 0 in 2-D: the 2-D sum, bit for bit
         trace_mass += phys.mass[a] * trace_a;
-        const double kinetic_a = three_d ? q(ai, BinLayout::sum_vxvx) + q(ai, BinLayout::sum_vyvy) +
-                                               qz(ai, BinLayout::sum_vzvz)
-                                         : q(ai, BinLayout::sum_vxvx) + q(ai, BinLayout::sum_vyvy);
+        const double kinetic_a =
+            q(ai, BinLayout::sum_vxvx) + q(ai, BinLayout::sum_vyvy) + qz(ai, BinLayout::sum_vzvz);
         kinetic_mass += phys.mass[a] * kinetic_a;
         xi[a] = na / count;
         if (na > 0) {
@@ -173,9 +172,7 @@ BinFields compute_bin_fields(const BinSums& sums, const FieldPhysics& phys, cons
       f.p_col_yx[k] = sums.pooled(iy, ix, l.virial_index(BinLayout::w_yx)) * norm;
       f.p_col_yy[k] = sums.pooled(iy, ix, l.virial_index(BinLayout::w_yy)) * norm;
       const double zz = three_d ? kzz * norm + sums.pooled(iy, ix, l.w_zz_index()) * norm : 0.0;
-      f.pressure[k] =
-          three_d ? (f.p_kin_xx[k] + f.p_kin_yy[k] + f.p_col_xx[k] + f.p_col_yy[k] + zz) / dim
-                  : (f.p_kin_xx[k] + f.p_kin_yy[k] + f.p_col_xx[k] + f.p_col_yy[k]) / dim;
+      f.pressure[k] = (f.p_kin_xx[k] + f.p_kin_yy[k] + f.p_col_xx[k] + f.p_col_yy[k] + zz) / dim;
       f.pressure_eos[k] = f.n[k] * temperature * pressure_factor(phi, phys.restitution, phys.dim);
       f.eos_deviation[k] = f.pressure[k] / f.pressure_eos[k] - 1;
 

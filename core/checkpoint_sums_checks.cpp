@@ -1,7 +1,6 @@
 // The field sums of a checkpoint against the scene's bins and sampling schedule, and
 // the moments within each bin against each other (layout: core/bin_layout.hpp).
 #include <algorithm>
-#include <vector>
 
 #include "core/checkpoint_check_support.hpp"
 
@@ -84,20 +83,21 @@ void check_accumulator(const std::vector<double>& v, std::size_t first, std::siz
         check_species(v, k, limits.v2[std::size_t(a)], max_count);
         particles += v[k];
       }
-      const std::size_t virial = bin + std::size_t(6 * fit.n_species);
-      std::vector<std::size_t> virial_terms = {virial, virial + 1, virial + 2, virial + 3};
-      if (fit.dim == 3) {
-        for (int a = 0; a < fit.n_species; ++a)
-          check_depth_moments(v, virial + 4 + std::size_t(2 * a), v[bin + std::size_t(6 * a)],
-                              limits.v2[std::size_t(a)]);
-        virial_terms.push_back(bin + q - 1);  // W_zz
-      }
-      for (std::size_t w : virial_terms)
+      const auto check_virial = [&](std::size_t w) {
         if (std::abs(v[w]) > particles * limits.virial)
           fail(
               fmt::format("{} = {}: a virial beyond what {} particle samples with the largest "
                           "possible forces give ({})",
                           at(kSums, w), v[w], particles, particles * limits.virial));
+      };
+      const std::size_t virial = bin + std::size_t(6 * fit.n_species);
+      for (std::size_t w = virial; w < virial + 4; ++w) check_virial(w);
+      if (fit.dim == 3) {  // then per species S_z, S_zz, and W_zz last
+        for (int a = 0; a < fit.n_species; ++a)
+          check_depth_moments(v, virial + 4 + std::size_t(2 * a), v[bin + std::size_t(6 * a)],
+                              limits.v2[std::size_t(a)]);
+        check_virial(bin + q - 1);
+      }
     }
   }
 }

@@ -204,18 +204,15 @@ long RunFile::write_snapshot_rows(long step, const HostParticles& p,
     write_vectors("velocity", p.velocity);
     write_scalars("species", p.species);
     write_scalars("id", p.id);
-    auto write_doubles = [&](const char* name, const std::vector<double>& v) {
+    // `width` values a particle: a scalar element, or a 3-D spin vector.
+    auto write_doubles = [&](const char* name, const std::vector<double>& v, std::size_t width) {
       Handle set = h5::open_dataset(f, all + "/" + name + "/value");
-      write_frame_rows(set.get(), {frame + 1, capacity}, frame, rows, H5T_NATIVE_DOUBLE, v.data(),
-                       transfer);
+      std::vector<hsize_t> dims = {frame + 1, capacity};
+      if (width > 1) dims.push_back(hsize_t(width));
+      write_frame_rows(set.get(), dims, frame, rows, H5T_NATIVE_DOUBLE, v.data(), transfer);
     };
-    if (!contents_.species_radius.empty()) write_doubles("radius", radius);
-    if (contents_.angular_velocity && spins == 1) write_doubles("angular_velocity", spin);
-    if (contents_.angular_velocity && spins == 3) {
-      Handle set = h5::open_dataset(f, all + "/angular_velocity/value");
-      write_frame_rows(set.get(), {frame + 1, capacity, 3}, frame, rows, H5T_NATIVE_DOUBLE,
-                       spin.data(), transfer);
-    }
+    if (!contents_.species_radius.empty()) write_doubles("radius", radius, 1);
+    if (contents_.angular_velocity) write_doubles("angular_velocity", spin, spins);
     return long(frame);
   });
 }

@@ -12,6 +12,7 @@
 #include "cases/bow_shock/inflow.hpp"
 #include "cases/bow_shock/interrupt.hpp"
 #include "core/user_error.hpp"
+#include "models/sampled_layer.hpp"
 
 namespace granshock {
 
@@ -91,7 +92,8 @@ InletMach measure_inlet_mach(const Scene& scene, double sigma, Backend backend) 
   sums.y0 = c.setup.box.lo[1];
   sums.dx = sums.dy = c.bin_size_m;
   sums.dim = c.setup.dim;
-  sums.depth = c.setup.dim == 3 ? c.setup.box.length(2) : 0;
+  sums.z0 = sampled_z_range(c)[0];  // the whole layer: the channel has no obstacle
+  sums.depth = sampled_z_range(c)[1];
   sums.sums.assign(std::size_t(sums.blocks) * sums.bins() * sums.quantities(), 0.0);
   sums.samples.assign(std::size_t(sums.blocks), 0.0);
 

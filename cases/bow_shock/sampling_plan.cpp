@@ -1,6 +1,7 @@
 #include "cases/bow_shock/sampling_plan.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "models/obstacle_shapes.hpp"
@@ -51,8 +52,9 @@ SamplingPlan::SamplingPlan(const Scene& s)
   g.n_species = int(s.setup.species.size());
   g.blocks = s.run.blocks;
   g.dim = s.setup.dim;  // 3-D: columns through the layer (docs/fields.md, "Three dimensions")
-  g.z0 = sampled_z_range(s)[0];
-  g.depth = sampled_z_range(s)[1];
+  const std::array<double, 2> layer = sampled_z_range(s);
+  g.z0 = layer[0];
+  g.depth = layer[1];
   g.nx = bins_tiling(box.length(0), s.bin_size_m);
   g.dx = box.length(0) / g.nx;
   g.x0 = box.lo[0];

@@ -64,7 +64,22 @@ struct SampleContribution {
   Store p;
   VirialView virial;
   long block_offset;
-  int quantities, per_species, n_species;
+  // A bin's quantities, and where in them the mixture's virial, a 3-D layout's z moments
+  // and its W_zz start (core/bin_layout.hpp).
+  int quantities, virial_at, depth_at, w_zz_at;
+
+  static SampleContribution of(const BinLayout& l, const Where& where, const Store& p,
+                               const VirialView& virial, long block_offset) {
+    const bool z = l.dim == 3;
+    return {where,
+            p,
+            virial,
+            block_offset,
+            l.quantities(),
+            l.virial_index(BinLayout::w_xx),
+            z ? l.depth_index(0, BinLayout::sum_vz) : 0,
+            z ? l.w_zz_index() : 0};
+  }
 
   template <class Add>
   KOKKOS_INLINE_FUNCTION void operator()(const int i, Add& add) const {
@@ -96,7 +111,7 @@ struct SampleContribution {
     constexpr int Dim = Store::dim;
     const long base = block_offset + long(bin) * quantities;
     const int species = p.species(i);
-    const long s = base + long(per_species) * species;
+    const long s = base + long(BinLayout::per_species) * species;
     const double vx = p.v(i, 0), vy = p.v(i, 1);
     add(s + 0, 1.0);
     add(s + 1, vx);
@@ -104,16 +119,17 @@ struct SampleContribution {
     add(s + 3, vx * vx);
     add(s + 4, vx * vy);
     add(s + 5, vy * vy);
-    const long w = base + long(per_species) * n_species;
+    const long w = base + virial_at;
     add(w + 0, double(virial_of(0)));        // xx
     add(w + 1, double(virial_of(1)));        // xy
     add(w + 2, double(virial_of(Dim)));      // yx
     add(w + 3, double(virial_of(Dim + 1)));  // yy
     if constexpr (Dim == 3) {
       const double vz = p.v(i, 2);
-      add(w + 4 + 2 * species, vz);
-      add(w + 5 + 2 * species, vz * vz);
-      add(w + 4 + 2 * n_species, double(virial_of(8)));  // zz
+      const long z = base + depth_at + 2 * species;
+      add(z, vz);
+      add(z + 1, vz * vz);
+      add(base + w_zz_at, double(virial_of(8)));  // zz
     }
   }
 };
@@ -189,23 +205,22 @@ class BinAccumulator {
   const Sums& sums() const { return sums_; }
   bool empty() const { return sums_.extent(0) == 0; }
 
+  // One sample into `block` of the bins `layout` describes (the one these sums were made
+  // for), `where` its index.
   template <ScatterStrategy Strategy, class Where, class Store, class VirialView>
-  void sample(int block, const Where& where, const Store& p, const VirialView& virial) {
+  void sample(int block, const BinLayout& layout, const Where& where, const Store& p,
+              const VirialView& virial) {
     using Policy = Kokkos::RangePolicy<ExecSpace>;
-    // quantities_ = 6 n + 4 (+ 2 n + 1 in 3-D): core/bin_layout.hpp.
-    const int n_species = Store::dim == 3 ? (quantities_ - 5) / (BinLayout::per_species + 2)
-                                          : (quantities_ - 4) / BinLayout::per_species;
     using Contribution = SampleContribution<Where, Store, VirialView>;
     static_assert(Strategy == ScatterStrategy::atomic || Strategy == ScatterStrategy::scatter_view,
                   "row owners sample through sampling/row_owner_sampling.hpp");
     const long offset = long(block) * block_size();
     if constexpr (Strategy == ScatterStrategy::atomic) {
-      const Contribution one{where,    p, virial, offset, quantities_, BinLayout::per_species,
-                             n_species};
+      const Contribution one = Contribution::of(layout, where, p, virial, offset);
       Kokkos::parallel_for("fields::sample_atomic", Policy(0, p.n),
                            AtomicSample<Contribution, Sums>{one, sums_});
     } else {
-      const Contribution one{where, p, virial, 0, quantities_, BinLayout::per_species, n_species};
+      const Contribution one = Contribution::of(layout, where, p, virial, 0);
       Kokkos::deep_copy(block_, 0.0);
       scatter_.reset_except(block_);
       Kokkos::parallel_for("fields::sample_scatter", Policy(0, p.n),

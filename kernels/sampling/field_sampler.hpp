@@ -35,8 +35,13 @@ class FieldSampler {
   void configure(const FieldSampling& f) {
     sampling_ = f;
     grid_sums_ = Accumulator(f.grid.bins(), f.grid.quantities(), f.grid.blocks);
-    if (f.has_profile())
+    if (f.has_profile()) {
+      // The same quantities per bin (species and dimension) as the grid: the run file and
+      // the analysis read both with the grid's layout.
+      if (f.profile.quantities() != f.grid.quantities())
+        throw std::logic_error("field sampling: the profile's bins hold other quantities");
       profile_sums_ = Accumulator(f.profile.bins(), f.grid.quantities(), f.grid.blocks);
+    }
   }
 
   // One sample of p's particles into `block`, with `virial` their contact virial.
@@ -78,22 +83,19 @@ class FieldSampler {
   template <ScatterStrategy Strategy>
   void sample_with(int block, const GridIndex& grid, const GridIndex& profile, const Store& p,
                    const VirialView& virial) {
-    grid_sums_.template sample<Strategy>(block, grid, p, virial);
-    if (!profile_sums_.empty()) profile_sums_.template sample<Strategy>(block, profile, p, virial);
+    grid_sums_.template sample<Strategy>(block, sampling_.grid, grid, p, virial);
+    if (!profile_sums_.empty())
+      profile_sums_.template sample<Strategy>(block, sampling_.profile, profile, p, virial);
   }
 
   // Grid and profile in one pass (row_owner_sampling.hpp).
   void sample_by_row_owners(int block, const GridIndex& grid, const GridIndex& profile,
                             const Store& p, const VirialView& virial) {
     using Part = SampleContribution<GridIndex, Store, VirialView>;
-    const int quantities = sampling_.grid.quantities();
-    const int n_species = sampling_.grid.n_species;
-    const Part grid_part{
-        grid,     p, virial, block * grid_sums_.block_size(), quantities, BinLayout::per_species,
-        n_species};
-    const Part profile_part{
-        profile,  p, virial, block * profile_sums_.block_size(), quantities, BinLayout::per_species,
-        n_species};
+    const Part grid_part =
+        Part::of(sampling_.grid, grid, p, virial, block * grid_sums_.block_size());
+    const Part profile_part =
+        Part::of(sampling_.profile, profile, p, virial, block * profile_sums_.block_size());
     if (int(sample_bins_.extent(0)) < p.n)
       sample_bins_ = decltype(sample_bins_)(alloc_on<ExecSpace>("sample_bins"), p.capacity());
     Kokkos::parallel_for("fields::locate", Policy(0, p.n),
