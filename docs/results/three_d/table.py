@@ -24,7 +24,10 @@ def row(name):
     dim = s["dimension"]
     h = 1 if dim == 2 else int(name.split("_h")[1][0]) if "_h" in name else None
     phi_peak = s.get("phi_peak")
-    projected = phi_peak * 1.5 * h if (dim == 3 and phi_peak is not None and h) else phi_peak
+    if dim == 3 and not h:  # the sphere: no layer to project
+        projected = None
+    else:
+        projected = phi_peak * 1.5 * h if (dim == 3 and phi_peak is not None) else phi_peak
     return {
         "case": name,
         "dim": dim,
@@ -52,7 +55,7 @@ def main():
           "Ma_inf at the inlet | shock angle (deg) | particles | steps |")
     print("|---|---|---|---|---|---|---|---|---|---|")
     for r in rows:
-        print(f"| {r['case']} | {r['dim']} | {r['h_over_d']} | {fmt(r['delta_over_D'])} +- "
+        print(f"| {r['case']} | {r['dim']} | {r['h_over_d'] or 'n/a'} | {fmt(r['delta_over_D'])} +- "
               f"{fmt(r['err'])} | {fmt(r['phi_peak'])} | {fmt(r['phi_peak_projected'])} | "
               f"{fmt(r['ma_inf_measured'], '{:.2f}')} | {fmt(r['shock_angle_deg'], '{:.1f}')} | "
               f"{r['particles_final']} | {r['steps']} |")
