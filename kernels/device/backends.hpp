@@ -40,6 +40,15 @@ constexpr bool uses_host_paths() {
   return host_accessible<ExecSpace>() && !GRANSHOCK_DEVICE_PATHS;
 }
 
+// A host path's seldom taken branch kept out of its caller, so that the caller's hot loops
+// get the registers to themselves (solver/fused_step.hpp). nvcc's passes inline it as
+// they choose.
+#if defined(__CUDACC__)
+#define GRANSHOCK_HOST_NOINLINE
+#else
+#define GRANSHOCK_HOST_NOINLINE __attribute__((noinline))
+#endif
+
 // The choice as a type, a template argument of the kernels that branch (defaulted to
 // DefaultPaths), so that a test can build both ways into one program and compare them.
 // Each branch reads `Paths::host`; docs/cuda.md lists every one (checked by

@@ -34,8 +34,9 @@ struct PairLoop {
 
   // Calls touching(j, sj, dx, r2, rsum) for each partner j of particle i (at xi, radius
   // ri) in contact: dx = x_i - x_j (minimum image, formed in Position, then rounded to
-  // Real), r2 = |dx|^2 < rsum^2, rsum = r_i + r_j.
-  template <class F>
+  // Real), r2 = |dx|^2 < rsum^2, rsum = r_i + r_j. Images false: i is known to have no
+  // partner across a periodic face (solver/run_marks.hpp), where the image changes nothing.
+  template <bool Images = true, class F>
   KOKKOS_FORCEINLINE_FUNCTION void for_each_contact(int i, const Vec<Dim, Position>& xi, Real ri,
                                                     F&& touching) const {
     // Most list partners are not touching: they are rejected on the distance alone,
@@ -44,7 +45,9 @@ struct PairLoop {
     const Real reach2 = reach * reach;
     for (int k = offsets(i); k < offsets(i + 1); ++k) {
       const int j = neighbours(k);
-      const Vec<Dim, Real> dx = to_real<Real>(box.nearby_image(xi - position(j)));
+      Vec<Dim, Position> separation = xi - position(j);
+      if constexpr (Images) separation = box.nearby_image(separation);
+      const Vec<Dim, Real> dx = to_real<Real>(separation);
       const Real r2 = norm2(dx);
       if (r2 >= reach2) continue;
       const int sj = species(j);

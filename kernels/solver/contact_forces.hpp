@@ -98,15 +98,17 @@ struct ContactForceKernel {
   // contacts, their springs (updated) and the obstacle; w, when given, gets the contacts'
   // virial (ForceMode::forces_and_virial). The fused step (fused_step.hpp) calls it
   // directly and keeps the result in registers, with WithObstacle false for a particle
-  // known not to touch the obstacle (obstacle_runs.hpp).
-  template <bool WithObstacle = V::obstacle::present, class OwnVelocity = Vec<Dim, Real>>
+  // known not to touch the obstacle and Images false for one known to have no partner
+  // across a periodic face (run_marks.hpp).
+  template <bool WithObstacle = V::obstacle::present, bool Images = true,
+            class OwnVelocity = Vec<Dim, Real>>
   KOKKOS_FORCEINLINE_FUNCTION void total(int i, const Vec<Dim, Position>& xi, const OwnVelocity& vi,
                                          Vec<Dim, Real>& force, SpinValue& torque,
                                          Real* w = nullptr) const {
     force = Vec<Dim, Real>::zero();
     torque = zero_spin<Dim, Real>();
     int used_slots = 0;  // bit s set when slot s carried a contact this step
-    sum_contacts(i, xi, vi, force, torque, used_slots, w);
+    sum_contacts<Images>(i, xi, vi, force, torque, used_slots, w);
     if constexpr (V::friction) release_unused_slots(i, used_slots);
     if constexpr (WithObstacle) {
       const int si = p.species(i);
@@ -117,14 +119,14 @@ struct ContactForceKernel {
   }
 
   // Sums the pair forces of i's contacts into force (and torque; w, the virial, unless in
-  // ForceMode::forces).
-  template <class OwnVelocity>
+  // ForceMode::forces); Images as in PairLoop::for_each_contact.
+  template <bool Images = true, class OwnVelocity>
   KOKKOS_FORCEINLINE_FUNCTION void sum_contacts(int i, const Vec<Dim, Position>& xi,
                                                 const OwnVelocity& vi, Vec<Dim, Real>& force,
                                                 SpinValue& torque, int& used_slots, Real* w) const {
     const int si = p.species(i);
     const Real ri = table.radius(si);
-    pairs.for_each_contact(
+    pairs.template for_each_contact<Images>(
         i, xi, ri, [&](int j, int sj, const Vec<Dim, Real>& dx, Real r2, Real rsum) {
           const Real r = dmath::sqrt(r2);
           const Vec<Dim, Real> n = (Real(1) / r) * dx;

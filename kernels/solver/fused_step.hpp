@@ -26,6 +26,7 @@
 #include "kernels/particles/variant_types.hpp"
 #include "kernels/solver/contact_forces.hpp"
 #include "kernels/solver/kick.hpp"
+#include "kernels/solver/run_marks.hpp"
 
 namespace granshock {
 
@@ -49,10 +50,13 @@ struct FusedStepKernel {
   bool report_speed;  // reduce max |v|^2 instead of the displacement since the last build
 
   int n;  // particles
-  // With an obstacle: which work items may touch it (obstacle_runs.hpp), known for the
-  // first `runs_known`; the others' particles are tested as before.
-  Kokkos::View<const std::uint8_t*, Mem> near_obstacle;
+  // Which work items may touch the obstacle, and which hold a particle that may have a
+  // partner across a periodic face (run_marks.hpp), known for the first `runs_known`; the
+  // others' particles are treated as marked. Host paths: the span of a run's particles
+  // that form the image.
+  Kokkos::View<const std::uint8_t*, Mem> run_marks;
   int runs_known = 0;
+  Kokkos::View<const int* [2], Mem> image_spans;
 
   // Host paths give each work item a run of particles, so that the running maximum and
   // the step's constants stay in registers: through the reference `worst` and the
@@ -83,10 +87,11 @@ struct FusedStepKernel {
     // same, so the trajectory is bitwise the same.
     Vec<Dim, Real> f[run_length];
     SpinValue torque[run_length];
-    if (!V::obstacle::present || run >= runs_known || near_obstacle(run)) {
-      for (int i = first; i < last; ++i) force(i, f[i - first], torque[i - first]);
+    const std::uint8_t marks = run < runs_known ? run_marks(run) : run_mark::all;
+    if (marks & run_mark::obstacle) {
+      forces_of_run<V::obstacle::present>(run, first, last, marks, f, torque);
     } else {
-      for (int i = first; i < last; ++i) force<false>(i, f[i - first], torque[i - first]);
+      forces_of_run<false>(run, first, last, marks, f, torque);
     }
     const Real half = Real(0.5) * forces.dt, step = forces.dt;
     const Vec<Dim, Real> g = gravity;
@@ -101,11 +106,43 @@ struct FusedStepKernel {
     if (largest > worst) worst = largest;
   }
 
-  // The force and torque on particle i. WithObstacle false: particle i is known not to
-  // touch the obstacle (obstacle_runs.hpp).
-  template <bool WithObstacle = V::obstacle::present>
+  // The forces and torques on particles [first, last) of work item `run` (with its marks)
+  // into f and torque. WithObstacle false: they are known not to touch the obstacle
+  // (run_marks.hpp). On host paths only the run's span of particles near a periodic face
+  // forms the image, in a function of its own: inlined, its code and the loops' took
+  // registers from the hot loops, which then kept their counters on the stack
+  // (docs/benchmarks.md, "Instructions per particle-step"). The order in which particles
+  // are taken does not matter: each writes only its own force, torque and springs.
+  template <bool WithObstacle>
+  KOKKOS_FORCEINLINE_FUNCTION void forces_of_run(const int run, const int first, const int last,
+                                                 const std::uint8_t marks, Vec<Dim, Real>* f,
+                                                 SpinValue* torque) const {
+    if constexpr (Paths::host) {
+      int begin = last, end = last;  // the span that forms the image
+      if (run >= runs_known)
+        begin = first;
+      else if (marks & run_mark::image)
+        begin = image_spans(run, 0), end = image_spans(run, 1);
+      for (int i = first; i < begin; ++i)
+        force<WithObstacle, false>(i, f[i - first], torque[i - first]);
+      if (begin < end) forces_with_image<WithObstacle>(first, begin, end, f, torque);
+      for (int i = end; i < last; ++i)
+        force<WithObstacle, false>(i, f[i - first], torque[i - first]);
+    } else {  // a GPU thread's particle always forms the image
+      forces_with_image<WithObstacle>(first, first, last, f, torque);
+    }
+  }
+
+  // Particles [begin, end) of the run from `first`, with the image.
+  template <bool WithObstacle>
+  GRANSHOCK_HOST_NOINLINE KOKKOS_INLINE_FUNCTION void forces_with_image(
+      const int first, const int begin, const int end, Vec<Dim, Real>* f, SpinValue* torque) const {
+    for (int i = begin; i < end; ++i) force<WithObstacle, true>(i, f[i - first], torque[i - first]);
+  }
+
+  template <bool WithObstacle, bool Images>
   KOKKOS_FORCEINLINE_FUNCTION void force(const int i, Vec<Dim, Real>& f, SpinValue& torque) const {
-    forces.template total<WithObstacle>(
+    forces.template total<WithObstacle, Images>(
         i, forces.pairs.position(i), typename ContactForceKernel<V, ExecSpace>::ReadOwnVelocity{},
         f, torque);
   }

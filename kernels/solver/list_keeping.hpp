@@ -1,7 +1,7 @@
 // Keeping the neighbour lists of a DemSolver (docs/design.md, "The solver"): whether some
 // particle has moved more than skin/2 since the last build, the rebuild itself (periodic
 // wrap, migration between processes, deletion at open boundaries, the cell sort, the
-// Verlet list), the marks of the work items that may touch the obstacle, and the adaptive
+// Verlet list), the marks of the fused step's work items (run_marks.hpp), and the adaptive
 // skin's choice before a rebuild.
 #pragma once
 
@@ -13,7 +13,7 @@
 #include "kernels/neighbours/rebuild_watch.hpp"
 #include "kernels/neighbours/verlet_list.hpp"
 #include "kernels/solver/fused_step.hpp"
-#include "kernels/solver/obstacle_runs.hpp"
+#include "kernels/solver/run_marks.hpp"
 #include "kernels/solver/solver_parts.hpp"
 
 namespace granshock {
@@ -62,7 +62,7 @@ class ListKeeping {
                     p.n);
     }
     copy_prefix<ExecSpace>(p.x_ref, p.x, int(p.x.extent(0)));  // space_alloc.hpp: not on OpenMP
-    mark_runs_near_obstacle();
+    mark_runs();
     s_.watch.rebuilt();
     s_.last_build_interval = s_.builds > 0 ? s_.steps - s_.last_build_step : 0;
     ++s_.builds;
@@ -74,24 +74,39 @@ class ListKeeping {
     return [this](int capacity) { Parts::Population::grow(s_.p, capacity); };
   }
 
-  // Which of the fused step's work items may touch the obstacle before the next build
-  // (obstacle_runs.hpp), from where the particles were at the last build (x_ref): at a
-  // rebuild and when a state is imported with its list. The fused step tests only their
-  // particles, and every particle of a run it does not know: the last run when it is not
-  // full (particles inserted since fill it), or all of them before any marking.
-  void mark_runs_near_obstacle() {
-    if constexpr (V::obstacle::present) {
+  // The marks of the fused step's work items (run_marks.hpp): which may touch the obstacle
+  // and, on host paths, which may have a partner across a periodic face before the next
+  // build, from where the particles were at the last build (x_ref): at a rebuild and when
+  // a state is imported with its list. The fused step treats every particle of an item it
+  // does not know as marked: the last item when it is not full (particles inserted since
+  // fill it), or all of them before any marking.
+  void mark_runs() {
+    constexpr bool spans = Paths::host;  // the image's spans: host paths only
+    if constexpr (V::obstacle::present || spans) {
       using Kernel = FusedStepKernel<V, ExecSpace, Paths>;
       auto& p = s_.p;
       const int runs = Kernel::work_items(p.n);
-      if (int(s_.near_obstacle_runs.extent(0)) < runs)
-        s_.near_obstacle_runs = decltype(s_.near_obstacle_runs)(
-            alloc_on<ExecSpace>("near_obstacle_runs"), Kernel::work_items(p.capacity()));
-      const NearObstacleRuns<Dim, Real, typename Parts::Obstacle, Mem> mark{
-          s_.near_obstacle_runs, p.x_ref,         p.species, s_.table.radius,
-          s_.obstacle,           double(s_.skin), p.n,       Kernel::run_length};
-      Kokkos::parallel_for("near_obstacle_runs", Policy(0, runs), mark);
-      s_.near_obstacle_runs_known = p.n / Kernel::run_length;  // the full runs
+      if (int(s_.run_marks.extent(0)) < runs)
+        s_.run_marks = decltype(s_.run_marks)(alloc_on<ExecSpace>("run_marks"),
+                                              Kernel::work_items(p.capacity()));
+      if (spans && int(s_.image_spans.extent(0)) < runs)
+        s_.image_spans = decltype(s_.image_spans)(alloc_on<ExecSpace>("image_spans"),
+                                                  Kernel::work_items(p.capacity()));
+      const MarkRuns<Dim, Real, typename Parts::Obstacle, V::obstacle::present, Mem> mark{
+          s_.run_marks,
+          s_.image_spans,
+          p.x_ref,
+          p.species,
+          s_.table.radius,
+          s_.obstacle,
+          s_.box,
+          spans,
+          double(s_.skin),
+          double(s_.max_radius()),
+          p.n,
+          Kernel::run_length};
+      Kokkos::parallel_for("run_marks", Policy(0, runs), mark);
+      s_.run_marks_known = p.n / Kernel::run_length;  // the full runs
     }
   }
 

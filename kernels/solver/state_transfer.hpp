@@ -137,7 +137,7 @@ class StateTransfer {
       s_.list.assign(st.neighbour_offsets, st.neighbours);
       s_.population.restore(st.next_id, gone);
     }
-    lists_.mark_runs_near_obstacle();  // not the marks of the particles held before
+    lists_.mark_runs();  // not the marks of the particles held before
   }
 
   // Several processes, from the whole state: the particles whose reference position is in

@@ -173,7 +173,7 @@ TEST(StateExport, GivenParticlesStartAtRestInASolverThatHeldContacts) {
 // state between two solvers, back and forth) continues as in the solver that exported it:
 // nothing the other solver derived from its own particles survives the import. Before the
 // fix the fused step kept the other state's marks of the particles near the obstacle
-// (kernels/solver/obstacle_runs.hpp), and those of this state that touched it went
+// (kernels/solver/run_marks.hpp), and those of this state that touched it went
 // through.
 TEST(StateExport, AStateImportedIntoASolverThatRanAnotherContinuesAsInItsOwn) {
   HostParticles kept;
