@@ -50,10 +50,11 @@ struct FusedStepKernel {
   bool report_speed;  // reduce max |v|^2 instead of the displacement since the last build
 
   int n;  // particles
-  // Which work items may touch the obstacle (obstacle scenes) and, on host paths, each
-  // one's span of particles that form the image (run_marks.hpp), known for the first
-  // `runs_known`; the others' particles are tested and form the image as before.
-  Kokkos::View<const std::uint8_t*, Mem> near_obstacle;
+  // Which work items may touch the obstacle, and which hold a particle that may have a
+  // partner across a periodic face (run_marks.hpp), known for the first `runs_known`; the
+  // others' particles are treated as marked. Host paths: the span of a run's particles
+  // that form the image.
+  Kokkos::View<const std::uint8_t*, Mem> run_marks;
   int runs_known = 0;
   Kokkos::View<const int* [2], Mem> image_spans;
 
@@ -86,10 +87,11 @@ struct FusedStepKernel {
     // same, so the trajectory is bitwise the same.
     Vec<Dim, Real> f[run_length];
     SpinValue torque[run_length];
-    if (!V::obstacle::present || run >= runs_known || near_obstacle(run)) {
-      forces_of_run<V::obstacle::present>(run, first, last, f, torque);
+    const std::uint8_t marks = run < runs_known ? run_marks(run) : run_mark::all;
+    if (marks & run_mark::obstacle) {
+      forces_of_run<V::obstacle::present>(run, first, last, marks, f, torque);
     } else {
-      forces_of_run<false>(run, first, last, f, torque);
+      forces_of_run<false>(run, first, last, marks, f, torque);
     }
     const Real half = Real(0.5) * forces.dt, step = forces.dt;
     const Vec<Dim, Real> g = gravity;
@@ -104,8 +106,8 @@ struct FusedStepKernel {
     if (largest > worst) worst = largest;
   }
 
-  // The forces and torques on particles [first, last) of work item `run` into f and
-  // torque. WithObstacle false: they are known not to touch the obstacle
+  // The forces and torques on particles [first, last) of work item `run` (with its marks)
+  // into f and torque. WithObstacle false: they are known not to touch the obstacle
   // (run_marks.hpp). On host paths only the run's span of particles near a periodic face
   // forms the image, in a function of its own: inlined, its code and the loops' took
   // registers from the hot loops, which then kept their counters on the stack
@@ -113,10 +115,14 @@ struct FusedStepKernel {
   // are taken does not matter: each writes only its own force, torque and springs.
   template <bool WithObstacle>
   KOKKOS_FORCEINLINE_FUNCTION void forces_of_run(const int run, const int first, const int last,
-                                                 Vec<Dim, Real>* f, SpinValue* torque) const {
+                                                 const std::uint8_t marks, Vec<Dim, Real>* f,
+                                                 SpinValue* torque) const {
     if constexpr (Paths::host) {
-      int begin = first, end = last;  // the span that forms the image
-      if (run < runs_known) begin = image_spans(run, 0), end = image_spans(run, 1);
+      int begin = last, end = last;  // the span that forms the image
+      if (run >= runs_known)
+        begin = first;
+      else if (marks & run_mark::image)
+        begin = image_spans(run, 0), end = image_spans(run, 1);
       for (int i = first; i < begin; ++i)
         force<WithObstacle, false>(i, f[i - first], torque[i - first]);
       if (begin < end) forces_with_image<WithObstacle>(first, begin, end, f, torque);

@@ -75,25 +75,25 @@ class ListKeeping {
   }
 
   // The marks of the fused step's work items (run_marks.hpp): which may touch the obstacle
-  // and, on host paths, each one's span of particles that may have a partner across a
-  // periodic face before the next build, from where the particles were at the last build (x_ref):
-  // at a rebuild and when a state is imported with its list. The fused step treats every particle
-  // of an item it does not know as marked: the last item when it is not full (particles inserted
-  // since fill it), or all of them before any marking.
+  // and, on host paths, which may have a partner across a periodic face before the next
+  // build, from where the particles were at the last build (x_ref): at a rebuild and when
+  // a state is imported with its list. The fused step treats every particle of an item it
+  // does not know as marked: the last item when it is not full (particles inserted since
+  // fill it), or all of them before any marking.
   void mark_runs() {
     constexpr bool spans = Paths::host;  // the image's spans: host paths only
     if constexpr (V::obstacle::present || spans) {
       using Kernel = FusedStepKernel<V, ExecSpace, Paths>;
       auto& p = s_.p;
       const int runs = Kernel::work_items(p.n);
-      if (V::obstacle::present && int(s_.near_obstacle_runs.extent(0)) < runs)
-        s_.near_obstacle_runs = decltype(s_.near_obstacle_runs)(
-            alloc_on<ExecSpace>("near_obstacle_runs"), Kernel::work_items(p.capacity()));
+      if (int(s_.run_marks.extent(0)) < runs)
+        s_.run_marks = decltype(s_.run_marks)(alloc_on<ExecSpace>("run_marks"),
+                                              Kernel::work_items(p.capacity()));
       if (spans && int(s_.image_spans.extent(0)) < runs)
         s_.image_spans = decltype(s_.image_spans)(alloc_on<ExecSpace>("image_spans"),
                                                   Kernel::work_items(p.capacity()));
       const MarkRuns<Dim, Real, typename Parts::Obstacle, V::obstacle::present, Mem> mark{
-          s_.near_obstacle_runs,
+          s_.run_marks,
           s_.image_spans,
           p.x_ref,
           p.species,
@@ -106,7 +106,7 @@ class ListKeeping {
           p.n,
           Kernel::run_length};
       Kokkos::parallel_for("run_marks", Policy(0, runs), mark);
-      s_.runs_marked = p.n / Kernel::run_length;  // the full runs
+      s_.run_marks_known = p.n / Kernel::run_length;  // the full runs
     }
   }
 

@@ -44,19 +44,26 @@
 
 namespace granshock {
 
+// The bits of a work item's mark.
+namespace run_mark {
+constexpr std::uint8_t obstacle = 1;  // may touch the obstacle
+constexpr std::uint8_t image = 2;     // may have a partner across a periodic face
+constexpr std::uint8_t all = obstacle | image;
+}  // namespace run_mark
+
 // WithObstacle: the scene has one (Obstacle is then its geometry).
 template <int Dim, class Real, class Obstacle, bool WithObstacle, class MemSpace>
 struct MarkRuns {
-  Kokkos::View<std::uint8_t*, MemSpace> near_obstacle;  // per work item: 1 where it may touch
-  // Per work item: the particles [begin, end) that form the image, begin = end = the first
-  // particle when none.
+  Kokkos::View<std::uint8_t*, MemSpace> marks;  // per work item: run_mark bits
+  // Per work item: the particles [begin, end) that form the image, begin = end when none.
   Kokkos::View<int* [2], MemSpace> image_span;
   Kokkos::View<Position* [Dim], MemSpace> x;  // at the build (= x_ref)
   Kokkos::View<int*, MemSpace> species;
   Kokkos::View<Real*, MemSpace> radius;  // per species
   Obstacle obstacle;
   BoxGeometry<Dim, Position> box;
-  bool with_images;  // write image_span (host paths)
+  bool with_images;  // mark the image bit and the spans (host paths); else the bit is set
+                     // on every item, and image_span is not written
   double skin;
   double max_radius;  // of all species
   int n, run_length;
@@ -64,25 +71,28 @@ struct MarkRuns {
   KOKKOS_INLINE_FUNCTION void operator()(const int run) const {
     const int first = run * run_length;
     const int last = first + run_length < n ? first + run_length : n;
-    std::uint8_t touches = 0;
+    std::uint8_t any = with_images ? 0 : run_mark::image;
     int begin = last, end = first;
     for (int i = first; i < last; ++i) {
       if constexpr (WithObstacle)
-        if (may_touch_obstacle(i)) touches = 1;
+        if (near_obstacle(i)) any |= run_mark::obstacle;
       if (with_images && near_periodic_face(i)) {
         if (i < begin) begin = i;
         end = i + 1;
       }
     }
-    if constexpr (WithObstacle) near_obstacle(run) = touches;
     if (with_images) {
-      if (begin >= end) begin = end = first;
+      if (begin < end)
+        any |= run_mark::image;
+      else
+        begin = end = first;
       image_span(run, 0) = begin;
       image_span(run, 1) = end;
     }
+    marks(run) = any;
   }
 
-  KOKKOS_INLINE_FUNCTION bool may_touch_obstacle(const int i) const {
+  KOKKOS_INLINE_FUNCTION bool near_obstacle(const int i) const {
     double r2 = 0;
     for (int d = 0; d < (Dim == 3 ? 2 : Dim); ++d) {  // in 3-D the axis is along z
       const double dx = double(x(i, d) - obstacle.centre[d]);

@@ -124,10 +124,9 @@ struct SolverParts {
   typename Store::PositionView x_next;                   // the fused step's second buffers
   typename Store::VectorView v_next;
   typename Store::SpinView omega_next;
-  // The fused step's work items, marked at the build (run_marks.hpp): the first runs_marked.
-  Kokkos::View<std::uint8_t*, Mem> near_obstacle_runs;  // obstacle scenes
-  Kokkos::View<int* [2], Mem> image_spans;              // host paths
-  int runs_marked = 0;
+  Kokkos::View<std::uint8_t*, Mem> run_marks;  // the fused step's work items (run_marks.hpp)
+  int run_marks_known = 0;                     // work items marked at the build
+  Kokkos::View<int* [2], Mem> image_spans;     // per work item, host paths (run_marks.hpp)
   Kokkos::View<ChainState, Mem> chain_state{"chain_state"};  // device paths (chained_steps.hpp)
   Kokkos::View<Real, Mem> chain_reported{"chain_reported"};  // the last pass's reduction
 

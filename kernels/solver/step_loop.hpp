@@ -210,8 +210,8 @@ class StepLoop {
             s_.integrator.gravity,
             by_speed,
             p.n,
-            s_.near_obstacle_runs,
-            s_.runs_marked,
+            s_.run_marks,
+            s_.run_marks_known,
             s_.image_spans};
   }
 

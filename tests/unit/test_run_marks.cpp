@@ -1,11 +1,12 @@
 // The marks of the fused step's work items (kernels/solver/run_marks.hpp). The obstacle
-// mark: set exactly when one of their particles is closer to the obstacle's centre than
-// r_i + R + skin at the list build. The image span: from the first of their particles
-// within 2 r_max + 2 skin of a face of a periodic axis, or outside the box, to the last.
-// That the fused step, which tests only the marked items against the obstacle and forms
-// the minimum image only in the spans, gives bitwise the trajectory of the force pass that
-// does both for every particle is checked by FusedStep.* (test_backend_agreement.cpp) on a
-// periodic gas around a cylinder.
+// bit: set exactly when one of their particles is closer to the obstacle's centre than
+// r_i + R + skin at the list build. The image bit: set exactly when one of their particles
+// is within 2 r_max + 2 skin of a face of a periodic axis, or outside the box, and the span
+// from the first such particle to the last. That the
+// fused step, which tests only the marked items against the obstacle and forms the minimum
+// image only in those, gives bitwise the trajectory of the force pass that does both for
+// every particle is checked by FusedStep.* (test_backend_agreement.cpp) on a periodic gas
+// around a cylinder.
 #include <gtest/gtest.h>
 
 #include <Kokkos_Core.hpp>
@@ -31,8 +32,8 @@ using Mem = Kokkos::HostSpace;
 constexpr double kRadius = 0.5e-3, kSkin = 0.3e-3;
 
 // Marks runs of `run_length` particles at `positions` (every particle of radius kRadius),
-// in a box [0, 0.2] x [0, 0.4] periodic along the axes `periodic`: the obstacle marks (0
-// without obstacle) and, with `images`, each run's span into `spans`.
+// in a box [0, 0.2] x [0, 0.4] periodic along the axes `periodic` (images: the image bit is
+// worked out; else it is set on every run).
 template <class Obstacle, bool WithObstacle>
 std::vector<int> marks_of(const Obstacle& obstacle,
                           const std::vector<std::array<double, 2>>& positions, int run_length,
@@ -46,7 +47,7 @@ std::vector<int> marks_of(const Obstacle& obstacle,
   for (int i = 0; i < n; ++i) x(i, 0) = positions[i][0], x(i, 1) = positions[i][1];
   radius(0) = kRadius;
   Kokkos::View<int* [2], Mem> span("span", runs);
-  Kokkos::deep_copy(span, -7);  // not written without `images`
+  Kokkos::deep_copy(span, -7);  // not written unless the image bit is worked out
   Box box;
   box.lo = {0, 0, 0};
   box.hi = {0.2, 0.4, 0};
@@ -57,7 +58,7 @@ std::vector<int> marks_of(const Obstacle& obstacle,
   std::vector<int> out;
   for (int r = 0; r < runs; ++r) {
     mark(r);
-    out.push_back(WithObstacle ? marks(r) : 0);
+    out.push_back(marks(r));
   }
   if (spans) {
     spans->clear();
@@ -66,22 +67,29 @@ std::vector<int> marks_of(const Obstacle& obstacle,
   return out;
 }
 
-// The obstacle marks, with the spans left out of the work.
+// The obstacle bits, with the image bit left out of the work (set on every run).
 std::vector<int> marked_runs(const Geometry& obstacle,
                              const std::vector<std::array<double, 2>>& positions, int run_length) {
-  return marks_of<Geometry, true>(obstacle, positions, run_length, false);
+  std::vector<int> out;
+  for (const int m : marks_of<Geometry, true>(obstacle, positions, run_length, false)) {
+    EXPECT_EQ(m & run_mark::image, run_mark::image);
+    out.push_back(m & run_mark::obstacle);
+  }
+  return out;
 }
 
 using Spans = std::vector<std::array<int, 2>>;
 
-// Which runs of a scene without obstacle form the image (1: a span that is not empty); the
-// spans into `spans`.
+// The image bits of a scene without obstacle; the runs' spans of particles that form the
+// image into spans.
 std::vector<int> image_runs(const std::vector<std::array<double, 2>>& positions, int run_length,
                             std::array<bool, 2> periodic, Spans& spans) {
-  marks_of<NoObstacle::Geometry<2, double>, false>({}, positions, run_length, true, periodic,
-                                                   &spans);
   std::vector<int> out;
-  for (const auto& s : spans) out.push_back(s[0] < s[1] ? 1 : 0);
+  for (const int m : marks_of<NoObstacle::Geometry<2, double>, false>({}, positions, run_length,
+                                                                      true, periodic, &spans)) {
+    EXPECT_EQ(m & run_mark::obstacle, 0);
+    out.push_back(m == run_mark::image ? 1 : 0);
+  }
   return out;
 }
 
@@ -129,7 +137,7 @@ TEST(ObstacleRuns, APolygonReachesAsFarAsItsFarthestCorner) {
   EXPECT_EQ(marked_runs(g, {{0.1, 0.2 - reach * (1 + 1e-9)}}, 1), std::vector<int>{0});
 }
 
-TEST(RunMarks, ImageSpanWithinTheListReachPlusASkinOfAPeriodicFace) {
+TEST(RunMarks, ImageBitWithinTheListReachPlusASkinOfAPeriodicFace) {
   // Reach c = 2 r + skin of a list partner, one skin more for the motion before the next
   // build: margin 2 r + 2 skin from a face.
   const double margin = 2 * kRadius + 2 * kSkin, in = margin * (1 - 1e-9),
@@ -184,6 +192,8 @@ TEST(RunMarks, APeriodicAxisShorterThanTwiceTheMarginMarksEveryParticle) {
       true,  skin, r, 2,       1};
   mark(0);
   mark(1);
+  EXPECT_EQ(int(marks(0)), int(run_mark::image));  // the farthest from both faces
+  EXPECT_EQ(int(marks(1)), int(run_mark::image));
   EXPECT_EQ(span(0, 0), 0);
   EXPECT_EQ(span(0, 1), 1);
   EXPECT_EQ(span(1, 0), 1);
