@@ -24,7 +24,7 @@ struct PairLoop {
   Kokkos::View<int*, MemSpace> species;
   Kokkos::View<Real*, MemSpace> radius;  // per species
   BoxGeometry<Dim, Position> box;
-  Real max_radius;  // of all species: partners beyond ri + max_radius are not looked up
+  Real max_radius;  // of all species: partners beyond 2 max_radius are not looked up
 
   KOKKOS_FORCEINLINE_FUNCTION Vec<Dim, Position> position(int i) const {
     Vec<Dim, Position> r;
@@ -32,16 +32,20 @@ struct PairLoop {
     return r;
   }
 
-  // Calls touching(j, sj, dx, r2, rsum) for each partner j of particle i (at xi, radius
-  // ri) in contact: dx = x_i - x_j (minimum image, formed in Position, then rounded to
-  // Real), r2 = |dx|^2 < rsum^2, rsum = r_i + r_j. Images false: i is known to have no
-  // partner across a periodic face (solver/run_marks.hpp), where the image changes nothing.
+  // Calls touching(j, sj, dx, r2, rsum) for each partner j of particle i (at xi) in
+  // contact: dx = x_i - x_j (minimum image, formed in Position, then rounded to Real), r2 =
+  // |dx|^2 < rsum^2, rsum = r_i + r_j. Images false: i is known to have no partner across
+  // a periodic face (solver/run_marks.hpp), where the image changes nothing.
   template <bool Images = true, class F>
-  KOKKOS_FORCEINLINE_FUNCTION void for_each_contact(int i, const Vec<Dim, Position>& xi, Real ri,
+  KOKKOS_FORCEINLINE_FUNCTION void for_each_contact(int i, const Vec<Dim, Position>& xi,
                                                     F&& touching) const {
-    // Most list partners are not touching: they are rejected on the distance alone,
-    // before the two dependent loads of their radius (species, then radius).
-    const Real reach = ri + max_radius;
+    // Most list partners are not touching: they are rejected on the distance alone, against
+    // twice the largest radius, before any radius is read (i's, then the partner's species
+    // and radius). Every contact passes that test, and rsum decides, so the contacts are
+    // those of r_i + r_j whatever the radii; read per particle, i's radius and species took
+    // two loads and two registers from the partner loop (docs/benchmarks.md, "The closing
+    // pass, and the radius read per contact").
+    const Real reach = max_radius + max_radius;
     const Real reach2 = reach * reach;
     for (int k = offsets(i); k < offsets(i + 1); ++k) {
       const int j = neighbours(k);
@@ -51,7 +55,7 @@ struct PairLoop {
       const Real r2 = norm2(dx);
       if (r2 >= reach2) continue;
       const int sj = species(j);
-      const Real rsum = ri + radius(sj);
+      const Real rsum = radius(species(i)) + radius(sj);
       if (r2 >= rsum * rsum) continue;
       touching(j, sj, dx, r2, rsum);
     }

@@ -124,10 +124,10 @@ struct ContactForceKernel {
   KOKKOS_FORCEINLINE_FUNCTION void sum_contacts(int i, const Vec<Dim, Position>& xi,
                                                 const OwnVelocity& vi, Vec<Dim, Real>& force,
                                                 SpinValue& torque, int& used_slots, Real* w) const {
-    const int si = p.species(i);
-    const Real ri = table.radius(si);
     pairs.template for_each_contact<Images>(
-        i, xi, ri, [&](int j, int sj, const Vec<Dim, Real>& dx, Real r2, Real rsum) {
+        i, xi, [&](int j, int sj, const Vec<Dim, Real>& dx, Real r2, Real rsum) {
+          const int si = p.species(i);  // read per contact: most partners do not touch
+          const Real ri = table.radius(si);
           const Real r = dmath::sqrt(r2);
           const Vec<Dim, Real> n = (Real(1) / r) * dx;
           const Vec<Dim, Real> vrel = own_velocity(i, vi) - velocity(j);

@@ -89,7 +89,7 @@ struct SolverDiagnostics {
           const int si = species(i);
           const Vec<Dim, Position> xi = pairs_.position(i);
           const Real ri = table_.radius(si);
-          pairs_.for_each_contact(i, xi, ri,
+          pairs_.for_each_contact(i, xi,
                                   [&](int, int sj, const Vec<Dim, Real>&, Real r2, Real rsum) {
                                     const double dn = double(rsum) - dmath::sqrt(double(r2));
                                     acc += 0.5 * Model::elastic_energy(table_.pair(si, sj), dn);
@@ -104,7 +104,7 @@ struct SolverDiagnostics {
           const int si = species(i);
           const Vec<Dim, Position> xi = pairs_.position(i);
           const Real ri = table_.radius(si);
-          pairs_.for_each_contact(i, xi, ri, [&](int j, int, const Vec<Dim, Real>&, Real, Real) {
+          pairs_.for_each_contact(i, xi, [&](int j, int, const Vec<Dim, Real>&, Real, Real) {
             if (id(j) > id(i)) acc += 1;
           });
           Real dn;
@@ -154,14 +154,12 @@ struct SolverDiagnostics {
   // counted, then listed, by the pair loop on the device.
   std::vector<std::pair<int, int>> contact_pairs() const {
     const auto id = p.id;
-    const auto species = p.species;
-    const auto table_ = table;
     const auto pairs_ = pairs;
     Kokkos::View<int*, Mem> offsets("pair_offsets", p.n + 1);
     Kokkos::parallel_for(
         "diag::count_pairs", Policy(0, p.n), KOKKOS_LAMBDA(const int i) {
           int count = 0;
-          pairs_.for_each_contact(i, pairs_.position(i), table_.radius(species(i)),
+          pairs_.for_each_contact(i, pairs_.position(i),
                                   [&](int j, int, const Vec<Dim, Real>&, Real, Real) {
                                     if (id(j) > id(i)) ++count;
                                   });
@@ -179,7 +177,7 @@ struct SolverDiagnostics {
     Kokkos::parallel_for(
         "diag::list_pairs", Policy(0, p.n), KOKKOS_LAMBDA(const int i) {
           int k = offsets(i);
-          pairs_.for_each_contact(i, pairs_.position(i), table_.radius(species(i)),
+          pairs_.for_each_contact(i, pairs_.position(i),
                                   [&](int j, int, const Vec<Dim, Real>&, Real, Real) {
                                     if (id(j) <= id(i)) return;
                                     list(k, 0) = id(i);

@@ -10,8 +10,11 @@
 // afterwards. The arithmetic, operation for operation, is that of the separate halves, so
 // the trajectory is bitwise the same (tests/reference/check_bitwise.sh).
 // Positions are Position (double) in every variant (device/position.hpp). The forces are
-// not stored: advance() ends with the unfused forces and second half, so
-// a caller always finds f, v and x of the same step.
+// not stored. The closing pass (Closing) ends a call of advance(): the forces, each
+// particle's contact virial (for a field sample) and the second half of the step only,
+// and it stores f (the next call's first half reads it), so that a caller always finds f,
+// v and x of the same step. It runs over the same runs of particles, with the same marks,
+// as the fused step, instead of a force pass over all particles and a kick after it.
 // What the pass reduces is chosen per step (neighbours/rebuild_watch.hpp): the largest
 // squared displacement since the last list build, or, while a bound on it suffices, the
 // largest squared speed, which spares the load of every particle's reference position.
@@ -30,7 +33,7 @@
 
 namespace granshock {
 
-template <class V, class ExecSpace, class Paths = DefaultPaths<ExecSpace>>
+template <class V, class ExecSpace, class Paths = DefaultPaths<ExecSpace>, bool Closing = false>
 struct FusedStepKernel {
   using Types = VariantTypes<V, ExecSpace>;
   static constexpr int Dim = Types::Dim;
@@ -42,8 +45,10 @@ struct FusedStepKernel {
   using SpinView = typename Store::SpinView;
   using SpinValue = Spin<Dim, Real>;  // device/spin.hpp
 
-  ContactForceKernel<V, ExecSpace> forces;  // reads the current x, v (and spin)
-  typename Store::PositionView x_next;
+  using Forces =
+      ContactForceKernel<V, ExecSpace, Closing ? ForceMode::forces_and_virial : ForceMode::forces>;
+  Forces forces;                        // reads the current x, v (and spin)
+  typename Store::PositionView x_next;  // not in the closing pass, which moves nothing
   VectorView v_next;
   SpinView omega_next;  // with friction
   Vec<Dim, Real> gravity;
@@ -71,6 +76,11 @@ struct FusedStepKernel {
   KOKKOS_FORCEINLINE_FUNCTION void operator()(const int run, Real& worst) const {
     advance_run(run, report_speed, worst);
   }
+  // The closing pass reports nothing.
+  KOKKOS_FORCEINLINE_FUNCTION void operator()(const int run) const {
+    Real unused = 0;
+    advance_run(run, false, unused);
+  }
 
   // One work item's particles; by_speed as report_speed, given apart for the chained
   // steps of device paths, whose device-side watch decides it (chained_steps.hpp).
@@ -95,6 +105,11 @@ struct FusedStepKernel {
     }
     const Real half = Real(0.5) * forces.dt, step = forces.dt;
     const Vec<Dim, Real> g = gravity;
+    if constexpr (Closing) {
+      (void)by_speed, (void)step;
+      for (int i = first; i < last; ++i) close(i, f[i - first], torque[i - first], half, g);
+      return;
+    }
     Real largest = worst;
     if (by_speed) {  // the test out of the loop
       for (int i = first; i < last; ++i)
@@ -140,11 +155,31 @@ struct FusedStepKernel {
     for (int i = begin; i < end; ++i) force<WithObstacle, true>(i, f[i - first], torque[i - first]);
   }
 
+  // Without friction the torque goes to a local the compiler drops: written to the run's
+  // array it was a store per particle that nothing reads. The closing pass writes each
+  // particle's contact virial as the force pass of ForceMode::forces_and_virial does.
   template <bool WithObstacle, bool Images>
   KOKKOS_FORCEINLINE_FUNCTION void force(const int i, Vec<Dim, Real>& f, SpinValue& torque) const {
-    forces.template total<WithObstacle, Images>(
-        i, forces.pairs.position(i), typename ContactForceKernel<V, ExecSpace>::ReadOwnVelocity{},
-        f, torque);
+    const Vec<Dim, Position> xi = forces.pairs.position(i);
+    using ReadOwnVelocity = typename Forces::ReadOwnVelocity;
+    SpinValue dropped;
+    SpinValue& kept = kept_torque(torque, dropped);
+    if constexpr (Closing) {
+      Real w[Dim * Dim] = {};
+      forces.template total<WithObstacle, Images>(i, xi, ReadOwnVelocity{}, f, kept, w);
+      for (int k = 0; k < Dim * Dim; ++k) forces.virial(i, k) = w[k];
+    } else {
+      forces.template total<WithObstacle, Images>(i, xi, ReadOwnVelocity{}, f, kept);
+    }
+  }
+  KOKKOS_FORCEINLINE_FUNCTION static SpinValue& kept_torque(SpinValue& torque, SpinValue& dropped) {
+    if constexpr (V::friction) {
+      (void)dropped;
+      return torque;
+    } else {
+      (void)torque;
+      return dropped;
+    }
   }
 
   // The kicks and the drift of particle i under force f (and torque), written to the
@@ -187,6 +222,31 @@ struct FusedStepKernel {
       (void)torque;
     }
     if (d2 > worst) worst = d2;
+  }
+
+  // The closing pass' end of particle i's step: f (and the torque) stored, the second half
+  // kick of the velocity (and spin) written to the second buffers; x stays.
+  KOKKOS_FORCEINLINE_FUNCTION void close(const int i, const Vec<Dim, Real>& f,
+                                         const SpinValue& torque, const Real half,
+                                         const Vec<Dim, Real>& g) const {
+    const auto& p = forces.p;
+    const Vec<Dim, Real> vi = forces.velocity(i);
+    const int s = p.species(i);
+    const Real im = forces.table.inv_mass(s);
+    for (int d = 0; d < Dim; ++d) {
+      Real v = vi[d];
+      half_kick(v, half, f[d], im, g[d]);
+      row_element(v_next, i, d) = v;
+      p.f(i, d) = f[d];
+    }
+    if constexpr (V::friction) {
+      store_spin<Dim>(p.torque, i, torque);
+      SpinValue w = load_spin<Dim>(p.omega, i);
+      half_spin_kick(w, half, torque, forces.table.inv_inertia(s));
+      store_spin<Dim>(omega_next, i, w);
+    } else {
+      (void)torque;
+    }
   }
 };
 

@@ -38,8 +38,8 @@ class StepLoop {
   // half of n+1 and the forces between them are one fused pass (fused_step.hpp); the
   // first step starts with the first half and the last ends with forces and the second
   // half, so between calls x, v and f belong to the same step, as with separate halves.
-  // That last force pass also records each particle's contact virial, which a field
-  // sample at this step reads (compute_forces).
+  // That last pass (close_step) also records each particle's contact virial, which a
+  // field sample at this step reads.
   void advance(long steps) {
     if (steps <= 0) return;
     if (steps > 1 && steps_chained_on_device()) {  // one step: nothing to chain
@@ -66,8 +66,7 @@ class StepLoop {
           }
         }
       } else {
-        compute_forces();
-        s_.integrator.second_half(s_.p, s_.table);
+        close_step();
       }
       ++s_.steps;
     }
@@ -119,9 +118,33 @@ class StepLoop {
       }
     }
     rebuild_if_expired();
-    compute_forces();
-    s_.integrator.second_half(s_.p, s_.table);
+    close_step();
     ++s_.steps;
+  }
+
+  // The forces, each particle's contact virial and the second half of the step that ends
+  // a call of advance(), in one pass (fused_step.hpp, Closing): the arithmetic of
+  // compute_forces() and of a separate second half kick, operation for operation, so the
+  // trajectory is bitwise that of the two kernels it replaced, without a pass over every
+  // particle's list that forms the periodic image everywhere, and a launch fewer.
+  void close_step() {
+    auto& p = s_.p;
+    ensure_step_buffers();
+    const FusedStepKernel<V, ExecSpace, Paths, true> kernel{
+        force_kernel<ForceMode::forces_and_virial>(p, s_.pair_loop(), p.virial),
+        {},
+        s_.v_next,
+        s_.omega_next,
+        s_.integrator.gravity,
+        false,
+        p.n,
+        s_.run_marks,
+        s_.run_marks_known,
+        s_.image_spans};
+    Kokkos::parallel_for("closing_step", Policy(0, kernel.work_items(p.n)), kernel);
+    std::swap(p.v, s_.v_next);
+    if constexpr (V::friction) std::swap(p.omega, s_.omega_next);
+    s_.virial_recorded = true;
   }
 
   // The forces at the current state, and each particle's contact virial of these very
@@ -190,12 +213,7 @@ class StepLoop {
   // The fused pass from the current buffers into the second ones, or (back) the reverse.
   FusedStepKernel<V, ExecSpace, Paths> fused_kernel(bool by_speed, bool back) {
     auto& p = s_.p;
-    if (int(s_.x_next.extent(0)) < p.capacity()) {
-      s_.x_next = decltype(s_.x_next)(alloc_on<ExecSpace>("x_next"), p.capacity());
-      s_.v_next = decltype(s_.v_next)(alloc_on<ExecSpace>("v_next"), p.capacity());
-      if constexpr (V::friction)
-        s_.omega_next = decltype(s_.omega_next)(alloc_on<ExecSpace>("omega_next"), p.capacity());
-    }
+    ensure_step_buffers();
     Store from = p;
     PairLoop<Dim, Real, Mem> pairs = s_.pair_loop();
     if (back) {
@@ -273,6 +291,16 @@ class StepLoop {
     const ChainWatch<Real, Mem> watch{s_.chain_state, s_.chain_reported, lists_.rebuild_distance2(),
                                       s_.setup.exact_list_check, after_step};
     Kokkos::parallel_for("chain_watch", Policy(0, 1), watch);
+  }
+
+  // The second buffers the fused passes write, as large as the particle store.
+  void ensure_step_buffers() {
+    auto& p = s_.p;
+    if (int(s_.x_next.extent(0)) >= p.capacity()) return;
+    s_.x_next = decltype(s_.x_next)(alloc_on<ExecSpace>("x_next"), p.capacity());
+    s_.v_next = decltype(s_.v_next)(alloc_on<ExecSpace>("v_next"), p.capacity());
+    if constexpr (V::friction)
+      s_.omega_next = decltype(s_.omega_next)(alloc_on<ExecSpace>("omega_next"), p.capacity());
   }
 
   void swap_step_buffers() {

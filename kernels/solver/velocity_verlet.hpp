@@ -1,7 +1,10 @@
 // Velocity-Verlet integration (as LIGGGHTS fix nve/sphere), split in its two halves:
 //   first half:  v += dt/2 (f/m + g);  x += dt v;  (w += dt/2 tau/I with friction)
 //   second half: v += dt/2 (f/m + g);              (w += dt/2 tau/I with friction)
-// Forces between the halves see positions at t + dt and velocities at t + dt/2.
+// Forces between the halves see positions at t + dt and velocities at t + dt/2. This is
+// the first half, which starts a call of advance(); the fused step does the second half
+// of one step with the first of the next, and the closing pass the call's last second
+// half (fused_step.hpp), with the same half_kick (kick.hpp).
 // Positions are Position (double) in every variant: the drift adds a Real step dt v to a
 // double position, and the displacement from x_ref is formed in double (device/position.hpp).
 #pragma once
@@ -93,27 +96,6 @@ struct VelocityVerlet {
         },
         Kokkos::Max<Real>(max_d2));
     return max_d2;
-  }
-
-  void second_half(const Store& p, const Table& table) const {
-    const Real half = Real(0.5) * dt;
-    const auto g = gravity;
-    const auto v = p.v, f = p.f;
-    const auto omega = p.omega, torque = p.torque;
-    const auto species = p.species;
-    const auto inv_mass = table.inv_mass, inv_inertia = table.inv_inertia;
-    Kokkos::parallel_for(
-        "verlet::second_half", Policy(0, p.n), KOKKOS_LAMBDA(const int i) {
-          capture_before_if_constexpr(omega, torque, inv_inertia);
-          const int s = species(i);
-          const Real im = inv_mass(s);
-          for (int d = 0; d < Dim; ++d) half_kick(v(i, d), half, f(i, d), im, g[d]);
-          if constexpr (V::friction) {
-            Spin<Dim, Real> w = load_spin<Dim>(omega, i);
-            half_spin_kick(w, half, load_spin<Dim>(torque, i), inv_inertia(s));
-            store_spin<Dim>(omega, i, w);
-          }
-        });
   }
 };
 

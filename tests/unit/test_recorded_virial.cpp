@@ -7,9 +7,11 @@
 // as the run that wrote it would have.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "cases/gas/homogeneous_gas.hpp"
@@ -190,4 +192,47 @@ TEST(RecordedVirial, AStateReadFromACheckpointSamplesAsTheRunThatWroteIt) {
   resumed->sample_fields(1);
   expect_same_sums(resumed->field_sums(false), straight->field_sums(false), "grid");
   expect_same_sums(resumed->field_sums(true), straight->field_sums(true), "profile");
+}
+
+// The pass that closes a call of advance() (kernels/solver/fused_step.hpp, Closing) records
+// the forces and the virial a separate force pass computes from the same state. Elastic
+// and without friction the forces depend on the positions alone, so the velocities it
+// reads (before the second half of the step) do not matter: a solver given the particles
+// (set_particles: a new list, then one unfused force pass) must find the same forces and
+// virial, to round-off (its list sums each particle's contacts in another order), on
+// either paths, with the periodic images that cross the box's faces.
+TEST(RecordedVirial, TheClosingPassRecordsTheForcesAndVirialOfASeparatePass) {
+  Gas g = dense_gas(0.0);
+  g.setup.contacts = ContactSettings::uniform(2, 1.0, 0.0);
+  for (const test::Paths paths : {test::Paths::host, test::Paths::device}) {
+    const std::string what = std::string(test::to_string(paths)) + " paths";
+    auto stepped = test::make_solver_on_paths(g.setup, g.particles.size(), paths);
+    stepped->set_particles(g.particles);
+    stepped->advance(37);
+    ASSERT_GT(stepped->diagnostics().contacts, 100) << what << ": too few contacts to test";
+    const SolverState closed = stepped->export_state();
+    auto separate = test::make_solver_on_paths(g.setup, g.particles.size(), paths);
+    separate->set_particles(stepped->particles());
+    const SolverState computed = separate->export_state();
+    ASSERT_EQ(closed.id.size(), computed.id.size()) << what;
+    std::unordered_map<int, std::size_t> at;  // computed's index of each id
+    for (std::size_t k = 0; k < computed.id.size(); ++k) at[computed.id[k]] = k;
+    const auto compare = [&](const std::vector<double>& a, const std::vector<double>& b, int per,
+                             const std::string& name) {
+      ASSERT_EQ(a.size(), closed.id.size() * std::size_t(per)) << what << ", " << name;
+      ASSERT_EQ(b.size(), a.size()) << what << ", " << name;
+      double largest = 0;
+      for (double x : b) largest = std::max(largest, std::abs(x));
+      ASSERT_GT(largest, 0) << what << ", " << name << ": all zero";
+      std::size_t differing = 0;
+      for (std::size_t k = 0; k < closed.id.size(); ++k)
+        for (int c = 0; c < per; ++c)
+          differing += std::abs(a[k * std::size_t(per) + std::size_t(c)] -
+                                b[at.at(closed.id[k]) * std::size_t(per) + std::size_t(c)]) >
+                       1e-12 * largest;
+      EXPECT_EQ(differing, 0u) << what << ", " << name << ": values beyond round-off";
+    };
+    compare(closed.force, computed.force, 2, "force");
+    compare(closed.contact_virial, computed.contact_virial, 4, "contact virial");
+  }
 }

@@ -2,11 +2,12 @@
 // bit: set exactly when one of their particles is closer to the obstacle's centre than
 // r_i + R + skin at the list build. The image bit: set exactly when one of their particles
 // is within 2 r_max + 2 skin of a face of a periodic axis, or outside the box, and the span
-// from the first such particle to the last. That the
-// fused step, which tests only the marked items against the obstacle and forms the minimum
-// image only in those, gives bitwise the trajectory of the force pass that does both for
-// every particle is checked by FusedStep.* (test_backend_agreement.cpp) on a periodic gas
-// around a cylinder.
+// from the first such particle to the last. That the fused and closing passes, which test
+// only the marked items against the obstacle and form the minimum image only in those, give
+// bitwise the trajectory of device paths, which do both for every particle, is checked by
+// KernelPaths.* (test_backend_agreement.cpp) on a periodic gas around a cylinder; the
+// closing pass' forces against the unfused force pass by
+// RecordedVirial.TheClosingPassRecordsTheForcesAndVirialOfASeparatePass.
 #include <gtest/gtest.h>
 
 #include <Kokkos_Core.hpp>
