@@ -106,19 +106,19 @@ struct FusedStepKernel {
     const Real half = Real(0.5) * forces.dt, step = forces.dt;
     const Vec<Dim, Real> g = gravity;
     if constexpr (Closing) {
-      (void)by_speed, (void)step;
+      (void)by_speed, (void)step, (void)worst;
       for (int i = first; i < last; ++i) close(i, f[i - first], torque[i - first], half, g);
-      return;
-    }
-    Real largest = worst;
-    if (by_speed) {  // the test out of the loop
-      for (int i = first; i < last; ++i)
-        move<true>(i, f[i - first], torque[i - first], half, step, g, largest);
     } else {
-      for (int i = first; i < last; ++i)
-        move<false>(i, f[i - first], torque[i - first], half, step, g, largest);
+      Real largest = worst;
+      if (by_speed) {  // the test out of the loop
+        for (int i = first; i < last; ++i)
+          move<true>(i, f[i - first], torque[i - first], half, step, g, largest);
+      } else {
+        for (int i = first; i < last; ++i)
+          move<false>(i, f[i - first], torque[i - first], half, step, g, largest);
+      }
+      if (largest > worst) worst = largest;
     }
-    if (largest > worst) worst = largest;
   }
 
   // The forces and torques on particles [first, last) of work item `run` (with its marks)

@@ -130,17 +130,9 @@ class StepLoop {
   void close_step() {
     auto& p = s_.p;
     ensure_step_buffers();
-    const FusedStepKernel<V, ExecSpace, Paths, true> kernel{
-        force_kernel<ForceMode::forces_and_virial>(p, s_.pair_loop(), p.virial),
-        {},
-        s_.v_next,
-        s_.omega_next,
-        s_.integrator.gravity,
-        false,
-        p.n,
-        s_.run_marks,
-        s_.run_marks_known,
-        s_.image_spans};
+    const auto kernel =
+        step_kernel<true>(force_kernel<ForceMode::forces_and_virial>(p, s_.pair_loop(), p.virial),
+                          {}, s_.v_next, s_.omega_next, false);
     Kokkos::parallel_for("closing_step", Policy(0, kernel.work_items(p.n)), kernel);
     std::swap(p.v, s_.v_next);
     if constexpr (V::friction) std::swap(p.omega, s_.omega_next);
@@ -221,16 +213,19 @@ class StepLoop {
       from.v = s_.v_next;
       from.omega = s_.omega_next;
     }
-    return {force_kernel(from, pairs),
-            back ? p.x : s_.x_next,
-            back ? p.v : s_.v_next,
-            back ? p.omega : s_.omega_next,
-            s_.integrator.gravity,
-            by_speed,
-            p.n,
-            s_.run_marks,
-            s_.run_marks_known,
-            s_.image_spans};
+    return step_kernel(force_kernel(from, pairs), back ? p.x : s_.x_next, back ? p.v : s_.v_next,
+                       back ? p.omega : s_.omega_next, by_speed);
+  }
+
+  // A fused (or, Closing, the closing) pass with these forces, writing into these buffers,
+  // with the solver's gravity and the work items' marks.
+  template <bool Closing = false, class Forces>
+  FusedStepKernel<V, ExecSpace, Paths, Closing> step_kernel(
+      const Forces& forces, const typename Store::PositionView& x_next,
+      const typename Store::VectorView& v_next, const typename Store::SpinView& omega_next,
+      bool by_speed) const {
+    return {forces,   x_next, v_next,       omega_next,         s_.integrator.gravity,
+            by_speed, s_.p.n, s_.run_marks, s_.run_marks_known, s_.image_spans};
   }
 
  private:
