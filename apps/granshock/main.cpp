@@ -144,7 +144,8 @@ void add_no_figures_flag(CLI::App& cmd, bool& figures) {
       "names the command that draws them later");
 }
 
-// --stop-after-steps of run and study: CLI11's message when it is not a positive count.
+// --stop-after-steps of run and study, --slice-steps of run: CLI11's message when it is not a
+// positive count.
 std::string positive_step_count(const std::string& steps) {
   return std::strtol(steps.c_str(), nullptr, 10) >= 1
              ? std::string()
@@ -227,6 +228,11 @@ void add_run_command(CLI::App& app, granshock::RunOptions& o) {
   cmd->add_flag("--force", o.force, "run even when dt is past the stable limit");
   cmd->add_option("--stop-after-steps", o.stop_after_steps,
                   "write a checkpoint and stop after this many steps (for batch-job time limits)")
+      ->check(positive_step_count);
+  cmd->add_option("--slice-steps", o.slice_steps,
+                  "advance between progress checks in slices of at most this many steps, "
+                  "not about 0.25 s of wall time (for instruction counts under valgrind, "
+                  "docs/benchmarks.md); the results are the same bit for bit")
       ->check(positive_step_count);
   cmd->add_flag("--quiet", o.quiet, "no progress lines");
   add_choice_option(*cmd, "--balance", o.balance,

@@ -232,9 +232,10 @@ int BowShockRun::advance_to_end() {
   launches_.start();  // what the time loop costs beyond arithmetic (summary.json)
   while (step < total_steps_) {
     // Advance to the next event (insertion, output) or a slice of about 0.25 s of wall
-    // time, so that progress and signals are answered promptly.
-    const double slice_s = backends_.slice_seconds();
-    long next = std::min(total_steps_, step + meter_->steps_per(slice_s, 50));
+    // time, so that progress and signals are answered promptly (or of --slice-steps).
+    const long slice = options_.slice_steps > 0 ? options_.slice_steps
+                                                : meter_->steps_per(backends_.slice_seconds(), 50);
+    long next = std::min(total_steps_, step + slice);
     next = std::min(next, (step / inflow_->period_steps() + 1) * inflow_->period_steps());
     for (const Schedule* s : {&series_, &snapshots_, &checkpoints_})
       next = std::min(next, s->next_after(step));

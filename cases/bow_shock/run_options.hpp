@@ -23,7 +23,11 @@ struct RunOptions {
   bool resume = false;
   bool force = false;         // run past the stable time step
   long stop_after_steps = 0;  // > 0: checkpoint and stop after this many steps (batch jobs)
-  bool quiet = false;         // no progress lines
+  // > 0: the time loop's slices (between progress and signal checks) of at most this many
+  // steps, not about 0.25 s of wall time each: a call pattern that does not follow the
+  // machine's speed, as instruction counts under valgrind need (docs/benchmarks.md).
+  long slice_steps = 0;
+  bool quiet = false;  // no progress lines
   // The figures at the end (--no-figures, GRANSHOCK_FIGURES: figure_switch.hpp).
   bool figures = figures_by_default();
   // Several processes: how slab boundaries move and which axis the slabs divide
