@@ -30,27 +30,38 @@ struct EscapeTest {
 };
 
 // Builds order = indices of the kept particles, in their current order (a stable
-// compaction), and counts the escaped ones per face. Returns the kept count.
+// compaction), and counts the escaped ones per face. Returns the kept count. One scan
+// tests every particle; it writes the escaped ones' indices into the rest of `order`
+// (from its end: a position order(kept) onwards, never one a kept particle takes), so the
+// count per face reads only those: a stream that leaves a few particles at each list
+// build does not pay a pass over all particles per face.
 template <int Dim, class Real, class ExecSpace, class PositionView, class OrderView>
 int compact_escaped(const EscapeTest<Dim, Real>& test, const PositionView& x, int n,
                     const OrderView& order, long (&per_face)[2 * Dim]) {
   using Policy = Kokkos::RangePolicy<ExecSpace>;
-  for (int f = 0; f < 2 * Dim; ++f) {
-    long count = 0;
-    Kokkos::parallel_reduce(
-        "population::count_escaped", Policy(0, n),
-        KOKKOS_LAMBDA(const int i, long& acc) { acc += test.face(x, i) == f ? 1 : 0; }, count);
-    per_face[f] = count;
-  }
   int kept = 0;
   Kokkos::parallel_scan(
       "population::compact", Policy(0, n),
       KOKKOS_LAMBDA(const int i, int& running, const bool final) {
         const bool keep = test.face(x, i) < 0;
-        if (final && keep) order(running) = i;
+        if (final) {
+          if (keep)
+            order(running) = i;
+          else
+            order(n - 1 - (i - running)) = i;  // the (i - running)-th escaped one
+        }
         running += keep ? 1 : 0;
       },
       kept);
+  for (int f = 0; f < 2 * Dim; ++f) {
+    long count = 0;
+    if (kept < n)
+      Kokkos::parallel_reduce(
+          "population::count_escaped", Policy(kept, n),
+          KOKKOS_LAMBDA(const int k, long& acc) { acc += test.face(x, order(k)) == f ? 1 : 0; },
+          count);
+    per_face[f] = count;
+  }
   return kept;
 }
 
