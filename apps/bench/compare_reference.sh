@@ -10,7 +10,10 @@
 #   CASES (default "0.1:32000 0.5:32000 0.1:2000000 0.5:2000000", phi:N),
 #   VARIANT (the reference's variant, default vl_1p), SIGMA (default 0.15 m/s, the
 #   reference's initial velocity spread), SKIN (granshock's skin in d; default: its own),
-#   ADAPTIVE=1 (granshock re-chooses its skin at each build, up to SKIN: --adaptive-skin).
+#   ADAPTIVE=1 (granshock re-chooses its skin at each build, up to SKIN: --adaptive-skin),
+#   PLACEMENT (granshock's start: lattice, random, or the default "match": random up to
+#   phi 0.3 and the lattice above, as the reference starts; a lattice start at phi 0.1
+#   leaves the lists nearly empty, docs/benchmarks.md, "The paper case against a random gas").
 set -euo pipefail
 reference=$1
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
@@ -41,8 +44,13 @@ granshock_rate() {  # phi n -> particle-steps/s (one repeat)
   local skin=()
   [[ -n ${SKIN:-} ]] && skin=(--skin "$SKIN")
   [[ ${ADAPTIVE:-0} == 1 ]] && skin+=(--adaptive-skin)
+  local start=${PLACEMENT:-match}
+  if [[ $start == match ]]; then
+    start=lattice
+    awk -v phi="$1" 'BEGIN { exit !(phi <= 0.3) }' && start=random
+  fi
   "$bench" --phi "$1" --particles "$2" --sigma "$sigma" --repeats 1 --min-seconds "$seconds" \
-    "${skin[@]}" --json "$work/g.json" >/dev/null 2>&1
+    "${skin[@]}" --placement "$start" --json "$work/g.json" >/dev/null 2>&1
   /usr/bin/python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['results'][0]['median'])" \
     "$work/g.json"
 }

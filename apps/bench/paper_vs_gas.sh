@@ -3,7 +3,7 @@
 # fraction (docs/benchmarks.md, "The paper case against the gas at the same N"):
 # scenes/paper/d50_u1000.toml for DURATION of simulated time with the inflow's Mach number
 # taken at insertion and production from t = 0 (31,600 particles), and
-# granshock_bench_gas --particles 31600 --phi 0.1 --sigma 0.15, in ROUNDS alternating
+# granshock_bench_gas --particles 31600 --phi 0.1 --sigma 0.15 --placement random, in ROUNDS alternating
 # rounds, on each thread count of THREADS, beside LOAD busy single-threaded processes
 # (`yes`). Prints each round's two rates (particle-steps per second: summary.json's time
 # loop, the gas table's median) and their ratio, then the median ratio, with the CPU model.
@@ -15,7 +15,9 @@
 # Usage: paper_vs_gas.sh
 # Environment: GRANSHOCK, BENCH_GAS (default: build/apps/...), DURATION (default 0.05 s
 #   simulated = 100,000 steps), ROUNDS (default 3), THREADS (default "1 2"), LOAD (default 0),
-#   REFERENCE (default: none).
+#   REFERENCE (default: none), PLACEMENT (the gas's start, default random: a lattice start
+#   at phi 0.1 leaves the lists nearly empty, docs/benchmarks.md, "The paper case against a
+#   random gas").
 set -uo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 root=$(cd "$here/../.." && pwd)
@@ -57,7 +59,8 @@ gas_rate() {  # THREADS -> the gas table's median rate, or the reference's
       awk '/^RESULT/ { for (k = 1; k <= NF; ++k) if ($k == "median") print $(k + 1) }'
     return
   fi
-  OMP_NUM_THREADS=$1 "$bench_gas" --particles 31600 --phi 0.1 --sigma 0.15 2>/dev/null |
+  OMP_NUM_THREADS=$1 "$bench_gas" --particles 31600 --phi 0.1 --sigma 0.15 \
+    --placement "${PLACEMENT:-random}" 2>/dev/null |
     awk -F'|' '/^\| 0.1 \|/ { gsub(/ /, "", $6); print $6; exit }'
 }
 

@@ -1,6 +1,9 @@
 #include "cases/gas/homogeneous_gas.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <vector>
 
 #include "core/user_error.hpp"
 #include "kernels/device/counter_rng.hpp"
@@ -21,6 +24,78 @@ double mean_sphere_volume(const SolverSetup& s) {
 int lattice_side(const GasSpec& spec, int dim) {
   const double n = double(spec.particles);
   return std::max(1, int(std::lround(dim == 3 ? std::cbrt(n) : std::sqrt(n))));
+}
+
+// Random sequential addition of `count` particles (species k % n_species) into the
+// periodic box: candidate t draws uniform numbers 0..dim-1 of stream t of its own
+// generator, and is kept when it overlaps no particle kept before it. A grid of cells at
+// least one largest diameter wide finds the particles that could overlap.
+std::vector<std::array<double, 3>> random_positions(const SolverSetup& setup, const GasSpec& spec,
+                                                    int count) {
+  const int dim = setup.dim, n_species = int(setup.species.size());
+  const CounterRng draw{spec.seed ^ 0x5253410000000000ULL};  // "RSA": not the velocities' stream
+  std::array<int, 3> cells{1, 1, 1};
+  std::array<double, 3> length{0, 0, 0};
+  for (int d = 0; d < dim; ++d) {
+    length[d] = setup.box.length(d);
+    cells[d] = std::max(1, int(length[d] / setup.max_diameter()));
+  }
+  const auto cell_of = [&](const std::array<double, 3>& x, int d) {
+    return std::min(cells[d] - 1, int((x[d] - setup.box.lo[d]) / length[d] * cells[d]));
+  };
+  // Each cell's particles as a linked list (first[cell], then next[k]): at 2M particles
+  // of a dilute gas the cells are 16M, too many for a vector each.
+  const std::size_t cell_count = std::size_t(cells[0]) * std::size_t(cells[1] * cells[2]);
+  std::vector<int> first(cell_count, -1), next;
+  next.reserve(std::size_t(count));
+  std::vector<std::array<double, 3>> x;
+  x.reserve(std::size_t(count));
+  const std::uint64_t attempts = 1000 * std::uint64_t(count);
+  for (std::uint64_t t = 0; int(x.size()) < count; ++t) {
+    if (t == attempts)
+      throw UserError((dim == 3 ? "volume fraction " : "area fraction ") +
+                      std::to_string(spec.area_fraction) +
+                      " is too dense for random placement (it jams near " +
+                      (dim == 3 ? "0.38" : "0.55") + "): place the gas on the lattice");
+    const int k = int(x.size());
+    std::array<double, 3> c{0, 0, 0};
+    for (int d = 0; d < dim; ++d)
+      c[d] = setup.box.lo[d] + draw.uniform(t, std::uint64_t(d)) * length[d];
+    const double rk = setup.species[std::size_t(k % n_species)].radius_m();
+    // The cells within one of c's along each axis (each once where an axis has fewer
+    // than 3), and the particles in them.
+    std::array<std::vector<int>, 3> near;
+    std::array<int, 3> at{0, 0, 0};
+    for (int d = 0; d < 3; ++d) {
+      at[d] = d < dim ? cell_of(c, d) : 0;
+      for (int o = -1; o <= 1; ++o) {
+        const int cell = ((at[d] + o) % cells[d] + cells[d]) % cells[d];
+        if (std::find(near[d].begin(), near[d].end(), cell) == near[d].end())
+          near[d].push_back(cell);
+      }
+    }
+    bool free = true;
+    for (const int cz : near[2])
+      for (const int cy : near[1])
+        for (const int cx : near[0])
+          for (int j = first[(std::size_t(cz) * cells[1] + cy) * cells[0] + cx]; j >= 0;
+               j = next[std::size_t(j)]) {
+            double r2 = 0;
+            for (int d = 0; d < dim; ++d) {
+              double dx = c[d] - x[std::size_t(j)][d];
+              dx -= length[d] * std::round(dx / length[d]);  // minimum image
+              r2 += dx * dx;
+            }
+            const double reach = rk + setup.species[std::size_t(j % n_species)].radius_m();
+            free = free && r2 >= reach * reach;
+          }
+    if (!free) continue;
+    int& head = first[(std::size_t(at[2]) * cells[1] + at[1]) * cells[0] + at[0]];
+    next.push_back(head);
+    head = k;
+    x.push_back(c);
+  }
+  return x;
 }
 }  // namespace
 
@@ -45,7 +120,8 @@ HostParticles make_homogeneous_gas(const SolverSetup& setup, const GasSpec& spec
   const int side = lattice_side(spec, setup.dim);
   const double spacing = setup.box.length(0) / side;
   const double room = spacing - setup.max_diameter();
-  if (room <= 0)
+  const bool random = spec.placement == GasPlacement::random;
+  if (room <= 0 && !random)
     throw UserError((setup.dim == 3 ? "volume fraction " : "area fraction ") +
                     std::to_string(spec.area_fraction) + " is too dense for a " +
                     (setup.dim == 3 ? "cubic" : "square") + " lattice of these particles");
@@ -53,6 +129,8 @@ HostParticles make_homogeneous_gas(const SolverSetup& setup, const GasSpec& spec
   const int n_species = int(setup.species.size());
   HostParticles p;
   const int sites = setup.dim == 3 ? side * side * side : side * side;
+  const std::vector<std::array<double, 3>> placed =
+      random ? random_positions(setup, spec, sites) : std::vector<std::array<double, 3>>{};
   for (int k = 0; k < sites; ++k) {
     // Site k's cell along each axis; the jitter keeps every pair at least one diameter
     // apart: each centre stays within room/2 of its lattice site. Axis d draws uniform
@@ -60,7 +138,8 @@ HostParticles make_homogeneous_gas(const SolverSetup& setup, const GasSpec& spec
     std::array<double, 3> x{0, 0, 0}, v{0, 0, 0};
     for (int d = 0, stride = 1; d < setup.dim; ++d, stride *= side) {
       const int cell = (k / stride) % side;
-      x[d] = setup.box.lo[d] + (cell + 0.5) * spacing + (rng.uniform(k, d) - 0.5) * room;
+      x[d] = random ? placed[std::size_t(k)][d]
+                    : setup.box.lo[d] + (cell + 0.5) * spacing + (rng.uniform(k, d) - 0.5) * room;
       v[d] = spec.sigma_m_per_s * rng.normal(k, d + 1);
     }
     p.add(x, v, k % n_species, k);
