@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "cases/bow_shock/run_command.hpp"
+#include "core/solver_state.hpp"
 
 namespace granshock::testing {
 
@@ -42,6 +43,17 @@ void run_straight_and_split(OptionsFor&& options_for, long stop_after) {
   RunOptions second = options_for("split");
   second.resume = true;
   ASSERT_EQ(run_scene(second), 0);
+}
+
+// Two runs' states, the second bitwise the first (`what` names the difference tested).
+inline void expect_bitwise_equal_states(const SolverState& a, const SolverState& b,
+                                        const std::string& what) {
+  EXPECT_EQ(b.step, a.step) << what;
+  EXPECT_EQ(a.id, b.id) << what;
+  EXPECT_EQ(a.position, b.position) << what << ": the positions differ";
+  EXPECT_EQ(a.velocity, b.velocity) << what;
+  EXPECT_EQ(a.angular_velocity, b.angular_velocity) << what;
+  EXPECT_EQ(a.force, b.force) << what;
 }
 
 inline nlohmann::json read_json(const std::filesystem::path& path) {

@@ -55,11 +55,7 @@ TEST(RunResume, InterruptedAndResumedEqualsUninterruptedBitwise) {
   const SolverState a = read_checkpoint(tmp.path() / "straight" / "checkpoint.h5", ea);
   const SolverState b = read_checkpoint(tmp.path() / "split" / "checkpoint.h5", eb);
   EXPECT_EQ(a.step, 20000);
-  EXPECT_EQ(b.step, a.step);
-  EXPECT_EQ(a.id, b.id);
-  EXPECT_EQ(a.position, b.position) << "positions differ: the resumed run is not bitwise equal";
-  EXPECT_EQ(a.velocity, b.velocity);
-  EXPECT_EQ(a.force, b.force);
+  granshock::testing::expect_bitwise_equal_states(a, b, "resumed against uninterrupted");
   EXPECT_EQ(ea.inserted, eb.inserted);
   EXPECT_EQ(ea.deleted_outlet, eb.deleted_outlet);
   // The CPU time of every leg is recorded (summary.json cpu_seconds, the trade table's
@@ -200,11 +196,7 @@ TEST(RunSlices, FixedSlicesOfStepsGiveTheSameRunBitwise) {
   const SolverState a = read_checkpoint(tmp.path() / "timed" / "checkpoint.h5", ea);
   const SolverState b = read_checkpoint(tmp.path() / "sliced" / "checkpoint.h5", eb);
   EXPECT_EQ(a.step, 20000);
-  EXPECT_EQ(b.step, a.step);
-  EXPECT_EQ(a.id, b.id);
-  EXPECT_EQ(a.position, b.position) << "slices of 7 steps changed the trajectory";
-  EXPECT_EQ(a.velocity, b.velocity);
-  EXPECT_EQ(a.force, b.force);
+  granshock::testing::expect_bitwise_equal_states(a, b, "slices of 7 steps");
   EXPECT_EQ(ea.bin_sums, eb.bin_sums) << "the field sums differ";
   const RunFile fa = RunFile::open_read_only(tmp.path() / "timed" / "run.h5");
   const RunFile fb = RunFile::open_read_only(tmp.path() / "sliced" / "run.h5");
