@@ -3,7 +3,8 @@
 # fraction (docs/benchmarks.md, "The paper case against the gas at the same N"):
 # scenes/paper/d50_u1000.toml for DURATION of simulated time with the inflow's Mach number
 # taken at insertion and production from t = 0 (31,600 particles), and
-# granshock_bench_gas --particles 31600 --phi 0.1 --sigma 0.15 --placement random, in ROUNDS alternating
+# granshock_bench_gas --particles 31600 --phi 0.1 --sigma 0.15 --placement random, in ROUNDS
+# alternating
 # rounds, on each thread count of THREADS, beside LOAD busy single-threaded processes
 # (`yes`). Prints each round's two rates (particle-steps per second: summary.json's time
 # loop, the gas table's median) and their ratio, then the median ratio, with the CPU model.

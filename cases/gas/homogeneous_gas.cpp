@@ -47,6 +47,9 @@ std::vector<std::array<double, 3>> random_positions(const SolverSetup& setup, co
   // of a dilute gas the cells are 16M, too many for a vector each.
   const std::size_t cell_count = std::size_t(cells[0]) * std::size_t(cells[1] * cells[2]);
   std::vector<int> first(cell_count, -1), next;
+  const auto index = [&](int cx, int cy, int cz) {
+    return (std::size_t(cz) * cells[1] + cy) * cells[0] + cx;
+  };
   next.reserve(std::size_t(count));
   std::vector<std::array<double, 3>> x;
   x.reserve(std::size_t(count));
@@ -62,23 +65,20 @@ std::vector<std::array<double, 3>> random_positions(const SolverSetup& setup, co
     for (int d = 0; d < dim; ++d)
       c[d] = setup.box.lo[d] + draw.uniform(t, std::uint64_t(d)) * length[d];
     const double rk = setup.species[std::size_t(k % n_species)].radius_m();
-    // The cells within one of c's along each axis (each once where an axis has fewer
-    // than 3), and the particles in them.
-    std::array<std::vector<int>, 3> near;
-    std::array<int, 3> at{0, 0, 0};
-    for (int d = 0; d < 3; ++d) {
-      at[d] = d < dim ? cell_of(c, d) : 0;
-      for (int o = -1; o <= 1; ++o) {
-        const int cell = ((at[d] + o) % cells[d] + cells[d]) % cells[d];
-        if (std::find(near[d].begin(), near[d].end(), cell) == near[d].end())
-          near[d].push_back(cell);
-      }
+    // Along each axis the cells within one of c's: from the one below, three of them, or
+    // all where the axis has fewer than three (each once).
+    std::array<int, 3> at{0, 0, 0}, low{0, 0, 0}, span{1, 1, 1};
+    for (int d = 0; d < dim; ++d) {
+      at[d] = cell_of(c, d);
+      span[d] = std::min(3, cells[d]);
+      low[d] = cells[d] < 3 ? 0 : at[d] - 1 + cells[d];
     }
+    const auto cell = [&](int d, int o) { return (low[d] + o) % cells[d]; };
     bool free = true;
-    for (const int cz : near[2])
-      for (const int cy : near[1])
-        for (const int cx : near[0])
-          for (int j = first[(std::size_t(cz) * cells[1] + cy) * cells[0] + cx]; j >= 0;
+    for (int oz = 0; oz < span[2]; ++oz)
+      for (int oy = 0; oy < span[1]; ++oy)
+        for (int ox = 0; ox < span[0]; ++ox)
+          for (int j = first[index(cell(0, ox), cell(1, oy), cell(2, oz))]; j >= 0;
                j = next[std::size_t(j)]) {
             double r2 = 0;
             for (int d = 0; d < dim; ++d) {
@@ -90,7 +90,7 @@ std::vector<std::array<double, 3>> random_positions(const SolverSetup& setup, co
             free = free && r2 >= reach * reach;
           }
     if (!free) continue;
-    int& head = first[(std::size_t(at[2]) * cells[1] + at[1]) * cells[0] + at[0]];
+    int& head = first[index(at[0], at[1], at[2])];
     next.push_back(head);
     head = k;
     x.push_back(c);

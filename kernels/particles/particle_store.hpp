@@ -84,8 +84,9 @@ struct ParticleStore {
   SpringView history_spring;    // spring xi per slot
   VectorView obstacle_spring;   // spring xi against the obstacle
   // The contact virial W_i = sum_j 1/2 r_ij (x) F_ij of the last force pass that recorded
-  // it (the step's last: StepLoop::close_step, or compute_forces), for field sampling (docs/fields.md,
-  // "The contact virial"); 0 for a particle inserted since, which touched nothing.
+  // it (the step's last: StepLoop::close_step, or compute_forces), for field sampling
+  // (docs/fields.md, "The contact virial"); 0 for a particle inserted since, which touched
+  // nothing.
   VirialView virial;
   int n = 0;  // owned particles
 

@@ -141,8 +141,8 @@ struct SolverParts {
   long step_regions = 0;
   double sync_seconds = 0;
   // Whether p.virial is the contact virial of the force pass that ended the current step
-  // (StepLoop::close_step or compute_forces; or a state's that was: import_state), 0 for particles
-  // inserted since.
+  // (StepLoop::close_step or compute_forces; or a state's that was: import_state), 0 for
+  // particles inserted since.
   bool virial_recorded = false;
 
  private:
